@@ -1,0 +1,69 @@
+// File: generate.h
+// -----------------------------------------------------------------------------
+// CT-like test parts with ground truth. A part is a solid built from analytic
+// primitives (boxes/planes, cylinders, cones, spheres, tori; union and
+// difference; tangent fillets), sampled on a voxel grid of size h, turned into
+// a triangle mesh by marching cubes, optionally with Gaussian noise along the
+// vertex normals. Every face records the primitive it lies on and every
+// primitive its exact parameters, so accuracy tests have an answer key.
+#ifndef MESHSEG_GENERATE_H_
+#define MESHSEG_GENERATE_H_
+
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "absl/status/statusor.h"
+#include "meshseg/mesh.h"
+#include "meshseg/run_context.h"
+#include "meshseg/surface.h"
+
+namespace meshseg {
+
+struct GenerateParams {
+  // Voxel size h in model units (mm); 0 = the part's own default.
+  double voxel_size = 0.0;
+  // Standard deviation of the noise along vertex normals, in multiples of h.
+  double noise = 0.0;
+  // Seed of the noise; the same seed gives the same mesh.
+  uint64_t seed = 1;
+};
+
+// One analytic face of the part's boundary.
+struct PrimitiveTruth {
+  int id = 0;
+  std::string name;  // e.g. "bore", "boss_fillet"
+  Surface surface;
+};
+
+struct GeneratedPart {
+  std::string name;
+  Mesh mesh;
+  double voxel_size = 0.0;  // h actually used
+  double noise = 0.0;       // noise sigma used, model units
+  std::vector<PrimitiveTruth> primitives;  // primitives[k].id == k
+  // One per mesh face: the id of the primitive the face lies on, or -1.
+  std::vector<int> face_primitive;
+  // One per mesh face: 1 if the face lies within one voxel of a boundary
+  // between primitives (accuracy metrics may exclude these).
+  std::vector<uint8_t> face_near_boundary;
+};
+
+// Names of the parts GeneratePart knows, smallest first.
+std::vector<std::string> PartNames();
+
+// Returns the part `name`.
+// Errors: INVALID_ARGUMENT for an unknown name, voxel_size < 0 or a grid over
+// the size limit, noise < 0; CANCELLED on stop.
+absl::StatusOr<GeneratedPart> GeneratePart(std::string_view name,
+                                           const GenerateParams& params = {},
+                                           const RunContext& ctx = {});
+
+// Returns the ground truth of `part` as a JSON document: voxel size, noise,
+// primitives with type and parameters, and the per-face primitive ids.
+std::string GroundTruthJson(const GeneratedPart& part);
+
+}  // namespace meshseg
+
+#endif  // MESHSEG_GENERATE_H_

@@ -1,0 +1,77 @@
+// File: segment.h
+// -----------------------------------------------------------------------------
+// The `segment` stage: splits a mesh into regions that each follow one
+// analytic surface. Seed 000 (region growing with the height function then
+// the quadric, type decision by the alpha test, graph merging) with seed 002's
+// improvements (labelled seeds incl. torus histogram, fast linear fits from
+// smoothed normals, leftover absorption with stepped thresholds, face labels).
+//
+// In: a Mesh and its CurvatureField. Out: Segmentation with a label per mesh
+// face and vertex and one Region per label.
+#ifndef MESHSEG_SEGMENT_H_
+#define MESHSEG_SEGMENT_H_
+
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "absl/status/statusor.h"
+#include "meshseg/curvature.h"
+#include "meshseg/fit.h"
+#include "meshseg/mesh.h"
+#include "meshseg/run_context.h"
+#include "meshseg/surface.h"
+
+namespace meshseg {
+
+struct SegmentParams {
+  // Max vertex-to-surface distance th_dis, in l_avg. Seed 000 eq. (5).
+  double distance_tolerance = 0.5;
+  // Max angle th_nm between vertex normal and surface normal, degrees.
+  // Seed 000 eq. (6) uses 5 for CT meshes; unset = derived from the
+  // estimated noise level of the mesh.
+  std::optional<double> angle_tolerance_deg;
+  // Fraction alpha of region vertices that must fit for a type to be
+  // accepted. Seed 000 §3 step 3.
+  double alpha = 0.9;
+  // Randomness (tie breaking) comes from here, never a global RNG.
+  uint64_t seed = 0;
+};
+
+struct Region {
+  int id = 0;
+  SurfaceType type = SurfaceType::kQuadric;
+  Surface surface;
+  int64_t face_count = 0;
+  int64_t vertex_count = 0;
+  double area = 0.0;
+  double rms_distance = 0.0;
+  double max_distance = 0.0;
+};
+
+// What the stage measured of the mesh and the thresholds it derived.
+struct SegmentEstimates {
+  double mean_edge_length = 0.0;     // l_avg
+  double noise_sigma = 0.0;          // estimated normal-direction noise, model units
+  double distance_tolerance = 0.0;   // th_dis used, model units
+  double angle_tolerance_deg = 0.0;  // th_nm used
+  double sharp_threshold = 0.0;      // th_sv used (seed 000 §2), in l_i,avg
+};
+
+struct Segmentation {
+  std::vector<int> face_labels;    // one per mesh face; region id or -1
+  std::vector<int> vertex_labels;  // one per mesh vertex; region id or -1
+  std::vector<Region> regions;     // regions[k].id == k
+  SegmentEstimates estimates;
+};
+
+// Returns the segmentation of `mesh`.
+// Errors: INVALID_ARGUMENT for bad params or a mesh without faces;
+// CANCELLED when ctx requests a stop.
+absl::StatusOr<Segmentation> Segment(const Mesh& mesh, const CurvatureField& curvature,
+                                     const SegmentParams& params = {},
+                                     const RunContext& ctx = {});
+
+}  // namespace meshseg
+
+#endif  // MESHSEG_SEGMENT_H_
