@@ -100,12 +100,17 @@ HeightFunction FitHeightFunction(std::span<const Eigen::Vector3d> points,
                                  const Eigen::Vector3d& origin, const Eigen::Vector3d& normal,
                                  std::span<const double> weights = {});
 
-// Approximate closest point on the height-function surface (vertical
-// projection corrected by one Newton step along the surface normal).
+// Approximate closest point on the height-function surface: vertical
+// projection, then two steps of "project onto the tangent plane at the foot,
+// drop back onto the graph". Normal = the graph's unit normal there (on the
+// side of h.normal); distance = (p - foot) . normal.
 Projection Project(const HeightFunction& h, const Eigen::Vector3d& p);
 
-// Principal curvatures of the height function's surface at (u, w) = (0, 0),
-// kappa_max the one of larger absolute value, with their directions in 3D.
+// Principal curvatures of the height function's surface at (u, w) = (0, 0)
+// from its full first and second fundamental forms (slopes a3, a4 included),
+// kappa_max the one of larger absolute value, with their unit directions in
+// 3D. Sign: positive where the surface bends towards `normal` (a sphere seen
+// with its outward normal has kappa = -1/R).
 struct PrincipalCurvatures {
   double kappa_max = 0.0;
   double kappa_min = 0.0;

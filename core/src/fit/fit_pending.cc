@@ -1,0 +1,13 @@
+// Temporary: fits not implemented yet report valid = false.
+#include "fit/fit_internal.h"
+#include "meshseg/fit.h"
+
+namespace meshseg {
+
+FitResult FitSphere(const FitInput&, const FitParams&) { return fit_internal::InvalidResult(Sphere{}); }
+FitResult FitCylinder(const FitInput&, const FitParams&) { return fit_internal::InvalidResult(Cylinder{}); }
+FitResult FitCone(const FitInput&, const FitParams&) { return fit_internal::InvalidResult(Cone{}); }
+FitResult FitTorus(const FitInput&, const FitParams&) { return fit_internal::InvalidResult(Torus{}); }
+FitResult FitQuadric(const FitInput&, const FitParams&) { return fit_internal::InvalidResult(Quadric{}); }
+
+}  // namespace meshseg
