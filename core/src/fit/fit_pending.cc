@@ -4,7 +4,6 @@
 
 namespace meshseg {
 
-FitResult FitSphere(const FitInput&, const FitParams&) { return fit_internal::InvalidResult(Sphere{}); }
 FitResult FitCylinder(const FitInput&, const FitParams&) { return fit_internal::InvalidResult(Cylinder{}); }
 FitResult FitCone(const FitInput&, const FitParams&) { return fit_internal::InvalidResult(Cone{}); }
 FitResult FitTorus(const FitInput&, const FitParams&) { return fit_internal::InvalidResult(Torus{}); }
