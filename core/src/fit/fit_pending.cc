@@ -4,8 +4,6 @@
 
 namespace meshseg {
 
-FitResult FitCylinder(const FitInput&, const FitParams&) { return fit_internal::InvalidResult(Cylinder{}); }
-FitResult FitCone(const FitInput&, const FitParams&) { return fit_internal::InvalidResult(Cone{}); }
 FitResult FitTorus(const FitInput&, const FitParams&) { return fit_internal::InvalidResult(Torus{}); }
 FitResult FitQuadric(const FitInput&, const FitParams&) { return fit_internal::InvalidResult(Quadric{}); }
 

@@ -12,6 +12,7 @@ namespace {
 constexpr double kInitialDamping = 1e-4;
 constexpr double kMaxDamping = 1e12;   // beyond: no step lowers the cost
 constexpr double kMinDamping = 1e-12;
+constexpr double kMinRelativeStep = 1e-13;  // |step| / |x|: at machine precision
 
 }  // namespace
 
@@ -50,7 +51,8 @@ LmOutcome MinimizeLevenbergMarquardt(const LeastSquaresProblem& problem,
       jtj.swap(jtj_new);
       jtr.swap(jtr_new);
       damping = std::max(damping * 0.1, kMinDamping);
-      if (decrease < params.relative_tolerance) {
+      if (decrease < params.relative_tolerance ||
+          step.norm() <= kMinRelativeStep * out.x.norm()) {
         out.converged = true;
         break;
       }

@@ -39,7 +39,7 @@ struct LmOutcome {
 
 // Minimises the problem's cost from x0 for at most params.max_iterations
 // steps; stops when a step lowers the cost by less than
-// params.relative_tolerance (relative). Never returns a non-finite state: a
+// params.relative_tolerance (relative) or is negligible next to |x|. Never returns a non-finite state: a
 // step giving a non-finite cost is rejected.
 LmOutcome MinimizeLevenbergMarquardt(const LeastSquaresProblem& problem,
                                      const Eigen::VectorXd& x0, const FitParams& params);

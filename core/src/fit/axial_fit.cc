@@ -1,0 +1,120 @@
+#include "fit/axial_fit.h"
+
+#include <cmath>
+#include <vector>
+
+#include "fit/algebraic_sphere.h"
+#include "fit/fit_internal.h"
+
+namespace meshseg::fit_internal {
+namespace {
+
+// State x = (origin, axis, radius, angle); steps (s1, s2, t1, t2, radius[, angle]).
+class AxialProblem : public LeastSquaresProblem {
+ public:
+  AxialProblem(const FitInput& input, bool fit_angle) : input_(input), fit_angle_(fit_angle) {}
+  int NumSteps() const override { return fit_angle_ ? 6 : 5; }
+
+  double Evaluate(const Eigen::VectorXd& x, Eigen::MatrixXd* jtj,
+                  Eigen::VectorXd* jtr) const override {
+    if (fit_angle_) return Accumulate<6>(x, jtj, jtr);
+    return Accumulate<5>(x, jtj, jtr);
+  }
+
+  Eigen::VectorXd Step(const Eigen::VectorXd& x, const Eigen::VectorXd& step) const override {
+    const Eigen::Vector3d a = x.segment<3>(3);
+    Eigen::Vector3d b1, b2;
+    PerpendicularBasis(a, &b1, &b2);
+    Eigen::VectorXd y = x;
+    y.head<3>() += step(0) * b1 + step(1) * b2;
+    y.segment<3>(3) = RotateAxis(a, step(2), step(3));
+    y(6) += step(4);
+    if (fit_angle_) y(7) += step(5);
+    return y;
+  }
+
+ private:
+  template <int P>
+  double Accumulate(const Eigen::VectorXd& x, Eigen::MatrixXd* jtj, Eigen::VectorXd* jtr) const {
+    const Eigen::Vector3d o = x.head<3>();
+    const Eigen::Vector3d a = x.segment<3>(3);
+    const double radius = x(6);
+    const double cos_a = std::cos(x(7));
+    const double sin_a = std::sin(x(7));
+    Eigen::Vector3d b1, b2;
+    PerpendicularBasis(a, &b1, &b2);
+    return AccumulateNormalEquations<P>(
+        input_,
+        [&](std::size_t i, Eigen::Matrix<double, 1, P>* row) {
+          const Eigen::Vector3d v = input_.points[i] - o;
+          const double h = v.dot(a);
+          const Eigen::Vector3d q = v - h * a;
+          const double rho = q.norm();
+          const Eigen::Vector3d e = rho > 0.0 ? Eigen::Vector3d(q / rho) : Eigen::Vector3d::Zero();
+          const double eb1 = e.dot(b1), eb2 = e.dot(b2);
+          (*row)(0) = -cos_a * eb1;
+          (*row)(1) = -cos_a * eb2;
+          (*row)(2) = -h * cos_a * eb1 - sin_a * v.dot(b1);
+          (*row)(3) = -h * cos_a * eb2 - sin_a * v.dot(b2);
+          (*row)(4) = -cos_a;
+          if constexpr (P == 6) (*row)(5) = -(rho - radius) * sin_a - h * cos_a;
+          return (rho - radius) * cos_a - h * sin_a;
+        },
+        jtj, jtr);
+  }
+
+  const FitInput& input_;
+  bool fit_angle_;
+};
+
+Eigen::VectorXd ToState(const AxialSurface& s) {
+  Eigen::VectorXd x(8);
+  x << s.origin, s.axis, s.radius, s.angle;
+  return x;
+}
+
+}  // namespace
+
+bool FitCrossSection(const FitInput& input, const Eigen::Vector3d& centroid,
+                     const Eigen::Vector3d& axis, AxialSurface* out) {
+  Eigen::Vector3d b1, b2;
+  PerpendicularBasis(axis, &b1, &b2);
+  std::vector<Eigen::Vector2d> flat(input.points.size());
+  for (std::size_t i = 0; i < flat.size(); ++i) {
+    const Eigen::Vector3d d = input.points[i] - centroid;
+    flat[i] = Eigen::Vector2d(d.dot(b1), d.dot(b2));
+  }
+  const auto circle = FitAlgebraicSphere<2>(std::span<const Eigen::Vector2d>(flat), input.weights);
+  if (!circle.valid) return false;
+  out->origin = centroid + circle.center.x() * b1 + circle.center.y() * b2;
+  out->axis = axis;
+  out->radius = circle.radius;
+  out->angle = 0.0;
+  return true;
+}
+
+LmOutcome RefineAxial(const FitInput& input, const Eigen::Vector3d& centroid, bool fit_angle,
+                      const FitParams& params, AxialSurface* s) {
+  const AxialProblem problem(input, fit_angle);
+  LmOutcome lm = MinimizeLevenbergMarquardt(problem, ToState(*s), params);
+  AxialSurface r;
+  r.origin = lm.x.head<3>();
+  r.axis = lm.x.segment<3>(3).normalized();
+  r.radius = lm.x(6);
+  r.angle = lm.x(7);
+  // Slide the origin along the axis next to the data; the radius follows
+  // the generator.
+  const double shift = (centroid - r.origin).dot(r.axis);
+  r.origin += shift * r.axis;
+  r.radius += shift * std::tan(r.angle);
+  *s = r;
+  return lm;
+}
+
+double AxialCost(const FitInput& input, const AxialSurface& s) {
+  Eigen::MatrixXd jtj;
+  Eigen::VectorXd jtr;
+  return AxialProblem(input, true).Evaluate(ToState(s), &jtj, &jtr);
+}
+
+}  // namespace meshseg::fit_internal

@@ -1,0 +1,40 @@
+// Shared by the cylinder and cone fits: surfaces whose generator, in the
+// half-plane through the axis, is the line rho = radius + h tan(angle)
+// (h along the axis from `origin`, rho the distance from the axis). The
+// cylinder is angle = 0. Geometric residual (signed distance to the
+// generator line): r = (rho - radius) cos(angle) - h sin(angle).
+#ifndef MESHSEG_SRC_FIT_AXIAL_FIT_H_
+#define MESHSEG_SRC_FIT_AXIAL_FIT_H_
+
+#include <Eigen/Core>
+
+#include "fit/levenberg_marquardt.h"
+#include "meshseg/fit.h"
+
+namespace meshseg::fit_internal {
+
+struct AxialSurface {
+  Eigen::Vector3d origin = Eigen::Vector3d::Zero();  // on the axis
+  Eigen::Vector3d axis = Eigen::Vector3d::UnitZ();   // unit
+  double radius = 0.0;                               // rho at origin
+  double angle = 0.0;                                // radians, signed
+};
+
+// Axis point and radius from an algebraic circle fit of the points projected
+// along `axis` (seed 002); origin = the axis point nearest `centroid`.
+// Returns false if the projected points are too few or collinear.
+bool FitCrossSection(const FitInput& input, const Eigen::Vector3d& centroid,
+                     const Eigen::Vector3d& axis, AxialSurface* out);
+
+// Levenberg–Marquardt refinement of `s` (in place) over origin (2 values,
+// across the axis), axis (2), radius and, if fit_angle, angle. The origin is
+// then moved along the axis to the point nearest `centroid`.
+LmOutcome RefineAxial(const FitInput& input, const Eigen::Vector3d& centroid, bool fit_angle,
+                      const FitParams& params, AxialSurface* s);
+
+// Σ w r² of `s` over the input (the refinement's cost).
+double AxialCost(const FitInput& input, const AxialSurface& s);
+
+}  // namespace meshseg::fit_internal
+
+#endif  // MESHSEG_SRC_FIT_AXIAL_FIT_H_

@@ -1,0 +1,78 @@
+// Cylinder fit, seed 002 then seed 000 §5: the axis is the normal of the
+// plane through the origin fitted to the normals on the Gauss sphere (the
+// smallest eigenvector of Σ w n nᵀ), an algebraic circle fit of the points
+// projected along it gives the axis point and radius, and Levenberg–Marquardt
+// refines the geometric distance. Without normals each principal axis of the
+// points is tried as the initial axis and the best refined fit is kept.
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include "fit/axial_fit.h"
+#include "fit/fit_internal.h"
+#include "meshseg/fit.h"
+
+namespace meshseg {
+namespace {
+
+// Eigenvalue ratios below which the input is degenerate.
+constexpr double kCollinearRatio = 1e-12;       // point scatter: points on a line
+constexpr double kParallelNormalsRatio = 1e-10;  // normal scatter: one normal direction
+
+}  // namespace
+
+FitResult FitCylinder(const FitInput& input, const FitParams& params) {
+  using namespace fit_internal;
+  if (input.points.size() < 5) return InvalidResult(Cylinder{});
+  const Moments m = PointMoments(input);
+  if (!(m.weight_sum > 0.0)) return InvalidResult(Cylinder{});
+  const Eigen3 pca = SymmetricEigen(m.scatter);
+  if (!(pca.values(1) > kCollinearRatio * pca.values(2))) return InvalidResult(Cylinder{});
+
+  std::vector<Eigen::Vector3d> axes;
+  if (HasNormals(input)) {
+    Eigen::Matrix3d gauss = Eigen::Matrix3d::Zero();
+    for (std::size_t i = 0; i < input.normals.size(); ++i) {
+      gauss.noalias() += WeightAt(input, i) * input.normals[i] * input.normals[i].transpose();
+    }
+    const Eigen3 e = SymmetricEigen(gauss);
+    if (!(e.values(1) > kParallelNormalsRatio * e.values(2))) return InvalidResult(Cylinder{});
+    axes.push_back(e.vectors.col(0));
+  } else {
+    if (!(pca.values(0) > kCollinearRatio * pca.values(2))) return InvalidResult(Cylinder{});
+    for (int k = 0; k < 3; ++k) axes.push_back(pca.vectors.col(k));
+  }
+
+  FitResult r;
+  double best_cost = std::numeric_limits<double>::infinity();
+  AxialSurface best;
+  for (const Eigen::Vector3d& axis : axes) {
+    AxialSurface s;
+    if (!FitCrossSection(input, m.centroid, axis, &s)) continue;
+    int iterations = 0;
+    double cost = 0.0;
+    if (params.refine) {
+      const LmOutcome lm = RefineAxial(input, m.centroid, /*fit_angle=*/false, params, &s);
+      iterations = lm.iterations;
+      cost = lm.cost;
+    } else {
+      cost = AxialCost(input, s);
+    }
+    if (cost < best_cost) {
+      best_cost = cost;
+      best = s;
+      r.iterations = iterations;
+    }
+  }
+  const Cylinder cyl{best.origin, best.axis, std::abs(best.radius)};
+  if (!std::isfinite(best_cost) || !cyl.axis_origin.allFinite() || !cyl.axis_direction.allFinite() ||
+      !std::isfinite(cyl.radius) || !(cyl.radius > 0.0)) {
+    return InvalidResult(Cylinder{});
+  }
+  r.surface = cyl;
+  r.valid = true;
+  SetDistanceErrors(input, &r);
+  return r;
+}
+
+}  // namespace meshseg
