@@ -11,6 +11,7 @@
 #ifndef MESHSEG_MESH_H_
 #define MESHSEG_MESH_H_
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -34,8 +35,21 @@ struct MeshTraits : public OpenMesh::DefaultTraits {
 };
 using TriMesh = OpenMesh::TriMesh_ArrayKernelT<MeshTraits>;
 
+// What building the mesh found in the input's indices. OpenMesh cannot hold
+// non-manifold input, so these are counted before faces are added.
+struct InputTopology {
+  int64_t degenerate_face_count = 0;      // zero-area or repeated-index faces
+  int64_t duplicate_face_count = 0;       // same vertex set as an earlier face
+  int64_t refused_face_count = 0;         // refused by OpenMesh (complex edge/vertex)
+  // Over the non-degenerate input triangles, duplicates included:
+  int64_t non_manifold_edge_count = 0;    // edges of > 2 triangles
+  int64_t non_manifold_vertex_count = 0;  // vertices whose triangles form > 1 fan
+};
+
 // A triangle mesh and where its faces came from.
 struct Mesh {
+  // Vertices in file order (STL: first appearance after welding); vertices no
+  // kept face uses stay as isolated vertices. Face and vertex normals are set.
   TriMesh tri;
   // One entry per face of the input file, in file order: the index of the
   // mesh face it became, or -1 if it was dropped (degenerate, non-manifold,
@@ -46,7 +60,19 @@ struct Mesh {
   int64_t input_vertex_count = 0;
   // The file name (no directories), for messages.
   std::string name;
+  // Set by ReadMesh and BuildMesh; zero for a Mesh filled in by hand.
+  InputTopology input_topology;
 };
+
+// Returns the mesh with `vertices` and indexed `triangles` (0-based), with the
+// rules of ReadMesh: degenerate, duplicate and non-manifold triangles are
+// dropped and map to -1 in face_of_input (one entry per triangle). No welding.
+// `name` is used in messages.
+// Errors (INVALID_ARGUMENT): NaN/Inf coordinates, out-of-range indices, no
+// triangles, all triangles dropped.
+absl::StatusOr<Mesh> BuildMesh(std::vector<Eigen::Vector3d> vertices,
+                               const std::vector<std::array<int, 3>>& triangles,
+                               std::string name);
 
 // Copies an OpenMesh point into an Eigen vector.
 inline Eigen::Vector3d ToEigen(const OpenMesh::Vec3d& p) { return {p[0], p[1], p[2]}; }
@@ -95,6 +121,7 @@ struct MeshStats {
   int64_t non_manifold_vertex_count = 0;  // vertices whose faces form > 1 fan
   int64_t component_count = 0;            // face-connected components
   int64_t degenerate_face_count = 0;      // zero-area or repeated-index input faces
+  int64_t isolated_vertex_count = 0;      // mesh vertices without a face
 };
 
 // Returns the statistics of `mesh`.

@@ -1,0 +1,219 @@
+#include "mesh/ply_body.h"
+
+#include <cmath>
+#include <cstring>
+#include <optional>
+
+#include "absl/strings/str_cat.h"
+#include "meshseg/status_macros.h"
+#include "mesh/ply_header.h"
+#include "mesh/text_cursor.h"
+
+namespace meshseg::mesh_internal {
+namespace {
+
+// Reads the values of the body one at a time, ascii or binary, and names the
+// place of an error.
+class ValueReader {
+ public:
+  ValueReader(std::string_view bytes, const PlyHeader& header, const Source& src)
+      : bytes_(bytes), pos_(header.body_offset), encoding_(header.encoding), src_(src),
+        cursor_(bytes.substr(header.body_offset)) {
+    cursor_.set_comments(false);
+    line_offset_ = header.body_line - 1;
+  }
+
+  absl::StatusOr<double> Next(PlyType type, const std::string& what) {
+    if (encoding_ == PlyEncoding::kAscii) return NextAscii(what);
+    const int size = PlyTypeSize(type);
+    if (pos_ + size > bytes_.size()) {
+      return BadInput(src_, absl::StrCat("truncated at byte offset ", pos_, " reading ", what,
+                                         " (file is ", bytes_.size(), " bytes)"));
+    }
+    unsigned char raw[8];
+    std::memcpy(raw, bytes_.data() + pos_, size);
+    if (encoding_ == PlyEncoding::kBinaryBigEndian) {
+      for (int i = 0; i < size / 2; ++i) std::swap(raw[i], raw[size - 1 - i]);
+    }
+    pos_ += size;
+    return Decode(type, raw);
+  }
+
+  // Ends one element instance (one line in ascii).
+  absl::Status EndElement(const std::string& what) {
+    if (encoding_ != PlyEncoding::kAscii) return absl::OkStatus();
+    if (!cursor_.AtLineEnd()) {
+      return Error(absl::StrCat("extra values after ", what));
+    }
+    cursor_.NextLine();
+    return absl::OkStatus();
+  }
+
+  absl::Status Error(const std::string& what) const {
+    if (encoding_ == PlyEncoding::kAscii) {
+      return BadInput(src_, absl::StrCat("line ", cursor_.line() + line_offset_, ": ", what));
+    }
+    return BadInput(src_, absl::StrCat("byte offset ", pos_, ": ", what));
+  }
+
+  // Starts one element instance; ascii files may have blank lines between.
+  void BeginElement() {
+    if (encoding_ == PlyEncoding::kAscii) cursor_.SkipEmptyLines();
+  }
+
+  bool ascii() const { return encoding_ == PlyEncoding::kAscii; }
+
+ private:
+  absl::StatusOr<double> NextAscii(const std::string& what) {
+    if (cursor_.AtEnd()) return Error(absl::StrCat("file ends while reading ", what));
+    const std::string_view token = cursor_.Token();
+    const std::optional<double> value = ParseDouble(token);
+    if (!value) {
+      return Error(absl::StrCat("expected a number for ", what, ", got \"", Shorten(token),
+                                "\""));
+    }
+    return *value;
+  }
+
+  static double Decode(PlyType type, const unsigned char* raw) {
+    switch (type) {
+      case PlyType::kInt8: return Read<int8_t>(raw);
+      case PlyType::kUint8: return Read<uint8_t>(raw);
+      case PlyType::kInt16: return Read<int16_t>(raw);
+      case PlyType::kUint16: return Read<uint16_t>(raw);
+      case PlyType::kInt32: return Read<int32_t>(raw);
+      case PlyType::kUint32: return Read<uint32_t>(raw);
+      case PlyType::kFloat32: return Read<float>(raw);
+      case PlyType::kFloat64: return Read<double>(raw);
+    }
+    return 0.0;
+  }
+
+  template <typename T>
+  static double Read(const unsigned char* raw) {
+    T value;
+    std::memcpy(&value, raw, sizeof(T));
+    return static_cast<double>(value);
+  }
+
+  std::string_view bytes_;
+  size_t pos_;
+  PlyEncoding encoding_;
+  const Source& src_;
+  TextCursor cursor_;
+  int64_t line_offset_ = 0;
+};
+
+// Smallest number of bytes one instance of `element` can take.
+int64_t MinElementBytes(const PlyElement& element, bool ascii) {
+  int64_t bytes = 0;
+  for (const PlyProperty& p : element.properties) {
+    if (ascii) {
+      bytes += 2;  // a digit and a separator
+    } else {
+      bytes += p.is_list ? PlyTypeSize(p.count_type) : PlyTypeSize(p.type);
+    }
+  }
+  return bytes;
+}
+
+absl::Status ReadElement(const PlyElement& element, ValueReader& reader, PlyData* data) {
+  const bool is_vertex = element.name == "vertex";
+  const bool is_face = element.name == "face";
+  int xyz[3] = {-1, -1, -1};
+  int nxyz[3] = {-1, -1, -1};
+  int indices = -1;
+  if (is_vertex) {
+    const char* names[3] = {"x", "y", "z"};
+    const char* normal_names[3] = {"nx", "ny", "nz"};
+    for (int c = 0; c < 3; ++c) {
+      xyz[c] = element.Find(names[c]);
+      nxyz[c] = element.Find(normal_names[c]);
+      if (xyz[c] < 0 || element.properties[xyz[c]].is_list) {
+        return reader.Error(absl::StrCat("element vertex has no scalar property ", names[c]));
+      }
+    }
+    const bool normals = nxyz[0] >= 0 && nxyz[1] >= 0 && nxyz[2] >= 0;
+    data->vertices.resize(element.count);
+    if (normals) data->normals.resize(element.count);
+  }
+  if (is_face) {
+    indices = element.Find("vertex_indices");
+    if (indices < 0) indices = element.Find("vertex_index");
+    if (indices < 0 || !element.properties[indices].is_list) {
+      return reader.Error("element face has no list property vertex_indices");
+    }
+    data->has_face_element = true;
+    data->face_start.assign(1, 0);
+    data->face_start.reserve(element.count + 1);
+    data->corners.reserve(3 * element.count);
+  }
+  const int64_t nv = static_cast<int64_t>(data->vertices.size());
+  for (int64_t i = 0; i < element.count; ++i) {
+    reader.BeginElement();
+    for (size_t k = 0; k < element.properties.size(); ++k) {
+      const PlyProperty& p = element.properties[k];
+      if (p.is_list) {
+        MESHSEG_ASSIGN_OR_RETURN(const double n, reader.Next(p.count_type, "a list length"));
+        const bool corners = is_face && static_cast<int>(k) == indices;
+        if (corners && (n < 3 || n > 1'000'000)) {
+          return reader.Error(
+              absl::StrCat("face ", i, " has ", n, " corners, expected 3 to 1000000"));
+        }
+        if (n < 0) return reader.Error(absl::StrCat("negative list length ", n));
+        for (int64_t c = 0; c < static_cast<int64_t>(n); ++c) {
+          MESHSEG_ASSIGN_OR_RETURN(const double v, reader.Next(p.type, p.name));
+          if (!corners) continue;
+          if (!(v >= 0 && v < static_cast<double>(nv)) || v != std::floor(v)) {
+            return reader.Error(absl::StrCat("face ", i, ": vertex index ", v,
+                                             " out of range [0, ", nv, ")"));
+          }
+          data->corners.push_back(static_cast<int>(v));
+        }
+        if (corners) data->face_start.push_back(static_cast<int64_t>(data->corners.size()));
+        continue;
+      }
+      MESHSEG_ASSIGN_OR_RETURN(const double v, reader.Next(p.type, p.name));
+      for (int c = 0; c < 3 && is_vertex; ++c) {
+        if (static_cast<int>(k) == xyz[c]) {
+          if (!std::isfinite(v)) {
+            return reader.Error(absl::StrCat("vertex ", i, ": non-finite coordinate ", v));
+          }
+          data->vertices[i][c] = v;
+        }
+        if (static_cast<int>(k) == nxyz[c] && !data->normals.empty()) data->normals[i][c] = v;
+      }
+    }
+    MESHSEG_RETURN_IF_ERROR(reader.EndElement(element.name));
+  }
+  return absl::OkStatus();
+}
+
+}  // namespace
+
+absl::StatusOr<PlyData> ReadPlyData(std::string_view bytes, const Source& src,
+                                    int64_t max_elements) {
+  MESHSEG_ASSIGN_OR_RETURN(const PlyHeader header, ParsePlyHeader(bytes, src));
+  ValueReader reader(bytes, header, src);
+  int64_t declared_bytes = 0;
+  bool vertex_seen = false;
+  for (const PlyElement& element : header.elements) {
+    if (element.name == "face" && !vertex_seen) {
+      return BadInput(src, "element face comes before element vertex");
+    }
+    vertex_seen |= element.name == "vertex";
+    const int64_t min_bytes = MinElementBytes(element, reader.ascii());
+    MESHSEG_RETURN_IF_ERROR(CheckDeclaredCount(
+        src, absl::StrCat("\"", element.name, "\" elements"), element.count, min_bytes,
+        static_cast<int64_t>(bytes.size() - header.body_offset) - declared_bytes, max_elements));
+    declared_bytes += element.count * min_bytes;
+  }
+  if (!vertex_seen) return BadInput(src, "no element vertex");
+  PlyData data;
+  for (const PlyElement& element : header.elements) {
+    MESHSEG_RETURN_IF_ERROR(ReadElement(element, reader, &data));
+  }
+  return data;
+}
+
+}  // namespace meshseg::mesh_internal

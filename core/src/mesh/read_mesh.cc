@@ -1,0 +1,38 @@
+#include "absl/strings/str_cat.h"
+#include "meshseg/mesh.h"
+#include "meshseg/status_macros.h"
+#include "mesh/file_format.h"
+#include "mesh/raw_mesh.h"
+
+namespace meshseg {
+
+absl::StatusOr<Mesh> ReadMesh(const std::string& path, const ReadMeshOptions& options) {
+  using namespace mesh_internal;  // NOLINT: the readers
+  const Source src{"read_mesh", FileName(path)};
+  if (options.max_elements <= 0) {
+    return BadInput(src, absl::StrCat("max_elements must be positive, got ",
+                                      options.max_elements));
+  }
+  MESHSEG_ASSIGN_OR_RETURN(const std::string bytes, ReadFileBytes(path, src));
+  if (bytes.empty()) return BadInput(src, "empty file");
+  const FileFormat format = options.format.value_or(
+      FormatOf(path, std::string_view(bytes).substr(0, 4096), static_cast<int64_t>(bytes.size())));
+  absl::StatusOr<RawMesh> raw;
+  switch (format) {
+    case FileFormat::kStl: raw = ReadStl(bytes, src, options.max_elements); break;
+    case FileFormat::kObj: raw = ReadObj(bytes, src, options.max_elements); break;
+    case FileFormat::kOff: raw = ReadOff(bytes, src, options.max_elements); break;
+    case FileFormat::kPly: raw = ReadPlyMesh(bytes, src, options.max_elements); break;
+    case FileFormat::kXyz:
+    case FileFormat::kPwn:
+      return BadInput(src, absl::StrCat("a ", FileFormatName(format),
+                                        " point cloud is not a mesh; read it as a point cloud"));
+    case FileFormat::kUnknown:
+      return BadInput(src, "unknown format (extension and content match none of stl, obj, "
+                           "off, ply)");
+  }
+  if (!raw.ok()) return raw.status();
+  return BuildFromRaw(*std::move(raw), src);
+}
+
+}  // namespace meshseg
