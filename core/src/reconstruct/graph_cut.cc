@@ -1,0 +1,100 @@
+#include "reconstruct/graph_cut.h"
+
+#include <cmath>
+
+#include <boost/graph/adjacency_list.hpp>
+#include <boost/graph/boykov_kolmogorov_max_flow.hpp>
+
+#include "meshseg/status_macros.h"
+
+namespace meshseg::reconstruct_internal {
+namespace {
+
+constexpr char kStage[] = "reconstruct: graph cut";
+
+using Traits = boost::adjacency_list_traits<boost::vecS, boost::vecS, boost::directedS>;
+using Graph = boost::adjacency_list<
+    boost::vecS, boost::vecS, boost::directedS, boost::no_property,
+    boost::property<boost::edge_capacity_t, double,
+                    boost::property<boost::edge_residual_capacity_t, double,
+                                    boost::property<boost::edge_reverse_t,
+                                                    Traits::edge_descriptor>>>>;
+
+// Adds u→v with capacity `forward` and v→u with `backward`, each the
+// other's reverse, as the max-flow needs.
+void AddEdgePair(int u, int v, double forward, double backward, Graph* g) {
+  auto capacity = boost::get(boost::edge_capacity, *g);
+  auto reverse = boost::get(boost::edge_reverse, *g);
+  const auto uv = boost::add_edge(u, v, *g).first;
+  const auto vu = boost::add_edge(v, u, *g).first;
+  capacity[uv] = forward;
+  capacity[vu] = backward;
+  reverse[uv] = vu;
+  reverse[vu] = uv;
+}
+
+}  // namespace
+
+absl::StatusOr<std::vector<uint8_t>> GraphCutLabels(const TetMesh& tets,
+                                                    const std::vector<Eigen::Vector3d>& position,
+                                                    const std::vector<double>& f, double k,
+                                                    const RunContext& ctx) {
+  const int n = static_cast<int>(position.size());
+  std::vector<double> length_sum(n, 0.0);
+  std::vector<int> degree(n, 0);
+  double max_weight = 0.0;
+  Graph g(n + 2);
+  const int source = n;
+  const int sink = n + 1;
+  for (const auto& [a, b] : tets.edges) {
+    const double len = (position[a] - position[b]).norm();
+    length_sum[a] += len;
+    length_sum[b] += len;
+    ++degree[a];
+    ++degree[b];
+    const double w = std::abs(f[a] + f[b]) / std::max(len, 1e-300);  // eq. (10)
+    max_weight = std::max(max_weight, w);
+    AddEdgePair(a, b, w, w, &g);
+  }
+  std::vector<double> terminal(n);
+  for (int v = 0; v < n; ++v) {
+    const double ave = degree[v] > 0 ? length_sum[v] / degree[v] : 1.0;
+    terminal[v] = k * std::abs(f[v]) / std::max(ave, 1e-300);  // eqs. (8)-(9)
+    max_weight = std::max(max_weight, terminal[v]);
+  }
+  const double unbreakable = 1e6 * (max_weight + 1.0) * (tets.edges.size() + 1);
+  for (int v = 0; v < n; ++v) {
+    if (tets.on_hull[v]) {
+      AddEdgePair(v, sink, unbreakable, 0.0, &g);
+    } else if (f[v] >= 0) {
+      AddEdgePair(source, v, terminal[v], 0.0, &g);
+    } else {
+      AddEdgePair(v, sink, terminal[v], 0.0, &g);
+    }
+  }
+  MESHSEG_RETURN_IF_ERROR(ctx.CheckStop(kStage));
+  std::vector<boost::default_color_type> color(n + 2);
+  std::vector<Traits::edge_descriptor> predecessor(n + 2);
+  std::vector<int64_t> distance(n + 2);
+  const auto index = boost::get(boost::vertex_index, g);
+  boost::boykov_kolmogorov_max_flow(
+      g, boost::get(boost::edge_capacity, g), boost::get(boost::edge_residual_capacity, g),
+      boost::get(boost::edge_reverse, g),
+      boost::make_iterator_property_map(predecessor.begin(), index),
+      boost::make_iterator_property_map(color.begin(), index),
+      boost::make_iterator_property_map(distance.begin(), index), index, source, sink);
+  MESHSEG_RETURN_IF_ERROR(ctx.CheckStop(kStage));
+  std::vector<uint8_t> inside(n);
+  for (int v = 0; v < n; ++v) {
+    inside[v] = color[v] == boost::color_traits<boost::default_color_type>::black() ? 1 : 0;
+  }
+  return inside;
+}
+
+std::vector<uint8_t> SignLabels(const TetMesh& tets, const std::vector<double>& f) {
+  std::vector<uint8_t> inside(f.size());
+  for (size_t v = 0; v < f.size(); ++v) inside[v] = !tets.on_hull[v] && f[v] >= 0 ? 1 : 0;
+  return inside;
+}
+
+}  // namespace meshseg::reconstruct_internal

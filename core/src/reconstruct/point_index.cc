@@ -1,0 +1,74 @@
+#include "reconstruct/point_index.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <nanoflann.hpp>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+namespace meshseg::reconstruct_internal {
+namespace {
+
+// nanoflann's dataset interface over a vector of Eigen points.
+struct Cloud {
+  const std::vector<Eigen::Vector3d>& points;
+  size_t kdtree_get_point_count() const { return points.size(); }
+  double kdtree_get_pt(size_t i, size_t dim) const { return points[i][dim]; }
+  template <class Box>
+  bool kdtree_get_bbox(Box&) const {
+    return false;
+  }
+};
+
+using KdTree = nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, Cloud>,
+                                                   Cloud, 3, uint32_t>;
+
+}  // namespace
+
+struct PointIndex::Tree {
+  explicit Tree(const std::vector<Eigen::Vector3d>& points)
+      : cloud{points}, kd(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(16)) {}
+  Cloud cloud;
+  KdTree kd;
+};
+
+PointIndex::PointIndex(const std::vector<Eigen::Vector3d>& points)
+    : points_(points), tree_(std::make_unique<Tree>(points)) {}
+
+PointIndex::~PointIndex() = default;
+
+void PointIndex::Nearest(const Eigen::Vector3d& q, int k, std::vector<uint32_t>* indices,
+                         std::vector<double>* dist2) const {
+  indices->resize(k);
+  dist2->resize(k);
+  const size_t n = tree_->kd.knnSearch(q.data(), k, indices->data(), dist2->data());
+  indices->resize(n);
+  dist2->resize(n);
+}
+
+void PointIndex::WithinRadius(const Eigen::Vector3d& q, double radius,
+                              std::vector<std::pair<uint32_t, double>>* found) const {
+  found->clear();
+  tree_->kd.radiusSearch(q.data(), radius * radius, *found, nanoflann::SearchParams(32, 0, true));
+}
+
+double PointSpacing(const std::vector<Eigen::Vector3d>& points, const PointIndex& index) {
+  constexpr int kNeighbors = 6;
+  std::vector<double> mean(points.size(), 0.0);
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, points.size()), [&](const auto& range) {
+    std::vector<uint32_t> idx;
+    std::vector<double> d2;
+    for (size_t i = range.begin(); i != range.end(); ++i) {
+      index.Nearest(points[i], kNeighbors + 1, &idx, &d2);
+      double sum = 0.0;
+      for (size_t j = 1; j < d2.size(); ++j) sum += std::sqrt(d2[j]);
+      mean[i] = d2.size() > 1 ? sum / static_cast<double>(d2.size() - 1) : 0.0;
+    }
+  });
+  auto middle = mean.begin() + mean.size() / 2;
+  std::nth_element(mean.begin(), middle, mean.end());
+  return *middle;
+}
+
+}  // namespace meshseg::reconstruct_internal

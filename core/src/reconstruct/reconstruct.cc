@@ -1,0 +1,189 @@
+#include "meshseg/reconstruct.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include "absl/strings/str_cat.h"
+#include "meshseg/status_macros.h"
+#include "reconstruct/cover.h"
+#include "reconstruct/graph_cut.h"
+#include "reconstruct/marching_tetrahedra.h"
+#include "reconstruct/normals.h"
+#include "reconstruct/octree.h"
+#include "reconstruct/point_index.h"
+#include "reconstruct/pu_function.h"
+#include "reconstruct/regular_triangulation.h"
+#include "reconstruct/smoothing.h"
+#include "reconstruct/surface_mesh.h"
+
+namespace meshseg {
+namespace {
+
+using namespace reconstruct_internal;  // NOLINT: this file strings the steps together
+
+constexpr char kStage[] = "reconstruct";
+constexpr size_t kMinPoints = 20;
+// Margin of the octree cube around the points' bounding box, per side, as a
+// fraction of its largest extent: room for outside supports around the part.
+constexpr double kCubeMargin = 0.1;
+// Octree depth used when it is derived from the point spacing.
+constexpr int kMinDerivedLevel = 3;
+constexpr int kMaxDerivedLevel = 12;
+
+absl::Status ValidateParams(const ReconstructParams& p) {
+  const auto bad = [](const std::string& what) {
+    return absl::InvalidArgumentError(absl::StrCat(kStage, ": ", what));
+  };
+  if (!(p.error_tolerance > 0)) return bad(absl::StrCat("error_tolerance ", p.error_tolerance, " must be > 0"));
+  if (p.octree_max_level && (*p.octree_max_level < 1 || *p.octree_max_level > kMaxOctreeLevel)) {
+    return bad(absl::StrCat("octree_max_level ", *p.octree_max_level, " outside [1, ",
+                            kMaxOctreeLevel, "]"));
+  }
+  if (!(p.leaf_cell_size > 0)) return bad(absl::StrCat("leaf_cell_size ", p.leaf_cell_size, " must be > 0"));
+  if (!(p.graph_cut_k > 0)) return bad(absl::StrCat("graph_cut_k ", p.graph_cut_k, " must be > 0"));
+  if (!(p.smoothing_lambda >= 0 && p.smoothing_lambda <= 1)) {
+    return bad(absl::StrCat("smoothing_lambda ", p.smoothing_lambda, " outside [0, 1]"));
+  }
+  if (p.smoothing_iterations < 0) {
+    return bad(absl::StrCat("smoothing_iterations ", p.smoothing_iterations, " must be >= 0"));
+  }
+  if (p.normal_neighbors < 3) return bad(absl::StrCat("normal_neighbors ", p.normal_neighbors, " must be >= 3"));
+  if (!(p.outlier_distance > 0)) return bad(absl::StrCat("outlier_distance ", p.outlier_distance, " must be > 0"));
+  return absl::OkStatus();
+}
+
+absl::Status ValidateCloud(const PointCloud& cloud) {
+  const std::string name = cloud.name.empty() ? "point cloud" : absl::StrCat("\"", cloud.name, "\"");
+  if (cloud.points.size() < kMinPoints) {
+    return absl::InvalidArgumentError(absl::StrCat(kStage, ": ", name, ": ", cloud.points.size(),
+                                                   " points, need at least ", kMinPoints));
+  }
+  if (cloud.has_normals() && cloud.normals.size() != cloud.points.size()) {
+    return absl::InvalidArgumentError(absl::StrCat(kStage, ": ", name, ": ", cloud.normals.size(),
+                                                   " normals for ", cloud.points.size(), " points"));
+  }
+  for (size_t i = 0; i < cloud.points.size(); ++i) {
+    if (!cloud.points[i].allFinite()) {
+      return absl::InvalidArgumentError(
+          absl::StrCat(kStage, ": ", name, ": point ", i, " has a NaN or infinite coordinate"));
+    }
+    if (cloud.has_normals() && !(cloud.normals[i].allFinite() && cloud.normals[i].norm() > 0)) {
+      return absl::InvalidArgumentError(
+          absl::StrCat(kStage, ": ", name, ": normal ", i, " is NaN, infinite or zero"));
+    }
+  }
+  return absl::OkStatus();
+}
+
+// Evaluates f at every point of `at`, in parallel.
+std::vector<double> Evaluate(const PuFunction& f, const std::vector<Eigen::Vector3d>& at) {
+  std::vector<double> values(at.size());
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, at.size()), [&](const auto& range) {
+    for (size_t i = range.begin(); i != range.end(); ++i) values[i] = f(at[i]);
+  });
+  return values;
+}
+
+}  // namespace
+
+absl::StatusOr<Reconstruction> Reconstruct(const PointCloud& cloud, const ReconstructParams& params,
+                                           const RunContext& ctx) {
+  MESHSEG_RETURN_IF_ERROR(ValidateParams(params));
+  MESHSEG_RETURN_IF_ERROR(ValidateCloud(cloud));
+  const std::vector<Eigen::Vector3d>& points = cloud.points;
+  Eigen::Vector3d lo = points[0], hi = points[0];
+  for (const auto& p : points) {
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+  const double extent = (hi - lo).maxCoeff();
+  const PointIndex index(points);
+  Reconstruction out;
+  ReconstructStats& stats = out.stats;
+  stats.point_spacing = PointSpacing(points, index);
+  if (!(extent > 0) || !(stats.point_spacing > 1e-9 * extent)) {
+    return absl::InvalidArgumentError(absl::StrCat(
+        kStage, ": \"", cloud.name, "\": points span ", extent, " with spacing ",
+        stats.point_spacing, "; they (nearly) coincide"));
+  }
+  const double h = stats.point_spacing;
+  ctx.Progress(kStage, 0.05);
+
+  // Step 1: inward normals.
+  MESHSEG_ASSIGN_OR_RETURN(const OrientedNormals normals,
+                           InwardNormals(points, cloud.normals, index, params.normal_neighbors, ctx));
+  stats.normals_estimated = !cloud.has_normals();
+  stats.normals_flipped = cloud.has_normals() && normals.flipped;
+  ctx.Progress(kStage, 0.15);
+
+  // Step 2: octree, covering and the partition-of-unity implicit f.
+  const double cube = extent * (1.0 + 2.0 * kCubeMargin);
+  const Eigen::Vector3d origin = 0.5 * (lo + hi) - Eigen::Vector3d::Constant(0.5 * cube);
+  stats.octree_max_level = params.octree_max_level.value_or(std::clamp(
+      static_cast<int>(std::ceil(std::log2(cube / (params.leaf_cell_size * h)))),
+      kMinDerivedLevel, kMaxDerivedLevel));
+  MESHSEG_ASSIGN_OR_RETURN(
+      const std::vector<OctreeLeaf> leaves,
+      BalancedOctreeLeaves(points, origin, cube, stats.octree_max_level, ctx));
+  stats.octree_leaf_count = static_cast<int64_t>(leaves.size());
+  const FitInput fit_input{points, normals.normals, index, params.error_tolerance * h,
+                           std::sqrt(3.0) * cube};
+  MESHSEG_ASSIGN_OR_RETURN(const std::vector<Support> supports,
+                           CoverBySupports(leaves, fit_input, params.seed, ctx));
+  stats.support_count = static_cast<int64_t>(supports.size());
+  const PuFunction f(supports);
+  ctx.Progress(kStage, 0.4);
+
+  // Step 3: regular tetrahedralization of the support centres.
+  MESHSEG_ASSIGN_OR_RETURN(const TetMesh tets, RegularTetrahedralization(supports, ctx));
+  stats.tet_vertex_count = static_cast<int64_t>(tets.support.size());
+  stats.tet_count = static_cast<int64_t>(tets.tets.size());
+  std::vector<Eigen::Vector3d> position(tets.support.size());
+  std::vector<uint8_t> sparse(tets.support.size());
+  for (size_t v = 0; v < tets.support.size(); ++v) {
+    const Support& s = supports[tets.support[v]];
+    position[v] = s.center;
+    sparse[v] = s.point_count < params.sparse_support_points;
+  }
+  const std::vector<double> f_at = Evaluate(f, position);
+  MESHSEG_RETURN_IF_ERROR(ctx.CheckStop(kStage));
+  ctx.Progress(kStage, 0.6);
+
+  // Step 4: inside/outside labels.
+  const std::vector<uint8_t> by_sign = SignLabels(tets, f_at);
+  std::vector<uint8_t> inside = by_sign;
+  if (params.use_graph_cut) {
+    MESHSEG_ASSIGN_OR_RETURN(inside, GraphCutLabels(tets, position, f_at, params.graph_cut_k, ctx));
+  }
+  for (size_t v = 0; v < inside.size(); ++v) stats.relabelled_count += inside[v] != by_sign[v];
+  ctx.Progress(kStage, 0.75);
+
+  // Steps 5-6: marching tetrahedra and selective smoothing.
+  MESHSEG_ASSIGN_OR_RETURN(IsoSurface surface,
+                           MarchingTetrahedra(tets, position, f_at, inside, sparse, f, ctx));
+  if (surface.triangles.empty()) {
+    return absl::InvalidArgumentError(absl::StrCat(
+        kStage, ": \"", cloud.name, "\": no inside region found among ", tets.support.size(),
+        " supports; the points enclose no volume"));
+  }
+  for (const uint8_t s : surface.to_smooth) stats.smoothed_vertex_count += s;
+  SmoothSelected(surface.triangles, surface.to_smooth, params.smoothing_lambda,
+                 params.smoothing_iterations, &surface.vertices);
+  ctx.Progress(kStage, 0.9);
+  MESHSEG_ASSIGN_OR_RETURN(out.mesh, SurfaceMesh(surface.vertices, surface.triangles, cloud.name));
+
+  const std::vector<double> f_points = Evaluate(f, points);
+  out.is_outlier.resize(points.size());
+  for (size_t i = 0; i < points.size(); ++i) {
+    out.is_outlier[i] = std::abs(f_points[i]) > params.outlier_distance * h;
+  }
+  MESHSEG_RETURN_IF_ERROR(ctx.CheckStop(kStage));
+  ctx.Progress(kStage, 1.0);
+  return out;
+}
+
+}  // namespace meshseg

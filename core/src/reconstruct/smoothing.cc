@@ -1,0 +1,68 @@
+#include "reconstruct/smoothing.h"
+
+#include <algorithm>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+namespace meshseg::reconstruct_internal {
+namespace {
+
+// Vertex neighbours in compressed rows (each neighbour once).
+struct Neighbors {
+  std::vector<int> offset;
+  std::vector<int> adj;
+};
+
+Neighbors VertexNeighbors(const std::vector<std::array<int, 3>>& triangles, size_t n) {
+  std::vector<std::vector<int>> lists(n);
+  for (const auto& t : triangles) {
+    for (int i = 0; i < 3; ++i) {
+      lists[t[i]].push_back(t[(i + 1) % 3]);
+      lists[t[i]].push_back(t[(i + 2) % 3]);
+    }
+  }
+  Neighbors nb;
+  nb.offset.push_back(0);
+  for (auto& l : lists) {
+    std::sort(l.begin(), l.end());
+    l.erase(std::unique(l.begin(), l.end()), l.end());
+    nb.adj.insert(nb.adj.end(), l.begin(), l.end());
+    nb.offset.push_back(static_cast<int>(nb.adj.size()));
+  }
+  return nb;
+}
+
+}  // namespace
+
+void SmoothSelected(const std::vector<std::array<int, 3>>& triangles,
+                    const std::vector<uint8_t>& selected, double lambda, int iterations,
+                    std::vector<Eigen::Vector3d>* vertices) {
+  std::vector<int> moving;
+  for (size_t v = 0; v < selected.size(); ++v) {
+    if (selected[v]) moving.push_back(static_cast<int>(v));
+  }
+  if (moving.empty()) return;
+  const Neighbors nb = VertexNeighbors(triangles, vertices->size());
+  std::vector<Eigen::Vector3d> next(moving.size());
+  for (int step = 0; step < 2 * iterations; ++step) {
+    const double l = step % 2 == 0 ? lambda : -lambda;
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, moving.size()), [&](const auto& range) {
+      for (size_t i = range.begin(); i != range.end(); ++i) {
+        const int v = moving[i];
+        const int count = nb.offset[v + 1] - nb.offset[v];
+        if (count == 0) {
+          next[i] = (*vertices)[v];
+          continue;
+        }
+        Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+        for (int e = nb.offset[v]; e < nb.offset[v + 1]; ++e) mean += (*vertices)[nb.adj[e]];
+        mean /= count;
+        next[i] = (*vertices)[v] + l * (mean - (*vertices)[v]);
+      }
+    });
+    for (size_t i = 0; i < moving.size(); ++i) (*vertices)[moving[i]] = next[i];
+  }
+}
+
+}  // namespace meshseg::reconstruct_internal
