@@ -10,6 +10,8 @@
 #include "meshseg/mesh.h"
 #include "meshseg/status_macros.h"
 #include "mesh/input_topology.h"
+#include "mesh/manifold_build.h"
+#include "mesh/normals.h"
 #include "mesh/raw_mesh.h"
 
 namespace meshseg {
@@ -51,7 +53,10 @@ absl::Status CheckFinite(const Source& src, const std::vector<Eigen::Vector3d>& 
   return absl::OkStatus();
 }
 
-absl::StatusOr<Mesh> BuildFromRaw(RawMesh raw, const Source& src) {
+namespace {
+
+// Fills *out (a default Mesh) from `raw`; see BuildFromRaw.
+absl::Status Fill(RawMesh raw, const Source& src, Mesh* out) {
   const int64_t nv = static_cast<int64_t>(raw.vertices.size());
   const int64_t nf = raw.face_count();
   if (nv == 0) return BadInput(src, "no vertices");
@@ -83,7 +88,7 @@ absl::StatusOr<Mesh> BuildFromRaw(RawMesh raw, const Source& src) {
       tri_face.push_back(static_cast<int>(f));
     }
   }
-  Mesh mesh;
+  Mesh& mesh = *out;
   mesh.name = src.name;
   mesh.input_vertex_count = raw.input_vertex_count > 0 ? raw.input_vertex_count : nv;
   InputTopology& topo = mesh.input_topology;
@@ -111,24 +116,49 @@ absl::StatusOr<Mesh> BuildFromRaw(RawMesh raw, const Source& src) {
     handles[i] = tri.add_vertex(TriMesh::Point(p.x(), p.y(), p.z()));
   }
   mesh.face_of_input.assign(nf, -1);
+  // Kept triangles move to the front, in order; tri_face follows.
+  size_t kept_count = 0;
   for (size_t t = 0; t < tris.size(); ++t) {
-    if (!keep[t]) continue;
-    const TriMesh::FaceHandle fh =
-        tri.add_face(handles[tris[t][0]], handles[tris[t][1]], handles[tris[t][2]]);
-    if (!fh.is_valid()) {
-      ++topo.refused_face_count;
-      continue;
+    if (keep[t]) {
+      tris[kept_count] = tris[t];
+      tri_face[kept_count++] = tri_face[t];
     }
-    int& entry = mesh.face_of_input[tri_face[t]];
-    if (entry < 0) entry = fh.idx();
+  }
+  tris.resize(kept_count);
+  std::vector<std::array<int, 3>>& kept = tris;
+  const std::vector<int>& kept_face = tri_face;
+  const bool manifold = counts.non_manifold_edge_count == 0 &&
+                        counts.non_manifold_vertex_count == 0 && BuildManifold(kept, &tri);
+  for (size_t t = 0; t < kept.size(); ++t) {
+    int face = static_cast<int>(t);
+    if (!manifold) {
+      face = tri.add_face(handles[kept[t][0]], handles[kept[t][1]], handles[kept[t][2]]).idx();
+      if (face < 0) {
+        ++topo.refused_face_count;
+        continue;
+      }
+    }
+    int& entry = mesh.face_of_input[kept_face[t]];
+    if (entry < 0) entry = face;
   }
   if (tri.n_faces() == 0) {
     return BadInput(src, absl::StrCat("all ", nf, " faces dropped (", topo.degenerate_face_count,
                                       " degenerate, ", topo.duplicate_face_count, " duplicate, ",
                                       topo.refused_face_count, " non-manifold)"));
   }
-  tri.update_normals();
-  return mesh;
+  SetNormals(&tri);
+  return absl::OkStatus();
+}
+
+}  // namespace
+
+absl::StatusOr<Mesh> BuildFromRaw(RawMesh raw, const Source& src) {
+  // Built in place: OpenMesh 9 meshes have no move constructor, so returning
+  // a local Mesh would copy it.
+  absl::StatusOr<Mesh> result(absl::in_place);
+  const absl::Status status = Fill(std::move(raw), src, &*result);
+  if (!status.ok()) result = status;
+  return result;
 }
 
 }  // namespace mesh_internal
@@ -142,7 +172,7 @@ absl::StatusOr<Mesh> BuildMesh(std::vector<Eigen::Vector3d> vertices,
   raw.input_vertex_count = static_cast<int64_t>(vertices.size());
   raw.vertices = std::move(vertices);
   raw.corners.reserve(3 * triangles.size());
-  raw.face_start.resize(triangles.size() + 1);
+  raw.face_start.assign(triangles.size() + 1, 0);
   for (size_t t = 0; t < triangles.size(); ++t) {
     raw.corners.insert(raw.corners.end(), triangles[t].begin(), triangles[t].end());
     raw.face_start[t + 1] = static_cast<int64_t>(raw.corners.size());

@@ -110,9 +110,10 @@ absl::StatusOr<bool> IsPointCloudFile(const std::string& path) {
   if (format == FileFormat::kXyz || format == FileFormat::kPwn) return true;
   if (format != FileFormat::kPly) return false;
   const mesh_internal::Source src{"detect_format", mesh_internal::FileName(path)};
-  MESHSEG_ASSIGN_OR_RETURN(const std::string bytes, mesh_internal::ReadFileBytes(path, src));
+  MESHSEG_ASSIGN_OR_RETURN(const mesh_internal::FileBytes file,
+                           mesh_internal::ReadFileBytes(path, src));
   MESHSEG_ASSIGN_OR_RETURN(const mesh_internal::PlyHeader header,
-                           mesh_internal::ParsePlyHeader(bytes, src));
+                           mesh_internal::ParsePlyHeader(file.view(), src));
   for (const mesh_internal::PlyElement& element : header.elements) {
     if (element.name == "face" && element.count > 0) return false;
   }

@@ -13,10 +13,11 @@ absl::StatusOr<Mesh> ReadMesh(const std::string& path, const ReadMeshOptions& op
     return BadInput(src, absl::StrCat("max_elements must be positive, got ",
                                       options.max_elements));
   }
-  MESHSEG_ASSIGN_OR_RETURN(const std::string bytes, ReadFileBytes(path, src));
+  MESHSEG_ASSIGN_OR_RETURN(const FileBytes file, ReadFileBytes(path, src));
+  const std::string_view bytes = file.view();
   if (bytes.empty()) return BadInput(src, "empty file");
   const FileFormat format = options.format.value_or(
-      FormatOf(path, std::string_view(bytes).substr(0, 4096), static_cast<int64_t>(bytes.size())));
+      FormatOf(path, bytes.substr(0, 4096), static_cast<int64_t>(bytes.size())));
   absl::StatusOr<RawMesh> raw;
   switch (format) {
     case FileFormat::kStl: raw = ReadStl(bytes, src, options.max_elements); break;

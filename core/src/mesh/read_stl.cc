@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <type_traits>
 
 #include "absl/strings/str_cat.h"
 #include "meshseg/status_macros.h"
@@ -16,19 +17,33 @@ namespace {
 constexpr int64_t kHeaderBytes = 84;
 constexpr int64_t kTriangleBytes = 50;
 
-float FloatAt(const char* p) {
-  float v;
-  std::memcpy(&v, p, sizeof(v));
-  return v;
+// The bits of a coordinate, with -0.0 mapped to 0.0 so that they weld.
+template <typename Bits, typename Real>
+Bits BitsOf(Real value) {
+  value += Real(0);
+  Bits bits;
+  std::memcpy(&bits, &value, sizeof(bits));
+  return bits;
 }
 
-RawMesh FromCorners(const std::vector<Eigen::Vector3d>& corners) {
+// Returns the triangles of `welder`'s corners, 3 per triangle in order.
+template <typename Bits>
+RawMesh FromWelded(const Welder<Bits>& welder, std::vector<int> corners) {
+  using Real = std::conditional_t<sizeof(Bits) == 4, float, double>;
   RawMesh raw;
-  raw.corners = WeldIdentical(corners, &raw.vertices);
+  raw.vertices.resize(welder.keys().size());
+  for (size_t i = 0; i < raw.vertices.size(); ++i) {
+    for (int c = 0; c < 3; ++c) {
+      Real value;
+      std::memcpy(&value, &welder.keys()[i][c], sizeof(value));
+      raw.vertices[i][c] = value;
+    }
+  }
   const int64_t n = static_cast<int64_t>(corners.size()) / 3;
+  raw.input_vertex_count = static_cast<int64_t>(corners.size());
+  raw.corners = std::move(corners);
   raw.face_start.resize(n + 1);
   for (int64_t t = 0; t <= n; ++t) raw.face_start[t] = 3 * t;
-  raw.input_vertex_count = static_cast<int64_t>(corners.size());
   return raw;
 }
 
@@ -53,27 +68,32 @@ absl::StatusOr<RawMesh> ReadBinaryStl(std::string_view bytes, const Source& src,
                                       kHeaderBytes + kTriangleBytes * n, ")"));
   }
   if (n == 0) return BadInput(src, "header declares 0 triangles");
-  std::vector<Eigen::Vector3d> corners(3 * n);
+  // A closed mesh has about n / 2 vertices.
+  Welder<uint32_t> welder(static_cast<size_t>(n / 2 + 16));
+  std::vector<int> corners(3 * n);
   const char* p = bytes.data() + kHeaderBytes;
   for (int64_t t = 0; t < n; ++t, p += kTriangleBytes) {
     for (int c = 0; c < 3; ++c) {
       const char* q = p + 12 + 12 * c;  // after the 12-byte facet normal
-      Eigen::Vector3d& v = corners[3 * t + c];
-      v = {FloatAt(q), FloatAt(q + 4), FloatAt(q + 8)};
-      if (!std::isfinite(v[0]) || !std::isfinite(v[1]) || !std::isfinite(v[2])) {
+      float xyz[3];
+      std::memcpy(xyz, q, sizeof(xyz));
+      if (!std::isfinite(xyz[0]) || !std::isfinite(xyz[1]) || !std::isfinite(xyz[2])) {
         return BadInput(src, absl::StrCat("non-finite coordinate in triangle ", t,
                                           " at byte offset ", q - bytes.data()));
       }
+      corners[3 * t + c] = welder.Insert({BitsOf<uint32_t>(xyz[0]), BitsOf<uint32_t>(xyz[1]),
+                                          BitsOf<uint32_t>(xyz[2])});
     }
   }
-  return FromCorners(corners);
+  return FromWelded(welder, std::move(corners));
 }
 
 absl::StatusOr<RawMesh> ReadAsciiStl(std::string_view bytes, const Source& src,
                                      int64_t max_elements) {
   TextCursor cursor(bytes);
   cursor.set_comments(false);
-  std::vector<Eigen::Vector3d> corners;
+  Welder<uint64_t> welder(1024);
+  std::vector<int> corners;
   int corners_in_loop = 0;
   bool in_loop = false;
   while (cursor.SkipEmptyLines()) {
@@ -82,7 +102,7 @@ absl::StatusOr<RawMesh> ReadAsciiStl(std::string_view bytes, const Source& src,
       if (!in_loop) {
         return BadInput(src, absl::StrCat("line ", cursor.line(), ": vertex outside a loop"));
       }
-      Eigen::Vector3d v;
+      std::array<uint64_t, 3> v;
       for (int i = 0; i < 3; ++i) {
         const std::string_view token = cursor.Token();
         const std::optional<double> value = ParseDouble(token);
@@ -94,13 +114,13 @@ absl::StatusOr<RawMesh> ReadAsciiStl(std::string_view bytes, const Source& src,
           return BadInput(src, absl::StrCat("line ", cursor.line(), ": non-finite coordinate \"",
                                             Shorten(token), "\""));
         }
-        v[i] = *value;
+        v[i] = BitsOf<uint64_t>(*value);
       }
       if (static_cast<int64_t>(corners.size()) / 3 >= max_elements) {
         return BadInput(src, absl::StrCat("line ", cursor.line(), ": more than ", max_elements,
                                           " triangles"));
       }
-      corners.push_back(v);
+      corners.push_back(welder.Insert(v));
       ++corners_in_loop;
     } else if (word == "outer") {
       in_loop = true;
@@ -119,7 +139,7 @@ absl::StatusOr<RawMesh> ReadAsciiStl(std::string_view bytes, const Source& src,
   }
   if (in_loop) return BadInput(src, absl::StrCat("line ", cursor.line(), ": unterminated facet"));
   if (corners.empty()) return BadInput(src, "no triangles");
-  return FromCorners(corners);
+  return FromWelded(welder, std::move(corners));
 }
 
 }  // namespace

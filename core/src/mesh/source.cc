@@ -1,11 +1,12 @@
 #include "mesh/source.h"
 
+#include <fcntl.h>
+#include <sys/mman.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include <cerrno>
-#include <cstdio>
 #include <cstring>
-#include <memory>
 
 #include "absl/strings/str_cat.h"
 
@@ -21,23 +22,40 @@ absl::Status BadInput(const Source& src, std::string_view what) {
       absl::StrCat(std::string(src.op), ": \"", src.name, "\": ", std::string(what)));
 }
 
-absl::StatusOr<std::string> ReadFileBytes(const std::string& path, const Source& src) {
+FileBytes& FileBytes::operator=(FileBytes&& other) noexcept {
+  std::swap(data_, other.data_);
+  std::swap(size_, other.size_);
+  return *this;
+}
+
+FileBytes::~FileBytes() {
+  if (data_ != nullptr) munmap(const_cast<char*>(data_), size_);
+}
+
+absl::StatusOr<FileBytes> ReadFileBytes(const std::string& path, const Source& src) {
+  const int fd = open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) {
+    return absl::NotFoundError(absl::StrCat(std::string(src.op), ": \"", src.name,
+                                            "\": cannot open: ", std::strerror(errno)));
+  }
   struct stat info;
-  if (stat(path.c_str(), &info) != 0) {
-    return absl::NotFoundError(
-        absl::StrCat(std::string(src.op), ": \"", src.name, "\": cannot open: ", std::strerror(errno)));
+  if (fstat(fd, &info) != 0 || !S_ISREG(info.st_mode)) {
+    close(fd);
+    return BadInput(src, "not a regular file");
   }
-  if (!S_ISREG(info.st_mode)) return BadInput(src, "not a regular file");
-  std::unique_ptr<FILE, int (*)(FILE*)> file(std::fopen(path.c_str(), "rb"), &std::fclose);
-  if (file == nullptr) {
-    return absl::NotFoundError(
-        absl::StrCat(std::string(src.op), ": \"", src.name, "\": cannot open: ", std::strerror(errno)));
+  FileBytes bytes;
+  if (info.st_size > 0) {
+    void* map = mmap(nullptr, static_cast<size_t>(info.st_size), PROT_READ,
+                     MAP_PRIVATE | MAP_POPULATE, fd, 0);
+    if (map == MAP_FAILED) {
+      close(fd);
+      return BadInput(src, absl::StrCat("cannot map ", info.st_size, " bytes: ",
+                                        std::strerror(errno)));
+    }
+    bytes.data_ = static_cast<const char*>(map);
+    bytes.size_ = static_cast<size_t>(info.st_size);
   }
-  std::string bytes(static_cast<size_t>(info.st_size), '\0');
-  const size_t got = std::fread(bytes.data(), 1, bytes.size(), file.get());
-  if (got != bytes.size()) {
-    return BadInput(src, absl::StrCat("read ", got, " of ", bytes.size(), " bytes"));
-  }
+  close(fd);
   return bytes;
 }
 

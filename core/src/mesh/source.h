@@ -5,6 +5,7 @@
 
 #include <string>
 #include <string_view>
+#include <utility>
 
 #include "absl/status/status.h"
 #include "absl/status/statusor.h"
@@ -23,10 +24,28 @@ std::string FileName(const std::string& path);
 // Returns INVALID_ARGUMENT `<op>: "<name>": <what>`.
 absl::Status BadInput(const Source& src, std::string_view what);
 
+// The whole content of a file, mapped read-only (no copy, no zero-fill).
+class FileBytes {
+ public:
+  FileBytes() = default;
+  FileBytes(FileBytes&& other) noexcept { *this = std::move(other); }
+  FileBytes& operator=(FileBytes&& other) noexcept;
+  FileBytes(const FileBytes&) = delete;
+  FileBytes& operator=(const FileBytes&) = delete;
+  ~FileBytes();
+
+  std::string_view view() const { return {data_, size_}; }
+
+ private:
+  friend absl::StatusOr<FileBytes> ReadFileBytes(const std::string& path, const Source& src);
+  const char* data_ = nullptr;
+  size_t size_ = 0;
+};
+
 // Returns the whole content of `path`.
 // Errors: NOT_FOUND if it cannot be opened; INVALID_ARGUMENT if it is not a
-// regular file or cannot be read completely.
-absl::StatusOr<std::string> ReadFileBytes(const std::string& path, const Source& src);
+// regular file or cannot be mapped.
+absl::StatusOr<FileBytes> ReadFileBytes(const std::string& path, const Source& src);
 
 // Returns OK if `count` elements of at least `min_bytes` each can fit in
 // `bytes_left` bytes and `count` <= `max_elements`; else an error naming
