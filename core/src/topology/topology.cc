@@ -1,0 +1,188 @@
+// ExtractTopology: check the input, then chain curves, give them geometry
+// and character, trace and classify loops, place corners, build adjacency.
+#include "meshseg/topology.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <numbers>
+#include <string>
+#include <utility>
+
+#include "absl/strings/str_cat.h"
+#include "meshseg/status_macros.h"
+#include "topology/chain_curves.h"
+#include "topology/classify_loops.h"
+#include "topology/curve_character.h"
+#include "topology/curve_geometry.h"
+#include "topology/normal_sign.h"
+#include "topology/snap_corner.h"
+#include "topology/trace_loops.h"
+
+namespace meshseg {
+namespace {
+
+using topology_internal::IntersectionTolerances;
+
+constexpr char kStage[] = "topology";
+
+absl::Status ValidateParams(const TopologyParams& p) {
+  auto bad = [](const char* name, double v, const char* limit) {
+    return absl::InvalidArgumentError(
+        absl::StrCat("topology: ", name, " = ", v, " must be ", limit));
+  };
+  if (!(p.sharp_angle_deg > 0.0 && p.sharp_angle_deg < 180.0)) {
+    return bad("sharp_angle_deg", p.sharp_angle_deg, "in (0, 180)");
+  }
+  if (!(p.curve_tolerance > 0.0) || !std::isfinite(p.curve_tolerance)) {
+    return bad("curve_tolerance", p.curve_tolerance, "> 0");
+  }
+  if (!(p.angle_tolerance_deg > 0.0 && p.angle_tolerance_deg < 90.0)) {
+    return bad("angle_tolerance_deg", p.angle_tolerance_deg, "in (0, 90)");
+  }
+  if (!(p.corner_snap_distance >= 0.0) || !std::isfinite(p.corner_snap_distance)) {
+    return bad("corner_snap_distance", p.corner_snap_distance, ">= 0");
+  }
+  return absl::OkStatus();
+}
+
+absl::Status ValidateInput(const Mesh& mesh, std::span<const int> labels,
+                           std::span<const Region> regions) {
+  const std::string name = mesh.name.empty() ? "mesh" : "\"" + mesh.name + "\"";
+  if (mesh.tri.n_faces() == 0) {
+    return absl::InvalidArgumentError(absl::StrCat("topology: ", name, ": mesh has no faces"));
+  }
+  if (labels.size() != mesh.tri.n_faces()) {
+    return absl::InvalidArgumentError(absl::StrCat("topology: ", name, ": ", labels.size(),
+                                                   " face labels for ", mesh.tri.n_faces(),
+                                                   " faces"));
+  }
+  for (size_t k = 0; k < regions.size(); ++k) {
+    if (regions[k].id != static_cast<int>(k)) {
+      return absl::InvalidArgumentError(absl::StrCat("topology: ", name, ": region ", k,
+                                                     " has id ", regions[k].id, ", expected ", k));
+    }
+  }
+  const int n = static_cast<int>(regions.size());
+  for (size_t f = 0; f < labels.size(); ++f) {
+    if (labels[f] < -1 || labels[f] >= n) {
+      return absl::InvalidArgumentError(absl::StrCat("topology: ", name, ": face ", f,
+                                                     " has label ", labels[f],
+                                                     ", outside [-1, ", n, ")"));
+    }
+  }
+  return absl::OkStatus();
+}
+
+std::vector<Eigen::Vector3d> PointsOf(const TriMesh& mesh, const std::vector<int>& vertices) {
+  std::vector<Eigen::Vector3d> points;
+  points.reserve(vertices.size());
+  for (const int v : vertices) points.push_back(ToEigen(mesh.point(OpenMesh::VertexHandle(v))));
+  return points;
+}
+
+// Sorted labels around v, -1 for the mesh border and unlabelled faces.
+std::vector<int> LabelsAround(const TriMesh& mesh, std::span<const int> labels, int v) {
+  std::vector<int> out;
+  for (OpenMesh::HalfedgeHandle h : mesh.voh_range(OpenMesh::VertexHandle(v))) {
+    out.push_back(topology_internal::LeftLabel(mesh, labels, h));
+  }
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
+}
+
+void PlaceCorners(const TriMesh& mesh, std::span<const int> labels,
+                  std::span<const Region> regions, const std::vector<int>& corner_vertices,
+                  double snap_distance, Topology* topo) {
+  for (size_t k = 0; k < corner_vertices.size(); ++k) {
+    Corner c;
+    c.id = static_cast<int>(k);
+    c.vertex = corner_vertices[k];
+    c.position = ToEigen(mesh.point(OpenMesh::VertexHandle(c.vertex)));
+    c.regions = LabelsAround(mesh, labels, c.vertex);
+    std::vector<const Surface*> surfaces;
+    for (const int r : c.regions) {
+      if (r >= 0) surfaces.push_back(&regions[r].surface);
+    }
+    if (auto snapped = topology_internal::SnapCorner(c.position, surfaces, snap_distance)) {
+      c.position = *snapped;
+      c.snapped = true;
+    }
+    topo->corners.push_back(std::move(c));
+  }
+  for (const BoundaryCurve& curve : topo->curves) {
+    if (curve.start_corner >= 0) topo->corners[curve.start_corner].curves.push_back(curve.id);
+    if (curve.end_corner >= 0) topo->corners[curve.end_corner].curves.push_back(curve.id);
+  }
+}
+
+void BuildAdjacency(Topology* topo) {
+  std::map<std::pair<int, int>, std::vector<int>> arcs;
+  for (const BoundaryCurve& c : topo->curves) {
+    if (c.left_region < 0 || c.right_region < 0) continue;
+    arcs[std::minmax(c.left_region, c.right_region)].push_back(c.id);
+  }
+  for (auto& [pair, curves] : arcs) {
+    topo->adjacency.push_back({pair.first, pair.second, std::move(curves)});
+  }
+}
+
+}  // namespace
+
+absl::StatusOr<Topology> ExtractTopology(const Mesh& mesh, std::span<const int> face_labels,
+                                         std::span<const Region> regions,
+                                         const TopologyParams& params, const RunContext& ctx) {
+  MESHSEG_RETURN_IF_ERROR(ValidateParams(params));
+  MESHSEG_RETURN_IF_ERROR(ValidateInput(mesh, face_labels, regions));
+  const TriMesh& tri = mesh.tri;
+  Topology topo;
+  topo.mean_edge_length = MeanEdgeLength(tri);
+  const double l_avg = topo.mean_edge_length;
+  const IntersectionTolerances tol{params.angle_tolerance_deg * std::numbers::pi / 180.0,
+                                   params.curve_tolerance * l_avg};
+
+  topology_internal::CurveChains chains = topology_internal::ChainCurves(tri, face_labels);
+  topo.curves = std::move(chains.curves);
+  for (size_t i = 0; i < topo.curves.size(); ++i) {
+    if (i % 64 == 0) {
+      MESHSEG_RETURN_IF_ERROR(ctx.CheckStop(kStage));
+      ctx.Progress(kStage, 0.8 * static_cast<double>(i) / static_cast<double>(topo.curves.size()));
+    }
+    BoundaryCurve& c = topo.curves[i];
+    const std::vector<Eigen::Vector3d> points = PointsOf(tri, c.vertices);
+    for (size_t j = 0; j + 1 < points.size(); ++j) c.length += (points[j + 1] - points[j]).norm();
+    const Surface* left = c.left_region >= 0 ? &regions[c.left_region].surface : nullptr;
+    const Surface* right = c.right_region >= 0 ? &regions[c.right_region].surface : nullptr;
+    c.geometry = topology_internal::CurveGeometryOf(points, left, right, tol);
+    const topology_internal::CurveCharacter character = topology_internal::CurveCharacterOf(
+        tri, face_labels, regions, c, params.sharp_angle_deg);
+    c.normal_angle_deg = character.normal_angle_deg;
+    c.sharp = character.sharp;
+    c.convexity = character.convexity;
+  }
+  MESHSEG_RETURN_IF_ERROR(ctx.CheckStop(kStage));
+
+  topology_internal::TracedLoops traced = topology_internal::TraceLoops(
+      tri, face_labels, chains.halfedge_curve, static_cast<int>(regions.size()));
+  topology_internal::ClassifyLoops(tri, face_labels, regions, &traced);
+  topo.loops = std::move(traced.loops);
+
+  PlaceCorners(tri, face_labels, regions, chains.corner_vertices,
+               params.corner_snap_distance * l_avg, &topo);
+  BuildAdjacency(&topo);
+
+  const std::vector<int> signs = topology_internal::RegionNormalSigns(tri, face_labels, regions);
+  topo.regions.resize(regions.size());
+  for (size_t k = 0; k < regions.size(); ++k) {
+    topo.regions[k].region = static_cast<int>(k);
+    topo.regions[k].patch_count = traced.patch_count[k];
+    topo.regions[k].normal_sign = signs[k];
+  }
+  for (const Loop& loop : topo.loops) topo.regions[loop.region].loops.push_back(loop.id);
+  MESHSEG_RETURN_IF_ERROR(ctx.CheckStop(kStage));
+  ctx.Progress(kStage, 1.0);
+  return topo;
+}
+
+}  // namespace meshseg

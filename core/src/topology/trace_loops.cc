@@ -1,0 +1,91 @@
+#include "topology/trace_loops.h"
+
+#include <cassert>
+
+#include "topology/chain_curves.h"
+
+namespace meshseg::topology_internal {
+namespace {
+
+using OpenMesh::FaceHandle;
+using OpenMesh::HalfedgeHandle;
+
+// Patch index per face by flood fill across non-boundary edges.
+void LabelPatches(const TriMesh& mesh, std::span<const int> labels, TracedLoops* out) {
+  out->face_patch.assign(mesh.n_faces(), -1);
+  std::vector<FaceHandle> stack;
+  for (FaceHandle seed : mesh.faces()) {
+    const int label = labels[seed.idx()];
+    if (label < 0 || out->face_patch[seed.idx()] >= 0) continue;
+    const int patch = out->patch_count[label]++;
+    out->face_patch[seed.idx()] = patch;
+    stack.push_back(seed);
+    while (!stack.empty()) {
+      const FaceHandle f = stack.back();
+      stack.pop_back();
+      for (HalfedgeHandle h : mesh.fh_range(f)) {
+        const FaceHandle g = mesh.opposite_face_handle(h);
+        if (!g.is_valid() || labels[g.idx()] != label || out->face_patch[g.idx()] >= 0) continue;
+        out->face_patch[g.idx()] = patch;
+        stack.push_back(g);
+      }
+    }
+  }
+}
+
+// The next boundary halfedge of the patch on the left of `h`: turn around
+// h's end vertex inside the patch until the boundary.
+HalfedgeHandle NextAlongPatch(const TriMesh& mesh, std::span<const int> labels, HalfedgeHandle h) {
+  HalfedgeHandle n = mesh.next_halfedge_handle(h);
+  while (!IsBoundaryHalfedge(mesh, labels, n)) {
+    n = mesh.next_halfedge_handle(mesh.opposite_halfedge_handle(n));
+  }
+  return n;
+}
+
+// The curve use of one boundary halfedge.
+CurveUse UseOf(const TriMesh& mesh, std::span<const int> halfedge_curve, HalfedgeHandle h) {
+  if (halfedge_curve[h.idx()] >= 0) return {halfedge_curve[h.idx()], false};
+  const int c = halfedge_curve[mesh.opposite_halfedge_handle(h).idx()];
+  assert(c >= 0 && "every boundary edge lies on a curve");
+  return {c, true};
+}
+
+}  // namespace
+
+TracedLoops TraceLoops(const TriMesh& mesh, std::span<const int> face_labels,
+                       std::span<const int> halfedge_curve, int region_count) {
+  TracedLoops out;
+  out.patch_count.assign(region_count, 0);
+  LabelPatches(mesh, face_labels, &out);
+  std::vector<char> visited(mesh.n_halfedges(), 0);
+  for (HalfedgeHandle start : mesh.halfedges()) {
+    const FaceHandle f = mesh.face_handle(start);
+    if (!f.is_valid() || face_labels[f.idx()] < 0 || visited[start.idx()] ||
+        !IsBoundaryHalfedge(mesh, face_labels, start)) {
+      continue;
+    }
+    Loop loop;
+    loop.id = static_cast<int>(out.loops.size());
+    loop.region = face_labels[f.idx()];
+    loop.patch = out.face_patch[f.idx()];
+    std::vector<int> vertices = {mesh.from_vertex_handle(start).idx()};
+    HalfedgeHandle h = start;
+    do {
+      visited[h.idx()] = 1;
+      vertices.push_back(mesh.to_vertex_handle(h).idx());
+      const CurveUse use = UseOf(mesh, halfedge_curve, h);
+      if (loop.curves.empty() || loop.curves.back().curve != use.curve) loop.curves.push_back(use);
+      h = NextAlongPatch(mesh, face_labels, h);
+    } while (h != start);
+    // The walk may have started inside a curve: join its two pieces.
+    if (loop.curves.size() > 1 && loop.curves.front().curve == loop.curves.back().curve) {
+      loop.curves.pop_back();
+    }
+    out.loops.push_back(std::move(loop));
+    out.loop_vertices.push_back(std::move(vertices));
+  }
+  return out;
+}
+
+}  // namespace meshseg::topology_internal
