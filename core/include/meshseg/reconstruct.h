@@ -30,7 +30,7 @@ struct ReconstructParams {
   double error_tolerance = 1.0;
   // Max octree level. Unset = derived so that the leaf cell edge is about
   // leaf_cell_size × h. Seed 001 §2.1.1 (the paper uses 8 or 9).
-  std::optional<int> octree_max_level;
+  std::optional<int> octree_max_level = std::nullopt;
   // Leaf cell edge, in h, used when octree_max_level is unset.
   double leaf_cell_size = 2.0;
   // Ratio k of terminal to edge weights in the graph cut. Seed 001 eqs.
@@ -47,9 +47,13 @@ struct ReconstructParams {
   int sparse_support_points = 10;
   // Neighbours used for PCA normals and their orientation (Hoppe et al. 1992).
   int normal_neighbors = 10;
-  // A point farther than this from the zero set of f (|f| in h) is flagged as
-  // an outlier in Reconstruction::is_outlier.
-  double outlier_distance = 3.0;
+  // Outliers are flagged in Reconstruction::is_outlier and left out of the
+  // fits (our addition to seed 001, whose linear fits tilt towards them):
+  // points whose mean distance to their 6 nearest neighbours exceeds
+  // outlier_distance, and points farther than off_surface_distance from the
+  // least-squares plane of their normal_neighbors nearest points. In h.
+  double outlier_distance = 2.0;
+  double off_surface_distance = 1.0;
   // Randomness (order of the support covering) comes from here.
   uint64_t seed = 0;
 };
@@ -65,13 +69,15 @@ struct ReconstructStats {
   int64_t tet_count = 0;           // finite tetrahedra
   int64_t relabelled_count = 0;    // tet vertices whose cut label differs from sign(f)
   int64_t smoothed_vertex_count = 0;
+  int64_t outlier_count = 0;       // isolated points left out of the fits
   bool normals_estimated = false;  // the cloud had no normals
   bool normals_flipped = false;    // given normals pointed outward (or were re-oriented)
 };
 
 struct Reconstruction {
   Mesh mesh;  // closed, manifold; faces oriented with outward normals
-  // One per input point: 1 if |f(p)| > outlier_distance × h, else 0.
+  // One per input point: 1 if it is an outlier (see
+  // ReconstructParams::outlier_distance), else 0.
   std::vector<uint8_t> is_outlier;
   ReconstructStats stats;
 };

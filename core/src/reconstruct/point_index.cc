@@ -1,6 +1,5 @@
 #include "reconstruct/point_index.h"
 
-#include <algorithm>
 #include <cmath>
 
 #include <nanoflann.hpp>
@@ -53,7 +52,8 @@ void PointIndex::WithinRadius(const Eigen::Vector3d& q, double radius,
   tree_->kd.radiusSearch(q.data(), radius * radius, *found, nanoflann::SearchParams(32, 0, true));
 }
 
-double PointSpacing(const std::vector<Eigen::Vector3d>& points, const PointIndex& index) {
+std::vector<double> MeanNeighborDistances(const std::vector<Eigen::Vector3d>& points,
+                                          const PointIndex& index) {
   constexpr int kNeighbors = 6;
   std::vector<double> mean(points.size(), 0.0);
   tbb::parallel_for(tbb::blocked_range<size_t>(0, points.size()), [&](const auto& range) {
@@ -66,9 +66,7 @@ double PointSpacing(const std::vector<Eigen::Vector3d>& points, const PointIndex
       mean[i] = d2.size() > 1 ? sum / static_cast<double>(d2.size() - 1) : 0.0;
     }
   });
-  auto middle = mean.begin() + mean.size() / 2;
-  std::nth_element(mean.begin(), middle, mean.end());
-  return *middle;
+  return mean;
 }
 
 }  // namespace meshseg::reconstruct_internal

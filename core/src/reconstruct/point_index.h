@@ -39,10 +39,11 @@ class PointIndex {
   std::unique_ptr<Tree> tree_;
 };
 
-// Returns the point spacing h: the median over points of the mean distance
-// to their 6 nearest other points (≈ sqrt(area / count) on a uniformly
-// sampled surface; robust to outliers).
-double PointSpacing(const std::vector<Eigen::Vector3d>& points, const PointIndex& index);
+// Returns, per point, the mean distance to its 6 nearest other points
+// (≈ sqrt(area / count) on a uniformly sampled surface, large for isolated
+// outliers).
+std::vector<double> MeanNeighborDistances(const std::vector<Eigen::Vector3d>& points,
+                                          const PointIndex& index);
 
 }  // namespace meshseg::reconstruct_internal
 

@@ -14,6 +14,7 @@
 #include "reconstruct/marching_tetrahedra.h"
 #include "reconstruct/normals.h"
 #include "reconstruct/octree.h"
+#include "reconstruct/outliers.h"
 #include "reconstruct/point_index.h"
 #include "reconstruct/pu_function.h"
 #include "reconstruct/regular_triangulation.h"
@@ -53,6 +54,9 @@ absl::Status ValidateParams(const ReconstructParams& p) {
   }
   if (p.normal_neighbors < 3) return bad(absl::StrCat("normal_neighbors ", p.normal_neighbors, " must be >= 3"));
   if (!(p.outlier_distance > 0)) return bad(absl::StrCat("outlier_distance ", p.outlier_distance, " must be > 0"));
+  if (!(p.off_surface_distance > 0)) {
+    return bad(absl::StrCat("off_surface_distance ", p.off_surface_distance, " must be > 0"));
+  }
   return absl::OkStatus();
 }
 
@@ -79,6 +83,12 @@ absl::Status ValidateCloud(const PointCloud& cloud) {
   return absl::OkStatus();
 }
 
+double Median(std::vector<double> values) {
+  auto middle = values.begin() + values.size() / 2;
+  std::nth_element(values.begin(), middle, values.end());
+  return *middle;
+}
+
 // Evaluates f at every point of `at`, in parallel.
 std::vector<double> Evaluate(const PuFunction& f, const std::vector<Eigen::Vector3d>& at) {
   std::vector<double> values(at.size());
@@ -94,28 +104,43 @@ absl::StatusOr<Reconstruction> Reconstruct(const PointCloud& cloud, const Recons
                                            const RunContext& ctx) {
   MESHSEG_RETURN_IF_ERROR(ValidateParams(params));
   MESHSEG_RETURN_IF_ERROR(ValidateCloud(cloud));
-  const std::vector<Eigen::Vector3d>& points = cloud.points;
+  Reconstruction out;
+  ReconstructStats& stats = out.stats;
+  {
+    const PointIndex all_index(cloud.points);
+    const std::vector<double> spread = MeanNeighborDistances(cloud.points, all_index);
+    stats.point_spacing = Median(spread);
+    out.is_outlier = OutlierFlags(cloud.points, cloud.normals, all_index, spread, params.normal_neighbors,
+                                  params.outlier_distance * stats.point_spacing,
+                                  params.off_surface_distance * stats.point_spacing);
+  }
+  const double h = stats.point_spacing;
+  // Outliers take no part in the fits.
+  std::vector<Eigen::Vector3d> points;
+  std::vector<Eigen::Vector3d> given_normals;
+  for (size_t i = 0; i < cloud.points.size(); ++i) {
+    stats.outlier_count += out.is_outlier[i];
+    if (out.is_outlier[i]) continue;
+    points.push_back(cloud.points[i]);
+    if (cloud.has_normals()) given_normals.push_back(cloud.normals[i]);
+  }
   Eigen::Vector3d lo = points[0], hi = points[0];
   for (const auto& p : points) {
     lo = lo.cwiseMin(p);
     hi = hi.cwiseMax(p);
   }
   const double extent = (hi - lo).maxCoeff();
-  const PointIndex index(points);
-  Reconstruction out;
-  ReconstructStats& stats = out.stats;
-  stats.point_spacing = PointSpacing(points, index);
-  if (!(extent > 0) || !(stats.point_spacing > 1e-9 * extent)) {
+  if (!(h > 1e-9 * extent) || !(extent > 0)) {
     return absl::InvalidArgumentError(absl::StrCat(
-        kStage, ": \"", cloud.name, "\": points span ", extent, " with spacing ",
-        stats.point_spacing, "; they (nearly) coincide"));
+        kStage, ": \"", cloud.name, "\": points span ", extent, " with spacing ", h,
+        "; they (nearly) coincide"));
   }
-  const double h = stats.point_spacing;
+  const PointIndex index(points);
   ctx.Progress(kStage, 0.05);
 
   // Step 1: inward normals.
   MESHSEG_ASSIGN_OR_RETURN(const OrientedNormals normals,
-                           InwardNormals(points, cloud.normals, index, params.normal_neighbors, ctx));
+                           InwardNormals(points, given_normals, index, params.normal_neighbors, ctx));
   stats.normals_estimated = !cloud.has_normals();
   stats.normals_flipped = cloud.has_normals() && normals.flipped;
   ctx.Progress(kStage, 0.15);
@@ -176,12 +201,6 @@ absl::StatusOr<Reconstruction> Reconstruct(const PointCloud& cloud, const Recons
   ctx.Progress(kStage, 0.9);
   MESHSEG_ASSIGN_OR_RETURN(out.mesh, SurfaceMesh(surface.vertices, surface.triangles, cloud.name));
 
-  const std::vector<double> f_points = Evaluate(f, points);
-  out.is_outlier.resize(points.size());
-  for (size_t i = 0; i < points.size(); ++i) {
-    out.is_outlier[i] = std::abs(f_points[i]) > params.outlier_distance * h;
-  }
-  MESHSEG_RETURN_IF_ERROR(ctx.CheckStop(kStage));
   ctx.Progress(kStage, 1.0);
   return out;
 }

@@ -1,0 +1,242 @@
+#include "meshseg/reconstruct.h"
+
+#include <cmath>
+#include <limits>
+#include <stop_token>
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include "clouds.h"
+
+namespace meshseg {
+namespace {
+
+using ::testing::HasSubstr;
+using test::CloudSpec;
+using test::Shape;
+
+constexpr int kPoints = 4000;
+constexpr double kDistanceTol = 0.5;      // × spacing, vertex to true surface
+constexpr double kMinNearFraction = 0.95;  // of the mesh vertices
+
+// The issue's hard case: 5 % outliers in the bounding box, noise 0.2 ×
+// spacing and a missing patch of radius about 5 spacings.
+CloudSpec HardSpec(const Eigen::Vector3d& hole_center, bool normals) {
+  return CloudSpec{.points = kPoints,
+                   .noise = 0.2,
+                   .outliers = 0.05,
+                   .hole_radius = 0.3,
+                   .hole_center = hole_center,
+                   .normals = normals};
+}
+
+void ExpectClosedManifoldSingleAccurate(const Reconstruction& r, const Shape& shape, double h) {
+  const TriMesh& m = r.mesh.tri;
+  ASSERT_GT(m.n_faces(), 0u);
+  EXPECT_EQ(test::BoundaryEdgeCount(m), 0);
+  EXPECT_EQ(test::NonManifoldVertexCount(m), 0);
+  EXPECT_EQ(test::ComponentCount(m), 1);
+  EXPECT_GE(test::FractionWithin(m, shape, kDistanceTol * h), kMinNearFraction)
+      << "supports " << r.stats.support_count << ", relabelled " << r.stats.relabelled_count;
+  EXPECT_EQ(r.mesh.face_of_input.size(), m.n_faces());
+}
+
+TEST(Reconstruct, SphereWithOutliersNoiseAndHoleIsClosedAndAccurate) {
+  const Shape sphere = test::Sphere(1.0);
+  const PointCloud cloud = test::MakeCloud(sphere, HardSpec({0, 0, 1}, true));
+  const auto r = Reconstruct(cloud);
+  ASSERT_TRUE(r.ok()) << r.status();
+  ExpectClosedManifoldSingleAccurate(*r, sphere, test::Spacing(sphere, kPoints));
+  EXPECT_EQ(r->is_outlier.size(), cloud.points.size());
+  EXPECT_FALSE(r->stats.normals_estimated);
+  EXPECT_TRUE(r->stats.normals_flipped);  // the cloud's normals point outward
+}
+
+TEST(Reconstruct, BoxWithOutliersNoiseAndHoleIsClosedAndAccurate) {
+  const Shape box = test::Box({1.0, 0.7, 0.5});
+  const PointCloud cloud = test::MakeCloud(box, HardSpec({0.3, 0.2, 0.5}, true));
+  const auto r = Reconstruct(cloud);
+  ASSERT_TRUE(r.ok()) << r.status();
+  ExpectClosedManifoldSingleAccurate(*r, box, test::Spacing(box, kPoints));
+}
+
+TEST(Reconstruct, TorusWithoutNormalsIsClosedAndAccurate) {
+  const Shape torus = test::Torus(1.0, 0.4);
+  const PointCloud cloud = test::MakeCloud(torus, HardSpec({1.4, 0, 0}, false));
+  const auto r = Reconstruct(cloud);
+  ASSERT_TRUE(r.ok()) << r.status();
+  EXPECT_TRUE(r->stats.normals_estimated);
+  ExpectClosedManifoldSingleAccurate(*r, torus, test::Spacing(torus, kPoints));
+  // Genus 1: V − E + F = 0.
+  const TriMesh& m = r->mesh.tri;
+  EXPECT_EQ(static_cast<int64_t>(m.n_vertices()) - static_cast<int64_t>(m.n_edges()) +
+                static_cast<int64_t>(m.n_faces()),
+            0);
+}
+
+TEST(Reconstruct, PointsWithoutNormalsDoAsWellAsWithNormals) {
+  constexpr double kMaxLoss = 0.03;  // fraction of vertices within tolerance
+  const Shape sphere = test::Sphere(1.0);
+  const double h = test::Spacing(sphere, kPoints);
+  const auto with = Reconstruct(test::MakeCloud(sphere, HardSpec({0, 0, 1}, true)));
+  const auto without = Reconstruct(test::MakeCloud(sphere, HardSpec({0, 0, 1}, false)));
+  ASSERT_TRUE(with.ok()) << with.status();
+  ASSERT_TRUE(without.ok()) << without.status();
+  ExpectClosedManifoldSingleAccurate(*without, sphere, h);
+  EXPECT_GE(test::FractionWithin(without->mesh.tri, sphere, kDistanceTol * h),
+            test::FractionWithin(with->mesh.tri, sphere, kDistanceTol * h) - kMaxLoss);
+}
+
+TEST(Reconstruct, OutwardAndInwardNormalsGiveTheSameMesh) {
+  const Shape box = test::Box({1.0, 0.7, 0.5});
+  PointCloud cloud = test::MakeCloud(box, CloudSpec{.points = 2000});
+  const auto outward = Reconstruct(cloud);
+  for (auto& n : cloud.normals) n = -n;
+  const auto inward = Reconstruct(cloud);
+  ASSERT_TRUE(outward.ok()) << outward.status();
+  ASSERT_TRUE(inward.ok()) << inward.status();
+  EXPECT_TRUE(outward->stats.normals_flipped);
+  EXPECT_FALSE(inward->stats.normals_flipped);
+  EXPECT_EQ(outward->mesh.tri.n_faces(), inward->mesh.tri.n_faces());
+}
+
+TEST(Reconstruct, FacesPointOutward) {
+  const Shape sphere = test::Sphere(1.0);
+  const auto r = Reconstruct(test::MakeCloud(sphere, CloudSpec{.points = 2000}));
+  ASSERT_TRUE(r.ok()) << r.status();
+  const TriMesh& m = r->mesh.tri;
+  int64_t outward = 0;
+  for (const auto f : m.faces()) {
+    outward += ToEigen(m.normal(f)).dot(ToEigen(m.calc_face_centroid(f))) > 0;
+  }
+  EXPECT_GE(outward, static_cast<int64_t>(0.99 * m.n_faces()));
+}
+
+TEST(Reconstruct, FlagsOutliersFarFromTheSurface) {
+  const Shape sphere = test::Sphere(1.0);
+  const double h = test::Spacing(sphere, kPoints);
+  const PointCloud cloud = test::MakeCloud(sphere, HardSpec({0, 0, 1}, true));
+  const auto r = Reconstruct(cloud);
+  ASSERT_TRUE(r.ok()) << r.status();
+  int far = 0, far_flagged = 0, near = 0, near_flagged = 0;
+  for (size_t i = 0; i < cloud.points.size(); ++i) {
+    const double d = std::abs(sphere.sdf(cloud.points[i]));
+    if (d > 3 * h) {
+      ++far;
+      far_flagged += r->is_outlier[i];
+    } else if (d < h) {
+      ++near;
+      near_flagged += r->is_outlier[i];
+    }
+  }
+  EXPECT_GE(far_flagged, 0.95 * far);
+  EXPECT_LE(near_flagged, 0.02 * near);
+}
+
+// Ghost sheets (small flat clumps of stray points with consistent normals)
+// survive the outlier flags; the sign of f alone turns each into a bubble.
+TEST(Reconstruct, GraphCutRemovesBubblesThatTheSignOfFKeeps) {
+  const Shape torus = test::Torus(1.0, 0.4);
+  const double h = test::Spacing(torus, kPoints);
+  CloudSpec spec = HardSpec({1.4, 0, 0}, true);
+  spec.clumps = 20;
+  const PointCloud cloud = test::MakeCloud(torus, spec);
+  const auto cut = Reconstruct(cloud);
+  const auto sign = Reconstruct(cloud, ReconstructParams{.use_graph_cut = false});
+  ASSERT_TRUE(cut.ok()) << cut.status();
+  ASSERT_TRUE(sign.ok()) << sign.status();
+  EXPECT_GT(cut->stats.relabelled_count, 0);
+  EXPECT_EQ(sign->stats.relabelled_count, 0);
+  EXPECT_LT(test::ComponentCount(cut->mesh.tri), test::ComponentCount(sign->mesh.tri));
+  EXPECT_GT(test::FractionWithin(cut->mesh.tri, torus, kDistanceTol * h),
+            test::FractionWithin(sign->mesh.tri, torus, kDistanceTol * h) + 0.05);
+  EXPECT_EQ(test::BoundaryEdgeCount(sign->mesh.tri), 0);
+}
+
+TEST(Reconstruct, SameInputGivesSameMesh) {
+  const PointCloud cloud = test::MakeCloud(test::Sphere(1.0), HardSpec({0, 0, 1}, false));
+  const auto a = Reconstruct(cloud);
+  const auto b = Reconstruct(cloud);
+  ASSERT_TRUE(a.ok() && b.ok());
+  ASSERT_EQ(a->mesh.tri.n_vertices(), b->mesh.tri.n_vertices());
+  for (const auto v : a->mesh.tri.vertices()) {
+    ASSERT_EQ(a->mesh.tri.point(v), b->mesh.tri.point(OpenMesh::VertexHandle(v.idx())));
+  }
+}
+
+TEST(Reconstruct, EmptyCloudIsInvalid) {
+  PointCloud cloud;
+  cloud.name = "empty.xyz";
+  const auto r = Reconstruct(cloud);
+  EXPECT_EQ(r.status().code(), absl::StatusCode::kInvalidArgument);
+  EXPECT_THAT(r.status().message(), HasSubstr("empty.xyz"));
+}
+
+TEST(Reconstruct, TooFewPointsIsInvalid) {
+  PointCloud cloud = test::MakeCloud(test::Sphere(1.0), CloudSpec{.points = 10});
+  cloud.name = "ten_points.xyz";
+  const auto r = Reconstruct(cloud);
+  EXPECT_EQ(r.status().code(), absl::StatusCode::kInvalidArgument);
+  EXPECT_THAT(r.status().message(), HasSubstr("10 points, need at least 20"));
+}
+
+TEST(Reconstruct, NanCoordinateIsInvalid) {
+  PointCloud cloud = test::MakeCloud(test::Sphere(1.0), CloudSpec{.points = 500});
+  cloud.name = "nan_point.xyz";
+  cloud.points[17].y() = std::numeric_limits<double>::quiet_NaN();
+  const auto r = Reconstruct(cloud);
+  EXPECT_EQ(r.status().code(), absl::StatusCode::kInvalidArgument);
+  EXPECT_THAT(r.status().message(), HasSubstr("nan_point.xyz\": point 17"));
+}
+
+TEST(Reconstruct, NormalCountMismatchIsInvalid) {
+  PointCloud cloud = test::MakeCloud(test::Sphere(1.0), CloudSpec{.points = 500});
+  cloud.normals.pop_back();
+  const auto r = Reconstruct(cloud);
+  EXPECT_EQ(r.status().code(), absl::StatusCode::kInvalidArgument);
+  EXPECT_THAT(r.status().message(), HasSubstr("499 normals for 500 points"));
+}
+
+TEST(Reconstruct, CoincidentPointsAreInvalid) {
+  PointCloud cloud;
+  cloud.points.assign(100, Eigen::Vector3d(1, 2, 3));
+  const auto r = Reconstruct(cloud);
+  EXPECT_EQ(r.status().code(), absl::StatusCode::kInvalidArgument);
+  EXPECT_THAT(r.status().message(), HasSubstr("coincide"));
+}
+
+TEST(Reconstruct, BadParamsAreInvalid) {
+  const PointCloud cloud = test::MakeCloud(test::Sphere(1.0), CloudSpec{.points = 500});
+  EXPECT_THAT(Reconstruct(cloud, {.error_tolerance = 0}).status().message(),
+              HasSubstr("error_tolerance 0 must be > 0"));
+  EXPECT_THAT(Reconstruct(cloud, {.octree_max_level = 40}).status().message(),
+              HasSubstr("octree_max_level 40 outside [1, 16]"));
+  EXPECT_EQ(Reconstruct(cloud, {.graph_cut_k = -1}).status().code(),
+            absl::StatusCode::kInvalidArgument);
+}
+
+TEST(Reconstruct, StopRequestIsCancelled) {
+  const PointCloud cloud = test::MakeCloud(test::Sphere(1.0), CloudSpec{.points = 2000});
+  std::stop_source stop;
+  stop.request_stop();
+  RunContext ctx;
+  ctx.stop = stop.get_token();
+  const auto r = Reconstruct(cloud, {}, ctx);
+  EXPECT_EQ(r.status().code(), absl::StatusCode::kCancelled);
+}
+
+TEST(Reconstruct, StopDuringTheRunIsCancelled) {
+  const PointCloud cloud = test::MakeCloud(test::Sphere(1.0), CloudSpec{.points = 2000});
+  std::stop_source stop;
+  RunContext ctx;
+  ctx.stop = stop.get_token();
+  ctx.on_progress = [&](std::string_view, double fraction) {
+    if (fraction >= 0.4) stop.request_stop();
+  };
+  const auto r = Reconstruct(cloud, {}, ctx);
+  EXPECT_EQ(r.status().code(), absl::StatusCode::kCancelled);
+}
+
+}  // namespace
+}  // namespace meshseg
