@@ -84,7 +84,9 @@ bool BuildManifold(const std::vector<std::array<int, 3>>& triangles, TriMesh* me
   for (size_t f = 0; f < triangles.size(); ++f) {
     const TriMesh::FaceHandle fh(static_cast<int>(f));
     const HalfedgeHandle* h = &handle[3 * f];
-    m.set_halfedge_handle(fh, h[0]);
+    // As add_face(): the face's halfedge ends at corner 0, so fv_range()
+    // lists the corners in input order.
+    m.set_halfedge_handle(fh, h[2]);
     for (int k = 0; k < 3; ++k) {
       m.set_face_handle(h[k], fh);
       m.set_next_halfedge_handle(h[k], h[(k + 1) % 3]);
