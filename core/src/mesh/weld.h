@@ -5,6 +5,7 @@
 #define MESHSEG_MESH_WELD_H_
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
