@@ -48,6 +48,9 @@ struct GeneratedPart {
   // One per mesh face: 1 if the face lies within one voxel of a boundary
   // between primitives (accuracy metrics may exclude these).
   std::vector<uint8_t> face_near_boundary;
+  // One per mesh vertex: the primitive the noise-free vertex lies on (its
+  // distance to that surface is below 1e-9 h before noise).
+  std::vector<int> vertex_primitive;
 };
 
 // Names of the parts GeneratePart knows, smallest first.
@@ -60,8 +63,13 @@ absl::StatusOr<GeneratedPart> GeneratePart(std::string_view name,
                                            const GenerateParams& params = {},
                                            const RunContext& ctx = {});
 
-// Returns the ground truth of `part` as a JSON document: voxel size, noise,
-// primitives with type and parameters, and the per-face primitive ids.
+// Returns the ground truth of `part` as a JSON document:
+//   {"name", "voxel_size", "noise" (model units), "face_count",
+//    "primitives": [{"id", "name", "type", <parameters as in the result JSON:
+//                    "plane": {"point", "normal"}, "cylinder": {"axis_origin",
+//                    "axis_direction", "radius"}, ...>}],
+//    "face_primitive": [int per face], "face_near_boundary": [0/1 per face]}
+// with Vec3 = {"x", "y", "z"}.
 std::string GroundTruthJson(const GeneratedPart& part);
 
 }  // namespace meshseg
