@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "meshseg/mesh.h"
+#include "temp_file.h"
 
 namespace meshseg {
 namespace {
@@ -75,6 +76,50 @@ TEST(ReadMesh, BunnyCountsScanArtefacts) {
   // The 25 unreferenced vertices, plus any whose faces were all dropped.
   EXPECT_GE(stats.isolated_vertex_count, 25);
   EXPECT_GT(stats.boundary_edge_count, 123);
+}
+
+TEST(ReadMesh, ReportsMissingFileAsNotFound) {
+  const absl::StatusOr<Mesh> mesh = ReadMesh("/nonexistent/dir/missing_part.stl");
+  ASSERT_EQ(mesh.status().code(), absl::StatusCode::kNotFound) << mesh.status();
+  EXPECT_THAT(testing_files::Message(mesh.status()),
+              testing::HasSubstr("read_mesh: \"missing_part.stl\": cannot open"));
+}
+
+TEST(ReadMesh, RejectsUnknownFormat) {
+  const absl::StatusOr<Mesh> mesh = ReadMesh(testing_files::WriteTemp("unknown.dat", "hello"));
+  ASSERT_EQ(mesh.status().code(), absl::StatusCode::kInvalidArgument) << mesh.status();
+  EXPECT_THAT(testing_files::Message(mesh.status()),
+              testing::HasSubstr("\"unknown.dat\": unknown format"));
+}
+
+TEST(ReadMesh, RejectsEmptyFile) {
+  const absl::StatusOr<Mesh> mesh = ReadMesh(testing_files::WriteTemp("empty.obj", ""));
+  ASSERT_EQ(mesh.status().code(), absl::StatusCode::kInvalidArgument) << mesh.status();
+  EXPECT_THAT(testing_files::Message(mesh.status()), testing::HasSubstr("\"empty.obj\": empty file"));
+}
+
+TEST(ReadMesh, RefersPointCloudsToReadPointCloud) {
+  const absl::StatusOr<Mesh> mesh = ReadMesh(testing_files::WriteTemp("scan.xyz", "0 0 0\n"));
+  ASSERT_EQ(mesh.status().code(), absl::StatusCode::kInvalidArgument) << mesh.status();
+  EXPECT_THAT(testing_files::Message(mesh.status()), testing::HasSubstr("point cloud"));
+}
+
+TEST(ReadMesh, FormatOptionOverridesExtension) {
+  ReadMeshOptions options;
+  options.format = FileFormat::kOff;
+  const absl::StatusOr<Mesh> mesh =
+      ReadMesh(testing_files::WriteTemp("cube.upload", testing_files::CubeOff()), options);
+  ASSERT_TRUE(mesh.ok()) << mesh.status();
+  EXPECT_EQ(mesh->tri.n_faces(), 12u);
+  EXPECT_EQ(mesh->name, "cube.upload");
+}
+
+TEST(ReadMesh, RejectsNonPositiveMaxElements) {
+  ReadMeshOptions options;
+  options.max_elements = 0;
+  const absl::StatusOr<Mesh> mesh =
+      ReadMesh(testing_files::WriteTemp("cube.off", testing_files::CubeOff()), options);
+  EXPECT_EQ(mesh.status().code(), absl::StatusCode::kInvalidArgument) << mesh.status();
 }
 
 }  // namespace

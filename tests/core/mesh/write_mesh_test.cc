@@ -1,0 +1,113 @@
+// Writers: round trips through ReadMesh, and the coloured PLY.
+#include <set>
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include "meshseg/mesh.h"
+#include "temp_file.h"
+
+namespace meshseg {
+namespace {
+
+using ::testing::HasSubstr;
+using testing_files::Message;
+
+// A unit cube with coordinates that need all 17 digits.
+absl::StatusOr<Mesh> OddCube() {
+  absl::StatusOr<Mesh> mesh =
+      ReadMesh(testing_files::WriteTemp("cube.off", testing_files::CubeOff()));
+  if (mesh.ok()) {
+    for (const auto v : mesh->tri.vertices()) mesh->tri.point(v) *= 1.0 / 3.0;
+  }
+  return mesh;
+}
+
+void ExpectSameMesh(const TriMesh& a, const TriMesh& b) {
+  ASSERT_EQ(a.n_vertices(), b.n_vertices());
+  ASSERT_EQ(a.n_faces(), b.n_faces());
+  for (const auto v : a.vertices()) EXPECT_EQ(a.point(v), b.point(v)) << "vertex " << v.idx();
+  for (const auto f : a.faces()) {
+    std::vector<int> ca, cb;
+    for (const auto v : a.fv_range(f)) ca.push_back(v.idx());
+    for (const auto v : b.fv_range(f)) cb.push_back(v.idx());
+    EXPECT_EQ(ca, cb) << "face " << f.idx();
+  }
+}
+
+TEST(WriteMesh, RoundTripsExactlyThroughBinaryPly) {
+  const absl::StatusOr<Mesh> mesh = OddCube();
+  ASSERT_TRUE(mesh.ok()) << mesh.status();
+  const std::string path = testing_files::WriteTemp("out.ply", "");
+  ASSERT_TRUE(WriteMesh(mesh->tri, path).ok());
+  const absl::StatusOr<Mesh> back = ReadMesh(path);
+  ASSERT_TRUE(back.ok()) << back.status();
+  ExpectSameMesh(mesh->tri, back->tri);
+}
+
+TEST(WriteMesh, RoundTripsExactlyThroughOff) {
+  const absl::StatusOr<Mesh> mesh = OddCube();
+  ASSERT_TRUE(mesh.ok()) << mesh.status();
+  const std::string path = testing_files::WriteTemp("out.off", "");
+  ASSERT_TRUE(WriteMesh(mesh->tri, path).ok());
+  const absl::StatusOr<Mesh> back = ReadMesh(path);
+  ASSERT_TRUE(back.ok()) << back.status();
+  ExpectSameMesh(mesh->tri, back->tri);
+}
+
+TEST(WriteMesh, RejectsOtherExtensions) {
+  const absl::Status status = WriteMesh(TriMesh(), testing_files::WriteTemp("out.stl", ""));
+  EXPECT_EQ(status.code(), absl::StatusCode::kInvalidArgument);
+  EXPECT_THAT(Message(status), HasSubstr("\"out.stl\": unsupported extension \"stl\""));
+}
+
+TEST(WriteMesh, ReportsUnwritablePathAsInternal) {
+  const absl::Status status = WriteMesh(TriMesh(), "/nonexistent/dir/out.ply");
+  EXPECT_EQ(status.code(), absl::StatusCode::kInternal);
+  EXPECT_THAT(Message(status), HasSubstr("\"out.ply\""));
+}
+
+TEST(WriteColoredPly, GivesEachLabelItsOwnColourAndGreyToMinusOne) {
+  const absl::StatusOr<Mesh> mesh = OddCube();
+  ASSERT_TRUE(mesh.ok()) << mesh.status();
+  const std::vector<int> labels = {0, 0, 1, 1, 2, 2, 3, 3, 4, 5, -1, -1};
+  const std::string path = testing_files::WriteTemp("labels.ply", "");
+  ASSERT_TRUE(WriteColoredPly(mesh->tri, labels, path).ok());
+  // Read the colours back: 12 faces of 1 + 12 + 3 bytes at the end of the file.
+  std::string bytes;
+  {
+    FILE* f = std::fopen(path.c_str(), "rb");
+    ASSERT_NE(f, nullptr);
+    char buffer[4096];
+    for (size_t n; (n = std::fread(buffer, 1, sizeof(buffer), f)) > 0;) bytes.append(buffer, n);
+    std::fclose(f);
+  }
+  EXPECT_THAT(bytes, HasSubstr("property uchar red\nproperty uchar green\nproperty uchar blue\n"));
+  const size_t faces = bytes.size() - 12 * 16;
+  std::vector<std::array<uint8_t, 3>> colors;
+  for (int f = 0; f < 12; ++f) {
+    const char* c = bytes.data() + faces + f * 16 + 13;
+    colors.push_back({static_cast<uint8_t>(c[0]), static_cast<uint8_t>(c[1]),
+                      static_cast<uint8_t>(c[2])});
+  }
+  EXPECT_EQ(colors[0], colors[1]);
+  EXPECT_EQ(colors[10], (std::array<uint8_t, 3>{128, 128, 128}));
+  std::set<std::array<uint8_t, 3>> distinct(colors.begin(), colors.end());
+  EXPECT_EQ(distinct.size(), 7u);  // labels 0..5 and grey
+  // The file is still a mesh we read.
+  const absl::StatusOr<Mesh> back = ReadMesh(path);
+  ASSERT_TRUE(back.ok()) << back.status();
+  ExpectSameMesh(mesh->tri, back->tri);
+}
+
+TEST(WriteColoredPly, RejectsWrongLabelCount) {
+  const absl::StatusOr<Mesh> mesh = OddCube();
+  ASSERT_TRUE(mesh.ok()) << mesh.status();
+  const absl::Status status =
+      WriteColoredPly(mesh->tri, {1, 2}, testing_files::WriteTemp("labels.ply", ""));
+  EXPECT_EQ(status.code(), absl::StatusCode::kInvalidArgument);
+  EXPECT_THAT(Message(status), HasSubstr("2 face labels for 12 faces"));
+}
+
+}  // namespace
+}  // namespace meshseg
