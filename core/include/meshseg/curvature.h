@@ -12,6 +12,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include <Eigen/Core>
@@ -21,6 +22,37 @@
 #include "meshseg/run_context.h"
 
 namespace meshseg {
+
+// Vertex adjacency of a mesh in compressed rows: the neighbours of vertex v
+// are neighbors[offsets[v] .. offsets[v + 1]), in OpenMesh circulator order.
+struct VertexGraph {
+  std::vector<int> offsets;    // vertex count + 1 entries
+  std::vector<int> neighbors;  // two per edge
+  std::vector<Eigen::Vector3d> positions;
+
+  int vertex_count() const { return static_cast<int>(offsets.size()) - 1; }
+  std::span<const int> Neighbors(int v) const {
+    return {neighbors.data() + offsets[v], neighbors.data() + offsets[v + 1]};
+  }
+};
+
+// Returns the vertex graph (adjacency and positions) of `mesh`.
+VertexGraph BuildVertexGraph(const TriMesh& mesh);
+
+// Reusable visit marks for CollectNeighborhood; one per thread.
+struct NeighborhoodScratch {
+  std::vector<uint32_t> mark;
+  uint32_t stamp = 0;
+};
+
+// Fills `out` with N(i, radius) in breadth-first order, v_i first: the
+// vertices reached from v_i over edges through vertices with
+// |v_j - v_i| < radius. Vertices with excluded[j] != 0 are neither taken nor
+// passed through (empty span = none excluded), which gives seed 000's
+// N'(i, W2). Stops after `max_count` vertices (0 = no limit).
+void CollectNeighborhood(const VertexGraph& graph, int i, double radius,
+                         std::span<const uint8_t> excluded, NeighborhoodScratch* scratch,
+                         std::vector<int>* out, std::size_t max_count = 0);
 
 struct CurvatureParams {
   // Pass-1 neighbourhood radius W1, in l_i,avg. Seed 000 §2.

@@ -1,0 +1,62 @@
+#include "curvature/filter_curvature.h"
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+#include <vector>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+namespace meshseg::curvature_internal {
+namespace {
+
+constexpr int kMeanPasses = 3;  // seed 002 A4
+
+// One filter pass over `values`: each non-sharp vertex gets the median
+// (use_median) or the mean of itself and its non-sharp 1-ring.
+std::vector<double> FilterPass(const VertexGraph& graph, const std::vector<uint8_t>& sharp,
+                               const std::vector<double>& values, bool use_median) {
+  std::vector<double> out = values;
+  const int n = graph.vertex_count();
+  tbb::parallel_for(tbb::blocked_range<int>(0, n, 4096), [&](const tbb::blocked_range<int>& r) {
+    std::vector<double> ring;
+    for (int v = r.begin(); v < r.end(); ++v) {
+      if (sharp[v]) continue;
+      ring.clear();
+      ring.push_back(values[v]);
+      for (const int j : graph.Neighbors(v)) {
+        if (!sharp[j]) ring.push_back(values[j]);
+      }
+      if (use_median) {
+        const auto mid = ring.begin() + ring.size() / 2;
+        std::nth_element(ring.begin(), mid, ring.end());
+        out[v] = *mid;
+      } else {
+        double sum = 0.0;
+        for (const double x : ring) sum += x;
+        out[v] = sum / ring.size();
+      }
+    }
+  });
+  return out;
+}
+
+}  // namespace
+
+void FilterCurvature(const VertexGraph& graph, CurvatureField* field) {
+  for (std::vector<double>* values : {&field->kappa_max, &field->kappa_min}) {
+    *values = FilterPass(graph, field->sharp, *values, /*use_median=*/true);
+    for (int k = 0; k < kMeanPasses; ++k) {
+      *values = FilterPass(graph, field->sharp, *values, /*use_median=*/false);
+    }
+  }
+  for (std::size_t v = 0; v < field->kappa_max.size(); ++v) {
+    if (std::abs(field->kappa_min[v]) > std::abs(field->kappa_max[v])) {
+      std::swap(field->kappa_min[v], field->kappa_max[v]);
+      std::swap(field->dir_min[v], field->dir_max[v]);
+    }
+  }
+}
+
+}  // namespace meshseg::curvature_internal

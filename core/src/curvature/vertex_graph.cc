@@ -1,0 +1,63 @@
+// Vertex adjacency in compressed rows and the metric neighbourhoods N(i, W)
+// of seed 000 §2 (breadth-first over edges, cut by Euclidean radius).
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "meshseg/curvature.h"
+
+namespace meshseg {
+
+VertexGraph BuildVertexGraph(const TriMesh& mesh) {
+  VertexGraph g;
+  const int n = static_cast<int>(mesh.n_vertices());
+  g.offsets.assign(n + 1, 0);
+  g.positions.resize(n);
+  for (int v = 0; v < n; ++v) {
+    const TriMesh::VertexHandle vh(v);
+    g.positions[v] = ToEigen(mesh.point(vh));
+    int valence = 0;
+    for (auto it = mesh.cvv_iter(vh); it.is_valid(); ++it) ++valence;
+    g.offsets[v + 1] = g.offsets[v] + valence;
+  }
+  g.neighbors.resize(g.offsets[n]);
+  for (int v = 0; v < n; ++v) {
+    int k = g.offsets[v];
+    for (auto it = mesh.cvv_iter(TriMesh::VertexHandle(v)); it.is_valid(); ++it) {
+      g.neighbors[k++] = it->idx();
+    }
+  }
+  return g;
+}
+
+void CollectNeighborhood(const VertexGraph& graph, int i, double radius,
+                         std::span<const uint8_t> excluded, NeighborhoodScratch* scratch,
+                         std::vector<int>* out, std::size_t max_count) {
+  out->clear();
+  if (scratch->mark.size() != graph.positions.size()) {
+    scratch->mark.assign(graph.positions.size(), 0);
+    scratch->stamp = 0;
+  }
+  if (++scratch->stamp == 0) {  // wrapped: clear the marks once
+    std::fill(scratch->mark.begin(), scratch->mark.end(), 0);
+    scratch->stamp = 1;
+  }
+  const uint32_t stamp = scratch->stamp;
+  const double r2 = radius * radius;
+  const Eigen::Vector3d& center = graph.positions[i];
+  scratch->mark[i] = stamp;
+  out->push_back(i);
+  for (std::size_t head = 0; head < out->size(); ++head) {
+    if (max_count != 0 && out->size() >= max_count) break;
+    for (const int j : graph.Neighbors((*out)[head])) {
+      if (scratch->mark[j] == stamp) continue;
+      scratch->mark[j] = stamp;
+      if (!excluded.empty() && excluded[j] != 0) continue;
+      if ((graph.positions[j] - center).squaredNorm() >= r2) continue;
+      out->push_back(j);
+      if (max_count != 0 && out->size() >= max_count) break;
+    }
+  }
+}
+
+}  // namespace meshseg
