@@ -32,15 +32,19 @@ struct TopologyParams {
   // normals along it exceeds this, degrees (tangent fillets give ~0).
   double sharp_angle_deg = 20.0;
   // Max distance of a curve's mesh vertices from its fitted line/circle (and
-  // from the analytic intersection), in l_avg. As seed 002 th_pos stepped up
-  // once (STB3: 1.0 l_avg).
-  double curve_tolerance = 1.0;
+  // from the analytic intersection), in l_avg. Marching-cubes meshes cut sharp
+  // edges by up to about one voxel, so 2 l_avg (seed 002 STB3's largest
+  // absorption step th_pos = 2.0).
+  double curve_tolerance = 2.0;
   // Angle within which axes/normals count as parallel or perpendicular when
   // deciding that an analytic intersection exists, degrees (seed 002 th_norm).
   double angle_tolerance_deg = 8.0;
   // A corner is snapped to the common point of its surfaces only if that
   // point is within this distance of the corner vertex, in l_avg.
   double corner_snap_distance = 3.0;
+  // A curve between two corners shorter than this, in l_avg, is marked as a
+  // junction artifact (labels zig-zagging where three regions meet).
+  double junction_length = 2.0;
 };
 
 enum class CurveGeometryType { kPolyline, kLine, kCircle };
@@ -91,6 +95,10 @@ struct BoundaryCurve {
   CurveConvexity convexity = CurveConvexity::kBorder;
   CurveGeometry geometry;
   double length = 0.0;  // of the mesh polyline, model units
+  // True for an open curve shorter than TopologyParams::junction_length
+  // between two corners: the face labels zig-zag where three regions meet.
+  // A B-rep builder contracts it (its corners share a cluster).
+  bool junction_artifact = false;
 };
 
 enum class LoopKind {
@@ -124,8 +132,12 @@ struct Loop {
 struct Corner {
   int id = 0;
   int vertex = 0;  // mesh vertex id
-  // The corner's position: snapped to the common point of the regions'
-  // surfaces if they meet in one point near the vertex, else the vertex.
+  // Corners joined by junction-artifact curves form one cluster, named by
+  // its smallest corner id; they stand for one B-rep vertex.
+  int cluster = 0;
+  // The cluster's position: snapped to the common point of the cluster's
+  // regions' surfaces if they meet in one point near the cluster's mean
+  // vertex, else that mean.
   Eigen::Vector3d position = Eigen::Vector3d::Zero();
   bool snapped = false;
   std::vector<int> regions;  // sorted; -1 included at the mesh border

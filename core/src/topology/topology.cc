@@ -6,6 +6,7 @@
 #include <cmath>
 #include <map>
 #include <numbers>
+#include <optional>
 #include <string>
 #include <utility>
 
@@ -42,6 +43,9 @@ absl::Status ValidateParams(const TopologyParams& p) {
   }
   if (!(p.corner_snap_distance >= 0.0) || !std::isfinite(p.corner_snap_distance)) {
     return bad("corner_snap_distance", p.corner_snap_distance, ">= 0");
+  }
+  if (!(p.junction_length >= 0.0) || !std::isfinite(p.junction_length)) {
+    return bad("junction_length", p.junction_length, ">= 0");
   }
   return absl::OkStatus();
 }
@@ -92,24 +96,56 @@ std::vector<int> LabelsAround(const TriMesh& mesh, std::span<const int> labels, 
   return out;
 }
 
+// Union-find root of corner k.
+int ClusterRoot(std::vector<int>& parent, int k) {
+  while (parent[k] != k) k = parent[k] = parent[parent[k]];
+  return k;
+}
+
 void PlaceCorners(const TriMesh& mesh, std::span<const int> labels,
                   std::span<const Region> regions, const std::vector<int>& corner_vertices,
                   double snap_distance, Topology* topo) {
-  for (size_t k = 0; k < corner_vertices.size(); ++k) {
+  const int n = static_cast<int>(corner_vertices.size());
+  std::vector<int> parent(n);
+  for (int k = 0; k < n; ++k) parent[k] = k;
+  for (const BoundaryCurve& c : topo->curves) {
+    if (!c.junction_artifact) continue;
+    const int a = ClusterRoot(parent, c.start_corner);
+    const int b = ClusterRoot(parent, c.end_corner);
+    parent[std::max(a, b)] = std::min(a, b);
+  }
+  for (int k = 0; k < n; ++k) {
     Corner c;
-    c.id = static_cast<int>(k);
+    c.id = k;
     c.vertex = corner_vertices[k];
-    c.position = ToEigen(mesh.point(OpenMesh::VertexHandle(c.vertex)));
+    c.cluster = ClusterRoot(parent, k);
     c.regions = LabelsAround(mesh, labels, c.vertex);
+    topo->corners.push_back(std::move(c));
+  }
+  // One position per cluster: its mean vertex, snapped with all its regions.
+  std::map<int, std::vector<int>> members;
+  for (const Corner& c : topo->corners) members[c.cluster].push_back(c.id);
+  for (const auto& [cluster, ids] : members) {
+    Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+    std::vector<int> cluster_regions;
+    for (const int id : ids) {
+      mean += ToEigen(mesh.point(OpenMesh::VertexHandle(topo->corners[id].vertex)));
+      for (const int r : topo->corners[id].regions) cluster_regions.push_back(r);
+    }
+    mean /= static_cast<double>(ids.size());
+    std::sort(cluster_regions.begin(), cluster_regions.end());
+    cluster_regions.erase(std::unique(cluster_regions.begin(), cluster_regions.end()),
+                          cluster_regions.end());
     std::vector<const Surface*> surfaces;
-    for (const int r : c.regions) {
+    for (const int r : cluster_regions) {
       if (r >= 0) surfaces.push_back(&regions[r].surface);
     }
-    if (auto snapped = topology_internal::SnapCorner(c.position, surfaces, snap_distance)) {
-      c.position = *snapped;
-      c.snapped = true;
+    const std::optional<Eigen::Vector3d> snapped =
+        topology_internal::SnapCorner(mean, surfaces, snap_distance);
+    for (const int id : ids) {
+      topo->corners[id].position = snapped ? *snapped : mean;
+      topo->corners[id].snapped = snapped.has_value();
     }
-    topo->corners.push_back(std::move(c));
   }
   for (const BoundaryCurve& curve : topo->curves) {
     if (curve.start_corner >= 0) topo->corners[curve.start_corner].curves.push_back(curve.id);
@@ -160,6 +196,8 @@ absl::StatusOr<Topology> ExtractTopology(const Mesh& mesh, std::span<const int> 
     c.normal_angle_deg = character.normal_angle_deg;
     c.sharp = character.sharp;
     c.convexity = character.convexity;
+    c.junction_artifact = !c.closed && c.start_corner >= 0 && c.end_corner >= 0 &&
+                          c.length < params.junction_length * l_avg;
   }
   MESHSEG_RETURN_IF_ERROR(ctx.CheckStop(kStage));
 
