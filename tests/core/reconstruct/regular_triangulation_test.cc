@@ -1,0 +1,61 @@
+#include "reconstruct/regular_triangulation.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <Eigen/LU>
+#include <gtest/gtest.h>
+
+#include "grid_supports.h"
+
+namespace meshseg::reconstruct_internal {
+namespace {
+
+TEST(RegularTetrahedralization, EqualWeightsGiveTheDelaunayTetrahedraOfAGrid) {
+  const auto supports = test::GridSupports(5, 1.0);  // 4³ cubes
+  const auto tets = RegularTetrahedralization(supports, {});
+  ASSERT_TRUE(tets.ok()) << tets.status();
+  EXPECT_EQ(tets->support.size(), supports.size());
+  // Volumes add up to the cube [−1, 1]³.
+  double volume = 0.0;
+  for (const auto& t : tets->tets) {
+    const Eigen::Vector3d a = supports[tets->support[t[0]]].center;
+    Eigen::Matrix3d m;
+    for (int i = 0; i < 3; ++i) m.col(i) = supports[tets->support[t[i + 1]]].center - a;
+    volume += std::abs(m.determinant()) / 6;
+  }
+  EXPECT_NEAR(volume, 8.0, 1e-9);
+  // Hull vertices are the 5³ − 3³ nodes on the cube's boundary.
+  int hull = 0;
+  for (const uint8_t h : tets->on_hull) hull += h;
+  EXPECT_EQ(hull, 125 - 27);
+  for (const auto& e : tets->edges) EXPECT_LT(e[0], e[1]);
+}
+
+TEST(RegularTetrahedralization, SmallBallInsideALargeOneIsHidden) {
+  auto supports = test::GridSupports(3, 1.0);
+  Support small;
+  small.center = Eigen::Vector3d(0.1, 0.05, 0.0);  // next to the centre node
+  small.radius = 0.05;
+  supports[13].radius = 1.2;  // the centre node (1, 1, 1) grows
+  supports.push_back(small);
+  const auto tets = RegularTetrahedralization(supports, {});
+  ASSERT_TRUE(tets.ok()) << tets.status();
+  EXPECT_EQ(tets->support.size(), supports.size() - 1);
+  EXPECT_EQ(std::count(tets->support.begin(), tets->support.end(),
+                       static_cast<int>(supports.size() - 1)),
+            0);
+}
+
+TEST(RegularTetrahedralization, CoplanarCentresAreInvalid) {
+  std::vector<Support> flat(4);
+  for (int i = 0; i < 4; ++i) {
+    flat[i].center = Eigen::Vector3d(i % 2, i / 2, 0.0);
+    flat[i].radius = 0.5;
+  }
+  EXPECT_EQ(RegularTetrahedralization(flat, {}).status().code(),
+            absl::StatusCode::kInvalidArgument);
+}
+
+}  // namespace
+}  // namespace meshseg::reconstruct_internal
