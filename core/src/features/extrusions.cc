@@ -51,6 +51,22 @@ Eigen::Vector3d RefinedDirection(std::span<const Region> regions, const std::vec
   return d.dot(seed) < 0.0 ? Eigen::Vector3d(-d) : d;
 }
 
+// True if every region next to the group but not in it is a cap: a plane
+// perpendicular to d (a slab of a prism, cut along another direction, has
+// side walls there instead).
+bool ClosedByCaps(std::span<const Region> regions, const RegionGraph& graph,
+                  const std::vector<char>& member, const std::vector<int>& group,
+                  const Eigen::Vector3d& d, const Tolerances& tol) {
+  for (const int r : group) {
+    for (const int n : graph.Neighbors(r)) {
+      if (member[n]) continue;
+      const auto* p = std::get_if<Plane>(&regions[n].surface);
+      if (!p || !Parallel(p->normal, d, tol)) return false;
+    }
+  }
+  return true;
+}
+
 }  // namespace
 
 std::vector<Feature> FindExtrusions(const Topology& topology, std::span<const Region> regions,
@@ -73,6 +89,7 @@ std::vector<Feature> FindExtrusions(const Topology& topology, std::span<const Re
       });
       const auto cylinders = static_cast<long>(group.size()) - planes;
       if (group.size() < 3 || (planes < 3 && cylinders < 2)) continue;
+      if (!ClosedByCaps(regions, graph, member, group, d, tol)) continue;
       if (!found.insert(group).second) continue;
       Feature f;
       f.type = FeatureType::kLinearExtrusion;

@@ -2,7 +2,9 @@
 // axes, and the common perpendicular of adjacent planes), the planes with
 // normal ⟂ d and cylinders with axis ∥ d form connected groups; a group of
 // at least three regions with three or more planes (their normals then lie
-// in one plane) or two or more cylinders is an extrusion along d.
+// in one plane) or two or more cylinders is an extrusion along d, provided
+// its other neighbours are caps (planes ⟂ d) — this leaves out the slabs of
+// a prism cut along directions that are not its extrusion direction.
 #ifndef MESHSEG_SRC_FEATURES_EXTRUSIONS_H_
 #define MESHSEG_SRC_FEATURES_EXTRUSIONS_H_
 

@@ -39,8 +39,7 @@ CurveCharacter CurveCharacterOf(const TriMesh& mesh, std::span<const int> face_l
   const Surface& left = regions[curve.left_region].surface;
   const Surface& right = regions[curve.right_region].surface;
   double angle_sum = 0.0;
-  double surface_turn = 0.0;  // Σ (n_left × n_right) · edge, > 0 convex
-  double face_turn = 0.0;
+  double turn = 0.0;  // Σ (n_left × n_right) · edge, > 0 convex
   int edges = 0;
   for (size_t i = 0; i + 1 < curve.vertices.size(); ++i) {
     const OpenMesh::HalfedgeHandle h = HalfedgeWithLeft(
@@ -56,14 +55,18 @@ CurveCharacter CurveCharacterOf(const TriMesh& mesh, std::span<const int> face_l
     const Vector3d nl = OutwardNormal(left, mid, fl);
     const Vector3d nr = OutwardNormal(right, mid, fr);
     angle_sum += std::acos(std::clamp(nl.dot(nr), -1.0, 1.0));
-    surface_turn += nl.cross(nr).dot(edge);
-    face_turn += fl.cross(fr).dot(edge);
+    // Tangent surfaces have equal normals on the curve: compare them one
+    // edge length into each region, where the fitted curvature shows.
+    const Vector3d into_left = nl.cross(edge);
+    const Vector3d into_right = -nr.cross(edge);
+    const Vector3d off_l = OutwardNormal(left, mid + into_left, fl);
+    const Vector3d off_r = OutwardNormal(right, mid + into_right, fr);
+    turn += off_l.cross(off_r).dot(edge);
     ++edges;
   }
   if (edges == 0) return out;
   out.normal_angle_deg = angle_sum / edges * 180.0 / std::numbers::pi;
   out.sharp = out.normal_angle_deg > sharp_angle_deg;
-  const double turn = out.sharp ? surface_turn : face_turn;
   out.convexity = turn >= 0.0 ? CurveConvexity::kConvex : CurveConvexity::kConcave;
   return out;
 }

@@ -19,8 +19,9 @@ struct CurveCharacter {
 };
 
 // Returns the character of `curve` (vertices, left/right regions set) on
-// `mesh`. Smooth curves take their convexity from the mesh faces along them,
-// where the fitted surfaces are (nearly) tangent.
+// `mesh`. Convexity compares the surfaces' normals one edge length away from
+// the curve on either side, so tangent (smooth) curves get the sign of the
+// fitted curvature rather than of the mesh noise.
 CurveCharacter CurveCharacterOf(const TriMesh& mesh, std::span<const int> face_labels,
                                 std::span<const Region> regions, const BoundaryCurve& curve,
                                 double sharp_angle_deg);

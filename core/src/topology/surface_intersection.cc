@@ -82,7 +82,12 @@ std::optional<Profile> MeridianProfile(const Surface& s, const Vector3d& o, cons
       [&](const auto& x) -> std::optional<Profile> {
         using T = std::decay_t<decltype(x)>;
         if constexpr (std::is_same_v<T, Plane>) {
-          return Profile{false, Vector2d((x.point - o).dot(d), 0.0), Vector2d::UnitY(), 0.0};
+          // Where the plane crosses the axis: a plane tilted (within the angle
+          // tolerance) against the axis must not be measured at its far-off
+          // reference point.
+          const Vector3d n = x.normal.normalized();
+          const double t0 = (x.point - o).dot(n) / d.dot(n);
+          return Profile{false, Vector2d(t0, 0.0), Vector2d::UnitY(), 0.0};
         } else if constexpr (std::is_same_v<T, Cylinder>) {
           return Profile{false, Vector2d(0.0, x.radius), Vector2d::UnitX(), 0.0};
         } else if constexpr (std::is_same_v<T, Cone>) {

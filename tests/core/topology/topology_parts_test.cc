@@ -26,7 +26,7 @@ struct PartTopology {
 
 PartTopology Extract(const std::string& name, double h) {
   PartTopology out;
-  absl::StatusOr<GeneratedPart> part = GeneratePart(name, {.voxel_size = h});
+  absl::StatusOr<GeneratedPart> part = GeneratePart(name, {.voxel_size = h, .noise = 0.1});
   EXPECT_TRUE(part.ok()) << part.status();
   if (!part.ok()) return out;
   out.part = *std::move(part);
