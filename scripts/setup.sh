@@ -10,6 +10,7 @@ PACKAGES=(
   libgtest-dev libgmock-dev googletest libbenchmark-dev
   libtbb-dev libcgal-dev libboost-graph-dev libnanoflann-dev
   libhiredis-dev redis-server
+  libssl-dev
 )
 
 SUDO=""

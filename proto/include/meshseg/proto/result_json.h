@@ -1,0 +1,24 @@
+// File: result_json.h
+// -----------------------------------------------------------------------------
+// The result JSON of the command-line contract (DESIGN.md "Result JSON"):
+// protobuf's JSON printer, original snake_case field names, enums as names,
+// zero values printed. Both `meshseg segment` paths (in-process and
+// --server) print through this one function, so their bytes are identical.
+#ifndef MESHSEG_PROTO_RESULT_JSON_H_
+#define MESHSEG_PROTO_RESULT_JSON_H_
+
+#include <string>
+
+#include "absl/status/statusor.h"
+#include "meshseg/v1/segmentation.pb.h"
+
+namespace meshseg {
+
+// Returns `result` as one line of JSON followed by a newline (compact:
+// label arrays of large meshes stay one line).
+// Errors: INTERNAL if the printer fails (never for a valid message).
+absl::StatusOr<std::string> ResultJson(const v1::SegmentationResult& result);
+
+}  // namespace meshseg
+
+#endif  // MESHSEG_PROTO_RESULT_JSON_H_

@@ -1,0 +1,88 @@
+// meshseg-server: the segmentation service (proto/meshseg/v1/service.proto).
+// Prints "listening on HOST:PORT" once it accepts calls; SIGTERM or SIGINT
+// shut it down gracefully. Log lines (key=value) go to stderr.
+#include <csignal>
+#include <cstdio>
+#include <algorithm>
+#include <string>
+#include <vector>
+
+#include "absl/flags/flag.h"
+#include "absl/flags/parse.h"
+#include "absl/flags/usage.h"
+#include "absl/strings/str_cat.h"
+#include "server/log.h"
+#include "server/server.h"
+
+namespace {
+const meshseg::server::ServerOptions kDefaults;
+}  // namespace
+
+ABSL_FLAG(std::string, listen, kDefaults.listen, "HOST:PORT to listen on; port 0 = ephemeral");
+ABSL_FLAG(int, workers, kDefaults.workers, "worker threads running jobs; 0 = one per core");
+ABSL_FLAG(int, queue_capacity, kDefaults.queue_capacity,
+          "max jobs waiting; further uploads get RESOURCE_EXHAUSTED");
+ABSL_FLAG(int64_t, max_upload_bytes, kDefaults.max_upload_bytes, "max bytes of one upload");
+ABSL_FLAG(std::string, spool_dir, kDefaults.spool_dir,
+          "uploads and results, one folder per job (job-* folders are cleared at start)");
+ABSL_FLAG(absl::Duration, result_ttl, kDefaults.result_ttl,
+          "how long a finished job and its result are kept, e.g. 1h, 30m");
+ABSL_FLAG(absl::Duration, shutdown_grace, kDefaults.shutdown_grace,
+          "on SIGTERM/SIGINT, how long running jobs may take before they are cancelled");
+
+namespace {
+
+// Returns argv with "--spool-dir=x" spelled "--spool_dir=x": the documented
+// flags use hyphens, absl flag names use underscores.
+std::vector<char*> UnderscoreFlagNames(int argc, char** argv, std::vector<std::string>& storage) {
+  storage.assign(argv, argv + argc);
+  for (std::string& arg : storage) {
+    if (arg.rfind("--", 0) != 0) continue;
+    const std::size_t end = std::min(arg.find('='), arg.size());
+    for (std::size_t i = 2; i < end; ++i) {
+      if (arg[i] == '-') arg[i] = '_';
+    }
+  }
+  std::vector<char*> out;
+  for (std::string& arg : storage) out.push_back(arg.data());
+  return out;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  absl::SetProgramUsageMessage("meshseg-server --listen HOST:PORT [flags]");
+  std::vector<std::string> storage;
+  std::vector<char*> args = UnderscoreFlagNames(argc, argv, storage);
+  absl::ParseCommandLine(static_cast<int>(args.size()), args.data());
+
+  // Block the shutdown signals in every thread; this one waits for them.
+  sigset_t signals;
+  sigemptyset(&signals);
+  sigaddset(&signals, SIGTERM);
+  sigaddset(&signals, SIGINT);
+  pthread_sigmask(SIG_BLOCK, &signals, nullptr);
+
+  meshseg::server::ServerOptions options;
+  options.listen = absl::GetFlag(FLAGS_listen);
+  options.workers = absl::GetFlag(FLAGS_workers);
+  options.queue_capacity = absl::GetFlag(FLAGS_queue_capacity);
+  options.max_upload_bytes = absl::GetFlag(FLAGS_max_upload_bytes);
+  options.spool_dir = absl::GetFlag(FLAGS_spool_dir);
+  options.result_ttl = absl::GetFlag(FLAGS_result_ttl);
+  options.shutdown_grace = absl::GetFlag(FLAGS_shutdown_grace);
+
+  auto server = meshseg::server::Server::Start(options);
+  if (!server.ok()) {
+    std::fprintf(stderr, "meshseg-server: %s\n", std::string(server.status().message()).c_str());
+    return 1;
+  }
+  std::printf("listening on %s\n", (*server)->address().c_str());
+  std::fflush(stdout);
+
+  int signal_number = 0;
+  sigwait(&signals, &signal_number);
+  meshseg::server::Log("signal", {{"signal", signal_number == SIGTERM ? "SIGTERM" : "SIGINT"}});
+  (*server)->Shutdown();
+  return 0;
+}

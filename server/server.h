@@ -1,0 +1,51 @@
+// File: server.h
+// -----------------------------------------------------------------------------
+// meshseg-server as an object: the gRPC server with the Segmentation service,
+// the standard health service and reflection, the job queue, the job store,
+// the spool, the worker pool and the sweeper that forgets expired results.
+// main.cc and the service tests both start it through this class.
+#ifndef MESHSEG_SERVER_SERVER_H_
+#define MESHSEG_SERVER_SERVER_H_
+
+#include <memory>
+#include <string>
+
+#include "absl/status/statusor.h"
+#include "server/server_options.h"
+
+namespace meshseg::server {
+
+class Server {
+ public:
+  // Starts listening and the workers.
+  // Errors: INVALID_ARGUMENT for bad options; INTERNAL if the spool cannot be
+  // set up; UNAVAILABLE if the address cannot be bound.
+  static absl::StatusOr<std::unique_ptr<Server>> Start(ServerOptions options);
+
+  // Shuts down (as Shutdown()) if still running.
+  ~Server();
+
+  // The port actually bound (the ephemeral one for port 0).
+  int port() const;
+  // "HOST:PORT" with the bound port.
+  std::string address() const;
+  // Number of files in the spool (for tests and logs).
+  int64_t SpoolFileCount() const;
+
+  // Graceful shutdown: health NOT_SERVING, new uploads refused (UNAVAILABLE),
+  // queued jobs cancelled, running jobs given options.shutdown_grace to
+  // finish and then cancelled; then open calls end and the server stops.
+  void Shutdown();
+
+  // Blocks until Shutdown() has completed.
+  void Wait();
+
+ private:
+  struct Parts;
+  explicit Server(std::unique_ptr<Parts> parts);
+  std::unique_ptr<Parts> parts_;
+};
+
+}  // namespace meshseg::server
+
+#endif  // MESHSEG_SERVER_SERVER_H_

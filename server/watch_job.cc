@@ -1,0 +1,66 @@
+#include "absl/strings/str_cat.h"
+#include "absl/strings/str_format.h"
+#include "meshseg/proto/grpc_status.h"
+#include "server/service.h"
+
+namespace meshseg::server {
+namespace {
+
+// How often a watcher with no news checks whether its client went away.
+constexpr absl::Duration kPollInterval = absl::Milliseconds(100);
+
+bool SameEvent(const v1::Job& a, const v1::Job& b) {
+  return a.state() == b.state() && a.queue_position() == b.queue_position() &&
+         a.stage() == b.stage() && a.fraction() == b.fraction();
+}
+
+std::string Describe(const v1::Job& job) {
+  switch (job.state()) {
+    case v1::JOB_STATE_QUEUED:
+      return absl::StrCat("queued, ", job.queue_position(), " ahead");
+    case v1::JOB_STATE_RUNNING:
+      return job.stage().empty() ? "running"
+                                 : absl::StrFormat("%s %.0f%%", job.stage(),
+                                                   100.0 * job.fraction());
+    case v1::JOB_STATE_SUCCEEDED:
+      return absl::StrCat("succeeded: ", job.region_count(), " regions, ", job.face_count(),
+                          " faces");
+    case v1::JOB_STATE_FAILED:
+      return absl::StrCat("failed: ", job.error_message());
+    case v1::JOB_STATE_CANCELLED:
+      return absl::StrCat("cancelled: ", job.error_message());
+    default:
+      return "unknown state";
+  }
+}
+
+}  // namespace
+
+grpc::Status SegmentationService::WatchJob(grpc::ServerContext* context,
+                                           const v1::WatchJobRequest* request,
+                                           grpc::ServerWriter<v1::JobEvent>* writer) {
+  v1::Job last;
+  bool first = true;
+  while (true) {
+    const int64_t generation = store_.generation();
+    absl::StatusOr<v1::Job> job = store_.Get(request->job_id());
+    if (!job.ok()) return ToGrpcStatus(job.status());  // unknown, or expired meanwhile
+    if (first || !SameEvent(*job, last)) {
+      v1::JobEvent event;
+      event.set_message(Describe(*job));
+      *event.mutable_job() = *job;
+      if (!writer->Write(event)) {
+        return ToGrpcStatus(absl::CancelledError("watch: client went away"));
+      }
+      last = *std::move(job);
+      first = false;
+    }
+    if (IsTerminal(last.state())) return grpc::Status::OK;
+    store_.AwaitChange(generation, kPollInterval);
+    if (context->IsCancelled()) {
+      return ToGrpcStatus(absl::CancelledError("watch: client went away or deadline passed"));
+    }
+  }
+}
+
+}  // namespace meshseg::server
