@@ -139,5 +139,46 @@ TEST(ExtractTopologyOnParts, BlendBlockFilletEdgesAreSmoothLines) {
   EXPECT_GE(snapped, 4);
 }
 
+TEST(ExtractTopologyOnParts, PlateBossLoopsAndEulerCharacteristic) {
+  const double h = 1.0;
+  const PartTopology p = Extract("plate_boss", h);
+  testing::ExpectConsistent(p.part.mesh.tri, p.truth.face_labels, p.topology);
+  // Genus 2: the bore through boss and plate, and the plate hole.
+  EXPECT_EQ(testing::BrepEulerCharacteristic(p.topology), -2);
+  // Cylinders and tori around their axes: only axial loops.
+  for (const std::string name : {"bore", "plate_hole", "boss", "boss_fillet", "boss_edge_round"}) {
+    const RegionTopology& r = p.topology.regions[testing::PrimitiveId(p.part, name)];
+    EXPECT_EQ(r.loops.size(), 2u) << name;
+    for (const int l : r.loops) EXPECT_EQ(p.topology.loops[l].kind, LoopKind::kAxial) << name;
+  }
+  // The plate top: one outer loop, two holes (fillet root and plate hole),
+  // both analytic circles.
+  const RegionTopology& top = p.topology.regions[testing::PrimitiveId(p.part, "plate_top")];
+  ASSERT_EQ(top.patch_count, 1);
+  int outer = 0;
+  int inner = 0;
+  for (const int l : top.loops) {
+    const Loop& loop = p.topology.loops[l];
+    if (loop.kind == LoopKind::kOuter) ++outer;
+    if (loop.kind != LoopKind::kInner) continue;
+    ++inner;
+    ASSERT_EQ(loop.curves.size(), 1u);
+    const BoundaryCurve& c = p.topology.curves[loop.curves[0].curve];
+    EXPECT_EQ(c.geometry.type, CurveGeometryType::kCircle);
+    EXPECT_TRUE(c.geometry.analytic);
+  }
+  EXPECT_EQ(outer, 1);
+  EXPECT_EQ(inner, 2);
+  const auto root = CurvesBetween(p, "boss_fillet", "plate_top");
+  ASSERT_EQ(root.size(), 1u);
+  EXPECT_NEAR(root[0]->geometry.radius, 14.0, kRadiusTol * h);
+  EXPECT_FALSE(root[0]->sharp);
+  const auto hole = CurvesBetween(p, "plate_hole", "plate_top");
+  ASSERT_EQ(hole.size(), 1u);
+  EXPECT_NEAR(hole[0]->geometry.radius, 4.0, kRadiusTol * h);
+  EXPECT_TRUE(hole[0]->sharp);
+  EXPECT_EQ(hole[0]->convexity, CurveConvexity::kConvex);
+}
+
 }  // namespace
 }  // namespace meshseg
