@@ -31,7 +31,7 @@ void SilenceOpenMesh() {
   });
 }
 
-bool IsDegenerate(const std::array<int, 3>& t, const std::vector<Eigen::Vector3d>& v) {
+bool IsDegenerate(const std::array<int, 3>& t, const LargeVector<Eigen::Vector3d>& v) {
   if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) return true;
   const Eigen::Vector3d e0 = v[t[1]] - v[t[0]];
   const Eigen::Vector3d e1 = v[t[2]] - v[t[0]];
@@ -66,8 +66,8 @@ absl::Status Fill(RawMesh raw, const Source& src, Mesh* out) {
                                       std::numeric_limits<int>::max()));
   }
   // Fan triangulation; tri_face[t] is the input face of triangle t.
-  std::vector<std::array<int, 3>> tris;
-  std::vector<int> tri_face;
+  Triangles tris;
+  LargeVector<int> tri_face;
   tris.reserve(raw.corners.size() >= 2 * static_cast<size_t>(nf)
                    ? raw.corners.size() - 2 * nf : 0);
   tri_face.reserve(tris.capacity());
@@ -92,7 +92,7 @@ absl::Status Fill(RawMesh raw, const Source& src, Mesh* out) {
   mesh.name = src.name;
   mesh.input_vertex_count = raw.input_vertex_count > 0 ? raw.input_vertex_count : nv;
   InputTopology& topo = mesh.input_topology;
-  std::vector<uint8_t> keep(tris.size(), 1);
+  LargeVector<uint8_t> keep(tris.size(), 1);
   for (size_t t = 0; t < tris.size(); ++t) {
     if (IsDegenerate(tris[t], raw.vertices)) keep[t] = 0;
   }
@@ -110,7 +110,7 @@ absl::Status Fill(RawMesh raw, const Source& src, Mesh* out) {
   SilenceOpenMesh();
   TriMesh& tri = mesh.tri;
   tri.reserve(nv, 3 * tris.size() / 2 + 3, tris.size());
-  std::vector<TriMesh::VertexHandle> handles(nv);
+  LargeVector<TriMesh::VertexHandle> handles(nv);
   for (int64_t i = 0; i < nv; ++i) {
     const Eigen::Vector3d& p = raw.vertices[i];
     handles[i] = tri.add_vertex(TriMesh::Point(p.x(), p.y(), p.z()));
@@ -125,8 +125,8 @@ absl::Status Fill(RawMesh raw, const Source& src, Mesh* out) {
     }
   }
   tris.resize(kept_count);
-  std::vector<std::array<int, 3>>& kept = tris;
-  const std::vector<int>& kept_face = tri_face;
+  Triangles& kept = tris;
+  const LargeVector<int>& kept_face = tri_face;
   const bool manifold = counts.non_manifold_edge_count == 0 &&
                         counts.non_manifold_vertex_count == 0 && BuildManifold(kept, &tri);
   for (size_t t = 0; t < kept.size(); ++t) {
@@ -170,12 +170,12 @@ absl::StatusOr<Mesh> BuildMesh(std::vector<Eigen::Vector3d> vertices,
   MESHSEG_RETURN_IF_ERROR(mesh_internal::CheckFinite(src, vertices));
   mesh_internal::RawMesh raw;
   raw.input_vertex_count = static_cast<int64_t>(vertices.size());
-  raw.vertices = std::move(vertices);
+  raw.vertices.assign(vertices.begin(), vertices.end());
   raw.corners.reserve(3 * triangles.size());
-  raw.face_start.assign(triangles.size() + 1, 0);
+  raw.face_start.reserve(triangles.size() + 1);
   for (size_t t = 0; t < triangles.size(); ++t) {
     raw.corners.insert(raw.corners.end(), triangles[t].begin(), triangles[t].end());
-    raw.face_start[t + 1] = static_cast<int64_t>(raw.corners.size());
+    raw.face_start.push_back(static_cast<int64_t>(raw.corners.size()));
   }
   return mesh_internal::BuildFromRaw(std::move(raw), src);
 }

@@ -12,12 +12,12 @@ namespace {
 
 // Kept triangles around each vertex, in triangle order (compressed rows).
 struct Incidence {
-  std::vector<int64_t> start;  // vertex_count + 1
-  std::vector<int> triangle;
+  LargeVector<int64_t> start;  // vertex_count + 1
+  LargeVector<int> triangle;
 };
 
-Incidence IncidenceOf(int vertex_count, const std::vector<std::array<int, 3>>& triangles,
-                      const std::vector<uint8_t>& keep) {
+Incidence IncidenceOf(int vertex_count, const LargeVector<std::array<int, 3>>& triangles,
+                      const LargeVector<uint8_t>& keep) {
   Incidence inc;
   inc.start.assign(vertex_count + 1, 0);
   for (size_t t = 0; t < triangles.size(); ++t) {
@@ -26,7 +26,7 @@ Incidence IncidenceOf(int vertex_count, const std::vector<std::array<int, 3>>& t
   }
   std::partial_sum(inc.start.begin(), inc.start.end(), inc.start.begin());
   inc.triangle.resize(inc.start.back());
-  std::vector<int64_t> next(inc.start.begin(), inc.start.end() - 1);
+  LargeVector<int64_t> next(inc.start.begin(), inc.start.end() - 1);
   for (size_t t = 0; t < triangles.size(); ++t) {
     if (!keep[t]) continue;
     for (int v : triangles[t]) inc.triangle[next[v]++] = static_cast<int>(t);
@@ -41,8 +41,8 @@ int Root(std::vector<int>& parent, int j) {
 
 // Marks in *duplicate the triangles at v (as smallest vertex) that repeat the
 // vertex set of an earlier one.
-void MarkDuplicatesAt(int v, const Incidence& inc, const std::vector<std::array<int, 3>>& tris,
-                      std::vector<std::array<int, 3>>& scratch, std::vector<uint8_t>* duplicate) {
+void MarkDuplicatesAt(int v, const Incidence& inc, const LargeVector<std::array<int, 3>>& tris,
+                      std::vector<std::array<int, 3>>& scratch, LargeVector<uint8_t>* duplicate) {
   scratch.clear();
   for (int64_t k = inc.start[v]; k < inc.start[v + 1]; ++k) {
     std::array<int, 3> s = tris[inc.triangle[k]];
@@ -59,7 +59,7 @@ void MarkDuplicatesAt(int v, const Incidence& inc, const std::vector<std::array<
 
 // Returns {non-manifold edges (v, w) with w > v, fans at v}.
 std::pair<int, int> CountAt(int v, const Incidence& inc,
-                            const std::vector<std::array<int, 3>>& tris,
+                            const LargeVector<std::array<int, 3>>& tris,
                             std::vector<std::pair<int, int>>& scratch,
                             std::vector<int>& parent) {
   scratch.clear();
@@ -95,12 +95,12 @@ std::pair<int, int> CountAt(int v, const Incidence& inc,
 }  // namespace
 
 TopologyCounts AnalyzeInputTopology(int vertex_count,
-                                    const std::vector<std::array<int, 3>>& triangles,
-                                    std::vector<uint8_t>* keep) {
+                                    const LargeVector<std::array<int, 3>>& triangles,
+                                    LargeVector<uint8_t>* keep) {
   const Incidence inc = IncidenceOf(vertex_count, triangles, *keep);
-  std::vector<uint8_t> duplicate(triangles.size(), 0);
-  std::vector<int> edges_at(vertex_count, 0);
-  std::vector<uint8_t> pinched(vertex_count, 0);
+  LargeVector<uint8_t> duplicate(triangles.size(), 0);
+  LargeVector<int> edges_at(vertex_count, 0);
+  LargeVector<uint8_t> pinched(vertex_count, 0);
   // Each slot is written by one vertex: duplicate[t] by t's smallest vertex.
   tbb::parallel_for(tbb::blocked_range<int>(0, vertex_count, 4096),
                     [&](const tbb::blocked_range<int>& r) {

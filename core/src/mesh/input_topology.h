@@ -8,6 +8,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "mesh/large_vector.h"
+
 namespace meshseg::mesh_internal {
 
 struct TopologyCounts {
@@ -23,8 +25,8 @@ struct TopologyCounts {
 // in [0, vertex_count) and distinct within a triangle. Deterministic; runs the
 // per-vertex work with oneTBB.
 TopologyCounts AnalyzeInputTopology(int vertex_count,
-                                    const std::vector<std::array<int, 3>>& triangles,
-                                    std::vector<uint8_t>* keep);
+                                    const LargeVector<std::array<int, 3>>& triangles,
+                                    LargeVector<uint8_t>* keep);
 
 }  // namespace meshseg::mesh_internal
 

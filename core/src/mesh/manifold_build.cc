@@ -14,16 +14,16 @@ using HalfedgeHandle = TriMesh::HalfedgeHandle;
 // halfedge, the index of its twin (the same edge reversed) or -1 on the
 // boundary; empty if a directed edge occurs twice. Needs 3 n < 2^31 (the
 // readers' max_elements keeps n far below).
-std::vector<int> Twins(const std::vector<std::array<int, 3>>& triangles, int vertex_count) {
+LargeVector<int> Twins(const LargeVector<std::array<int, 3>>& triangles, int vertex_count) {
   const int n = static_cast<int>(triangles.size()) * 3;
   // Outgoing halfedges per vertex, sorted by target (compressed rows).
-  std::vector<int> start(vertex_count + 1, 0);
+  LargeVector<int> start(vertex_count + 1, 0);
   for (const auto& t : triangles) {
     for (int v : t) ++start[v + 1];
   }
   std::partial_sum(start.begin(), start.end(), start.begin());
-  std::vector<std::pair<int, int>> out(n);  // (target, halfedge)
-  std::vector<int> next(start.begin(), start.end() - 1);
+  LargeVector<std::pair<int, int>> out(n);  // (target, halfedge)
+  LargeVector<int> next(start.begin(), start.end() - 1);
   for (int h = 0; h < n; ++h) {
     const auto& t = triangles[h / 3];
     out[next[t[h % 3]]++] = {t[(h % 3 + 1) % 3], h};
@@ -34,7 +34,7 @@ std::vector<int> Twins(const std::vector<std::array<int, 3>>& triangles, int ver
       if (out[k].first == out[k - 1].first) return {};
     }
   }
-  std::vector<int> twin(n, -1);
+  LargeVector<int> twin(n, -1);
   for (int h = 0; h < n; ++h) {
     const auto& t = triangles[h / 3];
     const int from = t[h % 3];
@@ -49,16 +49,16 @@ std::vector<int> Twins(const std::vector<std::array<int, 3>>& triangles, int ver
 
 }  // namespace
 
-bool BuildManifold(const std::vector<std::array<int, 3>>& triangles, TriMesh* mesh) {
+bool BuildManifold(const LargeVector<std::array<int, 3>>& triangles, TriMesh* mesh) {
   TriMesh& m = *mesh;
   const int vertex_count = static_cast<int>(m.n_vertices());
-  const std::vector<int> twin = Twins(triangles, vertex_count);
+  const LargeVector<int> twin = Twins(triangles, vertex_count);
   const int n = static_cast<int>(triangles.size()) * 3;
   if (twin.empty() && n > 0) return false;
 
   // One edge per input edge, numbered in order of the halfedge that reaches
   // it first; that halfedge is the edge's first OpenMesh halfedge (2e).
-  std::vector<HalfedgeHandle> handle(n);
+  LargeVector<HalfedgeHandle> handle(n);
   int edge_count = 0;
   for (int h = 0; h < n; ++h) {
     if (handle[h].is_valid()) continue;
@@ -68,7 +68,7 @@ bool BuildManifold(const std::vector<std::array<int, 3>>& triangles, TriMesh* me
   }
   // Sizes every item and property array once instead of per new_edge().
   m.resize(vertex_count, edge_count, triangles.size());
-  std::vector<HalfedgeHandle> boundary_out(vertex_count);  // outgoing boundary halfedge
+  LargeVector<HalfedgeHandle> boundary_out(vertex_count);  // outgoing boundary halfedge
   for (int h = 0; h < n; ++h) {
     const auto& t = triangles[h / 3];
     const TriMesh::VertexHandle from(t[h % 3]);

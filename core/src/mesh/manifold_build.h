@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "meshseg/mesh.h"
+#include "mesh/large_vector.h"
 
 namespace meshseg::mesh_internal {
 
@@ -19,7 +20,7 @@ namespace meshseg::mesh_internal {
 // orientation), where add_face() must decide instead. The result is the mesh
 // add_face() would build from the same triangles in the same order, up to the
 // numbering of edges.
-bool BuildManifold(const std::vector<std::array<int, 3>>& triangles, TriMesh* mesh);
+bool BuildManifold(const LargeVector<std::array<int, 3>>& triangles, TriMesh* mesh);
 
 }  // namespace meshseg::mesh_internal
 

@@ -9,18 +9,19 @@
 #include <Eigen/Core>
 
 #include "absl/status/statusor.h"
+#include "mesh/large_vector.h"
 #include "mesh/source.h"
 
 namespace meshseg::mesh_internal {
 
 struct PlyData {
-  std::vector<Eigen::Vector3d> vertices;  // x y z of element "vertex"
+  LargeVector<Eigen::Vector3d> vertices;  // x y z of element "vertex"
   std::vector<Eigen::Vector3d> normals;   // nx ny nz if all three are present
   bool has_face_element = false;
   // Faces as in RawMesh: corners of face k are corners[face_start[k] ..
   // face_start[k+1]); indices checked against the vertex count.
-  std::vector<int> corners;
-  std::vector<int64_t> face_start{0};
+  LargeVector<int> corners;
+  LargeVector<int64_t> face_start{0};
 };
 
 // Returns the data of the PLY file `bytes` (ascii or binary). Other elements

@@ -56,7 +56,7 @@ absl::StatusOr<PointCloud> ReadPointCloud(const std::string& path,
     case FileFormat::kPly: {
       MESHSEG_ASSIGN_OR_RETURN(PlyData data, ReadPlyData(bytes, src, options.max_elements));
       if (data.vertices.empty()) return BadInput(src, "no points");
-      cloud.points = std::move(data.vertices);
+      cloud.points.assign(data.vertices.begin(), data.vertices.end());
       cloud.normals = std::move(data.normals);
       break;
     }

@@ -3,6 +3,7 @@
 #ifndef MESHSEG_MESH_RAW_MESH_H_
 #define MESHSEG_MESH_RAW_MESH_H_
 
+#include <array>
 #include <cstdint>
 #include <string>
 #include <string_view>
@@ -12,16 +13,17 @@
 
 #include "absl/status/statusor.h"
 #include "meshseg/mesh.h"
+#include "mesh/large_vector.h"
 #include "mesh/source.h"
 
 namespace meshseg::mesh_internal {
 
 struct RawMesh {
-  std::vector<Eigen::Vector3d> vertices;
+  LargeVector<Eigen::Vector3d> vertices;
   // Polygon k has corners[face_start[k] .. face_start[k+1]), 0-based indices
   // checked against vertices.size() by the reader. face_start has F+1 entries.
-  std::vector<int> corners;
-  std::vector<int64_t> face_start{0};
+  LargeVector<int> corners;
+  LargeVector<int64_t> face_start{0};
   int64_t input_vertex_count = 0;
 
   int64_t face_count() const { return static_cast<int64_t>(face_start.size()) - 1; }
@@ -42,6 +44,9 @@ absl::StatusOr<Mesh> BuildFromRaw(RawMesh raw, const Source& src);
 // Returns an error naming the first vertex with a NaN/Inf coordinate; `where`
 // is prepended to the index ("vertex 12").
 absl::Status CheckFinite(const Source& src, const std::vector<Eigen::Vector3d>& vertices);
+
+// Triangles as vertex-index triples, in a LargeVector.
+using Triangles = LargeVector<std::array<int, 3>>;
 
 }  // namespace meshseg::mesh_internal
 

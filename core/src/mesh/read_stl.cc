@@ -28,7 +28,7 @@ Bits BitsOf(Real value) {
 
 // Returns the triangles of `welder`'s corners, 3 per triangle in order.
 template <typename Bits>
-RawMesh FromWelded(const Welder<Bits>& welder, std::vector<int> corners) {
+RawMesh FromWelded(const Welder<Bits>& welder, LargeVector<int> corners) {
   using Real = std::conditional_t<sizeof(Bits) == 4, float, double>;
   RawMesh raw;
   raw.vertices.resize(welder.keys().size());
@@ -70,7 +70,7 @@ absl::StatusOr<RawMesh> ReadBinaryStl(std::string_view bytes, const Source& src,
   if (n == 0) return BadInput(src, "header declares 0 triangles");
   // A closed mesh has about n / 2 vertices.
   Welder<uint32_t> welder(static_cast<size_t>(n / 2 + 16));
-  std::vector<int> corners(3 * n);
+  LargeVector<int> corners(3 * n);
   const char* p = bytes.data() + kHeaderBytes;
   for (int64_t t = 0; t < n; ++t, p += kTriangleBytes) {
     for (int c = 0; c < 3; ++c) {
@@ -93,7 +93,7 @@ absl::StatusOr<RawMesh> ReadAsciiStl(std::string_view bytes, const Source& src,
   TextCursor cursor(bytes);
   cursor.set_comments(false);
   Welder<uint64_t> welder(1024);
-  std::vector<int> corners;
+  LargeVector<int> corners;
   int corners_in_loop = 0;
   bool in_loop = false;
   while (cursor.SkipEmptyLines()) {

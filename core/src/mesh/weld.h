@@ -9,6 +9,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "mesh/large_vector.h"
+
 namespace meshseg::mesh_internal {
 
 // Welds corners given as the bits of their three coordinates (float or double
@@ -42,7 +44,7 @@ class Welder {
     }
   }
 
-  const std::vector<Key>& keys() const { return keys_; }
+  const LargeVector<Key>& keys() const { return keys_; }
 
  private:
   static uint64_t Hash(const Key& key) {
@@ -64,8 +66,8 @@ class Welder {
     }
   }
 
-  std::vector<int> table_;
-  std::vector<Key> keys_;
+  LargeVector<int> table_;
+  LargeVector<Key> keys_;
 };
 
 }  // namespace meshseg::mesh_internal

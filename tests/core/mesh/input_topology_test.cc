@@ -7,18 +7,18 @@ namespace {
 
 TEST(AnalyzeInputTopology, CountsFinEdgeAndMarksDuplicates) {
   // Triangles 0..2 share edge 0-1 (a fin); 3 repeats 0 reversed.
-  const std::vector<std::array<int, 3>> tris = {{0, 1, 2}, {1, 0, 3}, {0, 1, 4}, {2, 1, 0}};
-  std::vector<uint8_t> keep(tris.size(), 1);
+  const LargeVector<std::array<int, 3>> tris = {{0, 1, 2}, {1, 0, 3}, {0, 1, 4}, {2, 1, 0}};
+  LargeVector<uint8_t> keep(tris.size(), 1);
   const TopologyCounts c = AnalyzeInputTopology(5, tris, &keep);
   EXPECT_EQ(c.non_manifold_edge_count, 1);
   EXPECT_EQ(c.duplicate_face_count, 1);
-  EXPECT_EQ(keep, (std::vector<uint8_t>{1, 1, 1, 0}));
+  EXPECT_EQ(keep, (LargeVector<uint8_t>{1, 1, 1, 0}));
 }
 
 TEST(AnalyzeInputTopology, CountsPinchedVertexAndIgnoresDroppedTriangles) {
   // A bow tie at vertex 0, and a dropped triangle that would join the fans.
-  const std::vector<std::array<int, 3>> tris = {{0, 1, 2}, {0, 3, 4}, {0, 2, 3}};
-  std::vector<uint8_t> keep = {1, 1, 0};
+  const LargeVector<std::array<int, 3>> tris = {{0, 1, 2}, {0, 3, 4}, {0, 2, 3}};
+  LargeVector<uint8_t> keep = {1, 1, 0};
   const TopologyCounts c = AnalyzeInputTopology(5, tris, &keep);
   EXPECT_EQ(c.non_manifold_vertex_count, 1);
   EXPECT_EQ(c.non_manifold_edge_count, 0);
@@ -27,8 +27,8 @@ TEST(AnalyzeInputTopology, CountsPinchedVertexAndIgnoresDroppedTriangles) {
 }
 
 TEST(AnalyzeInputTopology, FindsNothingOnClosedTetrahedron) {
-  const std::vector<std::array<int, 3>> tris = {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}};
-  std::vector<uint8_t> keep(4, 1);
+  const LargeVector<std::array<int, 3>> tris = {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}};
+  LargeVector<uint8_t> keep(4, 1);
   const TopologyCounts c = AnalyzeInputTopology(4, tris, &keep);
   EXPECT_EQ(c.non_manifold_edge_count, 0);
   EXPECT_EQ(c.non_manifold_vertex_count, 0);

@@ -13,7 +13,7 @@ namespace {
 
 struct Soup {
   std::vector<TriMesh::Point> points;
-  std::vector<std::array<int, 3>> triangles;
+  LargeVector<std::array<int, 3>> triangles;
 };
 
 // An n x n grid of squares in z = 0, two triangles each, with the squares in
