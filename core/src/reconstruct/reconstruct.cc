@@ -18,6 +18,7 @@
 #include "reconstruct/point_index.h"
 #include "reconstruct/pu_function.h"
 #include "reconstruct/regular_triangulation.h"
+#include "reconstruct/small_components.h"
 #include "reconstruct/smoothing.h"
 #include "reconstruct/surface_mesh.h"
 
@@ -53,6 +54,9 @@ absl::Status ValidateParams(const ReconstructParams& p) {
     return bad(absl::StrCat("smoothing_iterations ", p.smoothing_iterations, " must be >= 0"));
   }
   if (p.normal_neighbors < 3) return bad(absl::StrCat("normal_neighbors ", p.normal_neighbors, " must be >= 3"));
+  if (!(p.min_component_fraction >= 0 && p.min_component_fraction <= 1)) {
+    return bad(absl::StrCat("min_component_fraction ", p.min_component_fraction, " outside [0, 1]"));
+  }
   if (!(p.outlier_distance > 0)) return bad(absl::StrCat("outlier_distance ", p.outlier_distance, " must be > 0"));
   if (!(p.off_surface_distance > 0)) {
     return bad(absl::StrCat("off_surface_distance ", p.off_surface_distance, " must be > 0"));
@@ -195,6 +199,7 @@ absl::StatusOr<Reconstruction> Reconstruct(const PointCloud& cloud, const Recons
         kStage, ": \"", cloud.name, "\": no inside region found among ", tets.support.size(),
         " supports; the points enclose no volume"));
   }
+  stats.dropped_component_count = DropSmallComponents(params.min_component_fraction, &surface);
   for (const uint8_t s : surface.to_smooth) stats.smoothed_vertex_count += s;
   SmoothSelected(surface.triangles, surface.to_smooth, params.smoothing_lambda,
                  params.smoothing_iterations, &surface.vertices);

@@ -142,8 +142,9 @@ TEST(Reconstruct, GraphCutRemovesBubblesThatTheSignOfFKeeps) {
   CloudSpec spec = HardSpec({1.4, 0, 0}, true);
   spec.clumps = 20;
   const PointCloud cloud = test::MakeCloud(torus, spec);
-  const auto cut = Reconstruct(cloud);
-  const auto sign = Reconstruct(cloud, ReconstructParams{.use_graph_cut = false});
+  // Without the removal of small components, to compare the labels alone.
+  const auto cut = Reconstruct(cloud, {.min_component_fraction = 0});
+  const auto sign = Reconstruct(cloud, {.use_graph_cut = false, .min_component_fraction = 0});
   ASSERT_TRUE(cut.ok()) << cut.status();
   ASSERT_TRUE(sign.ok()) << sign.status();
   EXPECT_GT(cut->stats.relabelled_count, 0);
@@ -152,6 +153,17 @@ TEST(Reconstruct, GraphCutRemovesBubblesThatTheSignOfFKeeps) {
   EXPECT_GT(test::FractionWithin(cut->mesh.tri, torus, kDistanceTol * h),
             test::FractionWithin(sign->mesh.tri, torus, kDistanceTol * h) + 0.05);
   EXPECT_EQ(test::BoundaryEdgeCount(sign->mesh.tri), 0);
+}
+
+TEST(Reconstruct, SmallComponentsAreDropped) {
+  const Shape torus = test::Torus(1.0, 0.4);
+  CloudSpec spec = HardSpec({1.4, 0, 0}, true);
+  spec.clumps = 20;
+  const auto r = Reconstruct(test::MakeCloud(torus, spec));
+  ASSERT_TRUE(r.ok()) << r.status();
+  EXPECT_GT(r->stats.dropped_component_count, 0);
+  EXPECT_EQ(test::ComponentCount(r->mesh.tri), 1);
+  EXPECT_EQ(test::BoundaryEdgeCount(r->mesh.tri), 0);
 }
 
 TEST(Reconstruct, SameInputGivesSameMesh) {
