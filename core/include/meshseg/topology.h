@@ -123,7 +123,7 @@ struct CurveUse {
 struct Loop {
   int id = 0;
   int region = 0;
-  int patch = 0;  // index into RegionTopology::patch_count of `region`
+  int patch = 0;  // patch of `region` it bounds, in [0, RegionTopology::patch_count)
   LoopKind kind = LoopKind::kOuter;
   std::vector<CurveUse> curves;
 };

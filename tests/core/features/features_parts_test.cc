@@ -135,5 +135,29 @@ TEST(RecognizeFeaturesOnParts, RoundedPrismIsALinearExtrusion) {
   EXPECT_LE(AngleDeg(e.direction, bore.axis_direction), kAxisTolDeg);
 }
 
+TEST(RecognizeFeaturesOnParts, TestPieceHasItsThreeRoundsAndTwoRevolutionsOnly) {
+  const double h = 1.0;
+  const PartFeatures p = Recognize("test_piece", h);
+  const auto fillets = OfType(p, FeatureType::kFilletCylinderPlanes);
+  ASSERT_EQ(fillets.size(), 3u);
+  for (const auto& [name, radius] : {std::pair<std::string, double>{"round_front_right", 6.0},
+                                     {"round_back_right", 6.0},
+                                     {"round_top_left", 5.0}}) {
+    const Feature* f = FilletOf(p, name);
+    ASSERT_NE(f, nullptr) << name;
+    EXPECT_NEAR(f->radius, radius, kRadiusTol * h) << name;
+    EXPECT_TRUE(f->convex) << name;
+  }
+  // The half-cylinder groove joins its planes at 180 degrees: no fillet.
+  EXPECT_EQ(FilletOf(p, "groove"), nullptr);
+  const auto revolutions = OfType(p, FeatureType::kRevolution);
+  ASSERT_EQ(revolutions.size(), 2u);
+  const int bore = testing::PrimitiveId(p.part, "bore");
+  const int countersink = testing::PrimitiveId(p.part, "countersink");
+  EXPECT_EQ(revolutions[0]->regions, (std::vector<int>{std::min(bore, countersink),
+                                                       std::max(bore, countersink)}));
+  EXPECT_TRUE(OfType(p, FeatureType::kLinearExtrusion).empty());
+}
+
 }  // namespace
 }  // namespace meshseg

@@ -1,8 +1,10 @@
 #include "meshseg/topology.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
+#include <Eigen/Geometry>
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -30,6 +32,19 @@ TEST(ExtractTopology, BoxHasTwelveLineCurvesEightSnappedCornersSixOuterLoops) {
   for (const Loop& loop : topo->loops) {
     EXPECT_EQ(loop.kind, LoopKind::kOuter) << "loop " << loop.id;
     EXPECT_EQ(loop.curves.size(), 4u) << "loop " << loop.id;
+    // Counterclockwise about the side's outward normal: positive vector area.
+    Eigen::Vector3d area = Eigen::Vector3d::Zero();
+    for (const CurveUse& use : loop.curves) {
+      std::vector<int> v = topo->curves[use.curve].vertices;
+      if (use.reversed) std::reverse(v.begin(), v.end());
+      for (size_t i = 0; i + 1 < v.size(); ++i) {
+        area += ToEigen(box.mesh.tri.point(OpenMesh::VertexHandle(v[i])))
+                    .cross(ToEigen(box.mesh.tri.point(OpenMesh::VertexHandle(v[i + 1]))));
+      }
+    }
+    const int side = loop.region;
+    const Eigen::Vector3d outward = (side % 2 == 0 ? -1.0 : 1.0) * Eigen::Vector3d::Unit(side / 2);
+    EXPECT_GT(area.dot(outward), 0.0) << "loop " << loop.id;
   }
   for (const BoundaryCurve& c : topo->curves) {
     EXPECT_EQ(c.geometry.type, CurveGeometryType::kLine) << "curve " << c.id;
