@@ -9,9 +9,15 @@
 //
 // In: points (and, where the method needs them, smoothed normals n'_i).
 // Out: FitResult with the surface and its rms / max distance. A region that
-// fits no cylinder is an answer (converged = false or large errors), not an
-// error; degenerate input (too few / collinear points) yields ok() == false
-// and finite numbers, never NaN.
+// fits no cylinder is an answer (large errors), not an error; degenerate
+// input (too few / collinear points, all normals parallel where the axis
+// comes from them, missing normals where required) yields ok() == false and
+// finite numbers, never NaN. All functions are pure and deterministic; none
+// allocates per point inside its iterations.
+//
+// Normals: unit normals n'_i, either orientation (outward for a solid's
+// skin, inward for a hole); the fitted surface's own normal convention is
+// fixed (outward from the axis / centre / tube centre; ∇f for the quadric).
 #ifndef MESHSEG_FIT_H_
 #define MESHSEG_FIT_H_
 
@@ -29,7 +35,10 @@ struct FitParams {
   int max_iterations = 30;
   // Stop when the relative decrease of the squared error is below this.
   double relative_tolerance = 1e-10;
-  // Refine the linear initial fit by geometric distance (seed 000 §5).
+  // Refine the linear initial fit by geometric distance (seed 000 §5): LM for
+  // sphere, cylinder, cone, torus; orthogonal regression for the plane; the
+  // parallel-gradient eigenproblem for the quadric. false = seed 002's fast
+  // linear fits only (a cone without normals then has no angle: invalid).
   bool refine = true;
 };
 
@@ -45,7 +54,7 @@ struct FitResult {
   Surface surface;
   double rms_distance = 0.0;  // root mean square of point-to-surface distance
   double max_distance = 0.0;
-  int iterations = 0;         // refinement iterations used
+  int iterations = 0;         // refinement iterations used (0 = linear fit kept)
   bool valid = false;         // false: degenerate input, surface meaningless
 
   bool ok() const { return valid; }
@@ -61,24 +70,36 @@ struct Projection {
 
 // Closed form for plane, cylinder, cone, sphere, torus; for the quadric the
 // 3-step line/gradient iteration of seed 000 §5 starting along `hint_direction`
-// (the vertex normal n_i; zero vector = use the gradient at p).
+// (the vertex normal n_i; zero vector = use the gradient at p). Normals:
+// plane as given; sphere, cylinder, cone outward from the centre / axis;
+// torus outward from the tube centre; quadric ∇f / |∇f|. The cone is the one
+// nappe on the axis side; behind the apex the apex is the closest point. On an
+// axis or at a centre (no unique foot point) the radial direction is taken
+// from hint_direction, else chosen deterministically; results stay finite.
 Projection Project(const Surface& surface, const Eigen::Vector3d& p,
                    const Eigen::Vector3d& hint_direction = Eigen::Vector3d::Zero());
 
-// Signed distance from p to the surface (|.| of Project's distance for the
-// closed forms; the algebraic-to-geometric estimate |f| / |grad f| refined by
-// the 3-step projection for the quadric).
+// Signed distance from p to the surface: Project(surface, p).distance.
 double SignedDistance(const Surface& surface, const Eigen::Vector3d& p);
 
+// Plane: >= 3 non-collinear points; normal oriented like the mean normal.
 FitResult FitPlane(const FitInput& input, const FitParams& params = {});
+// Sphere: >= 4 points not all in one plane; normals not used.
 FitResult FitSphere(const FitInput& input, const FitParams& params = {});
-// Cylinder, cone and torus need normals for their initial values (seed 002);
-// without normals they estimate them by PCA of the points (less robust).
+// Cylinder (>= 5 points) and cone (>= 6) take their initial axis from the
+// normals (seed 002); without normals each principal axis of the points is
+// tried as the initial axis and the best refined fit is kept (3x the cost).
+// Cylinder: axis_origin is the axis point nearest the points' centroid.
+// Cone: axis points from the apex into the data; ok() == false when the fit
+// degenerates to a cylinder (half angle ~ 0, apex at infinity).
 FitResult FitCylinder(const FitInput& input, const FitParams& params = {});
 FitResult FitCone(const FitInput& input, const FitParams& params = {});
+// Torus: >= 8 points, needs normals (Kós et al. initial axis, seed 002).
 FitResult FitTorus(const FitInput& input, const FitParams& params = {});
 // Seed 000 eq. (8): min Σ f(v_i)² + λ Σ |n_i − ∇f(v_i)|², λ = total area
-// (weights sum) or point count; linear. Needs normals.
+// (weights sum) or, without weights, s² (s = RMS distance of the points from
+// their centroid); linear. Needs normals and >= 10 points. See FitParams
+// for the refinement. Coefficients scaled so mean |∇f| over the points = 1.
 FitResult FitQuadric(const FitInput& input, const FitParams& params = {});
 
 // The local quadratic height function of seed 000 §2:
@@ -94,8 +115,9 @@ struct HeightFunction {
 };
 
 // Fits h over `points` in the frame at `origin` with normal `normal`
-// (weighted least squares if weights are given). valid = false with fewer
-// than 6 well-spread points.
+// (weighted least squares if weights are given; u_axis is chosen
+// deterministically from the normal). valid = false with fewer than 6
+// well-spread points (e.g. all on one line) or a zero normal; a is then zero.
 HeightFunction FitHeightFunction(std::span<const Eigen::Vector3d> points,
                                  const Eigen::Vector3d& origin, const Eigen::Vector3d& normal,
                                  std::span<const double> weights = {});

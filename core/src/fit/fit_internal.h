@@ -52,12 +52,6 @@ void SetDistanceErrors(const FitInput& input, FitResult* result);
 // A result with valid = false, the given surface and zero errors.
 FitResult InvalidResult(const Surface& surface);
 
-// True if every component of v is finite.
-template <typename Derived>
-bool AllFinite(const Eigen::MatrixBase<Derived>& v) {
-  return v.allFinite();
-}
-
 }  // namespace meshseg::fit_internal
 
 #endif  // MESHSEG_SRC_FIT_FIT_INTERNAL_H_
