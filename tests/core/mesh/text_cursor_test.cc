@@ -1,0 +1,60 @@
+#include "mesh/text_cursor.h"
+
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+namespace meshseg::mesh_internal {
+namespace {
+
+TEST(TextCursor, ReadsTokensLineByLineWithLineNumbers) {
+  TextCursor cursor("a b\r\n\n  # comment\nc\t d # tail\n");
+  ASSERT_TRUE(cursor.SkipEmptyLines());
+  EXPECT_EQ(cursor.line(), 1);
+  EXPECT_EQ(cursor.Token(), "a");
+  EXPECT_EQ(cursor.Token(), "b");
+  EXPECT_EQ(cursor.Token(), "");
+  EXPECT_TRUE(cursor.AtLineEnd());
+  cursor.NextLine();
+  ASSERT_TRUE(cursor.SkipEmptyLines());
+  EXPECT_EQ(cursor.line(), 4);
+  EXPECT_EQ(cursor.Token(), "c");
+  EXPECT_EQ(cursor.Token(), "d");
+  EXPECT_TRUE(cursor.AtLineEnd());
+  cursor.NextLine();
+  EXPECT_FALSE(cursor.SkipEmptyLines());
+  EXPECT_TRUE(cursor.AtEnd());
+}
+
+TEST(TextCursor, SplitsOnCommasWhenAsked) {
+  TextCursor cursor("1,2, 3", /*comma_is_space=*/true);
+  EXPECT_EQ(cursor.Token(), "1");
+  EXPECT_EQ(cursor.Token(), "2");
+  EXPECT_EQ(cursor.Token(), "3");
+}
+
+TEST(TextCursor, KeepsHashWhenCommentsAreOff) {
+  TextCursor cursor("#a b");
+  cursor.set_comments(false);
+  EXPECT_EQ(cursor.Token(), "#a");
+  EXPECT_EQ(cursor.RestOfLine(), " b");
+}
+
+TEST(ParseNumbers, AcceptsWholeTokensOnly) {
+  EXPECT_EQ(ParseDouble("-1.5e3"), -1500.0);
+  EXPECT_EQ(ParseDouble("+2"), 2.0);
+  EXPECT_FALSE(ParseDouble("1.5x"));
+  EXPECT_FALSE(ParseDouble(""));
+  EXPECT_TRUE(std::isnan(*ParseDouble("nan")));
+  EXPECT_EQ(ParseInt("-42"), -42);
+  EXPECT_FALSE(ParseInt("4.2"));
+  EXPECT_FALSE(ParseInt("99999999999999999999"));
+}
+
+TEST(Shorten, CutsLongTokens) {
+  EXPECT_EQ(Shorten(std::string(100, 'x')).size(), 24u);
+  EXPECT_EQ(StripLeadingSpace(" \n\tsolid"), "solid");
+}
+
+}  // namespace
+}  // namespace meshseg::mesh_internal
