@@ -49,7 +49,9 @@ int PlyElement::Find(std::string_view property_name) const {
 
 absl::StatusOr<PlyHeader> ParsePlyHeader(std::string_view bytes, const Source& src) {
   // The header is text even in binary files; stop the cursor at end_header.
-  const size_t end = bytes.find("end_header");
+  // "end_header" at the start of a line (not inside a comment).
+  size_t end = bytes.find("\nend_header");
+  if (end != std::string_view::npos) ++end;
   if (bytes.substr(0, 3) != "ply") return BadInput(src, "missing \"ply\" magic at byte 0");
   if (end == std::string_view::npos) return BadInput(src, "no \"end_header\" line");
   TextCursor cursor(bytes.substr(0, end + 10));
@@ -105,14 +107,13 @@ absl::StatusOr<PlyHeader> ParsePlyHeader(std::string_view bytes, const Source& s
       header.elements.back().properties.push_back(std::move(property));
     } else if (word == "end_header") {
       if (!have_format) return at_line("end_header before a format line");
-      cursor.NextLine();
-      header.body_offset = cursor.offset();
-      // end_header is the last line of the header; its newline may be \r\n.
-      if (header.body_offset == end + 10 && header.body_offset < bytes.size()) {
-        if (bytes[header.body_offset] == '\r') ++header.body_offset;
-        if (header.body_offset < bytes.size() && bytes[header.body_offset] == '\n') {
-          ++header.body_offset;
-        }
+      // The cursor stops right after "end_header"; its newline may be \r\n.
+      header.body_offset = end + 10;
+      if (header.body_offset < bytes.size() && bytes[header.body_offset] == '\r') {
+        ++header.body_offset;
+      }
+      if (header.body_offset < bytes.size() && bytes[header.body_offset] == '\n') {
+        ++header.body_offset;
       }
       header.body_line = cursor.line() + 1;
       return header;
