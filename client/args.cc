@@ -1,0 +1,78 @@
+#include "client/args.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "absl/strings/numbers.h"
+#include "absl/strings/str_cat.h"
+
+namespace meshseg::cli {
+namespace {
+
+bool Contains(std::initializer_list<std::string_view> names, std::string_view name) {
+  return std::find(names.begin(), names.end(), name) != names.end();
+}
+
+}  // namespace
+
+absl::StatusOr<Args> Args::Parse(const std::vector<std::string>& argv,
+                                 std::initializer_list<std::string_view> value_flags,
+                                 std::initializer_list<std::string_view> switches,
+                                 std::size_t positionals) {
+  Args args;
+  for (std::size_t i = 0; i < argv.size(); ++i) {
+    const std::string& arg = argv[i];
+    if (arg.size() < 2 || arg[0] != '-') {
+      args.positional_.push_back(arg);
+      continue;
+    }
+    std::string name = arg;
+    std::optional<std::string> value;
+    if (const std::size_t eq = arg.find('='); eq != std::string::npos) {
+      name = arg.substr(0, eq);
+      value = arg.substr(eq + 1);
+    }
+    if (Contains(switches, name) && !value) {
+      args.switches_.insert(name);
+    } else if (Contains(value_flags, name)) {
+      if (!value) {
+        if (i + 1 >= argv.size()) {
+          return absl::InvalidArgumentError(absl::StrCat(name, " needs a value"));
+        }
+        value = argv[++i];
+      }
+      args.values_[name] = *value;
+    } else {
+      return absl::InvalidArgumentError(absl::StrCat("unknown option ", arg));
+    }
+  }
+  if (args.positional_.size() != positionals) {
+    return absl::InvalidArgumentError(absl::StrCat("expected ", positionals, " argument",
+                                                   positionals == 1 ? "" : "s", ", got ",
+                                                   args.positional_.size()));
+  }
+  return args;
+}
+
+bool Args::Has(std::string_view flag) const {
+  return switches_.contains(flag) || values_.contains(flag);
+}
+
+std::optional<std::string> Args::Value(std::string_view flag) const {
+  const auto it = values_.find(flag);
+  if (it == values_.end()) return std::nullopt;
+  return it->second;
+}
+
+absl::StatusOr<std::optional<double>> Args::Double(std::string_view flag) const {
+  const std::optional<std::string> text = Value(flag);
+  if (!text) return std::optional<double>();
+  double value = 0.0;
+  if (!absl::SimpleAtod(*text, &value) || !std::isfinite(value)) {
+    return absl::InvalidArgumentError(
+        absl::StrCat(std::string(flag), " must be a number, got \"", *text, "\""));
+  }
+  return std::optional<double>(value);
+}
+
+}  // namespace meshseg::cli

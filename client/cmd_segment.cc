@@ -1,0 +1,92 @@
+// meshseg segment INPUT -o RESULT.json [--colored-ply OUT.ply]
+//   [--distance-tolerance X] [--angle-tolerance DEG] [--format FMT] [--server HOST:PORT]
+// In-process by default; with --server the same result comes from the service.
+#include <cstdio>
+
+#include "absl/strings/str_cat.h"
+#include "client/commands.h"
+#include "client/progress.h"
+#include "client/report.h"
+#include "meshseg/mesh.h"
+#include "meshseg/pipeline.h"
+#include "meshseg/proto/convert.h"
+#include "meshseg/proto/result_json.h"
+#include "meshseg/status_macros.h"
+
+namespace meshseg::cli {
+namespace {
+
+absl::StatusOr<v1::SegmentationResult> SegmentOffline(const std::string& path,
+                                                      const v1::SegmentOptions& options,
+                                                      const std::string& format_hint) {
+  MESHSEG_ASSIGN_OR_RETURN(PipelineParams params, FromProto(options));
+  MESHSEG_ASSIGN_OR_RETURN(params.format, FormatFromHint(format_hint));
+  ProgressPrinter progress;
+  RunContext ctx;
+  ctx.on_progress = [&](std::string_view stage, double f) { progress.Update(stage, f); };
+  MESHSEG_ASSIGN_OR_RETURN(const PipelineResult result, RunPipeline(path, params, ctx));
+  progress.Finish();
+  return ToProto(result);
+}
+
+absl::StatusOr<v1::SegmentationResult> SegmentOnServer(const Args& args, const std::string& path,
+                                                       const UploadOptions& options) {
+  MESHSEG_ASSIGN_OR_RETURN(MeshsegClient client, ConnectFromArgs(args));
+  ProgressPrinter progress;
+  return client.Segment(path, options, [&](const v1::JobEvent& e) { progress.Event(e); });
+}
+
+// Writes the input mesh coloured by region; labels are per input face.
+absl::Status WriteColored(const std::string& input, const v1::SegmentationResult& result,
+                          const std::string& out) {
+  MESHSEG_ASSIGN_OR_RETURN(const Mesh mesh, ReadMesh(input));
+  if (mesh.face_of_input.size() != static_cast<std::size_t>(result.face_labels_size())) {
+    return absl::InternalError(absl::StrCat("colored ply: result has ", result.face_labels_size(),
+                                            " face labels, input has ",
+                                            mesh.face_of_input.size(), " faces"));
+  }
+  std::vector<int> labels(mesh.tri.n_faces(), -1);
+  for (std::size_t i = 0; i < mesh.face_of_input.size(); ++i) {
+    if (mesh.face_of_input[i] >= 0) labels[mesh.face_of_input[i]] = result.face_labels(i);
+  }
+  return WriteColoredPly(mesh.tri, labels, out);
+}
+
+}  // namespace
+
+absl::Status RunSegment(const Argv& argv) {
+  MESHSEG_ASSIGN_OR_RETURN(
+      const Args args,
+      Args::Parse(argv,
+                  {"-o", "--colored-ply", "--distance-tolerance", "--angle-tolerance", "--format",
+                   "--server"},
+                  {}, 1));
+  const std::string& input = args.positional(0);
+  const std::optional<std::string> out = args.Value("-o");
+  if (!out) return absl::InvalidArgumentError("-o RESULT.json is required");
+
+  UploadOptions options;
+  options.format_hint = args.Value("--format").value_or("");
+  MESHSEG_ASSIGN_OR_RETURN(const std::optional<double> dist, args.Double("--distance-tolerance"));
+  MESHSEG_ASSIGN_OR_RETURN(const std::optional<double> angle, args.Double("--angle-tolerance"));
+  if (dist) options.segment.set_distance_tolerance(*dist);
+  if (angle) options.segment.set_angle_tolerance_deg(*angle);
+  // Same validation on both paths (the server repeats it).
+  MESHSEG_RETURN_IF_ERROR(FromProto(options.segment).status());
+  MESHSEG_RETURN_IF_ERROR(FormatFromHint(options.format_hint).status());
+
+  absl::StatusOr<v1::SegmentationResult> result =
+      args.Has("--server") ? SegmentOnServer(args, input, options)
+                           : SegmentOffline(input, options.segment, options.format_hint);
+  if (!result.ok()) return result.status();
+  MESHSEG_ASSIGN_OR_RETURN(const std::string json, ResultJson(*result));
+  MESHSEG_RETURN_IF_ERROR(WriteTextFile(*out, json));
+  if (const std::optional<std::string> ply = args.Value("--colored-ply")) {
+    MESHSEG_RETURN_IF_ERROR(WriteColored(input, *result, *ply));
+  }
+  std::fputs(RegionTable(*result).c_str(), stdout);
+  std::printf("wrote %s\n", out->c_str());
+  return absl::OkStatus();
+}
+
+}  // namespace meshseg::cli

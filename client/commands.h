@@ -1,0 +1,39 @@
+// File: commands.h
+// -----------------------------------------------------------------------------
+// The `meshseg` subcommands, one file each (cmd_<name>.cc). Each takes the
+// arguments after its name and returns OK or the one error main prints.
+#ifndef MESHSEG_CLIENT_COMMANDS_H_
+#define MESHSEG_CLIENT_COMMANDS_H_
+
+#include <string>
+#include <vector>
+
+#include "absl/status/status.h"
+#include "absl/status/statusor.h"
+#include "client/args.h"
+#include "client/meshseg_client.h"
+
+namespace meshseg::cli {
+
+using Argv = std::vector<std::string>;
+
+absl::Status RunInfo(const Argv& argv);
+absl::Status RunGenerate(const Argv& argv);
+absl::Status RunConvert(const Argv& argv);
+absl::Status RunSegment(const Argv& argv);
+absl::Status RunJobs(const Argv& argv);
+absl::Status RunStatus(const Argv& argv);
+absl::Status RunWatch(const Argv& argv);
+absl::Status RunResult(const Argv& argv);
+absl::Status RunCancel(const Argv& argv);
+
+// The server of a job command: --server, else $MESHSEG_SERVER.
+// Errors (INVALID_ARGUMENT): neither is set.
+absl::StatusOr<MeshsegClient> ConnectFromArgs(const Args& args);
+
+// Writes `text` to `path`. Errors: INTERNAL naming the path.
+absl::Status WriteTextFile(const std::string& path, const std::string& text);
+
+}  // namespace meshseg::cli
+
+#endif  // MESHSEG_CLIENT_COMMANDS_H_

@@ -1,0 +1,52 @@
+// meshseg: the command-line client. `meshseg help` lists the subcommands.
+// Exit code 0 on success; otherwise one line on stderr and 1 (2 for usage).
+#include <cstdio>
+#include <map>
+#include <string>
+
+#include "absl/strings/str_replace.h"
+#include "client/commands.h"
+
+namespace {
+
+constexpr char kUsage[] =
+    "usage: meshseg <command> ...\n"
+    "  info FILE [--json]\n"
+    "  generate PART -o FILE [--voxel-size H] [--noise S] [--ground-truth GT.json]\n"
+    "  convert IN OUT\n"
+    "  segment INPUT -o RESULT.json [--colored-ply OUT.ply] [--distance-tolerance X]\n"
+    "          [--angle-tolerance DEG] [--format FMT] [--server HOST:PORT]\n"
+    "  jobs --server HOST:PORT\n"
+    "  status JOB --server HOST:PORT\n"
+    "  watch JOB --server HOST:PORT\n"
+    "  result JOB -o RESULT.json --server HOST:PORT\n"
+    "  cancel JOB --server HOST:PORT\n"
+    "(--server defaults to $MESHSEG_SERVER)\n";
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  using Command = absl::Status (*)(const meshseg::cli::Argv&);
+  const std::map<std::string, Command> commands = {
+      {"info", meshseg::cli::RunInfo},       {"generate", meshseg::cli::RunGenerate},
+      {"convert", meshseg::cli::RunConvert}, {"segment", meshseg::cli::RunSegment},
+      {"jobs", meshseg::cli::RunJobs},       {"status", meshseg::cli::RunStatus},
+      {"watch", meshseg::cli::RunWatch},     {"result", meshseg::cli::RunResult},
+      {"cancel", meshseg::cli::RunCancel},
+  };
+  if (argc < 2 || std::string(argv[1]) == "help" || std::string(argv[1]) == "--help") {
+    std::fputs(kUsage, argc < 2 ? stderr : stdout);
+    return argc < 2 ? 2 : 0;
+  }
+  const auto it = commands.find(argv[1]);
+  if (it == commands.end()) {
+    std::fprintf(stderr, "meshseg: unknown command \"%s\" (try: meshseg help)\n", argv[1]);
+    return 2;
+  }
+  const absl::Status status = it->second(meshseg::cli::Argv(argv + 2, argv + argc));
+  if (status.ok()) return 0;
+  // One line, whatever the message holds.
+  const std::string message = absl::StrReplaceAll(std::string(status.message()), {{"\n", " "}});
+  std::fprintf(stderr, "meshseg %s: %s\n", argv[1], message.c_str());
+  return 1;
+}

@@ -1,0 +1,74 @@
+#include "client/report.h"
+
+#include "absl/strings/str_cat.h"
+#include "absl/strings/str_format.h"
+#include "absl/strings/strip.h"
+
+namespace meshseg::cli {
+namespace {
+
+std::string Vec(const v1::Vec3& v) { return absl::StrFormat("(%.4g %.4g %.4g)", v.x(), v.y(), v.z()); }
+
+std::string KeyParameters(const v1::Region& r) {
+  switch (r.surface_case()) {
+    case v1::Region::kPlane:
+      return absl::StrCat("n=", Vec(r.plane().normal()));
+    case v1::Region::kCylinder:
+      return absl::StrFormat("r=%.4g axis=%s", r.cylinder().radius(),
+                             Vec(r.cylinder().axis_direction()));
+    case v1::Region::kCone:
+      return absl::StrFormat("half_angle=%.3f deg apex=%s",
+                             r.cone().half_angle() * 57.29577951308232, Vec(r.cone().apex()));
+    case v1::Region::kSphere:
+      return absl::StrFormat("r=%.4g c=%s", r.sphere().radius(), Vec(r.sphere().center()));
+    case v1::Region::kTorus:
+      return absl::StrFormat("R=%.4g r=%.4g c=%s", r.torus().major_radius(),
+                             r.torus().minor_radius(), Vec(r.torus().center()));
+    case v1::Region::kQuadric:
+      return "quadric";
+    default:
+      return "";
+  }
+}
+
+}  // namespace
+
+std::string RegionTable(const v1::SegmentationResult& result) {
+  int64_t labelled = 0;
+  for (int label : result.face_labels()) labelled += label >= 0 ? 1 : 0;
+  std::string out = absl::StrFormat(
+      "%d faces, %d vertices, mean edge %.4g; %d regions cover %d faces\n",
+      result.mesh().face_count(), result.mesh().vertex_count(), result.mesh().mean_edge_length(),
+      result.regions_size(), labelled);
+  if (result.regions_size() == 0) return out;
+  absl::StrAppendFormat(&out, "%4s  %-9s %8s  %-44s %10s\n", "id", "type", "faces",
+                        "parameters", "rms");
+  for (const v1::Region& r : result.regions()) {
+    const std::string type(
+        absl::StripPrefix(v1::SurfaceType_Name(r.type()), "SURFACE_TYPE_"));
+    absl::StrAppendFormat(&out, "%4d  %-9s %8d  %-44s %10.3g\n", r.id(), type, r.face_count(),
+                          KeyParameters(r), r.rms_distance());
+  }
+  return out;
+}
+
+std::string JobLine(const v1::Job& job) {
+  const std::string state(absl::StripPrefix(v1::JobState_Name(job.state()), "JOB_STATE_"));
+  std::string line = absl::StrFormat("%s  %-9s %s", job.job_id(), state, job.file_name());
+  switch (job.state()) {
+    case v1::JOB_STATE_QUEUED:
+      absl::StrAppend(&line, "  (", job.queue_position(), " ahead)");
+      break;
+    case v1::JOB_STATE_RUNNING:
+      absl::StrAppendFormat(&line, "  %s %.0f%%", job.stage(), 100.0 * job.fraction());
+      break;
+    case v1::JOB_STATE_SUCCEEDED:
+      absl::StrAppend(&line, "  ", job.region_count(), " regions, ", job.face_count(), " faces");
+      break;
+    default:
+      if (!job.error_message().empty()) absl::StrAppend(&line, "  ", job.error_message());
+  }
+  return line;
+}
+
+}  // namespace meshseg::cli

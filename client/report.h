@@ -1,0 +1,22 @@
+// File: report.h
+// -----------------------------------------------------------------------------
+// What the CLI prints for people: the region table of a result and one line
+// per job.
+#ifndef MESHSEG_CLIENT_REPORT_H_
+#define MESHSEG_CLIENT_REPORT_H_
+
+#include <string>
+
+#include "meshseg/v1/service.pb.h"
+
+namespace meshseg::cli {
+
+// Returns a summary line and a table: id, type, faces, key parameters, rms.
+std::string RegionTable(const v1::SegmentationResult& result);
+
+// Returns one line: id, state, file, progress or error.
+std::string JobLine(const v1::Job& job);
+
+}  // namespace meshseg::cli
+
+#endif  // MESHSEG_CLIENT_REPORT_H_

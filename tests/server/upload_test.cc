@@ -1,0 +1,207 @@
+// Upload over loopback: every supported format round-trips and gives the
+// offline JSON byte for byte; bad uploads get a clear status or a FAILED
+// job, leave no spool file, and do not disturb the server.
+#include <filesystem>
+#include <functional>
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include "meshseg/proto/convert.h"
+#include "meshseg/proto/result_json.h"
+#include "meshseg/proto/sha256.h"
+#include "tests/server/test_files.h"
+#include "tests/server/test_server.h"
+
+namespace meshseg {
+namespace {
+
+using ::testing::HasSubstr;
+using testing_files::SplitBox;
+using testing_server::Eventually;
+using testing_server::FreshDir;
+using testing_server::TestServer;
+
+absl::StatusOr<std::string> OfflineJson(const std::string& path) {
+  absl::StatusOr<PipelineResult> r = RunPipeline(path);
+  if (!r.ok()) return r.status();
+  return ResultJson(ToProto(*r));
+}
+
+// Sends `header` then `chunks` on one Upload call and returns its status.
+grpc::Status RawUpload(MeshsegClient& client, const v1::UploadHeader& header,
+                       const std::vector<std::string>& chunks, v1::UploadResponse* response) {
+  grpc::ClientContext context;
+  auto writer = client.stub().Upload(&context, response);
+  v1::UploadRequest request;
+  *request.mutable_header() = header;
+  writer->Write(request);
+  for (const std::string& chunk : chunks) {
+    request.set_chunk(chunk);
+    if (!writer->Write(request)) break;
+  }
+  writer->WritesDone();
+  return writer->Finish();
+}
+
+v1::UploadHeader Header(const std::string& name, const std::string& data) {
+  v1::UploadHeader h;
+  h.set_file_name(name);
+  h.set_total_size(static_cast<int64_t>(data.size()));
+  return h;
+}
+
+struct Format {
+  std::string file;
+  std::function<void(const testing_files::TestMesh&, const std::string&)> write;
+};
+
+TEST(Upload, EveryMeshFormatGivesTheOfflineJsonByteForByte) {
+  TestServer server;
+  MeshsegClient client = server.Client();
+  const std::string dir = FreshDir("files");
+  const testing_files::TestMesh box = SplitBox(3, {2.0, 1.0, 0.5});
+  const std::vector<Format> formats = {
+      {"box_ascii.stl", testing_files::WriteStlAscii}, {"box_binary.stl", testing_files::WriteStlBinary},
+      {"box.obj", testing_files::WriteObj},            {"box.off", testing_files::WriteOff},
+      {"box_ascii.ply", testing_files::WritePlyAscii}, {"box_binary.ply", testing_files::WritePlyBinary},
+  };
+  for (const Format& f : formats) {
+    const std::string path = dir + "/" + f.file;
+    f.write(box, path);
+    const absl::StatusOr<std::string> offline = OfflineJson(path);
+    ASSERT_TRUE(offline.ok()) << f.file << ": " << offline.status();
+    const absl::StatusOr<v1::SegmentationResult> remote = client.Segment(path);
+    ASSERT_TRUE(remote.ok()) << f.file << ": " << remote.status();
+    EXPECT_EQ(remote->face_labels_size(), static_cast<int>(box.f.size())) << f.file;
+    EXPECT_EQ(*ResultJson(*remote), *offline) << f.file;
+  }
+}
+
+TEST(Upload, PointCloudGivesTheSameOutcomeAsOffline) {
+  TestServer server;
+  MeshsegClient client = server.Client();
+  const std::string path = FreshDir("files") + "/box.xyz";
+  testing_files::WriteXyz(SplitBox(3, {1, 1, 1}), path);
+  const absl::StatusOr<std::string> offline = OfflineJson(path);
+  const absl::StatusOr<v1::SegmentationResult> remote = client.Segment(path);
+  ASSERT_EQ(remote.status().code(), offline.status().code()) << remote.status();
+  if (offline.ok()) EXPECT_EQ(*ResultJson(*remote), *offline);
+}
+
+TEST(Upload, SmallChunksAndAFormatHintWork) {
+  TestServer server;
+  MeshsegClient client = server.Client();
+  const std::string path = FreshDir("files") + "/box.mesh";  // extension says nothing
+  testing_files::WriteOff(SplitBox(2, {1, 1, 1}), path);
+  const absl::StatusOr<v1::SegmentationResult> r =
+      client.Segment(path, {.format_hint = "off", .chunk_bytes = 100});
+  ASSERT_TRUE(r.ok()) << r.status();
+  EXPECT_EQ(r->mesh().face_count(), 48);
+}
+
+TEST(Upload, BadUploadsGetAClearStatusAndLeaveNoSpoolFile) {
+  TestServer server({.max_upload_bytes = 4096});
+  MeshsegClient client = server.Client();
+  const std::string data(1000, ' ');
+  v1::UploadResponse response;
+
+  v1::UploadHeader truncated = Header("part.stl", data);
+  truncated.set_total_size(2000);
+  grpc::Status s = RawUpload(client, truncated, {data}, &response);
+  EXPECT_EQ(s.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
+  EXPECT_THAT(s.error_message(), HasSubstr("truncated"));
+  EXPECT_THAT(s.error_message(), HasSubstr("part.stl"));
+
+  v1::UploadHeader longer = Header("part.stl", data);
+  longer.set_total_size(10);
+  s = RawUpload(client, longer, {data}, &response);
+  EXPECT_EQ(s.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
+
+  v1::UploadHeader oversized = Header("big.stl", data);
+  oversized.set_total_size(5000);
+  s = RawUpload(client, oversized, {data}, &response);
+  EXPECT_EQ(s.error_code(), grpc::StatusCode::RESOURCE_EXHAUSTED);
+  EXPECT_THAT(s.error_message(), HasSubstr("4096"));
+
+  v1::UploadHeader checksum = Header("part.stl", data);
+  checksum.set_sha256(std::string(64, '0'));
+  s = RawUpload(client, checksum, {data}, &response);
+  EXPECT_EQ(s.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
+  EXPECT_THAT(s.error_message(), HasSubstr("sha256 mismatch"));
+
+  v1::UploadHeader unknown = Header("notes.txt", "just text\n");
+  s = RawUpload(client, unknown, {"just text\n"}, &response);
+  EXPECT_EQ(s.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
+
+  v1::UploadHeader hint = Header("part.stl", data);
+  hint.set_format_hint("step");
+  s = RawUpload(client, hint, {data}, &response);
+  EXPECT_EQ(s.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
+  EXPECT_THAT(s.error_message(), HasSubstr("step"));
+
+  v1::UploadHeader options = Header("part.stl", data);
+  options.mutable_options()->set_angle_tolerance_deg(-3);
+  s = RawUpload(client, options, {data}, &response);
+  EXPECT_EQ(s.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
+
+  {  // chunks without a header
+    grpc::ClientContext context;
+    auto writer = client.stub().Upload(&context, &response);
+    v1::UploadRequest chunk;
+    chunk.set_chunk(data);
+    writer->Write(chunk);
+    writer->WritesDone();
+    s = writer->Finish();
+    EXPECT_EQ(s.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
+    EXPECT_THAT(s.error_message(), HasSubstr("header"));
+  }
+  EXPECT_EQ(server.SpoolFiles(), 0);
+  EXPECT_TRUE(client.ListJobs()->empty()) << "no job may be created by a bad upload";
+}
+
+TEST(Upload, ClientDisconnectMidStreamLeavesNoSpoolFile) {
+  TestServer server;
+  MeshsegClient client = server.Client();
+  const std::string chunk(64 * 1024, 'x');
+  v1::UploadHeader header;
+  header.set_file_name("part.stl");
+  header.set_total_size(int64_t{100} << 20);
+  grpc::ClientContext context;
+  v1::UploadResponse response;
+  auto writer = client.stub().Upload(&context, &response);
+  v1::UploadRequest request;
+  *request.mutable_header() = header;
+  ASSERT_TRUE(writer->Write(request));
+  request.set_chunk(chunk);
+  for (int i = 0; i < 4; ++i) ASSERT_TRUE(writer->Write(request));
+  ASSERT_TRUE(Eventually([&] { return server.SpoolFiles() == 1; }));  // receiving
+  context.TryCancel();
+  EXPECT_EQ(writer->Finish().error_code(), grpc::StatusCode::CANCELLED);
+  EXPECT_TRUE(Eventually([&] { return server.SpoolFiles() == 0; }));
+}
+
+TEST(Upload, UnreadableContentFailsTheJobWithAMessageAndOthersStillRun) {
+  TestServer server;
+  MeshsegClient client = server.Client();
+  const std::string dir = FreshDir("files");
+  const std::string nan = dir + "/nan_vertex.obj";
+  testing_files::WriteText(nan, "v 0 0 0\nv 1 0 nan\nv 0 1 0\nf 1 2 3\n");
+  const std::string truncated = dir + "/truncated_binary.stl";
+  testing_files::WriteStlBinary(SplitBox(2, {1, 1, 1}), truncated);
+  std::filesystem::resize_file(truncated, 84 + 50 * 10 + 7);
+  const std::string good = dir + "/good.obj";
+  testing_files::WriteObj(SplitBox(2, {1, 1, 1}), good);
+
+  for (const std::string& bad : {nan, truncated}) {
+    const absl::StatusOr<v1::SegmentationResult> r = client.Segment(bad);
+    EXPECT_EQ(r.status().code(), absl::StatusCode::kInvalidArgument) << r.status();
+    EXPECT_THAT(r.status().message(), HasSubstr(std::filesystem::path(bad).filename().string()));
+  }
+  const absl::StatusOr<v1::SegmentationResult> ok = client.Segment(good);
+  ASSERT_TRUE(ok.ok()) << ok.status();
+  EXPECT_EQ(server.SpoolFiles(), 1) << "only the good job's result stays";
+}
+
+}  // namespace
+}  // namespace meshseg
