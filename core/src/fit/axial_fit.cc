@@ -1,6 +1,7 @@
 #include "fit/axial_fit.h"
 
 #include <cmath>
+#include <limits>
 #include <vector>
 
 #include "fit/algebraic_sphere.h"
@@ -115,6 +116,29 @@ double AxialCost(const FitInput& input, const AxialSurface& s) {
   Eigen::MatrixXd jtj;
   Eigen::VectorXd jtr;
   return AxialProblem(input, true).Evaluate(ToState(s), &jtj, &jtr);
+}
+
+double BestAxialFit(const FitInput& input, const Eigen::Vector3d& centroid,
+                    std::span<const AxialSurface> starts, bool fit_angle,
+                    const FitParams& params, AxialSurface* best, int* iterations) {
+  double best_cost = std::numeric_limits<double>::infinity();
+  for (AxialSurface s : starts) {
+    int used = 0;
+    double cost = 0.0;
+    if (params.refine) {
+      const LmOutcome lm = RefineAxial(input, centroid, fit_angle, params, &s);
+      used = lm.iterations;
+      cost = lm.cost;
+    } else {
+      cost = AxialCost(input, s);
+    }
+    if (cost < best_cost) {
+      best_cost = cost;
+      *best = s;
+      *iterations = used;
+    }
+  }
+  return best_cost;
 }
 
 }  // namespace meshseg::fit_internal

@@ -6,6 +6,8 @@
 #ifndef MESHSEG_SRC_FIT_AXIAL_FIT_H_
 #define MESHSEG_SRC_FIT_AXIAL_FIT_H_
 
+#include <span>
+
 #include <Eigen/Core>
 
 #include "fit/levenberg_marquardt.h"
@@ -34,6 +36,13 @@ LmOutcome RefineAxial(const FitInput& input, const Eigen::Vector3d& centroid, bo
 
 // Σ w r² of `s` over the input (the refinement's cost).
 double AxialCost(const FitInput& input, const AxialSurface& s);
+
+// Refines every start with RefineAxial (or, without params.refine, only
+// scores it) and sets *best to the one of least cost and *iterations to its
+// LM iterations. Returns that cost; +inf if `starts` is empty.
+double BestAxialFit(const FitInput& input, const Eigen::Vector3d& centroid,
+                    std::span<const AxialSurface> starts, bool fit_angle,
+                    const FitParams& params, AxialSurface* best, int* iterations);
 
 }  // namespace meshseg::fit_internal
 

@@ -7,7 +7,6 @@
 // Levenberg–Marquardt on the distance to the generator line.
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <vector>
 
 #include <Eigen/Cholesky>
@@ -94,24 +93,9 @@ FitResult FitCone(const FitInput& input, const FitParams& params) {
   }
 
   FitResult r;
-  double best_cost = std::numeric_limits<double>::infinity();
   AxialSurface best;
-  for (AxialSurface s : starts) {
-    int iterations = 0;
-    double cost = 0.0;
-    if (params.refine) {
-      const LmOutcome lm = RefineAxial(input, m.centroid, /*fit_angle=*/true, params, &s);
-      iterations = lm.iterations;
-      cost = lm.cost;
-    } else {
-      cost = AxialCost(input, s);
-    }
-    if (cost < best_cost) {
-      best_cost = cost;
-      best = s;
-      r.iterations = iterations;
-    }
-  }
+  const double best_cost =
+      BestAxialFit(input, m.centroid, starts, /*fit_angle=*/true, params, &best, &r.iterations);
   // rho = radius + h tan(angle): the apex is where rho = 0.
   double t = std::tan(best.angle);
   Eigen::Vector3d axis = best.axis;

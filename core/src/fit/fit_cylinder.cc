@@ -5,7 +5,6 @@
 // refines the geometric distance. Without normals each principal axis of the
 // points is tried as the initial axis and the best refined fit is kept.
 #include <cmath>
-#include <limits>
 #include <vector>
 
 #include "fit/axial_fit.h"
@@ -43,27 +42,15 @@ FitResult FitCylinder(const FitInput& input, const FitParams& params) {
     for (int k = 0; k < 3; ++k) axes.push_back(pca.vectors.col(k));
   }
 
-  FitResult r;
-  double best_cost = std::numeric_limits<double>::infinity();
-  AxialSurface best;
+  std::vector<AxialSurface> starts;
   for (const Eigen::Vector3d& axis : axes) {
     AxialSurface s;
-    if (!FitCrossSection(input, m.centroid, axis, &s)) continue;
-    int iterations = 0;
-    double cost = 0.0;
-    if (params.refine) {
-      const LmOutcome lm = RefineAxial(input, m.centroid, /*fit_angle=*/false, params, &s);
-      iterations = lm.iterations;
-      cost = lm.cost;
-    } else {
-      cost = AxialCost(input, s);
-    }
-    if (cost < best_cost) {
-      best_cost = cost;
-      best = s;
-      r.iterations = iterations;
-    }
+    if (FitCrossSection(input, m.centroid, axis, &s)) starts.push_back(s);
   }
+  FitResult r;
+  AxialSurface best;
+  const double best_cost =
+      BestAxialFit(input, m.centroid, starts, /*fit_angle=*/false, params, &best, &r.iterations);
   const Cylinder cyl{best.origin, best.axis, std::abs(best.radius)};
   if (!std::isfinite(best_cost) || !cyl.axis_origin.allFinite() || !cyl.axis_direction.allFinite() ||
       !std::isfinite(cyl.radius) || !(cyl.radius > 0.0)) {

@@ -1,0 +1,84 @@
+#include "fit/axial_fit.h"
+
+#include <cmath>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "samples.h"
+
+namespace meshseg::fit_internal {
+namespace {
+
+// Cone with rho = 1.5 + 0.2 h about the line through (1, 0, 0) along z.
+AxialSurface TrueCone() {
+  return {Eigen::Vector3d(1, 0, 0), Eigen::Vector3d::UnitZ(), 1.5, std::atan(0.2)};
+}
+
+test::Samples ConeSamples() {
+  const AxialSurface c = TrueCone();
+  const double t = std::tan(c.angle);
+  const Cone cone{c.origin - (c.radius / t) * c.axis, c.axis, c.angle};
+  return test::SampleCone(cone, M_PI, 6.0, 10.0, 16, 8, 0.0);
+}
+
+Eigen::Vector3d Centroid(const test::Samples& s) {
+  Eigen::Vector3d c = Eigen::Vector3d::Zero();
+  for (const auto& p : s.points) c += p;
+  return c / static_cast<double>(s.points.size());
+}
+
+TEST(AxialCost, ZeroOnTheSurface) {
+  const test::Samples s = ConeSamples();
+  EXPECT_LT(AxialCost(s.Input(), TrueCone()), 1e-24);
+  AxialSurface off = TrueCone();
+  off.radius += 0.1;
+  // Every residual is -0.1 cos(angle).
+  EXPECT_NEAR(AxialCost(s.Input(), off),
+              s.points.size() * std::pow(0.1 * std::cos(off.angle), 2), 1e-12);
+}
+
+TEST(RefineAxial, RecoversConeFromPerturbedStart) {
+  const test::Samples s = ConeSamples();
+  const Eigen::Vector3d centroid = Centroid(s);
+  AxialSurface start = TrueCone();
+  start.origin += Eigen::Vector3d(0.1, -0.05, 0.0);
+  start.axis = Eigen::Vector3d(0.05, 0.02, 1.0).normalized();
+  start.radius += 0.2;
+  start.angle = 0.0;
+  const LmOutcome lm = RefineAxial(s.Input(), centroid, /*fit_angle=*/true, FitParams{}, &start);
+  EXPECT_LT(lm.cost, 1e-20);
+  EXPECT_NEAR(std::tan(start.angle), 0.2, 1e-9);
+  EXPECT_GT(start.axis.dot(Eigen::Vector3d::UnitZ()), 1.0 - 1e-12);
+  // The origin is moved next to the centroid, on the true axis.
+  EXPECT_NEAR((centroid - start.origin).dot(start.axis), 0.0, 1e-9);
+  EXPECT_LT(test::DistanceToLine(start.origin, TrueCone().origin, TrueCone().axis), 1e-9);
+}
+
+TEST(FitCrossSection, CircleOfProjectedCylinder) {
+  const Cylinder cyl{Eigen::Vector3d(1, 2, 3), Eigen::Vector3d::UnitY(), 2.5};
+  const test::Samples s = test::SampleCylinder(cyl, M_PI / 2, 3.0, 10, 5, 0.0);
+  AxialSurface out;
+  ASSERT_TRUE(FitCrossSection(s.Input(), Centroid(s), Eigen::Vector3d::UnitY(), &out));
+  EXPECT_NEAR(out.radius, 2.5, 1e-12);
+  EXPECT_LT(test::DistanceToLine(out.origin, cyl.axis_origin, cyl.axis_direction), 1e-12);
+}
+
+TEST(BestAxialFit, KeepsTheLowerCostStart) {
+  const test::Samples s = ConeSamples();
+  AxialSurface bad = TrueCone();
+  bad.axis = Eigen::Vector3d::UnitX();  // far from any good fit
+  const std::vector<AxialSurface> starts = {bad, TrueCone()};
+  AxialSurface best;
+  int iterations = -1;
+  const double cost = BestAxialFit(s.Input(), Centroid(s), starts, true,
+                                   FitParams{.refine = false}, &best, &iterations);
+  EXPECT_LT(cost, 1e-24);
+  EXPECT_EQ(iterations, 0);
+  EXPECT_GT(best.axis.z(), 0.99);
+  EXPECT_TRUE(std::isinf(BestAxialFit(s.Input(), Centroid(s), {}, true, FitParams{}, &best,
+                                      &iterations)));
+}
+
+}  // namespace
+}  // namespace meshseg::fit_internal

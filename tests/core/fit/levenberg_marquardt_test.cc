@@ -1,0 +1,91 @@
+#include "fit/levenberg_marquardt.h"
+
+#include <cmath>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+namespace meshseg::fit_internal {
+namespace {
+
+// y = a exp(b t) through points (t_i, y_i) stored as (t, y, 0).
+class ExponentialProblem : public LeastSquaresProblem {
+ public:
+  explicit ExponentialProblem(const FitInput& input) : input_(input) {}
+  int NumSteps() const override { return 2; }
+  double Evaluate(const Eigen::VectorXd& x, Eigen::MatrixXd* jtj,
+                  Eigen::VectorXd* jtr) const override {
+    return AccumulateNormalEquations<2>(
+        input_,
+        [&](std::size_t i, Eigen::Matrix<double, 1, 2>* row) {
+          const double t = input_.points[i].x();
+          const double e = std::exp(x(1) * t);
+          *row << e, x(0) * t * e;
+          return x(0) * e - input_.points[i].y();
+        },
+        jtj, jtr);
+  }
+  Eigen::VectorXd Step(const Eigen::VectorXd& x, const Eigen::VectorXd& step) const override {
+    return x + step;
+  }
+
+ private:
+  const FitInput& input_;
+};
+
+std::vector<Eigen::Vector3d> Samples() {
+  std::vector<Eigen::Vector3d> pts;
+  for (int i = 0; i <= 20; ++i) {
+    const double t = 0.1 * i;
+    pts.emplace_back(t, 2.0 * std::exp(-1.5 * t), 0.0);
+  }
+  return pts;
+}
+
+TEST(MinimizeLevenbergMarquardt, ConvergesFromFarStart) {
+  const auto pts = Samples();
+  const FitInput input{pts, {}, {}};
+  const LmOutcome out =
+      MinimizeLevenbergMarquardt(ExponentialProblem(input), Eigen::Vector2d(0.5, 1.0), FitParams{});
+  EXPECT_TRUE(out.converged);
+  EXPECT_NEAR(out.x(0), 2.0, 1e-8);
+  EXPECT_NEAR(out.x(1), -1.5, 1e-8);
+  EXPECT_LT(out.cost, 1e-16);
+  EXPECT_GT(out.initial_cost, out.cost);
+}
+
+TEST(MinimizeLevenbergMarquardt, RespectsIterationLimit) {
+  const auto pts = Samples();
+  const FitInput input{pts, {}, {}};
+  const LmOutcome out = MinimizeLevenbergMarquardt(
+      ExponentialProblem(input), Eigen::Vector2d(0.5, 1.0), FitParams{.max_iterations = 2});
+  EXPECT_LE(out.iterations, 2);
+  EXPECT_LE(out.cost, out.initial_cost);
+}
+
+TEST(MinimizeLevenbergMarquardt, WeightsScaleTheCost) {
+  const auto pts = Samples();
+  const std::vector<double> w(pts.size(), 4.0);
+  const Eigen::Vector2d x0(1.0, -1.0);
+  const double plain =
+      MinimizeLevenbergMarquardt(ExponentialProblem(FitInput{pts, {}, {}}), x0,
+                                 FitParams{.max_iterations = 0})
+          .cost;
+  const double weighted =
+      MinimizeLevenbergMarquardt(ExponentialProblem(FitInput{pts, {}, w}), x0,
+                                 FitParams{.max_iterations = 0})
+          .cost;
+  EXPECT_NEAR(weighted, 4.0 * plain, 1e-12 * weighted);
+}
+
+TEST(MinimizeLevenbergMarquardt, ExactStartStopsAtOnce) {
+  const auto pts = Samples();
+  const FitInput input{pts, {}, {}};
+  const LmOutcome out =
+      MinimizeLevenbergMarquardt(ExponentialProblem(input), Eigen::Vector2d(2.0, -1.5), FitParams{});
+  EXPECT_TRUE(out.converged);
+  EXPECT_LE(out.iterations, 1);
+}
+
+}  // namespace
+}  // namespace meshseg::fit_internal
