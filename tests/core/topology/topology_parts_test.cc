@@ -2,6 +2,7 @@
 // segmentation (surfaces refitted by the fit stage).
 #include <cmath>
 #include <numbers>
+#include <random>
 #include <string>
 
 #include <Eigen/Geometry>
@@ -178,6 +179,50 @@ TEST(ExtractTopologyOnParts, PlateBossLoopsAndEulerCharacteristic) {
   EXPECT_NEAR(hole[0]->geometry.radius, 4.0, kRadiusTol * h);
   EXPECT_TRUE(hole[0]->sharp);
   EXPECT_EQ(hole[0]->convexity, CurveConvexity::kConvex);
+}
+
+// A segmentation is never as clean as the truth: faces near boundaries take
+// a neighbour's label or none. The complex must stay consistent and the main
+// circles analytic.
+TEST(ExtractTopologyOnParts, JaggedLabelsKeepTheComplexConsistent) {
+  const double h = 1.0;
+  absl::StatusOr<GeneratedPart> part = GeneratePart("test_piece", {.voxel_size = h, .noise = 0.1});
+  ASSERT_TRUE(part.ok()) << part.status();
+  testing::TruthSegmentation truth = testing::TruthOf(*part);
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> coin(0.0, 1.0);
+  const TriMesh& tri = part->mesh.tri;
+  int changed = 0;
+  for (auto f : tri.faces()) {
+    if (!part->face_near_boundary[f.idx()]) continue;
+    const double u = coin(rng);
+    if (u < 0.02) {
+      truth.face_labels[f.idx()] = -1;
+      ++changed;
+    } else if (u < 0.3) {
+      for (auto g : tri.ff_range(f)) {
+        if (part->face_primitive[g.idx()] != part->face_primitive[f.idx()]) {
+          truth.face_labels[f.idx()] = part->face_primitive[g.idx()];
+          ++changed;
+          break;
+        }
+      }
+    }
+  }
+  ASSERT_GT(changed, 100);
+  const absl::StatusOr<Topology> topo = ExtractTopology(part->mesh, truth.face_labels, truth.regions);
+  ASSERT_TRUE(topo.ok()) << topo.status();
+  testing::ExpectConsistent(tri, truth.face_labels, *topo);
+  const int bore = testing::PrimitiveId(*part, "bore");
+  const int bottom = testing::PrimitiveId(*part, "bottom");
+  const BoundaryCurve* longest = nullptr;
+  for (const BoundaryCurve& c : topo->curves) {
+    if (std::minmax(c.left_region, c.right_region) != std::minmax(bore, bottom)) continue;
+    if (!longest || c.length > longest->length) longest = &c;
+  }
+  ASSERT_NE(longest, nullptr);
+  EXPECT_EQ(longest->geometry.type, CurveGeometryType::kCircle);
+  EXPECT_NEAR(longest->geometry.radius, 8.0, kRadiusTol * h);
 }
 
 }  // namespace
