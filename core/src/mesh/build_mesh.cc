@@ -110,10 +110,13 @@ absl::Status Fill(RawMesh raw, const Source& src, Mesh* out) {
   SilenceOpenMesh();
   TriMesh& tri = mesh.tri;
   tri.reserve(nv, 3 * tris.size() / 2 + 3, tris.size());
-  LargeVector<TriMesh::VertexHandle> handles(nv);
+  // All vertices at once: add_vertex() would grow every vertex property
+  // one element at a time.
+  tri.resize(nv, 0, 0);
   for (int64_t i = 0; i < nv; ++i) {
     const Eigen::Vector3d& p = raw.vertices[i];
-    handles[i] = tri.add_vertex(TriMesh::Point(p.x(), p.y(), p.z()));
+    tri.set_point(TriMesh::VertexHandle(static_cast<int>(i)),
+                  TriMesh::Point(p.x(), p.y(), p.z()));
   }
   mesh.face_of_input.assign(nf, -1);
   // Kept triangles move to the front, in order; tri_face follows.
@@ -132,7 +135,9 @@ absl::Status Fill(RawMesh raw, const Source& src, Mesh* out) {
   for (size_t t = 0; t < kept.size(); ++t) {
     int face = static_cast<int>(t);
     if (!manifold) {
-      face = tri.add_face(handles[kept[t][0]], handles[kept[t][1]], handles[kept[t][2]]).idx();
+      face = tri.add_face(TriMesh::VertexHandle(kept[t][0]), TriMesh::VertexHandle(kept[t][1]),
+                          TriMesh::VertexHandle(kept[t][2]))
+                 .idx();
       if (face < 0) {
         ++topo.refused_face_count;
         continue;
