@@ -6,8 +6,10 @@
 namespace meshseg::curvature_internal {
 namespace {
 
-// Seed 000 uses th_sv in [4, 8] on clean CT meshes; 6 is its middle.
-constexpr double kCleanThreshold = 6.0;
+// Seed 000 uses th_sv in [4, 8] on CT meshes several times finer than the
+// features; 3 keeps fillets of radius >= 3 l_i,avg out of the sharp set on
+// coarser meshes while folds (radius ~ l) stay sharp.
+constexpr double kCleanThreshold = 3.0;
 // Below this th_sv only folds (radius of curvature ~ one edge) count as sharp.
 constexpr double kMinThreshold = 1.5;
 // Pass-1 curvature noise is about kappa_noise * l ~ 2 * rho for relative

@@ -1,0 +1,82 @@
+#include "segment/finalize_regions.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include "segment/face_labels.h"
+
+namespace meshseg::segment_internal {
+
+Segmentation FinalizeRegions(const SegmentContext& c, const TriMesh& mesh,
+                             const std::vector<int>& labels, std::vector<RegionState> regions) {
+  const int n_regions = static_cast<int>(regions.size());
+  tbb::parallel_for(0, n_regions, [&](int id) {
+    RegionState& r = regions[id];
+    if (!r.alive || r.vertices.empty()) return;
+    FitResult fit = FitType(c, r.type, r.vertices);
+    if (fit.ok()) r.surface = fit.surface;
+  });
+  const std::vector<int> face_old = FaceLabels(c, mesh, labels, regions);
+
+  // Renumber by first face.
+  std::vector<int> new_id(n_regions, -1);
+  Segmentation seg;
+  for (const int old : face_old) {
+    if (old < 0 || new_id[old] >= 0) continue;
+    new_id[old] = static_cast<int>(seg.regions.size());
+    Region region;
+    region.id = new_id[old];
+    region.type = regions[old].type;
+    region.surface = regions[old].surface;
+    seg.regions.push_back(region);
+  }
+  seg.face_labels.resize(face_old.size());
+  for (std::size_t f = 0; f < face_old.size(); ++f) {
+    const int id = face_old[f] < 0 ? -1 : new_id[face_old[f]];
+    seg.face_labels[f] = id;
+    if (id < 0) continue;
+    seg.regions[id].face_count += 1;
+    seg.regions[id].area += mesh.calc_face_area(TriMesh::FaceHandle(static_cast<int>(f)));
+  }
+  const int n = c.vertex_count();
+  seg.vertex_labels.assign(n, -1);
+  for (int v = 0; v < n; ++v) {
+    const int old = labels[v];
+    if (old >= 0 && new_id[old] >= 0) {
+      seg.vertex_labels[v] = new_id[old];
+      continue;
+    }
+    for (auto it = mesh.cvf_iter(TriMesh::VertexHandle(v)); it.is_valid(); ++it) {
+      if (seg.face_labels[it->idx()] >= 0) {
+        seg.vertex_labels[v] = seg.face_labels[it->idx()];
+        break;
+      }
+    }
+  }
+  // Geometric distance of every vertex to its region's surface.
+  std::vector<double> dist(n, 0.0);
+  tbb::parallel_for(tbb::blocked_range<int>(0, n, 2048), [&](const tbb::blocked_range<int>& r) {
+    for (int v = r.begin(); v < r.end(); ++v) {
+      const int id = seg.vertex_labels[v];
+      if (id >= 0) dist[v] = std::abs(ProjectVertex(c, seg.regions[id].surface, v).distance);
+    }
+  });
+  std::vector<double> sum2(seg.regions.size(), 0.0);
+  for (int v = 0; v < n; ++v) {
+    const int id = seg.vertex_labels[v];
+    if (id < 0) continue;
+    Region& region = seg.regions[id];
+    region.vertex_count += 1;
+    sum2[id] += dist[v] * dist[v];
+    region.max_distance = std::max(region.max_distance, dist[v]);
+  }
+  for (Region& region : seg.regions) {
+    if (region.vertex_count > 0) region.rms_distance = std::sqrt(sum2[region.id] / region.vertex_count);
+  }
+  return seg;
+}
+
+}  // namespace meshseg::segment_internal

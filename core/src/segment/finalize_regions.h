@@ -1,0 +1,22 @@
+// The stage's output: final refit of every region, face labels, regions
+// renumbered 0..n-1 in order of their first face, and per-region counts,
+// area and geometric rms / max distance of the region's vertices.
+#ifndef MESHSEG_SRC_SEGMENT_FINALIZE_REGIONS_H_
+#define MESHSEG_SRC_SEGMENT_FINALIZE_REGIONS_H_
+
+#include <vector>
+
+#include "meshseg/segment.h"
+#include "segment/segment_internal.h"
+
+namespace meshseg::segment_internal {
+
+// Returns the segmentation (estimates left empty) of `mesh` labelled
+// `labels` with `regions`. Regions without faces are dropped; their
+// vertices take the label of an incident face.
+Segmentation FinalizeRegions(const SegmentContext& c, const TriMesh& mesh,
+                             const std::vector<int>& labels, std::vector<RegionState> regions);
+
+}  // namespace meshseg::segment_internal
+
+#endif  // MESHSEG_SRC_SEGMENT_FINALIZE_REGIONS_H_

@@ -1,0 +1,133 @@
+#include "segment/merge_regions.h"
+
+#include <algorithm>
+#include <map>
+#include <utility>
+
+#include "meshseg/status_macros.h"
+#include "segment/region_graph.h"
+
+namespace meshseg::segment_internal {
+namespace {
+
+void Refit(const SegmentContext& c, RegionState* r) {
+  FitResult fit = FitType(c, r->type, r->vertices);
+  if (fit.ok()) r->surface = fit.surface;
+}
+
+// Alive regions, largest first (ties by id).
+std::vector<int> BySize(const std::vector<RegionState>& regions) {
+  std::vector<int> order;
+  for (int id = 0; id < static_cast<int>(regions.size()); ++id) {
+    if (regions[id].alive && !regions[id].vertices.empty()) order.push_back(id);
+  }
+  std::stable_sort(order.begin(), order.end(), [&](int x, int y) {
+    return regions[x].vertices.size() > regions[y].vertices.size();
+  });
+  return order;
+}
+
+// Seed 000 §4 step 3; returns the number of merges. All smooth arcs are
+// tried, whatever the types: a sphere of large radius seen as a small plane
+// fits the sphere's surface and is merged (the beta1 test is strict).
+int MergeByExtrapolation(const SegmentContext& c, std::vector<int>* labels,
+                         std::vector<RegionState>* regions) {
+  const std::vector<RegionArc> arcs = BuildRegionGraph(c, *labels, *regions);
+  std::map<int, std::vector<int>> neighbours;
+  for (const RegionArc& arc : arcs) {
+    if (!arc.smooth) continue;
+    neighbours[arc.a].push_back(arc.b);
+    neighbours[arc.b].push_back(arc.a);
+  }
+  int merges = 0;
+  for (const int i : BySize(*regions)) {
+    RegionState& ri = (*regions)[i];
+    if (!ri.alive) continue;
+    bool grew = false;
+    for (const int j : neighbours[i]) {
+      const RegionState& rj = (*regions)[j];
+      if (!rj.alive || rj.vertices.size() > ri.vertices.size()) continue;
+      if (FitFraction(c, ri.surface, rj.vertices, c.tolerance) <= kBeta1) continue;
+      MergeInto(i, j, labels, regions);
+      grew = true;
+      ++merges;
+    }
+    if (grew) Refit(c, &ri);
+  }
+  return merges;
+}
+
+struct PairFit {
+  double fraction = 0.0;
+  SurfaceType type = SurfaceType::kQuadric;
+  Surface surface;
+};
+
+// The better of the two regions' types fitted to their union, scored by
+// the smaller of the two regions' fitting fractions (a large region alone
+// would otherwise carry any small neighbour past beta2).
+PairFit FitUnion(const SegmentContext& c, const RegionState& x, const RegionState& y) {
+  std::vector<int> both = x.vertices;
+  both.insert(both.end(), y.vertices.begin(), y.vertices.end());
+  std::sort(both.begin(), both.end());
+  PairFit best;
+  for (const SurfaceType type : {x.type, y.type}) {
+    if (type == best.type && best.fraction > 0.0) continue;
+    const FitResult fit = FitType(c, type, both);
+    if (!fit.ok()) continue;
+    const double f = std::min(FitFraction(c, fit.surface, x.vertices, c.tolerance),
+                              FitFraction(c, fit.surface, y.vertices, c.tolerance));
+    if (f > best.fraction) best = PairFit{.fraction = f, .type = type, .surface = fit.surface};
+  }
+  return best;
+}
+
+// Seed 000 §4 step 4: repeatedly merges the best-fitting pair.
+absl::Status MergeByRefitting(const SegmentContext& c, std::vector<int>* labels,
+                              std::vector<RegionState>* regions) {
+  std::map<std::pair<int, int>, PairFit> cache;
+  while (true) {
+    MESHSEG_RETURN_IF_ERROR(c.run->CheckStop("segment"));
+    const std::vector<RegionArc> arcs = BuildRegionGraph(c, *labels, *regions);
+    const RegionArc* best_arc = nullptr;
+    const PairFit* best = nullptr;
+    for (const RegionArc& arc : arcs) {
+      if (!arc.kept) continue;
+      auto it = cache.find({arc.a, arc.b});
+      if (it == cache.end()) {
+        it = cache.emplace(std::pair{arc.a, arc.b},
+                           FitUnion(c, (*regions)[arc.a], (*regions)[arc.b])).first;
+      }
+      if (it->second.fraction < kBeta2) continue;
+      if (best == nullptr || it->second.fraction > best->fraction) {
+        best = &it->second;
+        best_arc = &arc;
+      }
+    }
+    if (best == nullptr) return absl::OkStatus();
+    const int a = best_arc->a;
+    const int b = best_arc->b;
+    const bool a_larger = (*regions)[a].vertices.size() >= (*regions)[b].vertices.size();
+    const int into = a_larger ? a : b;
+    const PairFit merged = *best;
+    MergeInto(into, a_larger ? b : a, labels, regions);
+    (*regions)[into].type = merged.type;
+    (*regions)[into].surface = merged.surface;
+    std::erase_if(cache, [&](const auto& e) {
+      return e.first.first == a || e.first.second == a || e.first.first == b ||
+             e.first.second == b;
+    });
+  }
+}
+
+}  // namespace
+
+absl::Status MergeRegions(const SegmentContext& c, std::vector<int>* labels,
+                          std::vector<RegionState>* regions) {
+  while (MergeByExtrapolation(c, labels, regions) > 0) {
+    MESHSEG_RETURN_IF_ERROR(c.run->CheckStop("segment"));
+  }
+  return MergeByRefitting(c, labels, regions);
+}
+
+}  // namespace meshseg::segment_internal

@@ -1,0 +1,55 @@
+#include "segment/seeds.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+#include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+
+namespace meshseg::segment_internal {
+
+std::vector<int> SeedOrder(const SegmentContext& c) {
+  const int n = c.vertex_count();
+  const CurvatureField& k = *c.curvature;
+  std::vector<double> d(n, 0.0);
+  struct Scratch {
+    NeighborhoodScratch nbhd;
+    std::vector<int> ids;
+  };
+  tbb::enumerable_thread_specific<Scratch> scratch;
+  tbb::parallel_for(tbb::blocked_range<int>(0, n, 512), [&](const tbb::blocked_range<int>& r) {
+    Scratch& s = scratch.local();
+    for (int i = r.begin(); i < r.end(); ++i) {
+      if (k.sharp[i]) continue;
+      CollectNeighborhood(c.graph, i, kW3 * k.mean_edge_length[i], k.sharp, &s.nbhd, &s.ids);
+      double mean = 0.0;
+      for (const int j : s.ids) mean += k.kappa_max[j];
+      mean /= s.ids.size();
+      double dev = 0.0;
+      for (const int j : s.ids) dev += std::abs(k.kappa_max[j] - mean);
+      // Scale-free: deviation in units of 1 / l_i,avg.
+      d[i] = dev / s.ids.size() * k.mean_edge_length[i];
+    }
+  });
+  std::vector<int> order;
+  order.reserve(n);
+  for (int i = 0; i < n; ++i) {
+    if (!k.sharp[i]) order.push_back(i);
+  }
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return d[a] < d[b]; });
+  return order;
+}
+
+std::vector<int> CollectSeed(const SegmentContext& c, int i, const std::vector<int>& labels,
+                             NeighborhoodScratch* scratch) {
+  std::vector<int> ids;
+  CollectNeighborhood(c.graph, i, kW4 * c.curvature->mean_edge_length[i], c.curvature->sharp,
+                      scratch, &ids);
+  std::erase_if(ids, [&](int v) { return labels[v] != -1; });
+  if (ids.size() < kMinSeed) ids.clear();
+  return ids;
+}
+
+}  // namespace meshseg::segment_internal

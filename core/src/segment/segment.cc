@@ -1,0 +1,91 @@
+// Segment(): checks the params, derives the tolerances, then runs seed 000
+// §3-4 with seed 002's leftover absorption and face labels, in order.
+#include "meshseg/segment.h"
+
+#include <cmath>
+
+#include <Eigen/Geometry>
+
+#include "absl/strings/str_cat.h"
+#include "meshseg/status_macros.h"
+#include "segment/absorb_leftovers.h"
+#include "segment/estimate_noise.h"
+#include "segment/finalize_regions.h"
+#include "segment/initial_segmentation.h"
+#include "segment/merge_regions.h"
+#include "segment/segment_internal.h"
+
+namespace meshseg {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+absl::Status ValidateParams(const SegmentParams& p) {
+  if (!(p.distance_tolerance > 0.0) || !std::isfinite(p.distance_tolerance)) {
+    return absl::InvalidArgumentError(
+        absl::StrCat("segment: distance_tolerance must be > 0, got ", p.distance_tolerance));
+  }
+  if (p.angle_tolerance_deg &&
+      (!(*p.angle_tolerance_deg > 0.0) || !(*p.angle_tolerance_deg < 90.0))) {
+    return absl::InvalidArgumentError(absl::StrCat(
+        "segment: angle_tolerance_deg must be in (0, 90), got ", *p.angle_tolerance_deg));
+  }
+  if (!(p.alpha > 0.0) || !(p.alpha <= 1.0)) {
+    return absl::InvalidArgumentError(absl::StrCat("segment: alpha must be in (0, 1], got ", p.alpha));
+  }
+  return absl::OkStatus();
+}
+
+std::vector<double> VertexAreas(const TriMesh& mesh) {
+  std::vector<double> area(mesh.n_vertices(), 0.0);
+  for (const auto fh : mesh.faces()) {
+    const double third = mesh.calc_face_area(fh) / 3.0;
+    for (auto it = mesh.cfv_iter(fh); it.is_valid(); ++it) area[it->idx()] += third;
+  }
+  return area;
+}
+
+}  // namespace
+
+absl::StatusOr<Segmentation> Segment(const Mesh& mesh, const CurvatureField& curvature,
+                                     const SegmentParams& params, const RunContext& ctx) {
+  using namespace segment_internal;
+  MESHSEG_RETURN_IF_ERROR(ValidateParams(params));
+  if (mesh.tri.n_faces() == 0) {
+    return absl::InvalidArgumentError(absl::StrCat("segment: \"", mesh.name, "\" has no faces"));
+  }
+  if (curvature.sharp.size() != mesh.tri.n_vertices()) {
+    return absl::InvalidArgumentError(absl::StrCat(
+        "segment: curvature field has ", curvature.sharp.size(), " vertices, mesh \"", mesh.name,
+        "\" has ", mesh.tri.n_vertices()));
+  }
+  MESHSEG_RETURN_IF_ERROR(ctx.CheckStop("segment"));
+  SegmentContext c;
+  c.graph = BuildVertexGraph(mesh.tri);
+  c.curvature = &curvature;
+  c.vertex_area = VertexAreas(mesh.tri);
+  c.mean_edge_length = MeanEdgeLength(mesh.tri);
+  c.alpha = params.alpha;
+  c.run = &ctx;
+  const SegmentEstimates estimates = EstimateNoise(curvature, c.mean_edge_length, params);
+  c.tolerance.distance = estimates.distance_tolerance;
+  c.angle_tolerance_deg = estimates.angle_tolerance_deg;
+  c.tolerance.cos_angle = std::cos(estimates.angle_tolerance_deg * kPi / 180.0);
+
+  std::vector<int> labels(c.vertex_count(), -1);
+  std::vector<RegionState> regions;
+  MESHSEG_RETURN_IF_ERROR(GrowInitialRegions(c, &labels, &regions));
+  ctx.Progress("segment", 0.6);
+  ReleaseSmallQuadrics(c, &labels, &regions);
+  MESHSEG_RETURN_IF_ERROR(AbsorbLeftovers(c, &labels, &regions));
+  ctx.Progress("segment", 0.7);
+  MESHSEG_RETURN_IF_ERROR(MergeRegions(c, &labels, &regions));
+  ctx.Progress("segment", 0.9);
+  MESHSEG_RETURN_IF_ERROR(ctx.CheckStop("segment"));
+  Segmentation seg = FinalizeRegions(c, mesh.tri, labels, std::move(regions));
+  seg.estimates = estimates;
+  ctx.Progress("segment", 1.0);
+  return seg;
+}
+
+}  // namespace meshseg

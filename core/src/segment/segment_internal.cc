@@ -1,0 +1,70 @@
+#include "segment/segment_internal.h"
+
+#include <algorithm>
+
+namespace meshseg::segment_internal {
+
+std::vector<int> Sample(std::span<const int> vertices, std::size_t max_count) {
+  if (vertices.size() <= max_count) return {vertices.begin(), vertices.end()};
+  const std::size_t stride = (vertices.size() + max_count - 1) / max_count;
+  std::vector<int> out;
+  out.reserve(vertices.size() / stride + 1);
+  for (std::size_t k = 0; k < vertices.size(); k += stride) out.push_back(vertices[k]);
+  return out;
+}
+
+FitResult FitType(const SegmentContext& c, SurfaceType type, std::span<const int> vertices) {
+  const std::vector<int> sample = Sample(vertices);
+  std::vector<Eigen::Vector3d> points;
+  std::vector<Eigen::Vector3d> normals;
+  std::vector<double> weights;
+  points.reserve(sample.size());
+  normals.reserve(sample.size());
+  weights.reserve(sample.size());
+  for (const int v : sample) {
+    points.push_back(c.position(v));
+    normals.push_back(c.curvature->smooth_normal[v]);
+    weights.push_back(c.vertex_area[v] + 1e-12);
+  }
+  const FitInput input{.points = points, .normals = normals, .weights = weights};
+  switch (type) {
+    case SurfaceType::kPlane: return FitPlane(input);
+    case SurfaceType::kCylinder: return FitCylinder(input);
+    case SurfaceType::kCone: return FitCone(input);
+    case SurfaceType::kSphere: return FitSphere(input);
+    case SurfaceType::kTorus: return FitTorus(input);
+    case SurfaceType::kQuadric:
+    case SurfaceType::kFreeform: return FitQuadric(input);
+  }
+  return FitQuadric(input);
+}
+
+double FitFraction(const SegmentContext& c, const Surface& surface, std::span<const int> vertices,
+                   const Tolerance& tol) {
+  const std::vector<int> sample = Sample(vertices);
+  if (sample.empty()) return 0.0;
+  std::size_t fit = 0;
+  for (const int v : sample) {
+    if (Fits(c, v, ProjectVertex(c, surface, v), tol)) ++fit;
+  }
+  return static_cast<double>(fit) / sample.size();
+}
+
+void RebuildVertexLists(const std::vector<int>& labels, std::vector<RegionState>* regions) {
+  for (RegionState& r : *regions) r.vertices.clear();
+  for (std::size_t v = 0; v < labels.size(); ++v) {
+    if (labels[v] >= 0) (*regions)[labels[v]].vertices.push_back(static_cast<int>(v));
+  }
+}
+
+void MergeInto(int into, int from, std::vector<int>* labels, std::vector<RegionState>* regions) {
+  RegionState& a = (*regions)[into];
+  RegionState& b = (*regions)[from];
+  for (const int v : b.vertices) (*labels)[v] = into;
+  a.vertices.insert(a.vertices.end(), b.vertices.begin(), b.vertices.end());
+  std::sort(a.vertices.begin(), a.vertices.end());
+  b.vertices.clear();
+  b.alive = false;
+}
+
+}  // namespace meshseg::segment_internal

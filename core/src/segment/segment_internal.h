@@ -1,0 +1,86 @@
+// What the steps of the segment stage share: the mesh as a vertex graph with
+// per-vertex normals and areas, the derived tolerances, the (5)/(6) test of
+// seed 000 and the per-type fit over a (sub-sampled) vertex set.
+#ifndef MESHSEG_SRC_SEGMENT_SEGMENT_INTERNAL_H_
+#define MESHSEG_SRC_SEGMENT_SEGMENT_INTERNAL_H_
+
+#include <cmath>
+#include <span>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "meshseg/curvature.h"
+#include "meshseg/fit.h"
+#include "meshseg/run_context.h"
+#include "meshseg/surface.h"
+
+namespace meshseg::segment_internal {
+
+// A region while the stage works on it.
+struct RegionState {
+  SurfaceType type = SurfaceType::kQuadric;
+  Surface surface;
+  std::vector<int> vertices;
+  bool alive = true;
+};
+
+// Thresholds of seed 000 eqs. (5) and (6).
+struct Tolerance {
+  double distance = 0.0;  // th_dis, model units
+  double cos_angle = 1.0; // cos(th_nm)
+};
+
+struct SegmentContext {
+  VertexGraph graph;                          // positions and adjacency
+  const CurvatureField* curvature = nullptr;  // n_i, n'_i, kappa, sharp
+  std::vector<double> vertex_area;            // a third of incident face areas
+  double mean_edge_length = 0.0;              // l_avg
+  Tolerance tolerance;                        // the base (5)/(6) thresholds
+  double angle_tolerance_deg = 0.0;
+  double alpha = 0.9;                         // seed 000 §3 step 3
+  const RunContext* run = nullptr;
+
+  int vertex_count() const { return graph.vertex_count(); }
+  const Eigen::Vector3d& position(int v) const { return graph.positions[v]; }
+  // The normal tests (6) use: n'_i, far less disturbed by noise and by
+  // marching-cubes triangulation than the 1-ring normal n_i.
+  const Eigen::Vector3d& normal(int v) const { return curvature->smooth_normal[v]; }
+};
+
+// True if vertex v with projection `pr` meets (5) and (6). Surfaces fitted
+// to a region may face either way, so the normal test ignores orientation.
+inline bool Fits(const SegmentContext& c, int v, const Projection& pr, const Tolerance& tol) {
+  return std::abs(pr.distance) < tol.distance &&
+         std::abs(pr.normal.dot(c.normal(v))) > tol.cos_angle;
+}
+
+// At most this many vertices enter a fit or a fraction count; larger sets
+// are sub-sampled with a fixed stride (deterministic).
+constexpr std::size_t kMaxSample = 3000;
+
+// Every k-th vertex of `vertices` so that at most kMaxSample remain.
+std::vector<int> Sample(std::span<const int> vertices, std::size_t max_count = kMaxSample);
+
+// Fits a surface of `type` to `vertices` (sub-sampled) with smoothed normals
+// and area weights.
+FitResult FitType(const SegmentContext& c, SurfaceType type, std::span<const int> vertices);
+
+// Fraction of `vertices` (sub-sampled) that meet (5) and (6) for `surface`.
+double FitFraction(const SegmentContext& c, const Surface& surface, std::span<const int> vertices,
+                   const Tolerance& tol);
+
+// Rebuilds every region's vertex list from `labels` (dead regions: empty).
+void RebuildVertexLists(const std::vector<int>& labels, std::vector<RegionState>* regions);
+
+// Moves every vertex of region `from` into region `into`.
+void MergeInto(int into, int from, std::vector<int>* labels, std::vector<RegionState>* regions);
+
+// Projection of vertex v onto `surface` (the quadric starts along n_i).
+inline Projection ProjectVertex(const SegmentContext& c, const Surface& surface, int v) {
+  return Project(surface, c.position(v), c.normal(v));
+}
+
+}  // namespace meshseg::segment_internal
+
+#endif  // MESHSEG_SRC_SEGMENT_SEGMENT_INTERNAL_H_

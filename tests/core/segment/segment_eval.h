@@ -1,0 +1,160 @@
+// Scores a Segmentation of a generated part against its ground truth.
+#ifndef MESHSEG_TESTS_CORE_SEGMENT_SEGMENT_EVAL_H_
+#define MESHSEG_TESTS_CORE_SEGMENT_SEGMENT_EVAL_H_
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <numbers>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include <Eigen/Geometry>
+
+#include "meshseg/generate.h"
+#include "meshseg/segment.h"
+
+namespace meshseg::testing {
+
+struct PrimitiveScore {
+  int primitive = 0;
+  std::string name;
+  SurfaceType true_type = SurfaceType::kPlane;
+  int64_t faces = 0;         // faces of the primitive
+  int region = -1;           // region covering most of its area
+  double covered = 0.0;      // share of its (non-boundary) area in regions
+                             // whose majority primitive it is
+  std::vector<int> regions;  // those regions
+  double angular_span = 1.0; // cylinders: fraction of the full turn present
+};
+
+struct Evaluation {
+  double area_fraction = 0.0;  // area labelled with the true primitive
+  int true_count = 0;          // face-connected pieces of primitives (>= 10 faces)
+  int region_count = 0;
+  std::vector<PrimitiveScore> primitives;
+};
+
+inline double AngularSpan(const GeneratedPart& part, int primitive, const Cylinder& cyl) {
+  std::vector<bool> bins(72, false);
+  Eigen::Vector3d u = cyl.axis_direction.unitOrthogonal();
+  Eigen::Vector3d w = cyl.axis_direction.cross(u);
+  for (std::size_t f = 0; f < part.face_primitive.size(); ++f) {
+    if (part.face_primitive[f] != primitive) continue;
+    Eigen::Vector3d c = Eigen::Vector3d::Zero();
+    for (auto it = part.mesh.tri.cfv_iter(TriMesh::FaceHandle(int(f))); it.is_valid(); ++it) {
+      c += ToEigen(part.mesh.tri.point(*it)) / 3.0;
+    }
+    const Eigen::Vector3d d = c - cyl.axis_origin;
+    const double a = std::atan2(d.dot(w), d.dot(u)) + std::numbers::pi;
+    bins[std::min(71, int(a / (2 * std::numbers::pi) * 72))] = true;
+  }
+  return std::count(bins.begin(), bins.end(), true) / 72.0;
+}
+
+// Face-connected pieces of equal primitive with at least kMinPiece faces.
+inline int PieceCount(const GeneratedPart& part) {
+  constexpr int kMinPiece = 10;
+  const TriMesh& tri = part.mesh.tri;
+  std::vector<int> seen(tri.n_faces(), 0);
+  int count = 0;
+  for (std::size_t s = 0; s < tri.n_faces(); ++s) {
+    if (seen[s] || part.face_primitive[s] < 0) continue;
+    std::vector<int> stack = {int(s)};
+    seen[s] = 1;
+    int size = 0;
+    while (!stack.empty()) {
+      const int f = stack.back();
+      stack.pop_back();
+      ++size;
+      for (auto it = tri.cff_iter(TriMesh::FaceHandle(f)); it.is_valid(); ++it) {
+        const int g = it->idx();
+        if (seen[g] || part.face_primitive[g] != part.face_primitive[s]) continue;
+        seen[g] = 1;
+        stack.push_back(g);
+      }
+    }
+    if (size >= kMinPiece) ++count;
+  }
+  return count;
+}
+
+inline Evaluation Evaluate(const GeneratedPart& part, const Segmentation& seg) {
+  const TriMesh& tri = part.mesh.tri;
+  const int np = static_cast<int>(part.primitives.size());
+  const int nr = static_cast<int>(seg.regions.size());
+  // area[region][primitive] over all faces; clean[..] without boundary faces.
+  std::vector<std::map<int, double>> area(nr), clean(np);
+  std::vector<int64_t> faces(np, 0);
+  double total = 0.0;
+  for (std::size_t f = 0; f < tri.n_faces(); ++f) {
+    const int p = part.face_primitive[f];
+    const int r = seg.face_labels[f];
+    const double a = tri.calc_face_area(TriMesh::FaceHandle(int(f)));
+    if (p >= 0) ++faces[p];
+    if (r >= 0 && p >= 0) area[r][p] += a;
+    if (p >= 0 && !part.face_near_boundary[f]) {
+      clean[p][r] += a;
+      total += a;
+    }
+  }
+  std::vector<int> region_primitive(nr, -1);
+  for (int r = 0; r < nr; ++r) {
+    double best = 0.0;
+    for (const auto& [p, a] : area[r]) {
+      if (a > best) best = a, region_primitive[r] = p;
+    }
+  }
+  Evaluation e;
+  e.region_count = nr;
+  e.true_count = PieceCount(part);
+  double correct = 0.0;
+  for (int p = 0; p < np; ++p) {
+    if (faces[p] == 0) continue;
+    PrimitiveScore s;
+    s.primitive = p;
+    s.name = part.primitives[p].name;
+    s.true_type = TypeOf(part.primitives[p].surface);
+    s.faces = faces[p];
+    double sum = 0.0, best = 0.0, mine = 0.0;
+    for (const auto& [r, a] : clean[p]) {
+      sum += a;
+      if (r >= 0 && region_primitive[r] == p) {
+        mine += a;
+        s.regions.push_back(r);
+      }
+      if (r >= 0 && a > best) best = a, s.region = r;
+    }
+    correct += mine;
+    s.covered = sum > 0.0 ? mine / sum : 0.0;
+    if (const auto* cyl = std::get_if<Cylinder>(&part.primitives[p].surface)) {
+      s.angular_span = AngularSpan(part, p, *cyl);
+    }
+    e.primitives.push_back(s);
+  }
+  e.area_fraction = total > 0.0 ? correct / total : 0.0;
+  return e;
+}
+
+inline std::ostream& operator<<(std::ostream& os, const Evaluation& e) {
+  os << "area_fraction " << e.area_fraction << ", regions " << e.region_count << " / true "
+     << e.true_count << "\n";
+  for (const auto& s : e.primitives) {
+    os << "  " << s.name << " (" << SurfaceTypeName(s.true_type) << ", " << s.faces
+       << " faces): region " << s.region << ", covered " << s.covered << " by";
+    for (const int r : s.regions) os << " " << r;
+    os << "\n";
+  }
+  return os;
+}
+
+// Angle in degrees between two axes (either orientation).
+inline double AxisAngleDeg(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+  return std::acos(std::min(1.0, std::abs(a.normalized().dot(b.normalized())))) * 180.0 /
+         std::numbers::pi;
+}
+
+}  // namespace meshseg::testing
+
+#endif  // MESHSEG_TESTS_CORE_SEGMENT_SEGMENT_EVAL_H_

@@ -1,0 +1,117 @@
+// Segment() end to end on generated CT-like parts with ground truth.
+#include "meshseg/segment.h"
+
+#include <cmath>
+#include <numbers>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "meshseg/curvature.h"
+#include "meshseg/generate.h"
+#include "segment_eval.h"
+
+namespace meshseg {
+namespace {
+
+using testing::Evaluation;
+using testing::PrimitiveScore;
+
+constexpr int64_t kMinFaces = 200;       // primitives the type test applies to
+constexpr double kMinCovered = 0.9;      // "found as one region"
+constexpr double kMinAreaFraction = 0.95;
+constexpr double kMaxRegionRatio = 1.2;
+
+struct PartRun {
+  GeneratedPart part;
+  Segmentation seg;
+  Evaluation eval;
+};
+
+PartRun Segmented(const std::string& name, double voxel, double noise) {
+  PartRun run;
+  auto part = GeneratePart(name, {.voxel_size = voxel, .noise = noise, .seed = 7});
+  EXPECT_TRUE(part.ok()) << part.status();
+  if (!part.ok()) return run;
+  run.part = std::move(*part);
+  auto field = EstimateCurvature(run.part.mesh);
+  EXPECT_TRUE(field.ok()) << field.status();
+  if (!field.ok()) return run;
+  auto seg = Segment(run.part.mesh, *field);
+  EXPECT_TRUE(seg.ok()) << seg.status();
+  if (!seg.ok()) return run;
+  run.seg = std::move(*seg);
+  run.eval = testing::Evaluate(run.part, run.seg);
+  return run;
+}
+
+// Parameter bounds, in multiples of the voxel size h and degrees.
+struct Bounds {
+  double cylinder_radius = 0.1;  // full and half cylinders
+  double quarter_radius = 0.25;  // cylinders spanning <= a third of a turn
+  double axis_deg = 0.5;
+  double sphere_radius = 0.1;
+  double cone_angle_deg = 0.5;
+  double torus_radii = 0.2;
+};
+
+void ExpectTypesAndParameters(const PartRun& run, const Bounds& b, bool check_parameters) {
+  const double h = run.part.voxel_size;
+  for (const PrimitiveScore& s : run.eval.primitives) {
+    if (s.faces < kMinFaces) continue;
+    ASSERT_GE(s.region, 0) << s.name;
+    EXPECT_GE(s.covered, kMinCovered) << s.name;
+    for (const int r : s.regions) {
+      EXPECT_EQ(run.seg.regions[r].type, s.true_type)
+          << s.name << " region " << r << " is " << SurfaceTypeName(run.seg.regions[r].type);
+    }
+    const Region& region = run.seg.regions[s.region];
+    if (!check_parameters || region.type != s.true_type) continue;
+    const Surface& truth = run.part.primitives[s.primitive].surface;
+    if (const auto* t = std::get_if<Cylinder>(&truth)) {
+      const auto& c = std::get<Cylinder>(region.surface);
+      const double tol = s.angular_span <= 1.0 / 3.0 ? b.quarter_radius : b.cylinder_radius;
+      EXPECT_NEAR(c.radius, t->radius, tol * h) << s.name << " span " << s.angular_span;
+      EXPECT_LE(testing::AxisAngleDeg(c.axis_direction, t->axis_direction), b.axis_deg) << s.name;
+    } else if (const auto* t = std::get_if<Sphere>(&truth)) {
+      EXPECT_NEAR(std::get<Sphere>(region.surface).radius, t->radius, b.sphere_radius * h) << s.name;
+    } else if (const auto* t = std::get_if<Cone>(&truth)) {
+      const auto& c = std::get<Cone>(region.surface);
+      EXPECT_NEAR(c.half_angle * 180.0 / std::numbers::pi, t->half_angle * 180.0 / std::numbers::pi,
+                  b.cone_angle_deg) << s.name;
+      EXPECT_LE(testing::AxisAngleDeg(c.axis_direction, t->axis_direction), b.axis_deg) << s.name;
+    } else if (const auto* t = std::get_if<Torus>(&truth)) {
+      const auto& c = std::get<Torus>(region.surface);
+      EXPECT_NEAR(c.major_radius, t->major_radius, b.torus_radii * h) << s.name;
+      EXPECT_NEAR(c.minor_radius, t->minor_radius, b.torus_radii * h) << s.name;
+    }
+  }
+}
+
+void ExpectLabelsAndCount(const PartRun& run) {
+  EXPECT_GE(run.eval.area_fraction, kMinAreaFraction);
+  EXPECT_LE(run.eval.region_count, kMaxRegionRatio * run.eval.true_count);
+}
+
+class SegmentPart : public ::testing::TestWithParam<std::tuple<std::string, double>> {};
+
+TEST_P(SegmentPart, FindsEveryPrimitiveWithItsTypeAndParameters) {
+  const auto& [name, voxel] = GetParam();
+  for (const double noise : {0.0, 0.05}) {
+    SCOPED_TRACE(name + " noise " + std::to_string(noise));
+    const PartRun run = Segmented(name, voxel, noise);
+    SCOPED_TRACE(::testing::Message() << run.eval);
+    ExpectTypesAndParameters(run, Bounds{}, /*check_parameters=*/true);
+    ExpectLabelsAndCount(run);
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Parts, SegmentPart,
+                         ::testing::Values(std::tuple{std::string("test_piece"), 1.0},
+                                           std::tuple{std::string("sphere_cap"), 0.0},
+                                           std::tuple{std::string("torus_ring"), 0.0},
+                                           std::tuple{std::string("blend_block"), 0.0}),
+                         [](const auto& info) { return std::get<0>(info.param); });
+
+}  // namespace
+}  // namespace meshseg
