@@ -30,9 +30,19 @@ absl::Status NormalizeNormals(const Source& src, PointCloud* cloud) {
 
 }  // namespace mesh_internal
 
+using mesh_internal::BadInput;
+using mesh_internal::FileBytes;
+using mesh_internal::FileName;
+using mesh_internal::FormatOf;
+using mesh_internal::PlyData;
+using mesh_internal::ReadFileBytes;
+using mesh_internal::ReadPlyData;
+using mesh_internal::ReadPwn;
+using mesh_internal::ReadXyz;
+using mesh_internal::Source;
+
 absl::StatusOr<PointCloud> ReadPointCloud(const std::string& path,
                                           const ReadMeshOptions& options) {
-  using namespace mesh_internal;  // NOLINT: the readers
   const Source src{"read_point_cloud", FileName(path)};
   if (options.max_elements <= 0) {
     return BadInput(src, absl::StrCat("max_elements must be positive, got ",

@@ -41,8 +41,8 @@ absl::StatusOr<RawMesh> ReadPlyMesh(std::string_view bytes, const Source& src,
 // Returns the mesh built from `raw` (see BuildMesh for the dropping rules).
 absl::StatusOr<Mesh> BuildFromRaw(RawMesh raw, const Source& src);
 
-// Returns an error naming the first vertex with a NaN/Inf coordinate; `where`
-// is prepended to the index ("vertex 12").
+// Returns an error naming the first vertex (by index) with a NaN/Inf
+// coordinate, or OK.
 absl::Status CheckFinite(const Source& src, const std::vector<Eigen::Vector3d>& vertices);
 
 // Triangles as vertex-index triples, in a LargeVector.

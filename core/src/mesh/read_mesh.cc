@@ -1,3 +1,4 @@
+// ReadMesh: map the file, pick the reader by format, build the mesh.
 #include "absl/strings/str_cat.h"
 #include "meshseg/mesh.h"
 #include "meshseg/status_macros.h"
@@ -6,8 +7,20 @@
 
 namespace meshseg {
 
+using mesh_internal::BadInput;
+using mesh_internal::BuildFromRaw;
+using mesh_internal::FileBytes;
+using mesh_internal::FileName;
+using mesh_internal::FormatOf;
+using mesh_internal::RawMesh;
+using mesh_internal::ReadFileBytes;
+using mesh_internal::ReadObj;
+using mesh_internal::ReadOff;
+using mesh_internal::ReadPlyMesh;
+using mesh_internal::ReadStl;
+using mesh_internal::Source;
+
 absl::StatusOr<Mesh> ReadMesh(const std::string& path, const ReadMeshOptions& options) {
-  using namespace mesh_internal;  // NOLINT: the readers
   const Source src{"read_mesh", FileName(path)};
   if (options.max_elements <= 0) {
     return BadInput(src, absl::StrCat("max_elements must be positive, got ",
