@@ -1,4 +1,5 @@
 #include <cmath>
+#include <limits>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -83,6 +84,14 @@ TEST(FitCone, DegenerateInputIsInvalidAndFinite) {
     EXPECT_TRUE(c.apex.allFinite() && c.axis_direction.allFinite() && std::isfinite(c.half_angle));
     EXPECT_TRUE(std::isfinite(r.rms_distance));
   }
+}
+
+TEST(FitCone, NonFinitePointIsInvalid) {
+  test::Samples s = test::SampleTorus(Torus{}, M_PI, 0.0, M_PI, 8, 6, 0.0);
+  s.points[5].x() = std::numeric_limits<double>::quiet_NaN();
+  const FitResult r = FitCone(s.Input());
+  EXPECT_FALSE(r.ok());
+  EXPECT_TRUE(std::isfinite(r.rms_distance) && std::isfinite(r.max_distance));
 }
 
 }  // namespace

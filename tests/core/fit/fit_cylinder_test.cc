@@ -1,4 +1,5 @@
 #include <cmath>
+#include <limits>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -97,6 +98,14 @@ TEST(FitCylinder, DegenerateInputIsInvalidAndFinite) {
     EXPECT_TRUE(c.axis_origin.allFinite() && c.axis_direction.allFinite() && std::isfinite(c.radius));
     EXPECT_TRUE(std::isfinite(r.rms_distance) && std::isfinite(r.max_distance));
   }
+}
+
+TEST(FitCylinder, NonFinitePointIsInvalid) {
+  test::Samples s = test::SampleTorus(Torus{}, M_PI, 0.0, M_PI, 8, 6, 0.0);
+  s.points[5].x() = std::numeric_limits<double>::quiet_NaN();
+  const FitResult r = FitCylinder(s.Input());
+  EXPECT_FALSE(r.ok());
+  EXPECT_TRUE(std::isfinite(r.rms_distance) && std::isfinite(r.max_distance));
 }
 
 }  // namespace

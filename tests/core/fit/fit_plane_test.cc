@@ -1,4 +1,5 @@
 #include <cmath>
+#include <limits>
 
 #include <gtest/gtest.h>
 
@@ -58,6 +59,14 @@ TEST(FitPlane, DegenerateInputIsInvalidAndFinite) {
     EXPECT_TRUE(std::isfinite(r.rms_distance) && std::isfinite(r.max_distance));
   }
   EXPECT_FALSE(FitPlane(FitInput{}).ok());
+}
+
+TEST(FitPlane, NonFinitePointIsInvalid) {
+  test::Samples s = test::SampleTorus(Torus{}, M_PI, 0.0, M_PI, 8, 6, 0.0);
+  s.points[5].x() = std::numeric_limits<double>::quiet_NaN();
+  const FitResult r = FitPlane(s.Input());
+  EXPECT_FALSE(r.ok());
+  EXPECT_TRUE(std::isfinite(r.rms_distance) && std::isfinite(r.max_distance));
 }
 
 }  // namespace

@@ -1,4 +1,5 @@
 #include <cmath>
+#include <limits>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -115,6 +116,14 @@ TEST(FitQuadric, DegenerateInputIsInvalidAndFinite) {
     EXPECT_FALSE(r.ok());
     for (double c : std::get<Quadric>(r.surface).c) EXPECT_TRUE(std::isfinite(c));
   }
+}
+
+TEST(FitQuadric, NonFinitePointIsInvalid) {
+  test::Samples s = test::SampleTorus(Torus{}, M_PI, 0.0, M_PI, 8, 6, 0.0);
+  s.points[5].x() = std::numeric_limits<double>::quiet_NaN();
+  const FitResult r = FitQuadric(s.Input());
+  EXPECT_FALSE(r.ok());
+  EXPECT_TRUE(std::isfinite(r.rms_distance) && std::isfinite(r.max_distance));
 }
 
 }  // namespace

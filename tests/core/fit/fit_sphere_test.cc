@@ -1,4 +1,5 @@
 #include <cmath>
+#include <limits>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -57,6 +58,14 @@ TEST(FitSphere, DegenerateInputIsInvalidAndFinite) {
     EXPECT_TRUE(sp.center.allFinite() && std::isfinite(sp.radius));
     EXPECT_TRUE(std::isfinite(r.rms_distance));
   }
+}
+
+TEST(FitSphere, NonFinitePointIsInvalid) {
+  test::Samples s = test::SampleTorus(Torus{}, M_PI, 0.0, M_PI, 8, 6, 0.0);
+  s.points[5].x() = std::numeric_limits<double>::quiet_NaN();
+  const FitResult r = FitSphere(s.Input());
+  EXPECT_FALSE(r.ok());
+  EXPECT_TRUE(std::isfinite(r.rms_distance) && std::isfinite(r.max_distance));
 }
 
 }  // namespace

@@ -1,4 +1,5 @@
 #include <cmath>
+#include <limits>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -69,6 +70,14 @@ TEST(FitTorus, DegenerateInputIsInvalidAndFinite) {
     EXPECT_TRUE(t.center.allFinite() && t.axis_direction.allFinite() &&
                 std::isfinite(t.major_radius) && std::isfinite(t.minor_radius));
   }
+}
+
+TEST(FitTorus, NonFinitePointIsInvalid) {
+  test::Samples s = test::SampleTorus(Torus{}, M_PI, 0.0, M_PI, 8, 6, 0.0);
+  s.points[5].x() = std::numeric_limits<double>::quiet_NaN();
+  const FitResult r = FitTorus(s.Input());
+  EXPECT_FALSE(r.ok());
+  EXPECT_TRUE(std::isfinite(r.rms_distance) && std::isfinite(r.max_distance));
 }
 
 }  // namespace
