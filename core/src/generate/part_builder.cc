@@ -68,7 +68,11 @@ int PartBuilder::Box(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi,
 int PartBuilder::RoundCut(const std::string& name, const Eigen::Vector3d& c,
                           const Eigen::Vector3d& axis, const Eigen::Vector3d& n1,
                           const Eigen::Vector3d& n2, double r) {
-  const int wedge = csg().Intersection({AuxPlane(c, -n1), AuxPlane(c, -n2)});
+  // The wedge spanned by n1 and n2 around the axis: bounded by the plane
+  // through the axis and n1 (kept on the side of n2) and vice versa.
+  const Eigen::Vector3d m1 = (n2 - n2.dot(n1) * n1).normalized();
+  const Eigen::Vector3d m2 = (n1 - n1.dot(n2) * n2).normalized();
+  const int wedge = csg().Intersection({AuxPlane(c, -m1), AuxPlane(c, -m2)});
   return csg().Difference(wedge, Face(name, Cylinder{c, axis.normalized(), r}));
 }
 

@@ -46,9 +46,10 @@ class PartBuilder {
   // name makes that face auxiliary.
   int Box(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi,
           const std::array<std::string, 6>& names);
-  // The material to remove to round the convex edge where faces with outward
-  // normals n1 and n2 meet: the wedge {(p - c).n1 >= 0, (p - c).n2 >= 0}
-  // outside the cylinder of radius r around the line (c, axis).
+  // The material to remove to round the convex edge where faces with unit
+  // outward normals n1 and n2 (both perpendicular to `axis`) meet: the wedge
+  // {c + a n1 + b n2 + t axis : a, b >= 0} outside the cylinder of radius r
+  // around the line (c, axis); c lies at distance r inside both faces.
   int RoundCut(const std::string& name, const Eigen::Vector3d& c, const Eigen::Vector3d& axis,
                const Eigen::Vector3d& n1, const Eigen::Vector3d& n2, double r);
 

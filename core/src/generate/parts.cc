@@ -23,7 +23,7 @@ std::vector<Entry> Catalogue() {
       {"stepped_shaft", SteppedShaft},
       {"blend_block", BlendBlock},
       {"test_piece", [] { return TestPiece("test_piece", 0.6); }},
-      {"test_piece_large", [] { return TestPiece("test_piece_large", 0.18); }},
+      {"test_piece_large", [] { return TestPiece("test_piece_large", 0.15); }},
   };
 }
 

@@ -52,6 +52,27 @@ TEST(FacePrimitives, SmallBlockAreasMatchTheDrawing) {
               kBandTol * h * (68 + 2 * kPi * r_bore));
 }
 
+// Fillets meet their neighbours tangentially; faces straddling a tangent
+// line go to either side (measured: about 0.15 h times the line's length).
+TEST(FacePrimitives, FilletAreasMatchTheDrawing) {
+  constexpr double kChordRelTol = 0.01;
+  constexpr double kTangentBandTol = 0.25;  // x h x tangent line length
+  const auto plate = GeneratePart("plate_boss");
+  ASSERT_TRUE(plate.ok()) << plate.status();
+  // Quarter of the torus tube (R 14, r 4) facing the boss axis and the plate;
+  // tangent to the boss at radius 10 and to the plate at radius 14.
+  const double torus_area = 2 * kPi * 4 * (14 * kPi / 2 - 4);
+  EXPECT_NEAR(AreaByPrimitive(*plate).at("boss_fillet"), torus_area,
+              kChordRelTol * torus_area + kTangentBandTol * plate->voxel_size * 2 * kPi * 24);
+  const auto block = GeneratePart("blend_block");
+  ASSERT_TRUE(block.ok()) << block.status();
+  // Quarter cylinder r 5, 30 long, tangent to two planes; sharp at its ends.
+  const double fillet_area = kPi / 2 * 5 * 30;
+  EXPECT_NEAR(AreaByPrimitive(*block).at("inner_fillet"), fillet_area,
+              kChordRelTol * fillet_area + kTangentBandTol * block->voxel_size * 60 +
+                  kBandTol * block->voxel_size * kPi * 5);
+}
+
 // Smooth closed surfaces: only the chord error of marching cubes remains.
 TEST(FacePrimitives, TorusAndSphereCapAreasMatchWithinOnePercent) {
   constexpr double kRelTol = 0.01;

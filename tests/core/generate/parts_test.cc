@@ -2,12 +2,14 @@
 // primitive with enough faces to be found, true parameters as designed.
 #include "generate/parts.h"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <numbers>
 
 #include <gtest/gtest.h>
 
+#include "meshseg/fit.h"
 #include "meshseg/generate.h"
 
 namespace meshseg {
@@ -51,6 +53,16 @@ TEST_P(PartsTest, ClosedManifoldOfExpectedGenusWithEnoughFacesPerPrimitive) {
   for (const PrimitiveTruth& p : part->primitives) {
     EXPECT_GE(faces[p.id], kMinFacesPerPrimitive) << e.name << " " << p.name;
   }
+  // Noise-free vertices lie on the surface of their primitive.
+  constexpr double kOnSurfaceTol = 1e-9;  // x h
+  double worst = 0.0;
+  for (const auto v : part->mesh.tri.vertices()) {
+    const int p = part->vertex_primitive[v.idx()];
+    ASSERT_GE(p, 0);
+    worst = std::max(worst, std::abs(SignedDistance(part->primitives[p].surface,
+                                                    ToEigen(part->mesh.tri.point(v)))));
+  }
+  EXPECT_LT(worst, kOnSurfaceTol * part->voxel_size) << e.name;
 }
 
 INSTANTIATE_TEST_SUITE_P(Catalogue, PartsTest, ::testing::ValuesIn(kParts),
