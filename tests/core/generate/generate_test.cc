@@ -5,6 +5,7 @@
 #include <stop_token>
 
 #include <gmock/gmock.h>
+#include <tbb/global_control.h>
 #include <gtest/gtest.h>
 
 #include "meshseg/fit.h"
@@ -109,6 +110,28 @@ TEST(GeneratePart, SameSeedGivesSameMeshOtherSeedDiffers) {
   EXPECT_EQ(same_as_c, 0);
   EXPECT_EQ(a->face_primitive, b->face_primitive);
   EXPECT_EQ(a->face_primitive, c->face_primitive);  // labels come from the noise-free mesh
+}
+
+TEST(GeneratePart, OneThreadGivesTheSameMeshAsMany) {
+  const GenerateParams params{.voxel_size = kCoarseH, .noise = 0.1};
+  const auto many = GeneratePart("test_piece", params);
+  absl::StatusOr<GeneratedPart> one = absl::UnknownError("not run");
+  {
+    tbb::global_control single(tbb::global_control::max_allowed_parallelism, 1);
+    one = GeneratePart("test_piece", params);
+  }
+  ASSERT_TRUE(many.ok() && one.ok());
+  ASSERT_EQ(many->mesh.tri.n_vertices(), one->mesh.tri.n_vertices());
+  ASSERT_EQ(many->mesh.tri.n_faces(), one->mesh.tri.n_faces());
+  for (const auto v : many->mesh.tri.vertices()) {
+    ASSERT_EQ(many->mesh.tri.point(v), one->mesh.tri.point(v)) << "vertex " << v.idx();
+  }
+  for (const auto f : many->mesh.tri.faces()) {
+    ASSERT_EQ(many->mesh.tri.to_vertex_handle(many->mesh.tri.halfedge_handle(f)),
+              one->mesh.tri.to_vertex_handle(one->mesh.tri.halfedge_handle(f)));
+  }
+  EXPECT_EQ(many->face_primitive, one->face_primitive);
+  EXPECT_EQ(many->face_near_boundary, one->face_near_boundary);
 }
 
 // The noise is measured as the signed distance of each vertex to the
