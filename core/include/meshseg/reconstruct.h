@@ -64,19 +64,19 @@ struct ReconstructParams {
 
 // What the stage measured and derived.
 struct ReconstructStats {
-  double point_spacing = 0.0;      // h: median over points of the mean distance
-                                   // to their 6 nearest neighbours, model units
-  int octree_max_level = 0;        // level used
-  int64_t octree_leaf_count = 0;   // candidate centres
-  int64_t support_count = 0;       // support balls of the covering
-  int64_t tet_vertex_count = 0;    // supports not hidden in the regular triangulation
-  int64_t tet_count = 0;           // finite tetrahedra
-  int64_t relabelled_count = 0;    // tet vertices whose cut label differs from sign(f)
+  double point_spacing = 0.0;     // h: median over points of the mean distance
+                                  // to their 6 nearest neighbours, model units
+  int octree_max_level = 0;       // level used
+  int64_t octree_leaf_count = 0;  // candidate centres
+  int64_t support_count = 0;      // support balls of the covering
+  int64_t tet_vertex_count = 0;   // supports not hidden in the regular triangulation
+  int64_t tet_count = 0;          // finite tetrahedra
+  int64_t relabelled_count = 0;   // tet vertices whose cut label differs from sign(f)
   int64_t smoothed_vertex_count = 0;
   int64_t dropped_component_count = 0;  // see min_component_fraction
-  int64_t outlier_count = 0;       // isolated points left out of the fits
-  bool normals_estimated = false;  // the cloud had no normals
-  bool normals_flipped = false;    // given normals pointed outward (or were re-oriented)
+  int64_t outlier_count = 0;            // isolated points left out of the fits
+  bool normals_estimated = false;       // the cloud had no normals
+  bool normals_flipped = false;         // given normals pointed outward (or were re-oriented)
 };
 
 struct Reconstruction {

@@ -35,7 +35,8 @@ double FitAt(double r, const Found& found, const FitInput& in, Support* s) {
   s->m = sum_n.normalized();
   s->d = sum_p / sum_w;
   double err = 0.0;
-  for (size_t j = 0; j < inside; ++j) err = std::max(err, std::abs(s->g(in.points[found[j].first])));
+  for (size_t j = 0; j < inside; ++j)
+    err = std::max(err, std::abs(s->g(in.points[found[j].first])));
   return err;
 }
 

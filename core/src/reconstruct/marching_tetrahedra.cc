@@ -76,7 +76,9 @@ absl::StatusOr<IsoSurface> MarchingTetrahedra(const TetMesh& tets,
   });
   MESHSEG_RETURN_IF_ERROR(ctx.CheckStop(kStage));
   const auto edge_vertex = [&](int a, int b) { return vertex_of_edge.at(EdgeKey(a, b)); };
-  const auto mid = [&](int a, int b) -> Eigen::Vector3d { return 0.5 * (position[a] + position[b]); };
+  const auto mid = [&](int a, int b) -> Eigen::Vector3d {
+    return 0.5 * (position[a] + position[b]);
+  };
   for (const auto& tet : tets.tets) {
     int in[4], out_v[4], n_in = 0, n_out = 0;
     for (const int v : tet) (inside[v] ? in[n_in++] : out_v[n_out++]) = v;
@@ -88,9 +90,9 @@ absl::StatusOr<IsoSurface> MarchingTetrahedra(const TetMesh& tets,
     // Corners as tet edges; the edge midpoints give a non-degenerate proxy
     // of the triangle that separates in from out, for the orientation test.
     const auto emit = [&](std::array<std::array<int, 2>, 3> corner) {
-      const Eigen::Vector3d n = (mid(corner[1][0], corner[1][1]) - mid(corner[0][0], corner[0][1]))
-                                    .cross(mid(corner[2][0], corner[2][1]) -
-                                           mid(corner[0][0], corner[0][1]));
+      const Eigen::Vector3d n =
+          (mid(corner[1][0], corner[1][1]) - mid(corner[0][0], corner[0][1]))
+              .cross(mid(corner[2][0], corner[2][1]) - mid(corner[0][0], corner[0][1]));
       if (n.dot(outward) < 0) std::swap(corner[1], corner[2]);
       out.triangles.push_back({edge_vertex(corner[0][0], corner[0][1]),
                                edge_vertex(corner[1][0], corner[1][1]),

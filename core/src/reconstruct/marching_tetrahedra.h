@@ -17,7 +17,7 @@
 namespace meshseg::reconstruct_internal {
 
 struct IsoSurface {
-  std::vector<Eigen::Vector3d> vertices;     // one per cut tet edge
+  std::vector<Eigen::Vector3d> vertices;      // one per cut tet edge
   std::vector<std::array<int, 3>> triangles;  // oriented inside → outside
   // Per vertex: 1 if placed on an edge whose ends have the same sign of f or
   // whose ends include a sparse support; these get smoothed.

@@ -17,8 +17,8 @@ constexpr double kMinCos = 0.5;
 
 std::vector<uint8_t> OutlierFlags(const std::vector<Eigen::Vector3d>& points,
                                   const std::vector<Eigen::Vector3d>& normals,
-                                  const PointIndex& index, const std::vector<double>& spread,
-                                  int k, double isolated_distance, double off_surface_distance) {
+                                  const PointIndex& index, const std::vector<double>& spread, int k,
+                                  double isolated_distance, double off_surface_distance) {
   std::vector<uint8_t> flags(points.size(), 0);
   tbb::parallel_for(tbb::blocked_range<size_t>(0, points.size()), [&](const auto& range) {
     std::vector<uint32_t> idx;

@@ -22,8 +22,8 @@ namespace meshseg::reconstruct_internal {
 // units.
 std::vector<uint8_t> OutlierFlags(const std::vector<Eigen::Vector3d>& points,
                                   const std::vector<Eigen::Vector3d>& normals,
-                                  const PointIndex& index, const std::vector<double>& spread,
-                                  int k, double isolated_distance, double off_surface_distance);
+                                  const PointIndex& index, const std::vector<double>& spread, int k,
+                                  double isolated_distance, double off_surface_distance);
 
 }  // namespace meshseg::reconstruct_internal
 

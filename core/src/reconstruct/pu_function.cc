@@ -15,8 +15,8 @@ PuFunction::PuFunction(const std::vector<Support>& supports) : supports_(support
   const int count = static_cast<int>(std::floor(std::log2(largest_radius_ / smallest))) + 1;
   groups_.resize(count);
   for (size_t i = 0; i < supports.size(); ++i) {
-    const int c = std::min(count - 1,
-                           static_cast<int>(std::floor(std::log2(supports[i].radius / smallest))));
+    const int c =
+        std::min(count - 1, static_cast<int>(std::floor(std::log2(supports[i].radius / smallest))));
     groups_[c].centers.push_back(supports[i].center);
     groups_[c].support.push_back(static_cast<int>(i));
     groups_[c].max_radius = std::max(groups_[c].max_radius, supports[i].radius);

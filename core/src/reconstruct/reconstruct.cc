@@ -40,12 +40,16 @@ absl::Status ValidateParams(const ReconstructParams& p) {
   const auto bad = [](const std::string& what) {
     return absl::InvalidArgumentError(absl::StrCat(kStage, ": ", what));
   };
-  if (!(p.error_tolerance > 0)) return bad(absl::StrCat("error_tolerance ", p.error_tolerance, " must be > 0"));
+  if (!(p.error_tolerance > 0)) {
+    return bad(absl::StrCat("error_tolerance ", p.error_tolerance, " must be > 0"));
+  }
   if (p.octree_max_level && (*p.octree_max_level < 1 || *p.octree_max_level > kMaxOctreeLevel)) {
     return bad(absl::StrCat("octree_max_level ", *p.octree_max_level, " outside [1, ",
                             kMaxOctreeLevel, "]"));
   }
-  if (!(p.leaf_cell_size > 0)) return bad(absl::StrCat("leaf_cell_size ", p.leaf_cell_size, " must be > 0"));
+  if (!(p.leaf_cell_size > 0)) {
+    return bad(absl::StrCat("leaf_cell_size ", p.leaf_cell_size, " must be > 0"));
+  }
   if (!(p.graph_cut_k > 0)) return bad(absl::StrCat("graph_cut_k ", p.graph_cut_k, " must be > 0"));
   if (!(p.smoothing_lambda >= 0 && p.smoothing_lambda <= 1)) {
     return bad(absl::StrCat("smoothing_lambda ", p.smoothing_lambda, " outside [0, 1]"));
@@ -53,11 +57,16 @@ absl::Status ValidateParams(const ReconstructParams& p) {
   if (p.smoothing_iterations < 0) {
     return bad(absl::StrCat("smoothing_iterations ", p.smoothing_iterations, " must be >= 0"));
   }
-  if (p.normal_neighbors < 3) return bad(absl::StrCat("normal_neighbors ", p.normal_neighbors, " must be >= 3"));
-  if (!(p.min_component_fraction >= 0 && p.min_component_fraction <= 1)) {
-    return bad(absl::StrCat("min_component_fraction ", p.min_component_fraction, " outside [0, 1]"));
+  if (p.normal_neighbors < 3) {
+    return bad(absl::StrCat("normal_neighbors ", p.normal_neighbors, " must be >= 3"));
   }
-  if (!(p.outlier_distance > 0)) return bad(absl::StrCat("outlier_distance ", p.outlier_distance, " must be > 0"));
+  if (!(p.min_component_fraction >= 0 && p.min_component_fraction <= 1)) {
+    return bad(
+        absl::StrCat("min_component_fraction ", p.min_component_fraction, " outside [0, 1]"));
+  }
+  if (!(p.outlier_distance > 0)) {
+    return bad(absl::StrCat("outlier_distance ", p.outlier_distance, " must be > 0"));
+  }
   if (!(p.off_surface_distance > 0)) {
     return bad(absl::StrCat("off_surface_distance ", p.off_surface_distance, " must be > 0"));
   }
@@ -65,14 +74,16 @@ absl::Status ValidateParams(const ReconstructParams& p) {
 }
 
 absl::Status ValidateCloud(const PointCloud& cloud) {
-  const std::string name = cloud.name.empty() ? "point cloud" : absl::StrCat("\"", cloud.name, "\"");
+  const std::string name =
+      cloud.name.empty() ? "point cloud" : absl::StrCat("\"", cloud.name, "\"");
   if (cloud.points.size() < kMinPoints) {
     return absl::InvalidArgumentError(absl::StrCat(kStage, ": ", name, ": ", cloud.points.size(),
                                                    " points, need at least ", kMinPoints));
   }
   if (cloud.has_normals() && cloud.normals.size() != cloud.points.size()) {
     return absl::InvalidArgumentError(absl::StrCat(kStage, ": ", name, ": ", cloud.normals.size(),
-                                                   " normals for ", cloud.points.size(), " points"));
+                                                   " normals for ", cloud.points.size(),
+                                                   " points"));
   }
   for (size_t i = 0; i < cloud.points.size(); ++i) {
     if (!cloud.points[i].allFinite()) {
@@ -114,9 +125,10 @@ absl::StatusOr<Reconstruction> Reconstruct(const PointCloud& cloud, const Recons
     const PointIndex all_index(cloud.points);
     const std::vector<double> spread = MeanNeighborDistances(cloud.points, all_index);
     stats.point_spacing = Median(spread);
-    out.is_outlier = OutlierFlags(cloud.points, cloud.normals, all_index, spread, params.normal_neighbors,
-                                  params.outlier_distance * stats.point_spacing,
-                                  params.off_surface_distance * stats.point_spacing);
+    out.is_outlier =
+        OutlierFlags(cloud.points, cloud.normals, all_index, spread, params.normal_neighbors,
+                     params.outlier_distance * stats.point_spacing,
+                     params.off_surface_distance * stats.point_spacing);
   }
   const double h = stats.point_spacing;
   // Outliers take no part in the fits.
@@ -135,16 +147,17 @@ absl::StatusOr<Reconstruction> Reconstruct(const PointCloud& cloud, const Recons
   }
   const double extent = (hi - lo).maxCoeff();
   if (!(h > 1e-9 * extent) || !(extent > 0)) {
-    return absl::InvalidArgumentError(absl::StrCat(
-        kStage, ": \"", cloud.name, "\": points span ", extent, " with spacing ", h,
-        "; they (nearly) coincide"));
+    return absl::InvalidArgumentError(absl::StrCat(kStage, ": \"", cloud.name, "\": points span ",
+                                                   extent, " with spacing ", h,
+                                                   "; they (nearly) coincide"));
   }
   const PointIndex index(points);
   ctx.Progress(kStage, 0.05);
 
   // Step 1: inward normals.
-  MESHSEG_ASSIGN_OR_RETURN(const OrientedNormals normals,
-                           InwardNormals(points, given_normals, index, params.normal_neighbors, ctx));
+  MESHSEG_ASSIGN_OR_RETURN(
+      const OrientedNormals normals,
+      InwardNormals(points, given_normals, index, params.normal_neighbors, ctx));
   stats.normals_estimated = !cloud.has_normals();
   stats.normals_flipped = cloud.has_normals() && normals.flipped;
   ctx.Progress(kStage, 0.15);
@@ -152,12 +165,11 @@ absl::StatusOr<Reconstruction> Reconstruct(const PointCloud& cloud, const Recons
   // Step 2: octree, covering and the partition-of-unity implicit f.
   const double cube = extent * (1.0 + 2.0 * kCubeMargin);
   const Eigen::Vector3d origin = 0.5 * (lo + hi) - Eigen::Vector3d::Constant(0.5 * cube);
-  stats.octree_max_level = params.octree_max_level.value_or(std::clamp(
-      static_cast<int>(std::ceil(std::log2(cube / (params.leaf_cell_size * h)))),
-      kMinDerivedLevel, kMaxDerivedLevel));
-  MESHSEG_ASSIGN_OR_RETURN(
-      const std::vector<OctreeLeaf> leaves,
-      BalancedOctreeLeaves(points, origin, cube, stats.octree_max_level, ctx));
+  stats.octree_max_level = params.octree_max_level.value_or(
+      std::clamp(static_cast<int>(std::ceil(std::log2(cube / (params.leaf_cell_size * h)))),
+                 kMinDerivedLevel, kMaxDerivedLevel));
+  MESHSEG_ASSIGN_OR_RETURN(const std::vector<OctreeLeaf> leaves,
+                           BalancedOctreeLeaves(points, origin, cube, stats.octree_max_level, ctx));
   stats.octree_leaf_count = static_cast<int64_t>(leaves.size());
   const FitInput fit_input{points, normals.normals, index, params.error_tolerance * h,
                            std::sqrt(3.0) * cube};
@@ -195,9 +207,9 @@ absl::StatusOr<Reconstruction> Reconstruct(const PointCloud& cloud, const Recons
   MESHSEG_ASSIGN_OR_RETURN(IsoSurface surface,
                            MarchingTetrahedra(tets, position, f_at, inside, sparse, f, ctx));
   if (surface.triangles.empty()) {
-    return absl::InvalidArgumentError(absl::StrCat(
-        kStage, ": \"", cloud.name, "\": no inside region found among ", tets.support.size(),
-        " supports; the points enclose no volume"));
+    return absl::InvalidArgumentError(
+        absl::StrCat(kStage, ": \"", cloud.name, "\": no inside region found among ",
+                     tets.support.size(), " supports; the points enclose no volume"));
   }
   stats.dropped_component_count = DropSmallComponents(params.min_component_fraction, &surface);
   for (const uint8_t s : surface.to_smooth) stats.smoothed_vertex_count += s;

@@ -20,8 +20,9 @@ namespace {
 constexpr char kStage[] = "reconstruct: tetrahedralization";
 
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
-using VertexBase = CGAL::Triangulation_vertex_base_with_info_3<
-    int, K, CGAL::Regular_triangulation_vertex_base_3<K>>;
+using VertexBase =
+    CGAL::Triangulation_vertex_base_with_info_3<int, K,
+                                                CGAL::Regular_triangulation_vertex_base_3<K>>;
 using CellBase = CGAL::Regular_triangulation_cell_base_3<K>;
 using Tds = CGAL::Triangulation_data_structure_3<VertexBase, CellBase>;
 using Regular = CGAL::Regular_triangulation_3<K, Tds>;
@@ -35,17 +36,17 @@ absl::StatusOr<TetMesh> RegularTetrahedralization(const std::vector<Support>& su
   input.reserve(supports.size());
   for (size_t i = 0; i < supports.size(); ++i) {
     const auto& c = supports[i].center;
-    input.emplace_back(WeightedPoint(K::Point_3(c.x(), c.y(), c.z()),
-                                     supports[i].radius * supports[i].radius),
-                       static_cast<int>(i));
+    input.emplace_back(
+        WeightedPoint(K::Point_3(c.x(), c.y(), c.z()), supports[i].radius * supports[i].radius),
+        static_cast<int>(i));
   }
   Regular rt;
   rt.insert(input.begin(), input.end());
   MESHSEG_RETURN_IF_ERROR(ctx.CheckStop(kStage));
   if (rt.dimension() < 3) {
-    return absl::InvalidArgumentError(absl::StrCat(
-        kStage, ": the ", supports.size(), " support centres span dimension ", rt.dimension(),
-        ", need 3"));
+    return absl::InvalidArgumentError(absl::StrCat(kStage, ": the ", supports.size(),
+                                                   " support centres span dimension ",
+                                                   rt.dimension(), ", need 3"));
   }
   // Number tet vertices by increasing support index, so the output does not
   // depend on CGAL's internal order.

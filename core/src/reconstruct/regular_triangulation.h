@@ -14,10 +14,10 @@
 namespace meshseg::reconstruct_internal {
 
 struct TetMesh {
-  std::vector<int> support;                // per tet vertex: its support index
-  std::vector<std::array<int, 4>> tets;    // finite tetrahedra, tet vertex indices
-  std::vector<std::array<int, 2>> edges;   // finite edges, tet vertex indices, a < b
-  std::vector<uint8_t> on_hull;            // per tet vertex: 1 on the convex hull
+  std::vector<int> support;               // per tet vertex: its support index
+  std::vector<std::array<int, 4>> tets;   // finite tetrahedra, tet vertex indices
+  std::vector<std::array<int, 2>> edges;  // finite edges, tet vertex indices, a < b
+  std::vector<uint8_t> on_hull;           // per tet vertex: 1 on the convex hull
 };
 
 // Returns the regular triangulation of the support centres weighted by r²;

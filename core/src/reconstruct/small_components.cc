@@ -45,7 +45,8 @@ int64_t DropSmallComponents(double min_fraction, IsoSurface* surface) {
     kept.to_smooth.push_back(surface->to_smooth[v]);
   }
   for (const auto& t : surface->triangles) {
-    if (renumber[t[0]] >= 0) kept.triangles.push_back({renumber[t[0]], renumber[t[1]], renumber[t[2]]});
+    if (renumber[t[0]] < 0) continue;
+    kept.triangles.push_back({renumber[t[0]], renumber[t[1]], renumber[t[2]]});
   }
   *surface = std::move(kept);
   return dropped;

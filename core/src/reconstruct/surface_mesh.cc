@@ -12,7 +12,8 @@ absl::StatusOr<Mesh> SurfaceMesh(const std::vector<Eigen::Vector3d>& vertices,
   mesh.input_vertex_count = static_cast<int64_t>(vertices.size());
   std::vector<TriMesh::VertexHandle> handle(vertices.size());
   for (size_t v = 0; v < vertices.size(); ++v) {
-    handle[v] = mesh.tri.add_vertex(TriMesh::Point(vertices[v].x(), vertices[v].y(), vertices[v].z()));
+    handle[v] =
+        mesh.tri.add_vertex(TriMesh::Point(vertices[v].x(), vertices[v].y(), vertices[v].z()));
   }
   mesh.face_of_input.reserve(triangles.size());
   for (size_t t = 0; t < triangles.size(); ++t) {

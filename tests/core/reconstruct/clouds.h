@@ -50,7 +50,8 @@ inline Shape Box(const Eigen::Vector3d& half) {
                              4 * half.x() * half.y());
   s.sample = [half, face](std::mt19937& rng, Eigen::Vector3d* p, Eigen::Vector3d* n) {
     std::uniform_real_distribution<double> u(-1.0, 1.0);
-    std::discrete_distribution<int> pick({face.x(), face.x(), face.y(), face.y(), face.z(), face.z()});
+    std::discrete_distribution<int> pick(
+        {face.x(), face.x(), face.y(), face.y(), face.z(), face.z()});
     const int f = pick(rng);
     const int axis = f / 2;
     const double sign = f % 2 == 0 ? 1.0 : -1.0;
@@ -85,12 +86,12 @@ inline Shape Torus(double R, double r) {
 
 struct CloudSpec {
   int points = 4000;
-  double noise = 0.0;          // Gaussian sigma, in spacing
-  double outliers = 0.0;       // fraction of `points` added uniformly in the bounding box
-  double hole_radius = 0.0;    // points within this distance of hole_center are removed
+  double noise = 0.0;        // Gaussian sigma, in spacing
+  double outliers = 0.0;     // fraction of `points` added uniformly in the bounding box
+  double hole_radius = 0.0;  // points within this distance of hole_center are removed
   Eigen::Vector3d hole_center = Eigen::Vector3d::Zero();
-  int clumps = 0;              // small flat discs of stray points (ghost sheets) in the box
-  bool normals = true;         // outward unit normals (outliers get random ones)
+  int clumps = 0;       // small flat discs of stray points (ghost sheets) in the box
+  bool normals = true;  // outward unit normals (outliers get random ones)
   unsigned seed = 1;
 };
 

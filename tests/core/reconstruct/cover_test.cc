@@ -27,8 +27,7 @@ TEST(CoverBySupports, EveryLeafLiesInsideASupportAndTheOrderFollowsTheSeed) {
   for (const auto& leaf : leaves) {
     bool covered = false;
     for (const auto& s : *a) {
-      const Eigen::Vector3d far =
-          (leaf.center - s.center).cwiseAbs().array() + 0.5 * leaf.size;
+      const Eigen::Vector3d far = (leaf.center - s.center).cwiseAbs().array() + 0.5 * leaf.size;
       covered = covered || far.norm() <= s.radius;
     }
     ASSERT_TRUE(covered) << leaf.center.transpose();

@@ -45,8 +45,8 @@ TEST(MarchingTetrahedra, SphereFieldGivesAClosedOrientedSurfaceOnTheZeroSet) {
   // Oriented outward: positive signed volume.
   double volume = 0.0;
   for (const auto& t : surface->triangles) {
-    volume += surface->vertices[t[0]].dot(
-                  surface->vertices[t[1]].cross(surface->vertices[t[2]])) / 6;
+    volume +=
+        surface->vertices[t[0]].dot(surface->vertices[t[1]].cross(surface->vertices[t[2]])) / 6;
   }
   EXPECT_NEAR(volume, 4.0 / 3.0 * M_PI, 0.4);
 }

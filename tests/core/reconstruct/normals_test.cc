@@ -51,7 +51,7 @@ TEST(InwardNormals, EstimatedNormalsAreConsistentAndPointInward) {
   const auto r = InwardNormals(points, {}, index, 10, {});
   ASSERT_TRUE(r.ok()) << r.status();
   EXPECT_GE(InwardFraction(r->normals, outward, 0.0), 0.995);  // consistently inward
-  EXPECT_GE(InwardFraction(r->normals, outward), 0.9);  // PCA tilts them at the edges
+  EXPECT_GE(InwardFraction(r->normals, outward), 0.9);         // PCA tilts them at the edges
 }
 
 TEST(InwardNormals, GivenOutwardNormalsAreFlipped) {

@@ -51,8 +51,8 @@ TEST(BalancedOctreeLeaves, StopRequestIsCancelled) {
   stop.request_stop();
   RunContext ctx;
   ctx.stop = stop.get_token();
-  const auto leaves = BalancedOctreeLeaves(SpherePoints(10), Eigen::Vector3d::Constant(-0.5), 1.0,
-                                           4, ctx);
+  const auto leaves =
+      BalancedOctreeLeaves(SpherePoints(10), Eigen::Vector3d::Constant(-0.5), 1.0, 4, ctx);
   EXPECT_EQ(leaves.status().code(), absl::StatusCode::kCancelled);
 }
 

@@ -5,7 +5,8 @@
 namespace meshseg::reconstruct_internal {
 namespace {
 
-Support Ball(const Eigen::Vector3d& center, double radius, const Eigen::Vector3d& m, double offset) {
+Support Ball(const Eigen::Vector3d& center, double radius, const Eigen::Vector3d& m,
+             double offset) {
   Support s;
   s.center = center;
   s.radius = radius;

@@ -12,12 +12,12 @@
 namespace meshseg {
 namespace {
 
-using ::testing::HasSubstr;
 using test::CloudSpec;
 using test::Shape;
+using ::testing::HasSubstr;
 
 constexpr int kPoints = 4000;
-constexpr double kDistanceTol = 0.5;      // × spacing, vertex to true surface
+constexpr double kDistanceTol = 0.5;       // × spacing, vertex to true surface
 constexpr double kMinNearFraction = 0.95;  // of the mesh vertices
 
 // The hard case: 5 % outliers in the bounding box, noise 0.2 ×

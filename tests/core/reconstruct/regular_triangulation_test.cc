@@ -42,9 +42,9 @@ TEST(RegularTetrahedralization, SmallBallInsideALargeOneIsHidden) {
   const auto tets = RegularTetrahedralization(supports, {});
   ASSERT_TRUE(tets.ok()) << tets.status();
   EXPECT_EQ(tets->support.size(), supports.size() - 1);
-  EXPECT_EQ(std::count(tets->support.begin(), tets->support.end(),
-                       static_cast<int>(supports.size() - 1)),
-            0);
+  EXPECT_EQ(
+      std::count(tets->support.begin(), tets->support.end(), static_cast<int>(supports.size() - 1)),
+      0);
 }
 
 TEST(RegularTetrahedralization, CoplanarCentresAreInvalid) {

@@ -81,8 +81,8 @@ std::vector<double> PointsToSurface(const std::vector<Eigen::Vector3d>& points, 
     std::array<Eigen::Vector3d, 3> t;
     int i = 0;
     for (const auto v : f.vertices()) t[i++] = ToEigen(to.point(v));
-    tris.push_back({t[0], t[1], t[2], t[0].cwiseMin(t[1]).cwiseMin(t[2]),
-                    t[0].cwiseMax(t[1]).cwiseMax(t[2])});
+    tris.push_back(
+        {t[0], t[1], t[2], t[0].cwiseMin(t[1]).cwiseMin(t[2]), t[0].cwiseMax(t[1]).cwiseMax(t[2])});
   }
   std::vector<double> d;
   for (const auto& p : points) {
@@ -134,8 +134,10 @@ void CheckAgainstTruth(const Case& c) {
   EXPECT_LE(Quantile(completeness, 0.95), c.max_p95 * h);
   ::testing::Test::RecordProperty("accuracy_median_h", std::to_string(Quantile(accuracy, 0.5) / h));
   ::testing::Test::RecordProperty("accuracy_p95_h", std::to_string(Quantile(accuracy, 0.95) / h));
-  ::testing::Test::RecordProperty("completeness_median_h", std::to_string(Quantile(completeness, 0.5) / h));
-  ::testing::Test::RecordProperty("completeness_p95_h", std::to_string(Quantile(completeness, 0.95) / h));
+  ::testing::Test::RecordProperty("completeness_median_h",
+                                  std::to_string(Quantile(completeness, 0.5) / h));
+  ::testing::Test::RecordProperty("completeness_p95_h",
+                                  std::to_string(Quantile(completeness, 0.95) / h));
 }
 
 // Clean samples of a CAD part with sharp edges; the p95 is set by the rounding
