@@ -44,6 +44,11 @@ TypedFit DecideCurvedType(const SegmentContext& c, std::span<const int> vertices
   } else if (k[0].fraction >= k[2].fraction - kFractionTie) {
     k[2].fraction = 0.0;
   }
+  // The first type in seed 000's order that passes the alpha test ...
+  for (const TypedFit& t : k) {
+    if (t.fraction > c.alpha) return t;
+  }
+  // ... else the best, for the caller's trimming.
   double best = 0.0;
   for (const TypedFit& t : k) best = std::max(best, t.fraction);
   for (const TypedFit& t : k) {

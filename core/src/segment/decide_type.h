@@ -20,10 +20,10 @@ struct TypedFit {
 std::optional<TypedFit> PlaneIfFits(const SegmentContext& c, std::span<const int> vertices,
                                     const Tolerance& tol);
 
-// Returns the analytic type (cylinder, sphere, cone, torus) with the largest
-// fitting fraction, earlier types winning near-ties and the cone replacing
-// the cylinder only when clearly more accurate; the general quadric if no
-// analytic type fits any vertex. The caller applies the alpha test.
+// Returns the first of cylinder, sphere, cone, torus passing the alpha test
+// (the cone replacing the cylinder only when clearly more accurate); if none
+// passes, the one with the largest fitting fraction (earlier types winning
+// near-ties), or the general quadric if no analytic type fits any vertex.
 TypedFit DecideCurvedType(const SegmentContext& c, std::span<const int> vertices,
                           const Tolerance& tol);
 

@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <map>
+#include <optional>
 #include <utility>
 
 #include "meshseg/status_macros.h"
+#include "segment/decide_type.h"
 #include "segment/region_graph.h"
 
 namespace meshseg::segment_internal {
@@ -63,23 +65,21 @@ struct PairFit {
   Surface surface;
 };
 
-// The better of the two regions' types fitted to their union, scored by
-// the smaller of the two regions' fitting fractions (a large region alone
-// would otherwise carry any small neighbour past beta2).
+// The union of the two regions fitted with their type, scored by the
+// smaller of the two regions' fitting fractions (a large region alone would
+// otherwise carry any small neighbour past beta2). An analytic region only
+// merges with a quadric if its own type fits the union: a quadric bends
+// enough to cover a plane and its tangent fillet at once.
 PairFit FitUnion(const SegmentContext& c, const RegionState& x, const RegionState& y) {
   std::vector<int> both = x.vertices;
   both.insert(both.end(), y.vertices.begin(), y.vertices.end());
   std::sort(both.begin(), both.end());
-  PairFit best;
-  for (const SurfaceType type : {x.type, y.type}) {
-    if (type == best.type && best.fraction > 0.0) continue;
-    const FitResult fit = FitType(c, type, both);
-    if (!fit.ok()) continue;
-    const double f = std::min(FitFraction(c, fit.surface, x.vertices, c.tolerance),
-                              FitFraction(c, fit.surface, y.vertices, c.tolerance));
-    if (f > best.fraction) best = PairFit{.fraction = f, .type = type, .surface = fit.surface};
-  }
-  return best;
+  const SurfaceType type = x.type == SurfaceType::kQuadric ? y.type : x.type;
+  const FitResult fit = FitType(c, type, both);
+  if (!fit.ok()) return {};
+  const double f = std::min(FitFraction(c, fit.surface, x.vertices, c.tolerance),
+                            FitFraction(c, fit.surface, y.vertices, c.tolerance));
+  return PairFit{.fraction = f, .type = type, .surface = fit.surface};
 }
 
 // Seed 000 §4 step 4: repeatedly merges the best-fitting pair.
@@ -127,7 +127,33 @@ absl::Status MergeRegions(const SegmentContext& c, std::vector<int>* labels,
   while (MergeByExtrapolation(c, labels, regions) > 0) {
     MESHSEG_RETURN_IF_ERROR(c.run->CheckStop("segment"));
   }
-  return MergeByRefitting(c, labels, regions);
+  MESHSEG_RETURN_IF_ERROR(MergeByRefitting(c, labels, regions));
+  RetypeQuadrics(c, regions);
+  while (MergeByExtrapolation(c, labels, regions) > 0) {
+    MESHSEG_RETURN_IF_ERROR(c.run->CheckStop("segment"));
+  }
+  return absl::OkStatus();
+}
+
+void RetypeQuadrics(const SegmentContext& c, std::vector<RegionState>* regions) {
+  for (RegionState& r : *regions) {
+    if (!r.alive || r.type != SurfaceType::kQuadric || r.vertices.empty()) continue;
+    // Absorbed vertices next to sharp edges carry bent normals; judge the
+    // type on the non-sharp ones.
+    std::vector<int> smooth;
+    for (const int v : r.vertices) {
+      if (!c.curvature->sharp[v]) smooth.push_back(v);
+    }
+    if (smooth.size() < kMinRetypeVertices) continue;
+    std::optional<TypedFit> typed = PlaneIfFits(c, smooth, c.tolerance);
+    if (!typed) {
+      TypedFit curved = DecideCurvedType(c, smooth, c.tolerance);
+      if (curved.fraction > c.alpha) typed = curved;
+    }
+    if (!typed) continue;
+    r.type = typed->type;
+    r.surface = typed->fit.surface;
+  }
 }
 
 }  // namespace meshseg::segment_internal

@@ -43,16 +43,18 @@ struct SegmentContext {
 
   int vertex_count() const { return graph.vertex_count(); }
   const Eigen::Vector3d& position(int v) const { return graph.positions[v]; }
-  // The normal tests (6) use: n'_i, far less disturbed by noise and by
-  // marching-cubes triangulation than the 1-ring normal n_i.
   const Eigen::Vector3d& normal(int v) const { return curvature->smooth_normal[v]; }
 };
 
 // True if vertex v with projection `pr` meets (5) and (6). Surfaces fitted
 // to a region may face either way, so the normal test ignores orientation.
+// Test (6) passes if either n'_i (robust to noise and marching-cubes
+// triangulation) or n_i (exact where a small fillet makes the W2 fit of n'_i
+// too wide) is within th_nm.
 inline bool Fits(const SegmentContext& c, int v, const Projection& pr, const Tolerance& tol) {
-  return std::abs(pr.distance) < tol.distance &&
-         std::abs(pr.normal.dot(c.normal(v))) > tol.cos_angle;
+  if (!(std::abs(pr.distance) < tol.distance)) return false;
+  return std::abs(pr.normal.dot(c.curvature->smooth_normal[v])) > tol.cos_angle ||
+         std::abs(pr.normal.dot(c.curvature->normal[v])) > tol.cos_angle;
 }
 
 // At most this many vertices enter a fit or a fraction count; larger sets
