@@ -1,8 +1,9 @@
 // File: pipeline.h
 // -----------------------------------------------------------------------------
 // The whole job, as both the in-process CLI and the server's workers run it:
-// read the input, (reconstruct a point cloud,) estimate curvature, segment,
-// and map labels back to the faces of the input file. Reports progress per
+// read the input, reconstruct a point cloud into a mesh, estimate curvature,
+// segment, extract boundaries and features, and map labels back to the faces
+// (or points) of the input file. Reports progress per
 // stage and honours cancellation. Same input and params give the same result
 // on any thread count.
 #ifndef MESHSEG_PIPELINE_H_
@@ -15,32 +16,49 @@
 
 #include "absl/status/statusor.h"
 #include "meshseg/curvature.h"
+#include "meshseg/features.h"
 #include "meshseg/mesh.h"
+#include "meshseg/reconstruct.h"
 #include "meshseg/run_context.h"
 #include "meshseg/segment.h"
+#include "meshseg/topology.h"
 
 namespace meshseg {
 
 struct PipelineParams {
   // Overrides format detection (e.g. the upload's format hint).
   std::optional<FileFormat> format;
+  // Used when the input is a point cloud (seed 001).
+  ReconstructParams reconstruct;
   CurvatureParams curvature;
   SegmentParams segment;
+  TopologyParams topology;
+  FeatureParams features;
   // Upper bound on declared vertex/face counts of the input.
   int64_t max_elements = 200'000'000;
 };
 
 struct PipelineResult {
   MeshStats mesh;                 // statistics of the mesh that was segmented
-  std::vector<int> face_labels;   // one per INPUT face, in input order; -1 = no region
+  // One per INPUT face, in input order; -1 = no region. For a point cloud:
+  // one per face of the reconstructed mesh.
+  std::vector<int> face_labels;
   std::vector<int> vertex_labels; // one per mesh vertex; -1 = no region
   std::vector<Region> regions;
   SegmentEstimates estimates;
+  Topology topology;
+  std::vector<Feature> features;
+  // Point-cloud input only: true, and one label per input point (the label
+  // of the nearest reconstructed face; -1 for outliers).
+  bool from_point_cloud = false;
+  int64_t point_count = 0;
+  std::vector<int> point_labels;
 };
 
-// Returns the segmentation of the mesh in `input_path`.
-// Errors: those of ReadMesh, EstimateCurvature and Segment, prefixed with the
-// stage; CANCELLED on stop.
+// Returns the segmentation of the mesh or point cloud in `input_path`.
+// A point cloud is first reconstructed into a watertight mesh (Reconstruct).
+// Errors: those of ReadMesh / ReadPointCloud, Reconstruct, EstimateCurvature,
+// Segment, ExtractTopology and RecognizeFeatures; CANCELLED on stop.
 absl::StatusOr<PipelineResult> RunPipeline(const std::string& input_path,
                                            const PipelineParams& params = {},
                                            const RunContext& ctx = {});
