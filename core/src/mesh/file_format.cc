@@ -73,6 +73,21 @@ FileFormat FormatOf(const std::string& path, std::string_view head, int64_t size
   return FormatOfContent(head.substr(0, 4096), size);
 }
 
+absl::StatusOr<InputFile> OpenInput(const std::string& path, const ReadMeshOptions& options,
+                                    const Source& src) {
+  if (options.max_elements <= 0) {
+    return BadInput(src, absl::StrCat("max_elements must be positive, got ",
+                                      options.max_elements));
+  }
+  InputFile input;
+  MESHSEG_ASSIGN_OR_RETURN(input.file, ReadFileBytes(path, src));
+  const std::string_view bytes = input.bytes();
+  if (bytes.empty()) return BadInput(src, "empty file");
+  input.format = options.format.value_or(
+      FormatOf(path, bytes.substr(0, 4096), static_cast<int64_t>(bytes.size())));
+  return input;
+}
+
 }  // namespace mesh_internal
 
 const char* FileFormatName(FileFormat format) {

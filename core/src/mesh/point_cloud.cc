@@ -31,11 +31,10 @@ absl::Status NormalizeNormals(const Source& src, PointCloud* cloud) {
 }  // namespace mesh_internal
 
 using mesh_internal::BadInput;
-using mesh_internal::FileBytes;
 using mesh_internal::FileName;
-using mesh_internal::FormatOf;
+using mesh_internal::InputFile;
+using mesh_internal::OpenInput;
 using mesh_internal::PlyData;
-using mesh_internal::ReadFileBytes;
 using mesh_internal::ReadPlyData;
 using mesh_internal::ReadPwn;
 using mesh_internal::ReadXyz;
@@ -44,15 +43,9 @@ using mesh_internal::Source;
 absl::StatusOr<PointCloud> ReadPointCloud(const std::string& path,
                                           const ReadMeshOptions& options) {
   const Source src{"read_point_cloud", FileName(path)};
-  if (options.max_elements <= 0) {
-    return BadInput(src, absl::StrCat("max_elements must be positive, got ",
-                                      options.max_elements));
-  }
-  MESHSEG_ASSIGN_OR_RETURN(const FileBytes file, ReadFileBytes(path, src));
-  const std::string_view bytes = file.view();
-  if (bytes.empty()) return BadInput(src, "empty file");
-  const FileFormat format = options.format.value_or(
-      FormatOf(path, bytes.substr(0, 4096), static_cast<int64_t>(bytes.size())));
+  MESHSEG_ASSIGN_OR_RETURN(const InputFile input, OpenInput(path, options, src));
+  const std::string_view bytes = input.bytes();
+  const FileFormat format = input.format;
   PointCloud cloud;
   switch (format) {
     case FileFormat::kXyz: {

@@ -9,11 +9,10 @@ namespace meshseg {
 
 using mesh_internal::BadInput;
 using mesh_internal::BuildFromRaw;
-using mesh_internal::FileBytes;
 using mesh_internal::FileName;
-using mesh_internal::FormatOf;
+using mesh_internal::InputFile;
+using mesh_internal::OpenInput;
 using mesh_internal::RawMesh;
-using mesh_internal::ReadFileBytes;
 using mesh_internal::ReadObj;
 using mesh_internal::ReadOff;
 using mesh_internal::ReadPlyMesh;
@@ -22,15 +21,9 @@ using mesh_internal::Source;
 
 absl::StatusOr<Mesh> ReadMesh(const std::string& path, const ReadMeshOptions& options) {
   const Source src{"read_mesh", FileName(path)};
-  if (options.max_elements <= 0) {
-    return BadInput(src, absl::StrCat("max_elements must be positive, got ",
-                                      options.max_elements));
-  }
-  MESHSEG_ASSIGN_OR_RETURN(const FileBytes file, ReadFileBytes(path, src));
-  const std::string_view bytes = file.view();
-  if (bytes.empty()) return BadInput(src, "empty file");
-  const FileFormat format = options.format.value_or(
-      FormatOf(path, bytes.substr(0, 4096), static_cast<int64_t>(bytes.size())));
+  MESHSEG_ASSIGN_OR_RETURN(const InputFile input, OpenInput(path, options, src));
+  const std::string_view bytes = input.bytes();
+  const FileFormat format = input.format;
   absl::StatusOr<RawMesh> raw;
   switch (format) {
     case FileFormat::kStl: raw = ReadStl(bytes, src, options.max_elements); break;

@@ -4,17 +4,11 @@
 #include <cmath>
 
 #include "absl/strings/str_cat.h"
+#include "meshseg/status_macros.h"
 #include "mesh/raw_mesh.h"
 #include "mesh/text_cursor.h"
 
 namespace meshseg::mesh_internal {
-namespace {
-
-absl::Status AtLine(const Source& src, const TextCursor& cursor, const std::string& what) {
-  return BadInput(src, absl::StrCat("line ", cursor.line(), ": ", what));
-}
-
-}  // namespace
 
 absl::StatusOr<RawMesh> ReadObj(std::string_view bytes, const Source& src, int64_t max_elements) {
   TextCursor cursor(bytes);
@@ -26,17 +20,7 @@ absl::StatusOr<RawMesh> ReadObj(std::string_view bytes, const Source& src, int64
     if (word == "v") {
       Eigen::Vector3d v;
       for (int i = 0; i < 3; ++i) {
-        const std::string_view token = cursor.Token();
-        const std::optional<double> value = ParseDouble(token);
-        if (!value) {
-          return AtLine(src, cursor,
-                        absl::StrCat("expected a coordinate, got \"", Shorten(token), "\""));
-        }
-        if (!std::isfinite(*value)) {
-          return AtLine(src, cursor,
-                        absl::StrCat("non-finite coordinate \"", Shorten(token), "\""));
-        }
-        v[i] = *value;
+        MESHSEG_ASSIGN_OR_RETURN(v[i], NextFinite(src, cursor, "coordinate"));
       }
       if (static_cast<int64_t>(raw.vertices.size()) >= max_elements) {
         return AtLine(src, cursor, absl::StrCat("more than ", max_elements, " vertices"));

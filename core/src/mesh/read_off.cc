@@ -10,10 +10,6 @@
 namespace meshseg::mesh_internal {
 namespace {
 
-absl::Status AtLine(const Source& src, const TextCursor& cursor, const std::string& what) {
-  return BadInput(src, absl::StrCat("line ", cursor.line(), ": ", what));
-}
-
 // Reads the next integer token of the current line into *value.
 absl::Status NextInt(const Source& src, TextCursor& cursor, const std::string& what,
                      int64_t* value) {
@@ -60,16 +56,7 @@ absl::StatusOr<RawMesh> ReadOff(std::string_view bytes, const Source& src, int64
       return BadInput(src, absl::StrCat("header declares ", nv, " vertices, file holds ", i));
     }
     for (int c = 0; c < 3; ++c) {
-      const std::string_view token = cursor.Token();
-      const std::optional<double> value = ParseDouble(token);
-      if (!value) {
-        return AtLine(src, cursor,
-                      absl::StrCat("expected a coordinate, got \"", Shorten(token), "\""));
-      }
-      if (!std::isfinite(*value)) {
-        return AtLine(src, cursor, absl::StrCat("non-finite coordinate \"", Shorten(token), "\""));
-      }
-      raw.vertices[i][c] = *value;
+      MESHSEG_ASSIGN_OR_RETURN(raw.vertices[i][c], NextFinite(src, cursor, "coordinate"));
     }
     cursor.NextLine();
   }

@@ -17,13 +17,7 @@ absl::Status ReadTriples(const Source& src, TextCursor& cursor, const std::strin
                                         ", file holds ", i));
     }
     for (int c = 0; c < 3; ++c) {
-      const std::string_view token = cursor.Token();
-      const std::optional<double> value = ParseDouble(token);
-      if (!value || !std::isfinite(*value)) {
-        return BadInput(src, absl::StrCat("line ", cursor.line(), ": expected a finite number, "
-                                          "got \"", Shorten(token), "\""));
-      }
-      (*out)[i][c] = *value;
+      MESHSEG_ASSIGN_OR_RETURN((*out)[i][c], NextFinite(src, cursor, "number"));
     }
     if (!cursor.AtLineEnd()) {
       return BadInput(src, absl::StrCat("line ", cursor.line(), ": more than 3 values"));

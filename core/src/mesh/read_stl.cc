@@ -104,17 +104,8 @@ absl::StatusOr<RawMesh> ReadAsciiStl(std::string_view bytes, const Source& src,
       }
       std::array<uint64_t, 3> v;
       for (int i = 0; i < 3; ++i) {
-        const std::string_view token = cursor.Token();
-        const std::optional<double> value = ParseDouble(token);
-        if (!value) {
-          return BadInput(src, absl::StrCat("line ", cursor.line(), ": expected a number, got \"",
-                                            Shorten(token), "\""));
-        }
-        if (!std::isfinite(*value)) {
-          return BadInput(src, absl::StrCat("line ", cursor.line(), ": non-finite coordinate \"",
-                                            Shorten(token), "\""));
-        }
-        v[i] = BitsOf<uint64_t>(*value);
+        MESHSEG_ASSIGN_OR_RETURN(const double value, NextFinite(src, cursor, "coordinate"));
+        v[i] = BitsOf<uint64_t>(value);
       }
       if (static_cast<int64_t>(corners.size()) / 3 >= max_elements) {
         return BadInput(src, absl::StrCat("line ", cursor.line(), ": more than ", max_elements,

@@ -1,6 +1,9 @@
 #include "mesh/text_cursor.h"
 
 #include <charconv>
+#include <cmath>
+
+#include "absl/strings/str_cat.h"
 
 namespace meshseg::mesh_internal {
 
@@ -79,6 +82,24 @@ std::optional<int64_t> ParseInt(std::string_view token) {
     return std::nullopt;
   }
   return value;
+}
+
+absl::Status AtLine(const Source& src, const TextCursor& cursor, const std::string& what) {
+  return BadInput(src, absl::StrCat("line ", cursor.line(), ": ", what));
+}
+
+absl::StatusOr<double> NextFinite(const Source& src, TextCursor& cursor, const char* noun) {
+  const std::string_view token = cursor.Token();
+  const std::optional<double> value = ParseDouble(token);
+  if (!value) {
+    return BadInput(src, absl::StrCat("line ", cursor.line(), ": expected a ", noun, ", got \"",
+                                      Shorten(token), "\""));
+  }
+  if (!std::isfinite(*value)) {
+    return BadInput(src, absl::StrCat("line ", cursor.line(), ": non-finite ", noun, " \"",
+                                      Shorten(token), "\""));
+  }
+  return *value;
 }
 
 std::string_view StripLeadingSpace(std::string_view text) {

@@ -8,6 +8,9 @@
 #include <string>
 #include <string_view>
 
+#include "absl/status/statusor.h"
+#include "mesh/source.h"
+
 namespace meshseg::mesh_internal {
 
 class TextCursor {
@@ -51,6 +54,15 @@ class TextCursor {
 // Parses a whole token as a double / an integer; nullopt if it is not one.
 std::optional<double> ParseDouble(std::string_view token);
 std::optional<int64_t> ParseInt(std::string_view token);
+
+// Returns INVALID_ARGUMENT `<op>: "<file>": line N: <what>` for the line of `cursor`.
+absl::Status AtLine(const Source& src, const TextCursor& cursor, const std::string& what);
+
+// Reads the next token on the cursor's line as a finite number. Errors
+// (INVALID_ARGUMENT naming the file and line): `line N: expected a <noun>,
+// got "tok"` and `line N: non-finite <noun> "tok"`; `noun` is "coordinate"
+// or "number".
+absl::StatusOr<double> NextFinite(const Source& src, TextCursor& cursor, const char* noun);
 
 // Returns `text` without leading blanks and newlines.
 std::string_view StripLeadingSpace(std::string_view text);

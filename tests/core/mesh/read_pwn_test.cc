@@ -45,7 +45,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadPwn{"missing_normals.pwn", "2\n0 0 0\n1 1 1\n0 0 1\n# padding padding\n",
                "count declares 2 normals, file holds 1"},
         BadPwn{"extra_data.pwn", "1\n0 0 0\n0 0 1\n5 5 5\n", "line 4: data after the 1"},
-        BadPwn{"inf_point.pwn", "1\n0 inf 0\n0 0 1\n", "line 2: expected a finite number"},
+        BadPwn{"inf_point.pwn", "1\n0 inf 0\n0 0 1\n", "line 2: non-finite number \"inf\""},
         BadPwn{"bad_count.pwn", "two\n0 0 0\n0 0 1\n", "line 1: expected the point count"}),
     [](const testing::TestParamInfo<BadPwn>& info) {
       std::string name = info.param.file;

@@ -56,5 +56,23 @@ TEST(Shorten, CutsLongTokens) {
   EXPECT_EQ(StripLeadingSpace(" \n\tsolid"), "solid");
 }
 
+TEST(NextFinite, ReadsNumbersAndNamesTheFileLineAndToken) {
+  const Source src{"read_mesh", "part.obj"};
+  TextCursor cursor("1.5 -2e3\n4 nan x\n");
+  ASSERT_TRUE(cursor.SkipEmptyLines());
+  EXPECT_EQ(*NextFinite(src, cursor, "coordinate"), 1.5);
+  EXPECT_EQ(*NextFinite(src, cursor, "coordinate"), -2000.0);
+  const absl::StatusOr<double> end = NextFinite(src, cursor, "coordinate");
+  EXPECT_EQ(end.status().message(), "read_mesh: \"part.obj\": line 1: expected a coordinate, got \"\"");
+  cursor.NextLine();
+  ASSERT_TRUE(cursor.SkipEmptyLines());
+  EXPECT_EQ(*NextFinite(src, cursor, "number"), 4.0);
+  const absl::StatusOr<double> nan = NextFinite(src, cursor, "number");
+  EXPECT_EQ(nan.status().code(), absl::StatusCode::kInvalidArgument);
+  EXPECT_EQ(nan.status().message(), "read_mesh: \"part.obj\": line 2: non-finite number \"nan\"");
+  EXPECT_EQ(NextFinite(src, cursor, "number").status().message(),
+            "read_mesh: \"part.obj\": line 2: expected a number, got \"x\"");
+}
+
 }  // namespace
 }  // namespace meshseg::mesh_internal
