@@ -12,6 +12,7 @@ constexpr double kConeGain = 0.8;
 // Types within this fraction of the best count as equally good; the earlier
 // one in seed 000's order (cylinder, sphere, cone, torus) wins.
 constexpr double kFractionTie = 0.02;
+constexpr double kTorusFractionTie = 0.05;
 
 TypedFit Try(const SegmentContext& c, SurfaceType type, std::span<const int> vertices,
              const Tolerance& tol) {
@@ -43,6 +44,17 @@ TypedFit DecideCurvedType(const SegmentContext& c, std::span<const int> vertices
     k[0].fraction = 0.0;
   } else if (k[0].fraction >= k[2].fraction - kFractionTie) {
     k[2].fraction = 0.0;
+  }
+  // The torus (two more parameters than a cone) replaces the best simpler
+  // type only if it is clearly more accurate; fractions within
+  // kTorusFractionTie count as equal and the simpler type wins.
+  const TypedFit* simple = &k[0];
+  for (int t = 1; t < 3; ++t) {
+    if (k[t].fraction > simple->fraction) simple = &k[t];
+  }
+  if (simple->fraction > 0.0 && k[3].fraction < simple->fraction + kTorusFractionTie &&
+      !(k[3].fit.rms_distance < kConeGain * simple->fit.rms_distance)) {
+    k[3].fraction = 0.0;
   }
   // The first type in seed 000's order that passes the alpha test ...
   for (const TypedFit& t : k) {

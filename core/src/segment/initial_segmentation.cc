@@ -1,5 +1,9 @@
 #include "segment/initial_segmentation.h"
 
+#include <array>
+#include <optional>
+#include <vector>
+
 #include "meshseg/status_macros.h"
 #include "segment/decide_type.h"
 #include "segment/grow_region.h"
@@ -13,6 +17,15 @@ constexpr int kStopCheckEvery = 16;  // seeds between stop checks
 // (but not alpha) has grown past its surface, typically into a tangent
 // plane: it keeps only the fitting vertices and regrows with that type.
 constexpr double kTrimFraction = 0.75;
+// Types a seed is grown with when its quadric region fits none, in seed
+// 000's order; a later type must grow this much larger to win.
+constexpr std::array<SurfaceType, 5> kSeedTypes = {SurfaceType::kPlane, SurfaceType::kCylinder,
+                                                   SurfaceType::kSphere, SurfaceType::kCone,
+                                                   SurfaceType::kTorus};
+constexpr double kSeedTypeGain = 1.05;
+constexpr int kTrimRounds = 4;
+// A typed growth that stays near the seed's size found no surface.
+constexpr std::size_t kMinSeedGrowth = 3;
 
 // Grows `region` with the surface of `typed.type` and stores the result.
 void GrowTyped(const SegmentContext& c, const TypedFit& typed, int id, std::vector<int>* labels,
@@ -30,6 +43,7 @@ void GrowTyped(const SegmentContext& c, const TypedFit& typed, int id, std::vect
 void GrowAndType(const SegmentContext& c, int id, std::vector<int>* labels,
                  std::vector<RegionState>* regions) {
   RegionState& region = (*regions)[id];
+  const std::vector<int> seed = region.vertices;
   HeightModel height;
   GrowRegion(c, &height, c.tolerance, id, labels, &region.vertices);
   // seed 000 §3 step 3: a plane if alpha of the vertices fit one.
@@ -54,6 +68,58 @@ void GrowAndType(const SegmentContext& c, int id, std::vector<int>* labels,
     GrowTyped(c, typed, id, labels, &region);
     return;
   }
+  // The quadric has bent over a tangent boundary (a fillet and its plane):
+  // no analytic type fits the whole, and the seed is too small to tell the
+  // type. The seed is grown with each analytic type alone; the largest
+  // result that passes alpha wins (fewer parameters on near-ties).
+  const std::vector<int> quadric_vertices = region.vertices;
+  for (const int v : quadric_vertices) (*labels)[v] = -1;
+  std::optional<RegionState> best;
+  for (const SurfaceType type : kSeedTypes) {
+    // Two starts: the seed, and the quadric region trimmed to the vertices
+    // a fit of `type` explains (refitted a few times, a robust fit of the
+    // region's dominant surface).
+    for (int start = 0; start < 2; ++start) {
+      std::vector<int> from = seed;
+      TypedFit typed;
+      typed.type = type;
+      typed.fit = FitType(c, type, start == 0 ? seed : quadric_vertices);
+      for (int k = 0; start == 1 && typed.fit.ok() && k < kTrimRounds; ++k) {
+        from.clear();
+        for (const int v : quadric_vertices) {
+          if (Fits(c, v, ProjectVertex(c, typed.fit.surface, v), c.tolerance)) from.push_back(v);
+        }
+        if (from.size() < seed.size()) break;
+        typed.fit = FitType(c, type, from);
+      }
+      if (!typed.fit.ok() || from.size() < seed.size()) continue;
+      RegionState trial{.type = type, .surface = typed.fit.surface, .vertices = from, .alive = true};
+      for (const int v : from) (*labels)[v] = id;
+      GrowTyped(c, typed, id, labels, &trial);
+      for (int k = 0; k < kTrimRounds; ++k) {
+        const double f = FitFraction(c, trial.surface, trial.vertices, c.tolerance);
+        if (f > c.alpha || f < kTrimFraction) break;
+        std::erase_if(trial.vertices, [&](int v) {
+          if (Fits(c, v, ProjectVertex(c, trial.surface, v), c.tolerance)) return false;
+          (*labels)[v] = -1;
+          return true;
+        });
+        typed.fit.surface = trial.surface;
+        GrowTyped(c, typed, id, labels, &trial);
+      }
+      for (const int v : trial.vertices) (*labels)[v] = -1;
+      if (FitFraction(c, trial.surface, trial.vertices, c.tolerance) <= c.alpha) continue;
+      if (!best || trial.vertices.size() > kSeedTypeGain * best->vertices.size()) {
+        best = std::move(trial);
+      }
+    }
+  }
+  if (best && best->vertices.size() >= kMinSeedGrowth * seed.size()) {
+    region = std::move(*best);
+    for (const int v : region.vertices) (*labels)[v] = id;
+    return;
+  }
+  for (const int v : quadric_vertices) (*labels)[v] = id;
   region.type = SurfaceType::kQuadric;
   region.surface = FitType(c, SurfaceType::kQuadric, region.vertices).surface;
 }
