@@ -54,6 +54,13 @@ void GrowAndType(const SegmentContext& c, int id, std::vector<int>* labels,
   // Step 4: grow on with the general quadric; step 5: decide the type.
   SurfaceModel quadric(SurfaceType::kQuadric);
   GrowRegion(c, &quadric, c.tolerance, id, labels, &region.vertices);
+  // The height function may have stopped short of a plane's area (noise
+  // at its sharp rims); the quadric's region gets the plane test again
+  // before any curved type (a huge-radius cylinder fits a plane as well).
+  if (auto plane = PlaneIfFits(c, region.vertices, c.tolerance)) {
+    GrowTyped(c, *plane, id, labels, &region);
+    return;
+  }
   TypedFit typed = DecideCurvedType(c, region.vertices, c.tolerance);
   if (typed.fraction > c.alpha) {
     GrowTyped(c, typed, id, labels, &region);

@@ -59,6 +59,23 @@ int MergeByExtrapolation(const SegmentContext& c, std::vector<int>* labels,
   return merges;
 }
 
+// Seed 000's order of types: plane, cylinder, sphere, cone, torus, quadric.
+int TypeRank(SurfaceType t) {
+  switch (t) {
+    case SurfaceType::kPlane: return 0;
+    case SurfaceType::kCylinder: return 1;
+    case SurfaceType::kSphere: return 2;
+    case SurfaceType::kCone: return 3;
+    case SurfaceType::kTorus: return 4;
+    case SurfaceType::kQuadric:
+    case SurfaceType::kFreeform: return 5;
+  }
+  return 5;
+}
+
+// Fractions within this of each other count as equal (simpler type wins).
+constexpr double kFractionTie = 0.02;
+
 struct PairFit {
   double fraction = 0.0;
   SurfaceType type = SurfaceType::kQuadric;
@@ -74,12 +91,28 @@ PairFit FitUnion(const SegmentContext& c, const RegionState& x, const RegionStat
   std::vector<int> both = x.vertices;
   both.insert(both.end(), y.vertices.begin(), y.vertices.end());
   std::sort(both.begin(), both.end());
-  const SurfaceType type = x.type == SurfaceType::kQuadric ? y.type : x.type;
-  const FitResult fit = FitType(c, type, both);
-  if (!fit.ok()) return {};
-  const double f = std::min(FitFraction(c, fit.surface, x.vertices, c.tolerance),
-                            FitFraction(c, fit.surface, y.vertices, c.tolerance));
-  return PairFit{.fraction = f, .type = type, .surface = fit.surface};
+  // Both members' types are tried (the order of the arc must not matter: a
+  // large-radius cylinder fitted to a plane and a sliver would turn the
+  // plane into a cylinder); the simpler one wins near-ties.
+  std::vector<SurfaceType> types;
+  for (const SurfaceType t : {x.type, y.type}) {
+    if (t != SurfaceType::kQuadric) types.push_back(t);
+  }
+  if (types.empty()) types.push_back(SurfaceType::kQuadric);
+  std::sort(types.begin(), types.end(),
+            [](SurfaceType a, SurfaceType b) { return TypeRank(a) < TypeRank(b); });
+  types.erase(std::unique(types.begin(), types.end()), types.end());
+  PairFit best;
+  for (const SurfaceType type : types) {
+    const FitResult fit = FitType(c, type, both);
+    if (!fit.ok()) continue;
+    const double f = std::min(FitFraction(c, fit.surface, x.vertices, c.tolerance),
+                              FitFraction(c, fit.surface, y.vertices, c.tolerance));
+    if (f > best.fraction + kFractionTie) {
+      best = PairFit{.fraction = f, .type = type, .surface = fit.surface};
+    }
+  }
+  return best;
 }
 
 // Seed 000 §4 step 4: repeatedly merges the best-fitting pair.

@@ -110,7 +110,11 @@ INSTANTIATE_TEST_SUITE_P(Parts, SegmentPart,
                          ::testing::Values(std::tuple{std::string("test_piece"), 1.0},
                                            std::tuple{std::string("sphere_cap"), 0.0},
                                            std::tuple{std::string("torus_ring"), 0.0},
-                                           std::tuple{std::string("blend_block"), 0.0}),
+                                           std::tuple{std::string("blend_block"), 0.0},
+                                           std::tuple{std::string("small_block"), 0.0},
+                                           std::tuple{std::string("rounded_prism"), 0.0},
+                                           std::tuple{std::string("plate_boss"), 0.0},
+                                           std::tuple{std::string("stepped_shaft"), 0.0}),
                          [](const auto& info) { return std::get<0>(info.param); });
 
 }  // namespace
