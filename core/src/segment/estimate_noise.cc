@@ -13,7 +13,7 @@ constexpr double kMinAngleDeg = 5.0;      // seed 000 default for CT meshes
 constexpr double kMaxAngleDeg = 30.0;
 // Test (6) uses n'_i, whose noise is a fraction of the tilt of n_i against
 // it; the median tilt of n_i is a generous bound for n'_i's scatter.
-constexpr double kAngleSpread = 1.0;
+constexpr double kAngleSpread = 1.5;
 
 double Median(std::vector<double> x) {
   if (x.empty()) return 0.0;

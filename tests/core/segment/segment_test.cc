@@ -106,6 +106,30 @@ TEST_P(SegmentPart, FindsEveryPrimitiveWithItsTypeAndParameters) {
   }
 }
 
+// Noise 0.15 h (three times the nominal level): the same types and
+// coverage, with parameter bounds loosened about threefold: cylinder radius
+// 0.3 h (quarter 0.6 h), axis 1.5 deg, sphere radius 0.3 h, cone half-angle
+// 1.5 deg, torus radii 0.5 h.
+class SegmentPartHighNoise : public SegmentPart {};
+
+TEST_P(SegmentPartHighNoise, KeepsTypesAtHighNoise) {
+  const auto& [name, voxel] = GetParam();
+  const PartRun run = Segmented(name, voxel, 0.15);
+  SCOPED_TRACE(::testing::Message()
+               << run.eval << "noise " << run.part.noise << " estimated " << run.seg.estimates.noise_sigma
+               << ", th_dis " << run.seg.estimates.distance_tolerance << ", th_nm "
+               << run.seg.estimates.angle_tolerance_deg << " deg, l_avg "
+               << run.seg.estimates.mean_edge_length);
+  const Bounds loose{.cylinder_radius = 0.3,
+                     .quarter_radius = 0.6,
+                     .axis_deg = 1.5,
+                     .sphere_radius = 0.3,
+                     .cone_angle_deg = 1.5,
+                     .torus_radii = 0.5};
+  ExpectTypesAndParameters(run, loose, /*check_parameters=*/true);
+  ExpectLabelsAndCount(run);
+}
+
 INSTANTIATE_TEST_SUITE_P(Parts, SegmentPart,
                          ::testing::Values(std::tuple{std::string("test_piece"), 1.0},
                                            std::tuple{std::string("sphere_cap"), 0.0},
@@ -115,6 +139,15 @@ INSTANTIATE_TEST_SUITE_P(Parts, SegmentPart,
                                            std::tuple{std::string("rounded_prism"), 0.0},
                                            std::tuple{std::string("plate_boss"), 0.0},
                                            std::tuple{std::string("stepped_shaft"), 0.0}),
+                         [](const auto& info) { return std::get<0>(info.param); });
+
+// At 0.15 h, sphere_cap, stepped_shaft, blend_block, rounded_prism and
+// small_block still over-segment (cone and sphere pieces typed as other
+// quadrics); they join this list when that is fixed.
+INSTANTIATE_TEST_SUITE_P(Parts, SegmentPartHighNoise,
+                         ::testing::Values(std::tuple{std::string("test_piece"), 1.0},
+                                           std::tuple{std::string("torus_ring"), 0.0},
+                                           std::tuple{std::string("plate_boss"), 0.0}),
                          [](const auto& info) { return std::get<0>(info.param); });
 
 }  // namespace
