@@ -6,6 +6,7 @@
 #include <string>
 
 #include <gtest/gtest.h>
+#include <tbb/global_control.h>
 
 #include "meshseg/curvature.h"
 #include "meshseg/generate.h"
@@ -149,6 +150,24 @@ INSTANTIATE_TEST_SUITE_P(Parts, SegmentPartHighNoise,
                                            std::tuple{std::string("torus_ring"), 0.0},
                                            std::tuple{std::string("plate_boss"), 0.0}),
                          [](const auto& info) { return std::get<0>(info.param); });
+
+// The same labels, types and surfaces with one TBB thread as with many.
+TEST(SegmentDeterminism, OneThreadGivesTheSameResultAsMany) {
+  const PartRun many = Segmented("plate_boss", 0.0, 0.05);
+  PartRun one;
+  {
+    tbb::global_control single(tbb::global_control::max_allowed_parallelism, 1);
+    one = Segmented("plate_boss", 0.0, 0.05);
+  }
+  ASSERT_FALSE(many.seg.face_labels.empty());
+  EXPECT_EQ(one.seg.face_labels, many.seg.face_labels);
+  EXPECT_EQ(one.seg.vertex_labels, many.seg.vertex_labels);
+  ASSERT_EQ(one.seg.regions.size(), many.seg.regions.size());
+  for (std::size_t r = 0; r < one.seg.regions.size(); ++r) {
+    EXPECT_EQ(one.seg.regions[r].type, many.seg.regions[r].type) << r;
+    EXPECT_EQ(one.seg.regions[r].rms_distance, many.seg.regions[r].rms_distance) << r;
+  }
+}
 
 }  // namespace
 }  // namespace meshseg
