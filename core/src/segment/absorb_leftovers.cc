@@ -96,6 +96,21 @@ void ReleaseSmallQuadrics(const SegmentContext& c, std::vector<int>* labels,
   }
 }
 
+int ReleaseSmallRegions(const SegmentContext& c, std::vector<int>* labels,
+                        std::vector<RegionState>* regions) {
+  const std::size_t min_size =
+      std::max(kMinRegionVertices, static_cast<std::size_t>(kMinRegionShare * c.vertex_count()));
+  int released = 0;
+  for (RegionState& r : *regions) {
+    if (!r.alive || r.vertices.size() >= min_size) continue;
+    for (const int v : r.vertices) (*labels)[v] = -1;
+    r.vertices.clear();
+    r.alive = false;
+    ++released;
+  }
+  return released;
+}
+
 absl::Status AbsorbLeftovers(const SegmentContext& c, std::vector<int>* labels,
                              std::vector<RegionState>* regions) {
   for (int step = 0; step < kSteps; ++step) {

@@ -20,6 +20,16 @@ inline constexpr double kMinQuadricShare = 0.002;  // of all vertices
 void ReleaseSmallQuadrics(const SegmentContext& c, std::vector<int>* labels,
                           std::vector<RegionState>* regions);
 
+// After merging, regions of any type still this small are fragments grown
+// from seeds on noisy rims (at high noise no neighbour's surface fits their
+// bent normals well enough to merge them); they are released like the small
+// quadrics and absorbed again.
+inline constexpr std::size_t kMinRegionVertices = 30;
+inline constexpr double kMinRegionShare = 0.001;  // of all vertices
+// Returns the number of regions released.
+int ReleaseSmallRegions(const SegmentContext& c, std::vector<int>* labels,
+                        std::vector<RegionState>* regions);
+
 // Labels every vertex that has a face (labels[v] >= 0 afterwards) and
 // updates the regions' vertex lists. Errors: CANCELLED on stop.
 absl::Status AbsorbLeftovers(const SegmentContext& c, std::vector<int>* labels,

@@ -80,6 +80,9 @@ absl::StatusOr<Segmentation> Segment(const Mesh& mesh, const CurvatureField& cur
   MESHSEG_RETURN_IF_ERROR(AbsorbLeftovers(c, &labels, &regions));
   ctx.Progress("segment", 0.7);
   MESHSEG_RETURN_IF_ERROR(MergeRegions(c, &labels, &regions));
+  if (ReleaseSmallRegions(c, &labels, &regions) > 0) {
+    MESHSEG_RETURN_IF_ERROR(AbsorbLeftovers(c, &labels, &regions));
+  }
   ctx.Progress("segment", 0.9);
   MESHSEG_RETURN_IF_ERROR(ctx.CheckStop("segment"));
   Segmentation seg = FinalizeRegions(c, mesh.tri, labels, std::move(regions));
