@@ -56,10 +56,18 @@ TypedFit DecideCurvedType(const SegmentContext& c, std::span<const int> vertices
       !(k[3].fit.rms_distance < kConeGain * simple->fit.rms_distance)) {
     k[3].fraction = 0.0;
   }
-  // The first type in seed 000's order that passes the alpha test ...
+  // The first type in seed 000's order that passes the alpha test, unless
+  // a later passing one is clearly more accurate at no loss of fraction (a
+  // sphere passes on a noisy cone band only thanks to the tolerances) ...
+  const TypedFit* pass = nullptr;
   for (const TypedFit& t : k) {
-    if (t.fraction > c.alpha) return t;
+    if (!(t.fraction > c.alpha)) continue;
+    if (pass == nullptr || (t.fraction >= pass->fraction - kFractionTie &&
+                            t.fit.rms_distance < kConeGain * pass->fit.rms_distance)) {
+      pass = &t;
+    }
   }
+  if (pass != nullptr) return *pass;
   // ... else the best, for the caller's trimming.
   double best = 0.0;
   for (const TypedFit& t : k) best = std::max(best, t.fraction);
