@@ -22,7 +22,7 @@ constexpr double kTrimFraction = 0.75;
 constexpr std::array<SurfaceType, 5> kSeedTypes = {SurfaceType::kPlane, SurfaceType::kCylinder,
                                                    SurfaceType::kSphere, SurfaceType::kCone,
                                                    SurfaceType::kTorus};
-constexpr double kSeedTypeGain = 1.05;
+constexpr double kSeedTypeGain = 1.25;
 constexpr int kTrimRounds = 4;
 // A typed growth that stays near the seed's size found no surface.
 constexpr std::size_t kMinSeedGrowth = 3;
@@ -124,6 +124,13 @@ void GrowAndType(const SegmentContext& c, int id, std::vector<int>* labels,
   if (best && best->vertices.size() >= kMinSeedGrowth * seed.size()) {
     region = std::move(*best);
     for (const int v : region.vertices) (*labels)[v] = id;
+    // A torus or cone of huge radius found this way may be a plane: plane
+    // comes first in seed 000's order.
+    if (region.type != SurfaceType::kPlane) {
+      if (auto plane = PlaneIfFits(c, region.vertices, c.tolerance)) {
+        GrowTyped(c, *plane, id, labels, &region);
+      }
+    }
     return;
   }
   for (const int v : quadric_vertices) (*labels)[v] = id;
