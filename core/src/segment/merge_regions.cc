@@ -17,6 +17,17 @@ void Refit(const SegmentContext& c, RegionState* r) {
   if (fit.ok()) r->surface = fit.surface;
 }
 
+// The non-sharp vertices of `vertices` (all of them if fewer than
+// kMinRetypeVertices are smooth): absorbed vertices next to sharp edges
+// carry bent normals and say little about the surface.
+std::vector<int> SmoothVertices(const SegmentContext& c, const std::vector<int>& vertices) {
+  std::vector<int> smooth;
+  for (const int v : vertices) {
+    if (!c.curvature->sharp[v]) smooth.push_back(v);
+  }
+  return smooth.size() < kMinRetypeVertices ? vertices : smooth;
+}
+
 // Alive regions, largest first (ties by id).
 std::vector<int> BySize(const std::vector<RegionState>& regions) {
   std::vector<int> order;
@@ -49,7 +60,9 @@ int MergeByExtrapolation(const SegmentContext& c, std::vector<int>* labels,
     for (const int j : neighbours[i]) {
       const RegionState& rj = (*regions)[j];
       if (!rj.alive || rj.vertices.size() > ri.vertices.size()) continue;
-      if (FitFraction(c, ri.surface, rj.vertices, c.tolerance) <= kBeta1) continue;
+      if (FitFraction(c, ri.surface, SmoothVertices(c, rj.vertices), c.tolerance) <= kBeta1) {
+        continue;
+      }
       MergeInto(i, j, labels, regions);
       grew = true;
       ++merges;
