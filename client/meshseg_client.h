@@ -24,7 +24,7 @@ namespace meshseg {
 struct UploadOptions {
   // Sent as UploadHeader.format_hint ("" = the server detects it).
   std::string format_hint;
-  v1::SegmentOptions segment;
+  v1::SegmentOptions segment = {};
   // Bytes per chunk message.
   std::size_t chunk_bytes = std::size_t{1} << 20;
   // Send the file's SHA-256 for the server to check.

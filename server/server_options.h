@@ -35,8 +35,8 @@ struct ServerOptions {
   absl::Duration result_ttl = absl::Hours(1);
   // Running jobs get this long to finish on shutdown before they are cancelled.
   absl::Duration shutdown_grace = absl::Seconds(30);
-  // The job itself. Default: RunPipeline.
-  JobRunner runner;
+  // The job itself. Empty = RunPipeline.
+  JobRunner runner = {};
 };
 
 // Returns the options with defaults filled in (workers, runner).

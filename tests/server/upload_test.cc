@@ -86,7 +86,9 @@ TEST(Upload, PointCloudGivesTheSameOutcomeAsOffline) {
   const absl::StatusOr<std::string> offline = OfflineJson(path);
   const absl::StatusOr<v1::SegmentationResult> remote = client.Segment(path);
   ASSERT_EQ(remote.status().code(), offline.status().code()) << remote.status();
-  if (offline.ok()) EXPECT_EQ(*ResultJson(*remote), *offline);
+  if (offline.ok()) {
+    EXPECT_EQ(*ResultJson(*remote), *offline);
+  }
 }
 
 TEST(Upload, SmallChunksAndAFormatHintWork) {
