@@ -20,6 +20,7 @@ using Argv = std::vector<std::string>;
 absl::Status RunInfo(const Argv& argv);
 absl::Status RunGenerate(const Argv& argv);
 absl::Status RunConvert(const Argv& argv);
+absl::Status RunReconstruct(const Argv& argv);
 absl::Status RunSegment(const Argv& argv);
 absl::Status RunJobs(const Argv& argv);
 absl::Status RunStatus(const Argv& argv);

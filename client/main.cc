@@ -14,6 +14,7 @@ constexpr char kUsage[] =
     "  info FILE [--json]\n"
     "  generate PART -o FILE [--voxel-size H] [--noise S] [--ground-truth GT.json]\n"
     "  convert IN OUT\n"
+    "  reconstruct CLOUD -o MESH.ply [--format FMT]\n"
     "  segment INPUT -o RESULT.json [--colored-ply OUT.ply] [--distance-tolerance X]\n"
     "          [--angle-tolerance DEG] [--format FMT] [--server HOST:PORT]\n"
     "  jobs --server HOST:PORT\n"
@@ -32,7 +33,7 @@ int main(int argc, char** argv) {
       {"convert", meshseg::cli::RunConvert}, {"segment", meshseg::cli::RunSegment},
       {"jobs", meshseg::cli::RunJobs},       {"status", meshseg::cli::RunStatus},
       {"watch", meshseg::cli::RunWatch},     {"result", meshseg::cli::RunResult},
-      {"cancel", meshseg::cli::RunCancel},
+      {"cancel", meshseg::cli::RunCancel},  {"reconstruct", meshseg::cli::RunReconstruct},
   };
   if (argc < 2 || std::string(argv[1]) == "help" || std::string(argv[1]) == "--help") {
     std::fputs(kUsage, argc < 2 ? stderr : stdout);

@@ -2,6 +2,12 @@
 // (known cylinders and planes) with a little noise and a few far outliers,
 // written as XYZ. The pipeline reconstructs a mesh, segments it, and labels
 // every input point.
+#include "meshseg/point_cloud.h"
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <cmath>
 #include <filesystem>
 #include <limits>
@@ -9,13 +15,8 @@
 #include <string>
 #include <vector>
 
-#include <Eigen/Core>
-#include <Eigen/Geometry>
-#include <gtest/gtest.h>
-
 #include "meshseg/generate.h"
 #include "meshseg/pipeline.h"
-#include "meshseg/point_cloud.h"
 
 namespace meshseg {
 namespace {
@@ -25,8 +26,8 @@ constexpr double kNoise = 0.05;          // Gaussian noise per coordinate, in h
 constexpr int kOutliers = 30;            // uniform in the bounding box ...
 constexpr double kOutlierClearance = 4;  // ... but at least this far from the part, in h
 // Tolerances on what the segmentation of the reconstructed mesh recovers.
-constexpr double kRadiusTol = 0.3;        // in h (the reconstruction smooths)
-constexpr double kAxisTolDeg = 3.0;       // cylinder axis vs the true axis
+constexpr double kRadiusTol = 0.3;   // in h (the reconstruction smooths)
+constexpr double kAxisTolDeg = 3.0;  // cylinder axis vs the true axis
 constexpr double kPlaneNormalTolDeg = 5.0;
 constexpr double kLabelledSurfacePoints = 0.95;  // fraction of non-outliers with a label
 
@@ -59,8 +60,8 @@ Cloud WriteShaftCloud(const GeneratedPart& part) {
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   const int64_t n = out.surface_points;
   while (static_cast<int64_t>(cloud.points.size()) < n + kOutliers) {
-    const Eigen::Vector3d p = lo + (hi - lo).cwiseProduct(
-                                       Eigen::Vector3d(unit(rng), unit(rng), unit(rng)));
+    const Eigen::Vector3d p =
+        lo + (hi - lo).cwiseProduct(Eigen::Vector3d(unit(rng), unit(rng), unit(rng)));
     double nearest = std::numeric_limits<double>::max();
     for (int64_t i = 0; i < n; ++i) nearest = std::min(nearest, (cloud.points[i] - p).norm());
     if (nearest > kOutlierClearance * kVoxel) cloud.points.push_back(p);

@@ -1,0 +1,46 @@
+// meshseg reconstruct CLOUD -o MESH.ply|.off [--format FMT]
+// Reconstructs a watertight mesh from a point cloud (seed 001) with the
+// default ReconstructParams and writes it with the mesh writers.
+#include <cstdio>
+
+#include "absl/strings/str_cat.h"
+#include "client/commands.h"
+#include "client/progress.h"
+#include "meshseg/mesh.h"
+#include "meshseg/point_cloud.h"
+#include "meshseg/proto/convert.h"
+#include "meshseg/reconstruct.h"
+#include "meshseg/status_macros.h"
+
+namespace meshseg::cli {
+
+absl::Status RunReconstruct(const Argv& argv) {
+  MESHSEG_ASSIGN_OR_RETURN(const Args args, Args::Parse(argv, {"-o", "--format"}, {}, 1));
+  const std::string& input = args.positional(0);
+  const std::optional<std::string> out = args.Value("-o");
+  if (!out) return absl::InvalidArgumentError("-o MESH.ply is required (.ply or .off)");
+  MESHSEG_ASSIGN_OR_RETURN(const std::optional<FileFormat> format,
+                           FormatFromHint(args.Value("--format").value_or("")));
+  if (!format) {
+    MESHSEG_ASSIGN_OR_RETURN(const bool cloud, IsPointCloudFile(input));
+    if (!cloud) {
+      return absl::InvalidArgumentError(absl::StrCat(
+          "\"", input, "\" is a mesh, not a point cloud (xyz, pwn, ply without faces)"));
+    }
+  }
+  MESHSEG_ASSIGN_OR_RETURN(const PointCloud cloud, ReadPointCloud(input, {.format = format}));
+  ProgressPrinter progress;
+  RunContext ctx;
+  ctx.on_progress = [&](std::string_view stage, double f) { progress.Update(stage, f); };
+  const absl::StatusOr<Reconstruction> r = Reconstruct(cloud, ReconstructParams{}, ctx);
+  progress.Finish();
+  if (!r.ok()) return r.status();
+  MESHSEG_RETURN_IF_ERROR(WriteMesh(r->mesh.tri, *out));
+  std::printf("wrote %s: %zu vertices, %zu faces from %zu points (%lld outliers, spacing %.6g%s)\n",
+              out->c_str(), r->mesh.tri.n_vertices(), r->mesh.tri.n_faces(), cloud.points.size(),
+              static_cast<long long>(r->stats.outlier_count), r->stats.point_spacing,
+              r->stats.normals_estimated ? ", normals estimated" : "");
+  return absl::OkStatus();
+}
+
+}  // namespace meshseg::cli
