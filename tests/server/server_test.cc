@@ -1,5 +1,4 @@
 // The server as a whole: health, graceful shutdown, result expiry.
-#include <grpcpp/generic/generic_stub.h>
 #include <gtest/gtest.h>
 
 #include "tests/server/test_files.h"
@@ -11,36 +10,8 @@ namespace {
 using testing_server::Eventually;
 using testing_server::FreshDir;
 using testing_server::Gate;
+using testing_server::HealthStatus;
 using testing_server::TestServer;
-
-// Returns the grpc.health.v1 status of the whole server: 1 = SERVING,
-// 2 = NOT_SERVING, -1 = the call failed. The messages are tiny, so they are
-// encoded by hand (HealthCheckRequest{} is empty; the response is field 1).
-int HealthStatus(const std::string& address) {
-  auto channel = grpc::CreateChannel(address, grpc::InsecureChannelCredentials());
-  grpc::GenericStub stub(channel);
-  grpc::ClientContext context;
-  context.set_deadline(absl::ToChronoTime(absl::Now() + absl::Seconds(5)));
-  grpc::CompletionQueue cq;
-  grpc::Slice empty;
-  grpc::ByteBuffer request(&empty, 1);
-  auto call = stub.PrepareUnaryCall(&context, "/grpc.health.v1.Health/Check", request, &cq);
-  call->StartCall();
-  grpc::ByteBuffer response;
-  grpc::Status status;
-  call->Finish(&response, &status, reinterpret_cast<void*>(1));
-  void* tag = nullptr;
-  bool ok = false;
-  cq.Next(&tag, &ok);
-  cq.Shutdown();
-  while (cq.Next(&tag, &ok)) {}
-  if (!status.ok()) return -1;
-  std::vector<grpc::Slice> slices;
-  response.Dump(&slices);
-  std::string bytes;
-  for (const grpc::Slice& s : slices) bytes.append(reinterpret_cast<const char*>(s.begin()), s.size());
-  return bytes.size() == 2 && bytes[0] == 0x08 ? bytes[1] : (bytes.empty() ? 0 : -1);
-}
 
 TEST(Server, ListensOnAnEphemeralPortAndIsServing) {
   TestServer server;
@@ -77,8 +48,8 @@ TEST(Server, ShutdownLetsRunningJobsFinishAndCancelsQueuedOnes) {
 
 TEST(Server, ShutdownCancelsRunningJobsAfterTheGracePeriod) {
   Gate gate;
-  TestServer server({.workers = 1, .shutdown_grace = absl::Milliseconds(200),
-                     .runner = gate.Runner()});
+  TestServer server(
+      {.workers = 1, .shutdown_grace = absl::Milliseconds(200), .runner = gate.Runner()});
   MeshsegClient client = server.Client();
   const std::string path = FreshDir("files") + "/box.off";
   testing_files::WriteOff(testing_files::SplitBox(1, {1, 1, 1}), path);
@@ -100,9 +71,8 @@ TEST(Server, FinishedJobsExpireAfterTheirTtl) {
   testing_files::WriteOff(testing_files::SplitBox(1, {1, 1, 1}), path);
   const std::string id = client.Upload(path)->job_id();
   ASSERT_EQ(client.Watch(id)->state(), v1::JOB_STATE_SUCCEEDED);
-  EXPECT_TRUE(Eventually([&] {
-    return client.GetJob(id).status().code() == absl::StatusCode::kNotFound;
-  }));
+  EXPECT_TRUE(
+      Eventually([&] { return client.GetJob(id).status().code() == absl::StatusCode::kNotFound; }));
   EXPECT_EQ(server.SpoolFiles(), 0);
 }
 

@@ -135,10 +135,68 @@ inline void WriteStlBinary(const TestMesh& m, const std::string& path) {
   }
 }
 
+// Point clouds: the vertices of a SplitBox (a regular grid on its sides),
+// with outward normals (axis directions; averaged on edges and corners).
+inline std::vector<Eigen::Vector3d> BoxNormals(const TestMesh& m) {
+  Eigen::Vector3d lo = m.v.front(), hi = m.v.front();
+  for (const auto& p : m.v) {
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+  std::vector<Eigen::Vector3d> normals;
+  for (const auto& p : m.v) {
+    Eigen::Vector3d n = Eigen::Vector3d::Zero();
+    for (int k = 0; k < 3; ++k) n[k] = (p[k] == hi[k]) - (p[k] == lo[k]);
+    normals.push_back(n.normalized());
+  }
+  return normals;
+}
+
 inline void WriteXyz(const TestMesh& m, const std::string& path) {
   std::ofstream o(path);
   o.precision(17);
   for (const auto& p : m.v) o << p.x() << " " << p.y() << " " << p.z() << "\n";
+}
+
+inline void WriteXyzNormals(const TestMesh& m, const std::string& path) {
+  std::ofstream o(path);
+  o.precision(17);
+  const std::vector<Eigen::Vector3d> n = BoxNormals(m);
+  for (std::size_t i = 0; i < m.v.size(); ++i) {
+    o << m.v[i].x() << " " << m.v[i].y() << " " << m.v[i].z() << " " << n[i].x() << " "
+      << n[i].y() << " " << n[i].z() << "\n";
+  }
+}
+
+inline void WritePwn(const TestMesh& m, const std::string& path) {
+  std::ofstream o(path);
+  o.precision(17);
+  o << m.v.size() << "\n";
+  for (const auto& p : m.v) o << p.x() << " " << p.y() << " " << p.z() << "\n";
+  for (const auto& n : BoxNormals(m)) o << n.x() << " " << n.y() << " " << n.z() << "\n";
+}
+
+// A PLY with a vertex element only (ASCII, positions).
+inline void WritePlyPointsAscii(const TestMesh& m, const std::string& path) {
+  std::ofstream o(path);
+  o.precision(17);
+  o << "ply\nformat ascii 1.0\nelement vertex " << m.v.size()
+    << "\nproperty double x\nproperty double y\nproperty double z\nend_header\n";
+  for (const auto& p : m.v) o << p.x() << " " << p.y() << " " << p.z() << "\n";
+}
+
+// A PLY with a vertex element only (binary, float positions and normals).
+inline void WritePlyPointsBinary(const TestMesh& m, const std::string& path) {
+  std::ofstream o(path, std::ios::binary);
+  o << "ply\nformat binary_little_endian 1.0\nelement vertex " << m.v.size()
+    << "\nproperty float x\nproperty float y\nproperty float z\nproperty float nx\n"
+       "property float ny\nproperty float nz\nend_header\n";
+  const std::vector<Eigen::Vector3d> n = BoxNormals(m);
+  for (std::size_t i = 0; i < m.v.size(); ++i) {
+    const float data[6] = {float(m.v[i].x()), float(m.v[i].y()), float(m.v[i].z()),
+                           float(n[i].x()),   float(n[i].y()),   float(n[i].z())};
+    o.write(reinterpret_cast<const char*>(data), sizeof data);
+  }
 }
 
 inline void WriteText(const std::string& path, const std::string& text) {

@@ -4,12 +4,14 @@
 #ifndef MESHSEG_TESTS_SERVER_TEST_SERVER_H_
 #define MESHSEG_TESTS_SERVER_TEST_SERVER_H_
 
+#include <grpcpp/generic/generic_stub.h>
+#include <grpcpp/grpcpp.h>
+#include <gtest/gtest.h>
+
 #include <atomic>
 #include <filesystem>
 #include <memory>
 #include <string>
-
-#include <gtest/gtest.h>
 
 #include "absl/synchronization/notification.h"
 #include "client/meshseg_client.h"
@@ -20,9 +22,9 @@ namespace meshseg::testing_server {
 // Returns a fresh empty folder under the test temp dir.
 inline std::string FreshDir(const std::string& name) {
   const ::testing::TestInfo* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  const std::filesystem::path dir = std::filesystem::path(::testing::TempDir()) /
-                                    (std::string(info->test_suite_name()) + "_" + info->name() +
-                                     "_" + name);
+  const std::filesystem::path dir =
+      std::filesystem::path(::testing::TempDir()) /
+      (std::string(info->test_suite_name()) + "_" + info->name() + "_" + name);
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   return dir.string();
@@ -71,6 +73,37 @@ struct Gate {
     };
   }
 };
+
+// Returns the grpc.health.v1 status of the whole server: 1 = SERVING,
+// 2 = NOT_SERVING, -1 = the call failed. The messages are tiny, so they are
+// encoded by hand (HealthCheckRequest{} is empty; the response is field 1).
+inline int HealthStatus(const std::string& address) {
+  auto channel = grpc::CreateChannel(address, grpc::InsecureChannelCredentials());
+  grpc::GenericStub stub(channel);
+  grpc::ClientContext context;
+  context.set_deadline(absl::ToChronoTime(absl::Now() + absl::Seconds(5)));
+  grpc::CompletionQueue cq;
+  grpc::Slice empty;
+  grpc::ByteBuffer request(&empty, 1);
+  auto call = stub.PrepareUnaryCall(&context, "/grpc.health.v1.Health/Check", request, &cq);
+  call->StartCall();
+  grpc::ByteBuffer response;
+  grpc::Status status;
+  call->Finish(&response, &status, reinterpret_cast<void*>(1));
+  void* tag = nullptr;
+  bool ok = false;
+  cq.Next(&tag, &ok);
+  cq.Shutdown();
+  while (cq.Next(&tag, &ok)) {
+  }
+  if (!status.ok()) return -1;
+  std::vector<grpc::Slice> slices;
+  response.Dump(&slices);
+  std::string bytes;
+  for (const grpc::Slice& s : slices)
+    bytes.append(reinterpret_cast<const char*>(s.begin()), s.size());
+  return bytes.size() == 2 && bytes[0] == 0x08 ? bytes[1] : (bytes.empty() ? 0 : -1);
+}
 
 // Polls `pred` for up to 10 s.
 template <typename Pred>

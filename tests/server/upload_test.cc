@@ -1,11 +1,11 @@
 // Upload over loopback: every supported format round-trips and gives the
 // offline JSON byte for byte; bad uploads get a clear status or a FAILED
 // job, leave no spool file, and do not disturb the server.
-#include <filesystem>
-#include <functional>
-
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+
+#include <filesystem>
+#include <functional>
 
 #include "meshseg/proto/convert.h"
 #include "meshseg/proto/result_json.h"
@@ -62,9 +62,12 @@ TEST(Upload, EveryMeshFormatGivesTheOfflineJsonByteForByte) {
   const std::string dir = FreshDir("files");
   const testing_files::TestMesh box = SplitBox(3, {2.0, 1.0, 0.5});
   const std::vector<Format> formats = {
-      {"box_ascii.stl", testing_files::WriteStlAscii}, {"box_binary.stl", testing_files::WriteStlBinary},
-      {"box.obj", testing_files::WriteObj},            {"box.off", testing_files::WriteOff},
-      {"box_ascii.ply", testing_files::WritePlyAscii}, {"box_binary.ply", testing_files::WritePlyBinary},
+      {"box_ascii.stl", testing_files::WriteStlAscii},
+      {"box_binary.stl", testing_files::WriteStlBinary},
+      {"box.obj", testing_files::WriteObj},
+      {"box.off", testing_files::WriteOff},
+      {"box_ascii.ply", testing_files::WritePlyAscii},
+      {"box_binary.ply", testing_files::WritePlyBinary},
   };
   for (const Format& f : formats) {
     const std::string path = dir + "/" + f.file;
@@ -78,17 +81,31 @@ TEST(Upload, EveryMeshFormatGivesTheOfflineJsonByteForByte) {
   }
 }
 
-TEST(Upload, PointCloudGivesTheSameOutcomeAsOffline) {
+// Point clouds go through reconstruction on both paths; the result (and the
+// label per input point) must be the same bytes.
+TEST(Upload, EveryPointCloudFormatGivesTheOfflineJsonByteForByte) {
   TestServer server;
   MeshsegClient client = server.Client();
-  const std::string path = FreshDir("files") + "/box.xyz";
-  testing_files::WriteXyz(SplitBox(3, {1, 1, 1}), path);
-  const absl::StatusOr<std::string> offline = OfflineJson(path);
-  const absl::StatusOr<v1::SegmentationResult> remote = client.Segment(path);
-  ASSERT_EQ(remote.status().code(), offline.status().code()) << remote.status();
-  if (offline.ok()) {
-    EXPECT_EQ(*ResultJson(*remote), *offline);
+  const std::string dir = FreshDir("files");
+  const testing_files::TestMesh box = SplitBox(16, {2.0, 1.5, 1.0});  // 1538 points
+  const std::vector<Format> formats = {
+      {"box.xyz", testing_files::WriteXyz},
+      {"box_normals.xyz", testing_files::WriteXyzNormals},
+      {"box.pwn", testing_files::WritePwn},
+      {"box_points_ascii.ply", testing_files::WritePlyPointsAscii},
+      {"box_points_binary.ply", testing_files::WritePlyPointsBinary},
+  };
+  for (const Format& f : formats) {
+    const std::string path = dir + "/" + f.file;
+    f.write(box, path);
+    const absl::StatusOr<std::string> offline = OfflineJson(path);
+    ASSERT_TRUE(offline.ok()) << f.file << ": " << offline.status();
+    const absl::StatusOr<v1::SegmentationResult> remote = client.Segment(path);
+    ASSERT_TRUE(remote.ok()) << f.file << ": " << remote.status();
+    EXPECT_GT(remote->face_labels_size(), 0) << f.file;
+    EXPECT_EQ(*ResultJson(*remote), *offline) << f.file;
   }
+  EXPECT_EQ(server.SpoolFiles(), static_cast<int64_t>(formats.size())) << "one result per job";
 }
 
 TEST(Upload, SmallChunksAndAFormatHintWork) {
@@ -103,8 +120,16 @@ TEST(Upload, SmallChunksAndAFormatHintWork) {
 }
 
 TEST(Upload, BadUploadsGetAClearStatusAndLeaveNoSpoolFile) {
-  TestServer server({.max_upload_bytes = 4096});
+  testing_server::Gate gate;
+  TestServer server({.workers = 1, .max_upload_bytes = 4096, .runner = gate.Runner()});
   MeshsegClient client = server.Client();
+  // A good job is running (held by the gate) while the bad uploads arrive.
+  const std::string good = FreshDir("files") + "/good.off";
+  testing_files::WriteOff(SplitBox(2, {1, 1, 1}), good);
+  const absl::StatusOr<v1::UploadResponse> running = client.Upload(good);
+  ASSERT_TRUE(running.ok()) << running.status();
+  ASSERT_TRUE(Eventually([&] { return gate.entered == 1; }));
+
   const std::string data(1000, ' ');
   v1::UploadResponse response;
 
@@ -158,8 +183,19 @@ TEST(Upload, BadUploadsGetAClearStatusAndLeaveNoSpoolFile) {
     EXPECT_EQ(s.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
     EXPECT_THAT(s.error_message(), HasSubstr("header"));
   }
-  EXPECT_EQ(server.SpoolFiles(), 0);
-  EXPECT_TRUE(client.ListJobs()->empty()) << "no job may be created by a bad upload";
+  EXPECT_EQ(server.SpoolFiles(), 1) << "only the running job's upload";
+  const absl::StatusOr<std::vector<v1::Job>> jobs = client.ListJobs();
+  ASSERT_TRUE(jobs.ok()) << jobs.status();
+  ASSERT_EQ(jobs->size(), 1u) << "no job may be created by a bad upload";
+  EXPECT_EQ(jobs->front().job_id(), running->job_id());
+  EXPECT_EQ(testing_server::HealthStatus(server.address()), 1) << "still SERVING";
+
+  gate.open.Notify();
+  const absl::StatusOr<v1::Job> done = client.Watch(running->job_id());
+  ASSERT_TRUE(done.ok()) << done.status();
+  EXPECT_EQ(done->state(), v1::JOB_STATE_SUCCEEDED) << "the running job is unaffected";
+  EXPECT_EQ(done->face_count(), 48);
+  EXPECT_EQ(server.SpoolFiles(), 1) << "only its result";
 }
 
 TEST(Upload, ClientDisconnectMidStreamLeavesNoSpoolFile) {
@@ -181,6 +217,8 @@ TEST(Upload, ClientDisconnectMidStreamLeavesNoSpoolFile) {
   context.TryCancel();
   EXPECT_EQ(writer->Finish().error_code(), grpc::StatusCode::CANCELLED);
   EXPECT_TRUE(Eventually([&] { return server.SpoolFiles() == 0; }));
+  EXPECT_TRUE(client.ListJobs()->empty());
+  EXPECT_EQ(testing_server::HealthStatus(server.address()), 1);
 }
 
 TEST(Upload, UnreadableContentFailsTheJobWithAMessageAndOthersStillRun) {
@@ -195,14 +233,30 @@ TEST(Upload, UnreadableContentFailsTheJobWithAMessageAndOthersStillRun) {
   const std::string good = dir + "/good.obj";
   testing_files::WriteObj(SplitBox(2, {1, 1, 1}), good);
 
-  for (const std::string& bad : {nan, truncated}) {
-    const absl::StatusOr<v1::SegmentationResult> r = client.Segment(bad);
+  const std::string nan_points = dir + "/nan_point.xyz";
+  testing_files::WriteText(nan_points, "0 0 0\n1 0 0\nnan 1 0\n");
+  const std::string malformed = dir + "/bad_count.off";
+  testing_files::WriteText(malformed, "OFF\n3 1 0\n0 0 0\n1 0 0\n");
+
+  for (const std::string& bad : {nan, truncated, nan_points, malformed}) {
+    const std::string name = std::filesystem::path(bad).filename().string();
+    const absl::StatusOr<v1::UploadResponse> up = client.Upload(bad);
+    ASSERT_TRUE(up.ok()) << name << ": the upload itself is fine: " << up.status();
+    const absl::StatusOr<v1::Job> job = client.Watch(up->job_id());
+    ASSERT_TRUE(job.ok()) << job.status();
+    EXPECT_EQ(job->state(), v1::JOB_STATE_FAILED) << name;
+    EXPECT_EQ(job->error_code(), static_cast<int>(absl::StatusCode::kInvalidArgument)) << name;
+    EXPECT_THAT(job->error_message(), HasSubstr(name));
+    const absl::StatusOr<v1::SegmentationResult> r = client.Segment(bad);  // the same via Segment
     EXPECT_EQ(r.status().code(), absl::StatusCode::kInvalidArgument) << r.status();
-    EXPECT_THAT(r.status().message(), HasSubstr(std::filesystem::path(bad).filename().string()));
+    EXPECT_THAT(r.status().message(), HasSubstr(name));
+    EXPECT_EQ(client.Result(up->job_id()).status().code(), absl::StatusCode::kFailedPrecondition)
+        << "a FAILED job has no result";
   }
   const absl::StatusOr<v1::SegmentationResult> ok = client.Segment(good);
   ASSERT_TRUE(ok.ok()) << ok.status();
   EXPECT_EQ(server.SpoolFiles(), 1) << "only the good job's result stays";
+  EXPECT_EQ(testing_server::HealthStatus(server.address()), 1);
 }
 
 }  // namespace
