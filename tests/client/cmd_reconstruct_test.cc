@@ -1,0 +1,56 @@
+// meshseg reconstruct CLOUD -o MESH: a closed mesh from the points of a box.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include "meshseg/mesh.h"
+#include "tests/client/run_cli.h"
+#include "tests/server/test_files.h"
+#include "tests/server/test_server.h"
+
+namespace meshseg {
+namespace {
+
+using ::testing::HasSubstr;
+using ::testing::SizeIs;
+using testing_cli::Lines;
+using testing_cli::RunCli;
+using testing_server::FreshDir;
+
+TEST(MeshsegReconstruct, WritesAClosedMeshAroundThePoints) {
+  const std::string dir = FreshDir("files");
+  const Eigen::Vector3d size(2.0, 1.5, 1.0);
+  const testing_files::TestMesh box = testing_files::SplitBox(16, size);
+  testing_files::WriteXyz(box, dir + "/box.xyz");
+  const testing_cli::CliRun r = RunCli({"reconstruct", dir + "/box.xyz", "-o", dir + "/box.ply"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_THAT(r.out, HasSubstr("vertices"));
+  EXPECT_THAT(r.out, HasSubstr("outliers"));
+  const absl::StatusOr<Mesh> mesh = ReadMesh(dir + "/box.ply");
+  ASSERT_TRUE(mesh.ok()) << mesh.status();
+  const MeshStats s = MeshStatistics(*mesh);
+  EXPECT_GT(s.face_count, 100);
+  EXPECT_EQ(s.boundary_edge_count, 0) << "watertight";
+  EXPECT_EQ(s.component_count, 1);
+  // Every vertex lies near the box (within a quarter of its smallest side).
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_GT(s.bbox_min[k], -0.25) << k;
+    EXPECT_LT(s.bbox_max[k], size[k] + 0.25) << k;
+  }
+  EXPECT_THAT(r.out, HasSubstr(std::to_string(s.face_count) + " faces"));
+}
+
+TEST(MeshsegReconstruct, AMeshInputOrABadCloudExitsOneNamingIt) {
+  const std::string dir = FreshDir("files");
+  testing_files::WriteOff(testing_files::SplitBox(2, {1, 1, 1}), dir + "/box.off");
+  testing_files::WriteText(dir + "/nan_point.xyz", "0 0 0\n1 0 0\nnan 1 0\n");
+  for (const std::string name : {"box.off", "nan_point.xyz"}) {
+    const testing_cli::CliRun r =
+        RunCli({"reconstruct", dir + "/" + name, "-o", dir + "/out.ply"});
+    EXPECT_EQ(r.exit_code, 1) << name;
+    EXPECT_THAT(Lines(r.err), SizeIs(1)) << r.err;
+    EXPECT_THAT(r.err, HasSubstr(name));
+  }
+}
+
+}  // namespace
+}  // namespace meshseg

@@ -1,0 +1,113 @@
+// meshseg segment: offline writes the result JSON with one label per input
+// face; with --server the same bytes come from a real server on 127.0.0.1;
+// point clouds work on both paths; errors are one line and exit code 1.
+#include <filesystem>
+
+#include <gmock/gmock.h>
+#include <google/protobuf/util/json_util.h>
+#include <gtest/gtest.h>
+
+#include "meshseg/v1/segmentation.pb.h"
+#include "tests/client/run_cli.h"
+#include "tests/server/test_files.h"
+#include "tests/server/test_server.h"
+
+namespace meshseg {
+namespace {
+
+using ::testing::HasSubstr;
+using ::testing::SizeIs;
+using testing_cli::Lines;
+using testing_cli::RunCli;
+using testing_files::ReadText;
+using testing_server::FreshDir;
+using testing_server::TestServer;
+
+v1::SegmentationResult ParseResult(const std::string& json) {
+  v1::SegmentationResult result;
+  const auto status = google::protobuf::util::JsonStringToMessage(json, &result);
+  EXPECT_TRUE(status.ok()) << status.ToString();
+  return result;
+}
+
+TEST(MeshsegSegment, OfflineWritesValidJsonWithOneLabelPerInputFace) {
+  const std::string dir = FreshDir("files");
+  testing_files::TestMesh box = testing_files::SplitBox(3, {2.0, 1.0, 0.5});
+  const int kept = static_cast<int>(box.f.size());
+  box.f.push_back({0, 0, 1});  // degenerate: dropped while loading, label -1
+  const std::string path = dir + "/box.off";
+  testing_files::WriteOff(box, path);
+  const testing_cli::CliRun r = RunCli({"segment", path, "-o", dir + "/box.json"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.err, "") << "stderr is for errors; progress is on stdout when not a terminal";
+  EXPECT_THAT(r.out, HasSubstr("wrote " + dir + "/box.json"));
+  const v1::SegmentationResult result = ParseResult(ReadText(dir + "/box.json"));
+  ASSERT_EQ(result.face_labels_size(), kept + 1);
+  EXPECT_EQ(result.face_labels(kept), -1);
+  EXPECT_EQ(result.mesh().face_count(), kept + 1) << "faces as read from the file";
+  ASSERT_GE(result.regions_size(), 1);
+  for (int i = 0; i < kept; ++i) {
+    ASSERT_GE(result.face_labels(i), 0) << "face " << i;
+    ASSERT_LT(result.face_labels(i), result.regions_size()) << "face " << i;
+  }
+  // The contract's spelling: snake_case names, enums as names.
+  const std::string json = ReadText(dir + "/box.json");
+  EXPECT_THAT(json, HasSubstr("\"face_labels\""));
+  EXPECT_THAT(json, HasSubstr("\"type\":\"SURFACE_TYPE_"));
+}
+
+TEST(MeshsegSegment, BadFileExitsOneWithOneLineNamingIt) {
+  const std::string dir = FreshDir("files");
+  const std::string path = dir + "/nan_vertex.obj";
+  testing_files::WriteText(path, "v 0 0 0\nv 1 0 nan\nv 0 1 0\nf 1 2 3\n");
+  const std::string out = dir + "/never.json";
+  for (const std::string& input : {path, dir + "/missing.stl"}) {
+    const testing_cli::CliRun r = RunCli({"segment", input, "-o", out});
+    EXPECT_EQ(r.exit_code, 1) << input;
+    EXPECT_THAT(Lines(r.err), SizeIs(1)) << r.err;
+    EXPECT_THAT(r.err, HasSubstr(std::filesystem::path(input).filename().string()));
+  }
+  EXPECT_FALSE(std::filesystem::exists(out)) << "no result file on error";
+}
+
+TEST(MeshsegSegment, BadToleranceExitsOneBeforeReadingTheFile) {
+  const testing_cli::CliRun r =
+      RunCli({"segment", "/nonexistent.stl", "-o", "/tmp/x.json", "--angle-tolerance", "-3"});
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_THAT(Lines(r.err), SizeIs(1)) << r.err;
+  EXPECT_THAT(r.err, HasSubstr("-3"));
+}
+
+TEST(MeshsegSegment, ServerPathWritesTheOfflineBytes) {
+  TestServer server;
+  const std::string dir = FreshDir("files");
+  const testing_files::TestMesh box = testing_files::SplitBox(4, {2.0, 1.0, 0.5});
+  testing_files::WriteStlBinary(box, dir + "/box.stl");
+  testing_files::WriteXyz(testing_files::SplitBox(16, {2.0, 1.5, 1.0}), dir + "/cloud.xyz");
+  for (const std::string name : {"box.stl", "cloud.xyz"}) {
+    const std::string input = dir + "/" + name;
+    const std::vector<std::string> tol = {"--distance-tolerance", "0.7"};
+    testing_cli::CliRun offline =
+        RunCli({"segment", input, "-o", input + ".offline.json", tol[0], tol[1]});
+    ASSERT_EQ(offline.exit_code, 0) << name << ": " << offline.err;
+    const testing_cli::CliRun remote = RunCli({"segment", input, "-o", input + ".server.json",
+                                               tol[0], tol[1], "--server", server.address()});
+    ASSERT_EQ(remote.exit_code, 0) << name << ": " << remote.err;
+    const std::string a = ReadText(input + ".offline.json");
+    EXPECT_FALSE(a.empty());
+    EXPECT_EQ(ReadText(input + ".server.json"), a) << name;
+  }
+}
+
+TEST(MeshsegSegment, UnreachableServerExitsOneWithOneLine) {
+  const std::string dir = FreshDir("files");
+  testing_files::WriteOff(testing_files::SplitBox(1, {1, 1, 1}), dir + "/box.off");
+  // Port 1 on loopback: nothing listens there.
+  const testing_cli::CliRun r =
+      RunCli({"segment", dir + "/box.off", "-o", dir + "/r.json", "--server", "127.0.0.1:1"});
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_THAT(Lines(r.err), SizeIs(1)) << r.err;
+}
+
+}  // namespace
+}  // namespace meshseg
