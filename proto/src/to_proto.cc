@@ -97,6 +97,8 @@ v1::SegmentationResult ToProto(const PipelineResult& result) {
   e->set_distance_tolerance(result.estimates.distance_tolerance);
   e->set_angle_tolerance_deg(result.estimates.angle_tolerance_deg);
   e->set_sharp_threshold(result.estimates.sharp_threshold);
+  e->set_remesh_edge_length(result.remesh_edge_length);
+  e->set_remesh_face_count(result.remesh_face_count);
   return out;
 }
 

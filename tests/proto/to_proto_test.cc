@@ -30,6 +30,8 @@ PipelineResult TwoRegions() {
   r.regions = {plane, cyl};
   r.estimates.noise_sigma = 0.002;
   r.estimates.angle_tolerance_deg = 5.0;
+  r.remesh_edge_length = 0.25;
+  r.remesh_face_count = 1234;
   return r;
 }
 
@@ -66,6 +68,8 @@ TEST(ToProto, FillsTheSurfaceOfEachRegion) {
   EXPECT_EQ(p.regions(1).face_count(), 2);
   EXPECT_DOUBLE_EQ(p.regions(1).area(), 7.0);
   EXPECT_DOUBLE_EQ(p.estimates().angle_tolerance_deg(), 5.0);
+  EXPECT_DOUBLE_EQ(p.estimates().remesh_edge_length(), 0.25);
+  EXPECT_EQ(p.estimates().remesh_face_count(), 1234);
 }
 
 TEST(ToProto, WritesTenQuadricCoefficients) {

@@ -19,6 +19,7 @@
 #include "meshseg/features.h"
 #include "meshseg/mesh.h"
 #include "meshseg/reconstruct.h"
+#include "meshseg/remesh.h"
 #include "meshseg/run_context.h"
 #include "meshseg/segment.h"
 #include "meshseg/topology.h"
@@ -30,6 +31,8 @@ struct PipelineParams {
   std::optional<FileFormat> format;
   // Used when the input is a point cloud (seed 001).
   ReconstructParams reconstruct;
+  // CAD tessellations are segmented on an isotropic remesh (remesh.h).
+  RemeshParams remesh;
   CurvatureParams curvature;
   SegmentParams segment;
   TopologyParams topology;
@@ -39,7 +42,9 @@ struct PipelineParams {
 };
 
 struct PipelineResult {
-  MeshStats mesh;                 // statistics of the mesh that was segmented
+  // Statistics of the mesh the labels, vertex ids and curves refer to: the
+  // input's (also when it was remeshed), or the reconstructed mesh.
+  MeshStats mesh;
   // One per INPUT face, in input order; -1 = no region. For a point cloud:
   // one per face of the reconstructed mesh.
   std::vector<int> face_labels;
@@ -48,6 +53,10 @@ struct PipelineResult {
   SegmentEstimates estimates;
   Topology topology;
   std::vector<Feature> features;
+  // Set when a CAD tessellation was segmented on an isotropic remesh: its
+  // target edge length and face count (0 = segmented as read).
+  double remesh_edge_length = 0.0;
+  int64_t remesh_face_count = 0;
   // Point-cloud input only: true, and one label per input point (the label
   // of the nearest reconstructed face; -1 for outliers).
   bool from_point_cloud = false;

@@ -3,6 +3,7 @@
 // to the faces or points of the input file.
 #include "meshseg/pipeline.h"
 
+#include <span>
 #include <utility>
 
 #include "absl/strings/str_cat.h"
@@ -10,6 +11,8 @@
 #include "meshseg/status_macros.h"
 #include "pipeline/input_labels.h"
 #include "pipeline/point_labels.h"
+#include "pipeline/refit_regions.h"
+#include "pipeline/remeshed_labels.h"
 
 namespace meshseg {
 namespace {
@@ -26,6 +29,19 @@ bool IsPointCloudFormat(FileFormat format) {
   return format == FileFormat::kXyz || format == FileFormat::kPwn;
 }
 
+// Boundaries and features of `labels` (one per face of `mesh`) into `result`.
+absl::Status DescribeRegions(const Mesh& mesh, std::span<const int> labels,
+                             const std::vector<Region>& regions, const PipelineParams& params,
+                             const RunContext& ctx, PipelineResult* result) {
+  ctx.Progress("topology", 0.0);
+  MESHSEG_ASSIGN_OR_RETURN(result->topology,
+                           ExtractTopology(mesh, labels, regions, params.topology, ctx));
+  MESHSEG_ASSIGN_OR_RETURN(result->features,
+                           RecognizeFeatures(result->topology, regions, params.features));
+  ctx.Progress("topology", 1.0);
+  return absl::OkStatus();
+}
+
 // Segments `mesh` and fills everything of `result` but the labels; returns
 // the labels per mesh face.
 absl::StatusOr<std::vector<int>> SegmentMesh(const Mesh& mesh, const PipelineParams& params,
@@ -35,18 +51,38 @@ absl::StatusOr<std::vector<int>> SegmentMesh(const Mesh& mesh, const PipelinePar
                            EstimateCurvature(mesh, params.curvature, ctx));
   MESHSEG_ASSIGN_OR_RETURN(Segmentation segmentation,
                            Segment(mesh, curvature, params.segment, ctx));
-  ctx.Progress("topology", 0.0);
-  MESHSEG_ASSIGN_OR_RETURN(result->topology,
-                           ExtractTopology(mesh, segmentation.face_labels, segmentation.regions,
-                                           params.topology, ctx));
-  MESHSEG_ASSIGN_OR_RETURN(result->features,
-                           RecognizeFeatures(result->topology, segmentation.regions,
-                                             params.features));
-  ctx.Progress("topology", 1.0);
+  MESHSEG_RETURN_IF_ERROR(
+      DescribeRegions(mesh, segmentation.face_labels, segmentation.regions, params, ctx, result));
   result->vertex_labels = std::move(segmentation.vertex_labels);
   result->regions = std::move(segmentation.regions);
   result->estimates = segmentation.estimates;
   return std::move(segmentation.face_labels);
+}
+
+// A CAD tessellation (meshseg/remesh.h): segments an isotropic remesh, then
+// labels the faces and vertices of `mesh` from it and extracts boundaries and
+// features on `mesh` itself, so curve vertex ids are ids of the input.
+absl::StatusOr<std::vector<int>> SegmentRemeshed(const Mesh& mesh, double edge_length,
+                                                 const PipelineParams& params,
+                                                 const RunContext& ctx, PipelineResult* result) {
+  const absl::StatusOr<Mesh> fine = IsotropicRemesh(mesh, edge_length, params.remesh, ctx);
+  if (!fine.ok()) return fine.status();
+  MESHSEG_ASSIGN_OR_RETURN(CurvatureField curvature,
+                           EstimateCurvature(*fine, params.curvature, ctx));
+  MESHSEG_ASSIGN_OR_RETURN(Segmentation segmentation,
+                           Segment(*fine, curvature, params.segment, ctx));
+  std::vector<int> labels =
+      pipeline_internal::TransferFaceLabels(fine->tri, segmentation.face_labels, mesh.tri);
+  result->vertex_labels = pipeline_internal::VertexLabelsFromFaces(mesh.tri, labels);
+  result->regions = std::move(segmentation.regions);
+  pipeline_internal::CompactRegions(&labels, &result->vertex_labels, &result->regions);
+  pipeline_internal::RefitOnInputVertices(mesh.tri, labels, &result->regions);
+  MESHSEG_RETURN_IF_ERROR(DescribeRegions(mesh, labels, result->regions, params, ctx, result));
+  result->mesh = MeshStatistics(mesh);
+  result->estimates = segmentation.estimates;
+  result->remesh_edge_length = edge_length;
+  result->remesh_face_count = static_cast<int64_t>(fine->tri.n_faces());
+  return labels;
 }
 
 absl::StatusOr<PipelineResult> RunOnPointCloud(const std::string& input_path,
@@ -75,8 +111,15 @@ absl::StatusOr<PipelineResult> RunOnMesh(const std::string& input_path,
       ReadMesh(input_path, {.format = params.format, .max_elements = params.max_elements}));
   ctx.Progress("read", 1.0);
   PipelineResult result;
+  const TessellationShape shape = Assess(mesh, params.remesh);
+  const bool remesh = params.remesh.mode == RemeshMode::kAlways ||
+                      (params.remesh.mode == RemeshMode::kAuto && shape.cad_like);
+  const double edge_length = params.remesh.target_edge_length > 0.0
+                                 ? params.remesh.target_edge_length
+                                 : shape.target_edge_length;
   MESHSEG_ASSIGN_OR_RETURN(const std::vector<int> mesh_labels,
-                           SegmentMesh(mesh, params, ctx, &result));
+                           remesh ? SegmentRemeshed(mesh, edge_length, params, ctx, &result)
+                                  : SegmentMesh(mesh, params, ctx, &result));
   result.face_labels = pipeline_internal::InputFaceLabels(mesh.face_of_input, mesh_labels);
   return result;
 }

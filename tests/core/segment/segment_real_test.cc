@@ -1,13 +1,10 @@
-// Segment() on the real meshes of shared/data: the ABC CAD part against its
-// per-face ground truth (.yml), and every other mesh without error.
+// Segment() on the real meshes of shared/data as read (no remeshing): every
+// mesh without error. The ABC part against its ground truth, and CAD inputs
+// through the remesh path, are in tests/core/pipeline/real_files_test.cc.
 #include <cctype>
-#include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <map>
-#include <sstream>
 #include <string>
-#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -20,103 +17,6 @@ namespace {
 
 std::string Data(const std::string& name) {
   return std::string(MESHSEG_SHARED_DATA_DIR) + "/" + name;
-}
-
-// One B-rep patch of an ABC features file.
-struct Patch {
-  std::string type;  // "Plane", "Cylinder", ...
-  double radius = 0.0;
-  std::vector<int> faces;  // 0-based OBJ face indices
-};
-
-// The text of `key: [ ... ]` (without brackets) starting the search at `from`
-// and not beyond `end`; empty if absent.
-std::string ListAfter(const std::string& s, const std::string& key, std::size_t from,
-                      std::size_t end) {
-  const std::size_t k = s.find(key + ": [", from);
-  if (k == std::string::npos || k >= end) return {};
-  const std::size_t open = k + key.size() + 3;
-  const std::size_t close = s.find(']', open);
-  return s.substr(open, close - open);
-}
-
-// A small hand parser for the flow-style `surfaces: [{...}, {...}]` list of
-// the ABC features YAML (no nested braces inside a surface).
-std::vector<Patch> ReadPatches(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream buf;
-  buf << in.rdbuf();
-  const std::string s = buf.str();
-  std::vector<Patch> patches;
-  std::size_t pos = s.find("surfaces:");
-  if (pos == std::string::npos) return patches;
-  while ((pos = s.find('{', pos)) != std::string::npos) {
-    const std::size_t end = s.find('}', pos);
-    if (end == std::string::npos) break;
-    Patch p;
-    const std::size_t t = s.find("type: ", pos);
-    if (t < end) p.type = s.substr(t + 6, s.find_first_of(",}", t) - t - 6);
-    const std::size_t r = s.find("radius: ", pos);
-    if (r < end) p.radius = std::stod(s.substr(r + 8, 40));
-    std::stringstream faces(ListAfter(s, "face_indices", pos, end));
-    std::string item;
-    while (std::getline(faces, item, ',')) p.faces.push_back(std::stoi(item));
-    patches.push_back(std::move(p));
-    pos = end + 1;
-  }
-  return patches;
-}
-
-SurfaceType TypeOfName(const std::string& name) {
-  if (name == "Plane") return SurfaceType::kPlane;
-  if (name == "Cylinder") return SurfaceType::kCylinder;
-  if (name == "Cone") return SurfaceType::kCone;
-  if (name == "Sphere") return SurfaceType::kSphere;
-  if (name == "Torus") return SurfaceType::kTorus;
-  return SurfaceType::kFreeform;
-}
-
-// A patch counts as covered if one region holds at least this share of its
-// faces; the faces along its rim may go to the neighbour.
-constexpr double kMinPatchCover = 0.8;
-constexpr double kRadiusTolerance = 0.01;  // relative, issue 3
-
-// Known failure (issue 3): the long thin CAD triangles make l_i,avg several
-// times the cylinders' radii, so their vertices are all sharp and the part
-// comes out as 4 regions. Enabled once the curvature stage handles it.
-TEST(SegmentReal, DISABLED_AbcPartPatchesGetRegionsOfTheirType) {
-  const std::vector<Patch> patches = ReadPatches(Data("abc_00007974_5.yml"));
-  ASSERT_EQ(patches.size(), 24u);  // SOURCES.md: 14 planes, 10 cylinders
-  const absl::StatusOr<Mesh> mesh = ReadMesh(Data("abc_00007974_5.obj"));
-  ASSERT_TRUE(mesh.ok()) << mesh.status();
-  const auto field = EstimateCurvature(*mesh);
-  ASSERT_TRUE(field.ok()) << field.status();
-  const auto seg = Segment(*mesh, *field);
-  ASSERT_TRUE(seg.ok()) << seg.status();
-  for (std::size_t i = 0; i < patches.size(); ++i) {
-    const Patch& p = patches[i];
-    std::map<int, int> count;
-    for (const int f : p.faces) {
-      ASSERT_LT(f, static_cast<int>(mesh->face_of_input.size()));
-      const int mf = mesh->face_of_input[f];
-      ASSERT_GE(mf, 0) << "face " << f << " dropped";
-      ++count[seg->face_labels[mf]];
-    }
-    int region = -1, best = 0;
-    for (const auto& [r, n] : count) {
-      if (n > best) best = n, region = r;
-    }
-    SCOPED_TRACE(::testing::Message() << "patch " << i << " " << p.type << " r " << p.radius
-                                      << ", " << p.faces.size() << " faces, region " << region
-                                      << " holds " << best);
-    ASSERT_GE(region, 0);
-    EXPECT_GE(best, kMinPatchCover * p.faces.size());
-    const Region& reg = seg->regions[region];
-    EXPECT_EQ(reg.type, TypeOfName(p.type)) << SurfaceTypeName(reg.type);
-    if (const auto* c = std::get_if<Cylinder>(&reg.surface); c && p.type == "Cylinder") {
-      EXPECT_NEAR(c->radius, p.radius, kRadiusTolerance * p.radius);
-    }
-  }
 }
 
 class SegmentRealFile : public ::testing::TestWithParam<std::string> {};

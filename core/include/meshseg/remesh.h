@@ -1,0 +1,89 @@
+// File: remesh.h
+// -----------------------------------------------------------------------------
+// Isotropic remeshing of CAD tessellations before segmentation.
+//
+// Meshes exported from CAD put a few long, thin triangles on every plane and
+// fans of slivers on every cylinder; edge lengths vary by two orders of
+// magnitude. The curvature and segmentation stages (seeds 000/002) assume a
+// scan-like mesh whose edges are all about l_avg long: on a CAD tessellation
+// the neighbourhood radius of a plane vertex spans whole holes, and every
+// vertex of a small cylinder looks sharp. Rather than bend those stages, the
+// pipeline remeshes such inputs into near-equilateral triangles (CGAL's
+// isotropic_remeshing, vertices projected back onto the input surface,
+// feature edges kept), segments the remeshed surface, and maps the labels back
+// to the input faces (pipeline/remeshed_labels.h).
+//
+// Scan-like meshes (marching cubes, laser scans, reconstructed clouds) are
+// left alone: `Assess` tells them apart from the shape of their triangles.
+#ifndef MESHSEG_REMESH_H_
+#define MESHSEG_REMESH_H_
+
+#include <cstdint>
+
+#include "absl/status/statusor.h"
+#include "meshseg/mesh.h"
+#include "meshseg/run_context.h"
+
+namespace meshseg {
+
+enum class RemeshMode {
+  kAuto,    // remesh when Assess() finds a CAD-like tessellation
+  kAlways,  // remesh every mesh
+  kNever,   // segment the input as it is
+};
+
+struct RemeshParams {
+  RemeshMode mode = RemeshMode::kAuto;
+  // Target edge length; 0 = derived from the mesh (Assess().target_edge_length).
+  double target_edge_length = 0.0;
+  // kAuto remeshes when more than this share of the surface area lies in
+  // triangles whose longest edge exceeds kThinAspect times their height over
+  // it. Measured: marching cubes (test_piece, 1M faces) 1.0 %, the scans and
+  // fine meshes of shared/data 0-0.4 %; the CAD STL/PLY exports there 6.8 %
+  // (tray_bottom_1002), 30.8 % (plate_holes), 93.2 % (abc_00016513_gt).
+  double thin_area_fraction = 0.05;
+  // Edges whose dihedral angle exceeds this are feature edges: kept as
+  // constrained polylines (split, never flipped or moved off the line).
+  double feature_angle_deg = 30.0;
+  // CGAL's split/collapse/flip/relax rounds.
+  int iterations = 3;
+  // The target length is raised if the remeshed surface would have more
+  // triangles than this. CGAL's remeshing runs on one thread, 5-20 s for
+  // 150K triangles here (bench/remesh).
+  int64_t max_faces = 150'000;
+};
+
+// What the triangles of a mesh look like.
+struct TessellationShape {
+  double surface_area = 0.0;
+  // Share of the area in triangles with aspect (longest edge / height on it)
+  // above kThinAspect.
+  double thin_area_fraction = 0.0;
+  // Median over faces of the shortest edge: the scale the tessellation
+  // resolves (chords of the smallest curved surfaces on a CAD export).
+  double median_shortest_edge = 0.0;
+  // Edge length for remeshing: the median shortest edge, raised so the
+  // remeshed surface stays under RemeshParams::max_faces.
+  double target_edge_length = 0.0;
+  bool cad_like = false;  // thin_area_fraction over the params' limit
+};
+
+inline constexpr double kThinAspect = 6.0;
+
+// Returns the shape statistics of `mesh` and the remeshing decision.
+TessellationShape Assess(const Mesh& mesh, const RemeshParams& params = {});
+
+// Returns an isotropic remesh of `mesh` with edges of about
+// `target_edge_length` (> 0): near-equilateral triangles whose vertices lie on
+// the input surface; edges sharper than params.feature_angle_deg are kept as
+// polylines. face_of_input of the result is the identity (its faces are not
+// the input's; map labels back by position). Reports progress as "remesh".
+// Errors: INVALID_ARGUMENT for a non-positive target or a mesh without faces;
+// INTERNAL if the remeshed surface cannot be rebuilt; CANCELLED on stop.
+absl::StatusOr<Mesh> IsotropicRemesh(const Mesh& mesh, double target_edge_length,
+                                     const RemeshParams& params = {},
+                                     const RunContext& ctx = {});
+
+}  // namespace meshseg
+
+#endif  // MESHSEG_REMESH_H_

@@ -1,0 +1,94 @@
+// RunPipeline on CAD tessellations: long thin triangles with their vertices
+// exactly on the surface are segmented on an isotropic remesh, labels come
+// back per input face, and the surfaces are refitted on the input vertices.
+#include <cmath>
+#include <filesystem>
+#include <map>
+#include <string>
+#include <variant>
+
+#include <Eigen/Geometry>
+#include <gtest/gtest.h>
+
+#include "cad_shapes.h"
+#include "meshseg/pipeline.h"
+
+namespace meshseg {
+namespace {
+
+std::string WriteCadCylinder(const testing::CadShape& shape, const std::string& name) {
+  absl::StatusOr<Mesh> mesh = BuildMesh(shape.vertices, shape.triangles, name);
+  EXPECT_TRUE(mesh.ok()) << mesh.status();
+  const std::string path = (std::filesystem::temp_directory_path() / name).string();
+  EXPECT_TRUE(WriteMesh(mesh->tri, path).ok());
+  return path;
+}
+
+TEST(CadInput, CylinderOfLongStripsComesBackAsOneExactCylinderAndTwoPlanes) {
+  const testing::CadShape shape = testing::CadCylinder(10.0, 40.0, 48);
+  const std::string path = WriteCadCylinder(shape, "cad_cylinder_input_test.ply");
+  const absl::StatusOr<PipelineResult> result = RunPipeline(path);
+  std::filesystem::remove(path);
+  ASSERT_TRUE(result.ok()) << result.status();
+  EXPECT_GT(result->remesh_face_count, 10 * static_cast<int64_t>(shape.triangles.size()));
+  EXPECT_GT(result->remesh_edge_length, 0.0);
+  ASSERT_EQ(result->face_labels.size(), shape.triangles.size());
+  EXPECT_LE(result->regions.size(), 4u);
+  // The region holding most faces of each true surface, and how many.
+  for (int surface = 0; surface < 3; ++surface) {
+    std::map<int, int> count;
+    int total = 0;
+    for (std::size_t f = 0; f < shape.triangles.size(); ++f) {
+      if (shape.surface[f] != surface) continue;
+      ++total;
+      ++count[result->face_labels[f]];
+    }
+    int region = -1, best = 0;
+    for (const auto& [r, n] : count) {
+      if (n > best) region = r, best = n;
+    }
+    SCOPED_TRACE(::testing::Message() << "surface " << surface << " region " << region);
+    ASSERT_GE(region, 0);
+    EXPECT_GE(best, 0.95 * total);
+    const Region& reg = result->regions[region];
+    if (surface == 0) {
+      ASSERT_EQ(reg.type, SurfaceType::kCylinder);
+      const Cylinder& c = std::get<Cylinder>(reg.surface);
+      // Refitted on the input's vertices, which lie on the cylinder itself:
+      // exact, where the remesh's vertices (on the chords) give r < 10.
+      EXPECT_NEAR(c.radius, 10.0, 1e-6);
+      EXPECT_NEAR(std::abs(c.axis_direction.z()), 1.0, 1e-9);
+      EXPECT_LT(reg.rms_distance, 1e-6);
+    } else {
+      ASSERT_EQ(reg.type, SurfaceType::kPlane);
+      const Plane& p = std::get<Plane>(reg.surface);
+      EXPECT_NEAR(std::abs(p.normal.z()), 1.0, 1e-9);
+      EXPECT_NEAR(p.point.z(), surface == 1 ? 0.0 : 40.0, 1e-9);
+    }
+  }
+  // Face and vertex counts are those of the input, not of the remesh.
+  int64_t faces = 0;
+  for (const Region& r : result->regions) faces += r.face_count;
+  EXPECT_EQ(faces, static_cast<int64_t>(shape.triangles.size()));
+  EXPECT_EQ(result->vertex_labels.size(), shape.vertices.size());
+  // Curves are on the input mesh: vertex ids below its vertex count.
+  EXPECT_FALSE(result->topology.curves.empty());
+  for (const auto& curve : result->topology.curves) {
+    for (const int v : curve.vertices) ASSERT_LT(v, static_cast<int>(shape.vertices.size()));
+  }
+}
+
+TEST(CadInput, NeverModeSegmentsTheInputAsRead) {
+  const testing::CadShape shape = testing::CadCylinder(10.0, 40.0, 48);
+  const std::string path = WriteCadCylinder(shape, "cad_cylinder_never_test.ply");
+  PipelineParams params;
+  params.remesh.mode = RemeshMode::kNever;
+  const absl::StatusOr<PipelineResult> result = RunPipeline(path, params);
+  std::filesystem::remove(path);
+  ASSERT_TRUE(result.ok()) << result.status();
+  EXPECT_EQ(result->remesh_face_count, 0);
+  EXPECT_EQ(result->remesh_edge_length, 0.0);
+}
+
+}  // namespace
+}  // namespace meshseg

@@ -1,0 +1,181 @@
+// RunPipeline() on the real meshes of shared/data, labels per input face:
+// the ABC CAD part against its per-face ground truth (.yml), and the CAD
+// exports that go through the remesh path (meshseg/remesh.h).
+#include <cctype>
+#include <cstdio>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "meshseg/pipeline.h"
+
+namespace meshseg {
+namespace {
+
+std::string Data(const std::string& name) {
+  return std::string(MESHSEG_SHARED_DATA_DIR) + "/" + name;
+}
+
+// One B-rep patch of an ABC features file.
+struct Patch {
+  std::string type;  // "Plane", "Cylinder", ...
+  double radius = 0.0;
+  std::vector<int> faces;  // 0-based OBJ face indices
+};
+
+// The text of `key: [ ... ]` (without brackets) starting the search at `from`
+// and not beyond `end`; empty if absent.
+std::string ListAfter(const std::string& s, const std::string& key, std::size_t from,
+                      std::size_t end) {
+  const std::size_t k = s.find(key + ": [", from);
+  if (k == std::string::npos || k >= end) return {};
+  const std::size_t open = k + key.size() + 3;
+  const std::size_t close = s.find(']', open);
+  return s.substr(open, close - open);
+}
+
+// A small hand parser for the flow-style `surfaces: [{...}, {...}]` list of
+// the ABC features YAML (no nested braces inside a surface).
+std::vector<Patch> ReadPatches(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream buf;
+  buf << in.rdbuf();
+  const std::string s = buf.str();
+  std::vector<Patch> patches;
+  std::size_t pos = s.find("surfaces:");
+  if (pos == std::string::npos) return patches;
+  while ((pos = s.find('{', pos)) != std::string::npos) {
+    const std::size_t end = s.find('}', pos);
+    if (end == std::string::npos) break;
+    Patch p;
+    const std::size_t t = s.find("type: ", pos);
+    if (t < end) p.type = s.substr(t + 6, s.find_first_of(",}", t) - t - 6);
+    const std::size_t r = s.find("radius: ", pos);
+    if (r < end) p.radius = std::stod(s.substr(r + 8, 40));
+    std::stringstream faces(ListAfter(s, "face_indices", pos, end));
+    std::string item;
+    while (std::getline(faces, item, ',')) p.faces.push_back(std::stoi(item));
+    patches.push_back(std::move(p));
+    pos = end + 1;
+  }
+  return patches;
+}
+
+SurfaceType TypeOfName(const std::string& name) {
+  if (name == "Plane") return SurfaceType::kPlane;
+  if (name == "Cylinder") return SurfaceType::kCylinder;
+  if (name == "Cone") return SurfaceType::kCone;
+  if (name == "Sphere") return SurfaceType::kSphere;
+  if (name == "Torus") return SurfaceType::kTorus;
+  return SurfaceType::kFreeform;
+}
+
+// A patch counts as covered if one region holds at least this share of its
+// faces; the faces along its rim may go to the neighbour.
+constexpr double kMinPatchCover = 0.8;
+constexpr double kRadiusTolerance = 0.01;  // relative, issue 3
+
+// Known failure (issue 3): the long thin CAD triangles make l_i,avg several
+// times the cylinders' radii, so their vertices are all sharp and the part
+// comes out as 4 regions. Enabled once the curvature stage handles it.
+TEST(SegmentReal, DISABLED_AbcPartPatchesGetRegionsOfTheirType) {
+  const std::vector<Patch> patches = ReadPatches(Data("abc_00007974_5.yml"));
+  ASSERT_EQ(patches.size(), 24u);  // SOURCES.md: 14 planes, 10 cylinders
+  const absl::StatusOr<PipelineResult> seg = RunPipeline(Data("abc_00007974_5.obj"));
+  ASSERT_TRUE(seg.ok()) << seg.status();
+  for (std::size_t i = 0; i < patches.size(); ++i) {
+    const Patch& p = patches[i];
+    std::map<int, int> count;
+    for (const int f : p.faces) {
+      ASSERT_LT(f, static_cast<int>(seg->face_labels.size()));
+      ++count[seg->face_labels[f]];
+    }
+    int region = -1, best = 0;
+    for (const auto& [r, n] : count) {
+      if (n > best) best = n, region = r;
+    }
+    SCOPED_TRACE(::testing::Message() << "patch " << i << " " << p.type << " r " << p.radius
+                                      << ", " << p.faces.size() << " faces, region " << region
+                                      << " holds " << best);
+    ASSERT_GE(region, 0);
+    EXPECT_GE(best, kMinPatchCover * p.faces.size());
+    const Region& reg = seg->regions[region];
+    EXPECT_EQ(reg.type, TypeOfName(p.type)) << SurfaceTypeName(reg.type);
+    if (const auto* c = std::get_if<Cylinder>(&reg.surface); c && p.type == "Cylinder") {
+      EXPECT_NEAR(c->radius, p.radius, kRadiusTolerance * p.radius);
+    }
+  }
+}
+
+// abc_00016513_gt.ply has no per-face truth, but its CAD vertices lie on its
+// surfaces, so the refit on the input vertices is exact where a region holds
+// only its own faces (measured: 8 of 10 cylinders at rms < 1e-7; two at 7e-4
+// and 2e-3, holding stray rim faces).
+void ExpectExactCylinders(const PipelineResult& result) {
+  int exact_cylinders = 0, planes = 0;
+  for (const Region& r : result.regions) {
+    if (r.type == SurfaceType::kPlane) ++planes;
+    if (r.type == SurfaceType::kCylinder && r.rms_distance < 1e-6) ++exact_cylinders;
+  }
+  EXPECT_GE(exact_cylinders, 6);
+  EXPECT_GE(planes, 4);
+}
+
+// Every input face gets a region; prints the region count and types and
+// whether the mesh was remeshed (the numbers for the issue's note).
+class RealFile : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(RealFile, LabelsEveryInputFace) {
+  const absl::StatusOr<PipelineResult> result = RunPipeline(Data(GetParam()));
+  ASSERT_TRUE(result.ok()) << result.status();
+  ASSERT_EQ(result->face_labels.size(), result->mesh.input_face_count);
+  int64_t unlabelled = 0;
+  for (const int label : result->face_labels) {
+    if (label < 0 || label >= static_cast<int>(result->regions.size())) ++unlabelled;
+  }
+  EXPECT_EQ(unlabelled, result->mesh.dropped_face_count);
+  std::map<std::string, int> types;
+  int64_t faces = 0;
+  for (const Region& r : result->regions) {
+    ++types[SurfaceTypeName(r.type)];
+    faces += r.face_count;
+    EXPECT_GT(r.face_count, 0) << "region " << r.id;
+  }
+  EXPECT_EQ(faces, result->mesh.face_count);
+  std::string summary;
+  for (const auto& [t, n] : types) summary += " " + t + " " + std::to_string(n);
+  std::printf("%s: %zu regions:%s (remeshed to %lld faces at %.4g)\n", GetParam().c_str(),
+              result->regions.size(), summary.c_str(),
+              static_cast<long long>(result->remesh_face_count), result->remesh_edge_length);
+  if (GetParam() == "abc_00016513_gt.ply") ExpectExactCylinders(*result);
+}
+
+// The CAD exports of shared/data with long thin triangles: each is remeshed.
+TEST_P(RealFile, CadExportsAreRemeshed) {
+  const absl::StatusOr<Mesh> mesh = ReadMesh(Data(GetParam()));
+  ASSERT_TRUE(mesh.ok()) << mesh.status();
+  const bool cad_export = GetParam() == "plate_holes.stl" || GetParam() == "tray_bottom_1002.stl" ||
+                          GetParam() == "abc_00016513_gt.ply";
+  EXPECT_EQ(Assess(*mesh).cad_like, cad_export);
+}
+
+INSTANTIATE_TEST_SUITE_P(Files, RealFile,
+                         ::testing::Values("fandisk.off", "fandisk_noisy0.1.off",
+                                           "abc_00007974_5.obj", "plate_holes.stl", "torus.stl",
+                                           "tray_bottom_1002.stl", "bunny_zipper_res2.ply",
+                                           "broken_bullet_gt.obj", "abc_00016513_gt.ply"),
+                         [](const auto& info) {
+                           std::string n = info.param;
+                           for (char& ch : n) {
+                             if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
+                           }
+                           return n;
+                         });
+
+}  // namespace
+}  // namespace meshseg
