@@ -1,0 +1,78 @@
+#include "pipeline/refit_regions.h"
+
+#include <cmath>
+#include <numbers>
+#include <variant>
+#include <vector>
+
+#include "gtest/gtest.h"
+
+namespace meshseg::pipeline_internal {
+namespace {
+
+// An open tube of radius 5 along z, its vertices exactly on the cylinder:
+// 24 segments, 4 rings 2 apart.
+TriMesh Tube() {
+  TriMesh m;
+  constexpr int kSegments = 24, kRings = 4;
+  std::vector<TriMesh::VertexHandle> v;
+  for (int ring = 0; ring < kRings; ++ring) {
+    for (int k = 0; k < kSegments; ++k) {
+      const double t = 2.0 * std::numbers::pi * k / kSegments;
+      v.push_back(m.add_vertex({5.0 * std::cos(t), 5.0 * std::sin(t), 2.0 * ring}));
+    }
+  }
+  for (int ring = 0; ring + 1 < kRings; ++ring) {
+    for (int k = 0; k < kSegments; ++k) {
+      const int a = ring * kSegments + k, b = ring * kSegments + (k + 1) % kSegments;
+      m.add_face(v[a], v[b], v[b + kSegments]);
+      m.add_face(v[a], v[b + kSegments], v[a + kSegments]);
+    }
+  }
+  return m;
+}
+
+TEST(RefitOnInputVertices, ChordFitBecomesExactOnTheInputVertices) {
+  const TriMesh tube = Tube();
+  // As fitted on a remesh lying on the chords: radius too small, axis tilted.
+  Region region;
+  region.type = SurfaceType::kCylinder;
+  region.surface = Cylinder{.axis_origin = {0.05, 0.0, 3.0},
+                            .axis_direction = Eigen::Vector3d(0.01, 0.0, 1.0).normalized(),
+                            .radius = 4.95};
+  std::vector<Region> regions = {region};
+  RefitOnInputVertices(tube, std::vector<int>(tube.n_faces(), 0), &regions);
+  const Cylinder& c = std::get<Cylinder>(regions[0].surface);
+  EXPECT_NEAR(c.radius, 5.0, 1e-9);
+  EXPECT_NEAR(std::abs(c.axis_direction.z()), 1.0, 1e-12);
+  EXPECT_LT(regions[0].rms_distance, 1e-9);
+  EXPECT_LT(regions[0].max_distance, 1e-9);
+}
+
+TEST(RefitOnInputVertices, KeepsTheSurfaceWhenTheRefitIsNoCloser) {
+  const TriMesh tube = Tube();
+  Region region;
+  region.type = SurfaceType::kCylinder;
+  region.surface = Cylinder{.axis_origin = {0, 0, 0}, .axis_direction = {0, 0, 1}, .radius = 5.0};
+  region.rms_distance = 123.0;  // stale value from the remesh
+  std::vector<Region> regions = {region};
+  RefitOnInputVertices(tube, std::vector<int>(tube.n_faces(), 0), &regions);
+  // Already exact: whichever is kept, the distances are those of the input.
+  EXPECT_NEAR(std::get<Cylinder>(regions[0].surface).radius, 5.0, 1e-9);
+  EXPECT_LT(regions[0].rms_distance, 1e-9);
+}
+
+TEST(RefitOnInputVertices, RegionWithoutFacesKeepsItsSurface) {
+  const TriMesh tube = Tube();
+  std::vector<Region> regions(2);
+  regions[1].id = 1;
+  regions[1].type = SurfaceType::kPlane;
+  regions[1].surface = Plane{.point = {0, 0, 7}, .normal = {0, 0, 1}};
+  RefitOnInputVertices(tube, std::vector<int>(tube.n_faces(), 0), &regions);
+  const Plane& p = std::get<Plane>(regions[1].surface);
+  EXPECT_EQ(p.point.z(), 7.0);
+  EXPECT_EQ(regions[1].rms_distance, 0.0);
+}
+
+}  // namespace
+}  // namespace meshseg::pipeline_internal
