@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
+#include <variant>
 
 namespace meshseg::segment_internal {
 namespace {
@@ -23,7 +25,63 @@ TypedFit Try(const SegmentContext& c, SurfaceType type, std::span<const int> ver
   return k;
 }
 
+// The smallest principal radius of curvature of a curved fit near `at`.
+double SmallestRadius(const Surface& surface, const Eigen::Vector3d& at) {
+  if (const auto* c = std::get_if<Cylinder>(&surface)) return c->radius;
+  if (const auto* s = std::get_if<Sphere>(&surface)) return s->radius;
+  if (const auto* t = std::get_if<Torus>(&surface)) return t->minor_radius;
+  if (const auto* k = std::get_if<Cone>(&surface)) {
+    const Eigen::Vector3d d = at - k->apex;
+    const double rho = (d - d.dot(k->axis_direction) * k->axis_direction).norm();
+    return rho / std::max(std::cos(k->half_angle), 1e-9);
+  }
+  return 0.0;  // quadric: not judged here
+}
+
+// See NearlyFlat in decide_type.h.
+bool NearlyFlatImpl(const SegmentContext& c, const Surface& surface, double rms,
+                    std::span<const int> vertices, const Tolerance& tol) {
+  if (vertices.empty()) return false;
+  Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
+  for (const int v : vertices) centroid += c.position(v);
+  centroid /= static_cast<double>(vertices.size());
+  double extent2 = 0.0;
+  for (const int v : vertices) extent2 = std::max(extent2, (c.position(v) - centroid).squaredNorm());
+  const double radius = SmallestRadius(surface, centroid);
+  if (!(radius > 0.0)) return false;
+  const double max_turn = std::acos(std::clamp(tol.cos_angle, -1.0, 1.0));
+  const double sagitta = extent2 / (2.0 * radius);
+  return sagitta < std::max(tol.distance, 2.0 * rms) &&
+         std::sqrt(extent2) / radius < max_turn;
+}
+
 }  // namespace
+
+bool NearlyFlat(const SegmentContext& c, const Surface& surface, double rms,
+                std::span<const int> vertices, const Tolerance& tol) {
+  return NearlyFlatImpl(c, surface, rms, vertices, tol);
+}
+
+int FlattenNearlyFlatRegions(const SegmentContext& c, std::vector<RegionState>* regions) {
+  int flattened = 0;
+  for (RegionState& r : *regions) {
+    if (!r.alive || r.type == SurfaceType::kPlane || r.type == SurfaceType::kQuadric ||
+        r.type == SurfaceType::kFreeform) {
+      continue;
+    }
+    const FitResult curved = FitType(c, r.type, r.vertices);
+    if (!curved.ok() ||
+        !NearlyFlat(c, curved.surface, curved.rms_distance, r.vertices, c.tolerance)) {
+      continue;
+    }
+    const FitResult plane = FitType(c, SurfaceType::kPlane, r.vertices);
+    if (!plane.ok()) continue;
+    r.type = SurfaceType::kPlane;
+    r.surface = plane.surface;
+    ++flattened;
+  }
+  return flattened;
+}
 
 std::optional<TypedFit> PlaneIfFits(const SegmentContext& c, std::span<const int> vertices,
                                     const Tolerance& tol) {
@@ -65,6 +123,16 @@ TypedFit DecideCurvedType(const SegmentContext& c, std::span<const int> vertices
     if (pass == nullptr || (t.fraction >= pass->fraction - kFractionTie &&
                             t.fit.rms_distance < kConeGain * pass->fit.rms_distance)) {
       pass = &t;
+    }
+  }
+  if (pass != nullptr &&
+      NearlyFlat(c, pass->fit.surface, pass->fit.rms_distance, vertices, tol)) {
+    // Within the tolerances the plane is the same surface; it keeps the
+    // fitting fraction the curved type earned for the alpha test.
+    TypedFit plane = Try(c, SurfaceType::kPlane, vertices, tol);
+    if (plane.fit.ok()) {
+      plane.fraction = std::max(plane.fraction, pass->fraction);
+      return plane;
     }
   }
   if (pass != nullptr) return *pass;

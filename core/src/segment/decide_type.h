@@ -5,6 +5,7 @@
 
 #include <optional>
 #include <span>
+#include <vector>
 
 #include "segment/segment_internal.h"
 
@@ -26,6 +27,20 @@ std::optional<TypedFit> PlaneIfFits(const SegmentContext& c, std::span<const int
 // near-ties), or the general quadric if no analytic type fits any vertex.
 TypedFit DecideCurvedType(const SegmentContext& c, std::span<const int> vertices,
                           const Tolerance& tol);
+
+// True if `surface` (a cylinder, sphere, cone or torus fitted to `vertices`
+// with residual `rms`) bends less than the tolerances over the region: its
+// sagitta D^2 / 2R across the region's radius D is under th_dis (or twice
+// the fit's own rms scatter) and its normal turns by less than th_nm (D / R).
+// Such a fit passes the alpha test only by fitting noise a plane leaves just
+// outside th_dis (a reconstructed flat face came out as a cylinder of radius
+// 914 mm). False for planes and quadrics.
+bool NearlyFlat(const SegmentContext& c, const Surface& surface, double rms,
+                std::span<const int> vertices, const Tolerance& tol);
+
+// Makes every curved region that is NearlyFlat a plane (refitted); returns
+// how many. Run after merging, whichever path typed the region.
+int FlattenNearlyFlatRegions(const SegmentContext& c, std::vector<RegionState>* regions);
 
 }  // namespace meshseg::segment_internal
 

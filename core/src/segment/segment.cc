@@ -9,6 +9,7 @@
 #include "absl/strings/str_cat.h"
 #include "meshseg/status_macros.h"
 #include "segment/absorb_leftovers.h"
+#include "segment/decide_type.h"
 #include "segment/estimate_noise.h"
 #include "segment/finalize_regions.h"
 #include "segment/initial_segmentation.h"
@@ -83,6 +84,7 @@ absl::StatusOr<Segmentation> Segment(const Mesh& mesh, const CurvatureField& cur
   if (ReleaseSmallRegions(c, &labels, &regions) > 0) {
     MESHSEG_RETURN_IF_ERROR(AbsorbLeftovers(c, &labels, &regions));
   }
+  FlattenNearlyFlatRegions(c, &regions);
   ctx.Progress("segment", 0.9);
   MESHSEG_RETURN_IF_ERROR(ctx.CheckStop("segment"));
   Segmentation seg = FinalizeRegions(c, mesh.tri, labels, std::move(regions));
