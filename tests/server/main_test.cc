@@ -1,45 +1,136 @@
-// The meshseg-server binary: prints the bound address, stops on SIGTERM with
-// exit code 0, and refuses bad flags with one line.
+// The meshseg-server binary: prints the bound address, refuses bad flags with
+// one line, and on SIGTERM shuts down gracefully: health NOT_SERVING, new
+// uploads refused, queued jobs cancelled, the running job finishes within
+// the grace period (or is cancelled after it), exit code 0. Its stderr holds
+// one structured line per job state change.
 #include <signal.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <cstdio>
 #include <filesystem>
 #include <string>
+#include <thread>
+#include <vector>
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include "absl/strings/str_cat.h"
+#include "absl/strings/str_split.h"
+#include "absl/synchronization/notification.h"
+#include "client/meshseg_client.h"
+#include "meshseg/generate.h"
+#include "meshseg/mesh.h"
+#include "tests/server/server_process.h"
+#include "tests/server/test_files.h"
+#include "tests/server/test_server.h"
+
+namespace meshseg {
 namespace {
 
+using ::testing::HasSubstr;
+using ::testing::MatchesRegex;
+using ::testing::Not;
+using testing_server::FreshDir;
+using testing_server::HealthStatus;
+using testing_server::ServerProcess;
+
 const std::string kServer = std::string(MESHSEG_BIN_DIR) + "/meshseg-server";
+// Bound on every wait for the server; the jobs here take about a second.
+constexpr absl::Duration kTimeout = absl::Seconds(20);
+
+// Returns the index of the first line of `log` holding every one of
+// `parts`, or -1.
+int LineOf(const std::vector<std::string>& log, std::initializer_list<std::string> parts) {
+  for (int i = 0; i < static_cast<int>(log.size()); ++i) {
+    bool all = true;
+    for (const std::string& p : parts) all = all && log[i].find(p) != std::string::npos;
+    if (all) return i;
+  }
+  return -1;
+}
+
+std::vector<std::string> LogLines(const std::string& log) {
+  std::vector<std::string> lines = absl::StrSplit(log, '\n', absl::SkipEmpty());
+  for (const std::string& line : lines) {
+    EXPECT_THAT(line, MatchesRegex("ts=[0-9-]+T[0-9:.]+Z event=[a-z_]+( .*)?")) << "structured";
+  }
+  return lines;
+}
+
+// Watches a job on its own thread and channel; Open() returns once the
+// first event came, so the job cannot end before the watch is in place.
+class Watcher {
+ public:
+  Watcher(const std::string& address, const std::string& job_id)
+      : thread_([this, address, job_id] {
+          job_ = MeshsegClient::Connect(address).Watch(
+              job_id,
+              [this](const v1::JobEvent&) {
+                if (!first_event_.HasBeenNotified()) first_event_.Notify();
+              },
+              kTimeout);
+        }) {}
+  ~Watcher() {
+    if (thread_.joinable()) thread_.join();
+  }
+  bool Open() { return first_event_.WaitForNotificationWithTimeout(kTimeout); }
+  absl::StatusOr<v1::Job> Job() {
+    thread_.join();
+    return job_;
+  }
+
+ private:
+  absl::Notification first_event_;
+  absl::StatusOr<v1::Job> job_;
+  std::thread thread_;
+};
+
+// A part big enough that its job runs for about a second (test_piece at
+// h = 0.5: ~180 k faces, 4.5 MB), written once for the suite.
+class ServerMainJobs : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    const std::string dir = std::string(::testing::TempDir()) + "/server_main_jobs";
+    std::filesystem::create_directories(dir);
+    part_path_ = new std::string(dir + "/test_piece.ply");
+    const absl::StatusOr<GeneratedPart> part = GeneratePart("test_piece", {.voxel_size = 0.5});
+    ASSERT_TRUE(part.ok()) << part.status();
+    part_faces_ = static_cast<int64_t>(part->mesh.tri.n_faces());
+    ASSERT_TRUE(WriteMesh(part->mesh.tri, *part_path_).ok());
+  }
+  static void TearDownTestSuite() {
+    delete part_path_;
+    part_path_ = nullptr;
+  }
+
+  ServerMainJobs() {
+    small_path_ = FreshDir("files") + "/box.off";
+    testing_files::WriteOff(testing_files::SplitBox(2, {1, 1, 1}), small_path_);
+    spool_ = FreshDir("spool");
+  }
+
+  static std::string* part_path_;
+  static int64_t part_faces_;
+  std::string small_path_;
+  std::string spool_;
+};
+std::string* ServerMainJobs::part_path_ = nullptr;
+int64_t ServerMainJobs::part_faces_ = 0;
 
 TEST(ServerMain, PrintsTheBoundPortAndStopsOnSigterm) {
-  const std::string spool = std::string(::testing::TempDir()) + "/server_main_spool";
-  int out[2];
-  ASSERT_EQ(pipe(out), 0);
-  const pid_t pid = fork();
-  ASSERT_GE(pid, 0);
-  if (pid == 0) {
-    dup2(out[1], STDOUT_FILENO);
-    close(out[0]);
-    execl(kServer.c_str(), kServer.c_str(), "--listen", "127.0.0.1:0", "--spool-dir",
-          spool.c_str(), "--workers", "1", static_cast<char*>(nullptr));
-    _exit(127);
-  }
-  close(out[1]);
-  FILE* in = fdopen(out[0], "r");
-  char line[256] = {};
-  ASSERT_NE(fgets(line, sizeof line, in), nullptr);
-  EXPECT_THAT(std::string(line), ::testing::MatchesRegex("listening on 127\\.0\\.0\\.1:[0-9]+\n"));
-  EXPECT_NE(std::string(line), "listening on 127.0.0.1:0\n");
-  kill(pid, SIGTERM);
-  int status = 0;
-  ASSERT_EQ(waitpid(pid, &status, 0), pid);
-  fclose(in);
-  EXPECT_TRUE(WIFEXITED(status));
-  EXPECT_EQ(WEXITSTATUS(status), 0);
+  ServerProcess server({"--spool-dir", FreshDir("spool"), "--workers", "1"});
+  EXPECT_THAT(server.first_line(), MatchesRegex("listening on 127\\.0\\.0\\.1:[0-9]+"));
+  EXPECT_NE(server.first_line(), "listening on 127.0.0.1:0");
+  ASSERT_FALSE(server.address().empty());
+  server.Signal(SIGTERM);
+  EXPECT_EQ(server.AwaitExit(kTimeout), 0);
+  const std::vector<std::string> log = LogLines(server.Log());
+  const int started = LineOf(log, {"event=server_started", "workers=1"});
+  const int signal = LineOf(log, {"event=signal", "signal=SIGTERM"});
+  const int done = LineOf(log, {"event=shutdown_done"});
+  EXPECT_GE(started, 0) << server.Log();
+  EXPECT_GT(signal, started) << server.Log();
+  EXPECT_GT(done, signal) << server.Log();
 }
 
 TEST(ServerMain, BadFlagValueExitsNonZero) {
@@ -51,7 +142,122 @@ TEST(ServerMain, BadFlagValueExitsNonZero) {
   while (fgets(buf, sizeof buf, p)) output += buf;
   const int status = pclose(p);
   EXPECT_NE(WEXITSTATUS(status), 0);
-  EXPECT_THAT(output, ::testing::HasSubstr("--queue-capacity"));
+  EXPECT_THAT(output, HasSubstr("--queue-capacity"));
+}
+
+// SIGTERM while a job runs and another waits: the waiting one is cancelled,
+// new uploads get UNAVAILABLE, health is NOT_SERVING, the running job
+// finishes well within the 20 s grace and the process exits 0. The log has
+// each job's queued / started / finished lines, in order around the signal.
+TEST_F(ServerMainJobs, SigtermLetsTheRunningJobFinishRefusesUploadsAndExitsZero) {
+  ServerProcess server({"--spool-dir", spool_, "--workers", "1", "--shutdown-grace", "20s"});
+  ASSERT_FALSE(server.address().empty()) << server.first_line() << server.Log();
+  // Every channel here ends before the exit is awaited: the server gives
+  // open connections up to 2 s to go away.
+  std::string a, b;
+  {
+    MeshsegClient client = MeshsegClient::Connect(server.address());
+    const absl::StatusOr<v1::UploadResponse> running = client.Upload(*part_path_);
+    ASSERT_TRUE(running.ok()) << running.status();
+    a = running->job_id();
+    ASSERT_TRUE(server.AwaitLog("event=job_started job=" + a, kTimeout)) << server.Log();
+    const absl::StatusOr<v1::UploadResponse> queued = client.Upload(small_path_);
+    ASSERT_TRUE(queued.ok()) << queued.status();
+    b = queued->job_id();
+  }
+  Watcher watch_a(server.address(), a);
+  Watcher watch_b(server.address(), b);
+  ASSERT_TRUE(watch_a.Open() && watch_b.Open());
+
+  const absl::Time sigterm = absl::Now();
+  server.Signal(SIGTERM);
+  ASSERT_TRUE(server.AwaitLog("event=shutdown_started", kTimeout)) << server.Log();
+  const absl::StatusOr<v1::UploadResponse> refused =
+      MeshsegClient::Connect(server.address()).Upload(small_path_);
+  EXPECT_EQ(refused.status().code(), absl::StatusCode::kUnavailable) << refused.status();
+  EXPECT_THAT(refused.status().message(), HasSubstr("shutting down"));
+  EXPECT_EQ(HealthStatus(server.address()), 2) << "NOT_SERVING while the job finishes";
+
+  const absl::StatusOr<v1::Job> job_b = watch_b.Job();
+  ASSERT_TRUE(job_b.ok()) << job_b.status();
+  EXPECT_EQ(job_b->state(), v1::JOB_STATE_CANCELLED);
+  EXPECT_THAT(job_b->error_message(), HasSubstr("shutting down"));
+  const absl::StatusOr<v1::Job> job_a = watch_a.Job();
+  ASSERT_TRUE(job_a.ok()) << job_a.status();
+  EXPECT_EQ(job_a->state(), v1::JOB_STATE_SUCCEEDED) << job_a->error_message();
+  EXPECT_EQ(job_a->face_count(), part_faces_);
+
+  EXPECT_EQ(server.AwaitExit(kTimeout), 0);
+  const absl::Duration stop_time = absl::Now() - sigterm;
+  EXPECT_LT(stop_time, absl::Seconds(15)) << "within the grace period";
+  RecordProperty("sigterm_to_exit_ms", static_cast<int>(absl::ToInt64Milliseconds(stop_time)));
+
+  const std::vector<std::string> log = LogLines(server.Log());
+  const int queued_a = LineOf(log, {"event=job_queued", "job=" + a, "file=test_piece.ply"});
+  const int started_a = LineOf(log, {"event=job_started", "job=" + a});
+  const int queued_b = LineOf(log, {"event=job_queued", "job=" + b, "file=box.off"});
+  const int signal = LineOf(log, {"event=signal", "signal=SIGTERM"});
+  const int shutdown = LineOf(log, {"event=shutdown_started", "grace=20s"});
+  const int rejected = LineOf(log, {"event=upload_rejected", "code=UNAVAILABLE"});
+  const int finished_a = LineOf(log, {"event=job_finished", "job=" + a, "state=SUCCEEDED",
+                                      absl::StrCat("faces=", part_faces_)});
+  const int done = LineOf(log, {"event=shutdown_done"});
+  const std::string all = server.Log();
+  // job_queued is logged after the push, so a free worker may log
+  // job_started first: only their presence is checked.
+  EXPECT_GE(queued_a, 0) << all;
+  EXPECT_GE(started_a, 0) << all;
+  EXPECT_GT(queued_b, started_a) << all;
+  EXPECT_GT(signal, queued_b) << all;
+  EXPECT_GT(shutdown, signal) << all;
+  EXPECT_GT(rejected, shutdown) << all;
+  EXPECT_GT(finished_a, signal) << "the job was still running at SIGTERM\n" << all;
+  EXPECT_GT(done, finished_a) << all;
+  EXPECT_EQ(LineOf(log, {"event=job_started", "job=" + b}), -1) << "the queued job never ran";
+  EXPECT_THAT(all, Not(HasSubstr("shutdown_cancelling_running_jobs")));
+}
+
+// With a 100 ms grace the running job is cancelled: its watcher sees
+// CANCELLED, the log says so, the process exits 0 promptly and the job
+// leaves nothing in the spool.
+TEST_F(ServerMainJobs, SigtermCancelsTheRunningJobAfterTheGracePeriod) {
+  ServerProcess server({"--spool-dir", spool_, "--workers", "1", "--shutdown-grace", "100ms"});
+  ASSERT_FALSE(server.address().empty()) << server.first_line() << server.Log();
+  const absl::StatusOr<v1::UploadResponse> running =
+      MeshsegClient::Connect(server.address()).Upload(*part_path_);
+  ASSERT_TRUE(running.ok()) << running.status();
+  const std::string a = running->job_id();
+  ASSERT_TRUE(server.AwaitLog("event=job_started job=" + a, kTimeout)) << server.Log();
+  Watcher watch_a(server.address(), a);
+  ASSERT_TRUE(watch_a.Open());
+
+  const absl::Time sigterm = absl::Now();
+  server.Signal(SIGTERM);
+  const absl::StatusOr<v1::Job> job_a = watch_a.Job();
+  ASSERT_TRUE(job_a.ok()) << job_a.status();
+  EXPECT_EQ(job_a->state(), v1::JOB_STATE_CANCELLED);
+  EXPECT_EQ(server.AwaitExit(kTimeout), 0);
+  const absl::Duration stop_time = absl::Now() - sigterm;
+  EXPECT_LT(stop_time, absl::Seconds(5)) << "cancelled soon after the grace period";
+  RecordProperty("sigterm_to_exit_ms", static_cast<int>(absl::ToInt64Milliseconds(stop_time)));
+
+  const std::vector<std::string> log = LogLines(server.Log());
+  const std::string all = server.Log();
+  const int signal = LineOf(log, {"event=signal", "signal=SIGTERM"});
+  const int cancelling = LineOf(log, {"event=shutdown_cancelling_running_jobs"});
+  const int finished_a = LineOf(log, {"event=job_finished", "job=" + a, "state=CANCELLED"});
+  const int done = LineOf(log, {"event=shutdown_done"});
+  EXPECT_GE(LineOf(log, {"event=job_queued", "job=" + a}), 0) << all;
+  EXPECT_GE(LineOf(log, {"event=job_started", "job=" + a}), 0) << all;
+  EXPECT_GT(cancelling, signal) << all;
+  EXPECT_GT(finished_a, cancelling) << all;
+  EXPECT_GT(done, finished_a) << all;
+  std::vector<std::string> left;
+  for (const auto& entry : std::filesystem::recursive_directory_iterator(spool_)) {
+    if (entry.is_regular_file()) left.push_back(entry.path().string());
+  }
+  EXPECT_THAT(left, ::testing::IsEmpty()) << "no upload or partial result left behind";
 }
 
 }  // namespace
+}  // namespace meshseg

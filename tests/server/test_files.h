@@ -3,9 +3,12 @@
 #ifndef MESHSEG_TESTS_SERVER_TEST_FILES_H_
 #define MESHSEG_TESTS_SERVER_TEST_FILES_H_
 
+#include <algorithm>
 #include <array>
+#include <bit>
 #include <cstdint>
 #include <cstdio>
+#include <cstring>
 #include <fstream>
 #include <string>
 #include <vector>
@@ -97,6 +100,33 @@ inline void WritePlyBinary(const TestMesh& m, const std::string& path) {
     const unsigned char three = 3;
     o.write(reinterpret_cast<const char*>(&three), 1);
     o.write(reinterpret_cast<const char*>(t.data()), 12);
+  }
+}
+
+// Writes `value` most significant byte first.
+template <typename T>
+void WriteBigEndian(std::ostream& o, T value) {
+  static_assert(std::endian::native == std::endian::little,
+                "the swap assumes a little-endian host");
+  char bytes[sizeof(T)];
+  std::memcpy(bytes, &value, sizeof(T));
+  std::reverse(bytes, bytes + sizeof(T));
+  o.write(bytes, sizeof(T));
+}
+
+// Binary big-endian PLY with double positions (the same values as the ASCII
+// PLY at 17 digits, so both read back identical) and int indices.
+inline void WritePlyBinaryBigEndian(const TestMesh& m, const std::string& path) {
+  std::ofstream o(path, std::ios::binary);
+  o << "ply\nformat binary_big_endian 1.0\nelement vertex " << m.v.size()
+    << "\nproperty double x\nproperty double y\nproperty double z\nelement face " << m.f.size()
+    << "\nproperty list uchar int vertex_indices\nend_header\n";
+  for (const auto& p : m.v) {
+    for (int k = 0; k < 3; ++k) WriteBigEndian(o, p[k]);
+  }
+  for (const auto& t : m.f) {
+    o.put(3);
+    for (int c : t) WriteBigEndian(o, static_cast<int32_t>(c));
   }
 }
 
