@@ -101,6 +101,8 @@ FitResult FitTorus(const FitInput& input, const FitParams& params = {});
 // their centroid); linear. Needs normals and >= 10 points. See FitParams
 // for the refinement. Coefficients scaled so mean |∇f| over the points = 1.
 FitResult FitQuadric(const FitInput& input, const FitParams& params = {});
+// The fit of `type` above (kFreeform: the quadric).
+FitResult FitOfType(SurfaceType type, const FitInput& input, const FitParams& params = {});
 
 // The local quadratic height function of seed 000 §2:
 // h(u, w) = a0 u² + a1 w² + a2 u w + a3 u + a4 w + a5 in the frame

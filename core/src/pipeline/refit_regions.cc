@@ -8,19 +8,6 @@
 namespace meshseg::pipeline_internal {
 namespace {
 
-FitResult FitOfType(SurfaceType type, const FitInput& input) {
-  switch (type) {
-    case SurfaceType::kPlane: return FitPlane(input);
-    case SurfaceType::kCylinder: return FitCylinder(input);
-    case SurfaceType::kCone: return FitCone(input);
-    case SurfaceType::kSphere: return FitSphere(input);
-    case SurfaceType::kTorus: return FitTorus(input);
-    case SurfaceType::kQuadric:
-    case SurfaceType::kFreeform: return FitQuadric(input);
-  }
-  return FitQuadric(input);
-}
-
 struct Distances {
   double rms = 0.0;
   double max = 0.0;

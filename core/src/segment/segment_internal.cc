@@ -26,17 +26,7 @@ FitResult FitType(const SegmentContext& c, SurfaceType type, std::span<const int
     normals.push_back(c.curvature->smooth_normal[v]);
     weights.push_back(c.vertex_area[v] + 1e-12);
   }
-  const FitInput input{.points = points, .normals = normals, .weights = weights};
-  switch (type) {
-    case SurfaceType::kPlane: return FitPlane(input);
-    case SurfaceType::kCylinder: return FitCylinder(input);
-    case SurfaceType::kCone: return FitCone(input);
-    case SurfaceType::kSphere: return FitSphere(input);
-    case SurfaceType::kTorus: return FitTorus(input);
-    case SurfaceType::kQuadric:
-    case SurfaceType::kFreeform: return FitQuadric(input);
-  }
-  return FitQuadric(input);
+  return FitOfType(type, {.points = points, .normals = normals, .weights = weights});
 }
 
 double FitFraction(const SegmentContext& c, const Surface& surface, std::span<const int> vertices,

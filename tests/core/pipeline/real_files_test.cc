@@ -1,7 +1,6 @@
 // RunPipeline() on the real meshes of shared/data, labels per input face:
 // the ABC CAD part against its per-face ground truth (.yml), and the CAD
 // exports that go through the remesh path (meshseg/remesh.h).
-#include <cctype>
 #include <cstdio>
 #include <fstream>
 #include <map>
@@ -12,14 +11,12 @@
 
 #include <gtest/gtest.h>
 
+#include "shared_data_files.h"
+
 #include "meshseg/pipeline.h"
 
 namespace meshseg {
 namespace {
-
-std::string Data(const std::string& name) {
-  return std::string(MESHSEG_SHARED_DATA_DIR) + "/" + name;
-}
 
 // One B-rep patch of an ABC features file.
 struct Patch {
@@ -84,9 +81,10 @@ constexpr double kRadiusTolerance = 0.01;  // relative, issue 3
 // times the cylinders' radii, so their vertices are all sharp and the part
 // comes out as 4 regions. Enabled once the curvature stage handles it.
 TEST(SegmentReal, DISABLED_AbcPartPatchesGetRegionsOfTheirType) {
-  const std::vector<Patch> patches = ReadPatches(Data("abc_00007974_5.yml"));
+  const std::vector<Patch> patches = ReadPatches(testing::SharedData("abc_00007974_5.yml"));
   ASSERT_EQ(patches.size(), 24u);  // SOURCES.md: 14 planes, 10 cylinders
-  const absl::StatusOr<PipelineResult> seg = RunPipeline(Data("abc_00007974_5.obj"));
+  const absl::StatusOr<PipelineResult> seg =
+      RunPipeline(testing::SharedData("abc_00007974_5.obj"));
   ASSERT_TRUE(seg.ok()) << seg.status();
   for (std::size_t i = 0; i < patches.size(); ++i) {
     const Patch& p = patches[i];
@@ -131,7 +129,7 @@ void ExpectExactCylinders(const PipelineResult& result) {
 class RealFile : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(RealFile, LabelsEveryInputFace) {
-  const absl::StatusOr<PipelineResult> result = RunPipeline(Data(GetParam()));
+  const absl::StatusOr<PipelineResult> result = RunPipeline(testing::SharedData(GetParam()));
   ASSERT_TRUE(result.ok()) << result.status();
   ASSERT_EQ(result->face_labels.size(), result->mesh.input_face_count);
   int64_t unlabelled = 0;
@@ -157,25 +155,14 @@ TEST_P(RealFile, LabelsEveryInputFace) {
 
 // The CAD exports of shared/data with long thin triangles: each is remeshed.
 TEST_P(RealFile, CadExportsAreRemeshed) {
-  const absl::StatusOr<Mesh> mesh = ReadMesh(Data(GetParam()));
+  const absl::StatusOr<Mesh> mesh = ReadMesh(testing::SharedData(GetParam()));
   ASSERT_TRUE(mesh.ok()) << mesh.status();
   const bool cad_export = GetParam() == "plate_holes.stl" || GetParam() == "tray_bottom_1002.stl" ||
                           GetParam() == "abc_00016513_gt.ply";
   EXPECT_EQ(Assess(*mesh).cad_like, cad_export);
 }
 
-INSTANTIATE_TEST_SUITE_P(Files, RealFile,
-                         ::testing::Values("fandisk.off", "fandisk_noisy0.1.off",
-                                           "abc_00007974_5.obj", "plate_holes.stl", "torus.stl",
-                                           "tray_bottom_1002.stl", "bunny_zipper_res2.ply",
-                                           "broken_bullet_gt.obj", "abc_00016513_gt.ply"),
-                         [](const auto& info) {
-                           std::string n = info.param;
-                           for (char& ch : n) {
-                             if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
-                           }
-                           return n;
-                         });
+INSTANTIATE_TEST_SUITE_P(Files, RealFile, testing::SharedMeshFiles(), testing::FileTestName);
 
 }  // namespace
 }  // namespace meshseg

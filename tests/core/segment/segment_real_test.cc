@@ -1,12 +1,13 @@
 // Segment() on the real meshes of shared/data as read (no remeshing): every
 // mesh without error. The ABC part against its ground truth, and CAD inputs
 // through the remesh path, are in tests/core/pipeline/real_files_test.cc.
-#include <cctype>
 #include <cstdio>
 #include <map>
 #include <string>
 
 #include <gtest/gtest.h>
+
+#include "shared_data_files.h"
 
 #include "meshseg/curvature.h"
 #include "meshseg/mesh.h"
@@ -15,16 +16,12 @@
 namespace meshseg {
 namespace {
 
-std::string Data(const std::string& name) {
-  return std::string(MESHSEG_SHARED_DATA_DIR) + "/" + name;
-}
-
 class SegmentRealFile : public ::testing::TestWithParam<std::string> {};
 
 // Every valid face gets a region; prints the region count and types (the
 // numbers for the note).
 TEST_P(SegmentRealFile, LabelsEveryFace) {
-  const absl::StatusOr<Mesh> mesh = ReadMesh(Data(GetParam()));
+  const absl::StatusOr<Mesh> mesh = ReadMesh(testing::SharedData(GetParam()));
   ASSERT_TRUE(mesh.ok()) << mesh.status();
   const auto field = EstimateCurvature(*mesh);
   ASSERT_TRUE(field.ok()) << field.status();
@@ -47,18 +44,7 @@ TEST_P(SegmentRealFile, LabelsEveryFace) {
   EXPECT_FALSE(seg->regions.empty());
 }
 
-INSTANTIATE_TEST_SUITE_P(Files, SegmentRealFile,
-                         ::testing::Values("fandisk.off", "fandisk_noisy0.1.off",
-                                           "abc_00007974_5.obj", "plate_holes.stl", "torus.stl",
-                                           "tray_bottom_1002.stl", "bunny_zipper_res2.ply",
-                                           "broken_bullet_gt.obj", "abc_00016513_gt.ply"),
-                         [](const auto& info) {
-                           std::string n = info.param;
-                           for (char& ch : n) {
-                             if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
-                           }
-                           return n;
-                         });
+INSTANTIATE_TEST_SUITE_P(Files, SegmentRealFile, testing::SharedMeshFiles(), testing::FileTestName);
 
 }  // namespace
 }  // namespace meshseg
