@@ -37,6 +37,10 @@ void ProgressPrinter::Event(const v1::JobEvent& event) {
     Update("queued", 0.0);
   } else if (job.state() == v1::JOB_STATE_RUNNING && !job.stage().empty()) {
     Update(job.stage(), job.fraction());
+  } else if (job.state() == v1::JOB_STATE_SUCCEEDED) {
+    // The watch stream reports the latest state only and may skip the last
+    // running step: close the bar at 100 %.
+    Update(stage_.empty() ? std::string("done") : stage_, 1.0);
   }
 }
 

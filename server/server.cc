@@ -117,7 +117,10 @@ void Server::Shutdown() {
     p.grpc_server->GetHealthCheckService()->SetServingStatus(false);
     p.service->StopAccepting();
     for (const std::string& id : p.queue->Close()) {
-      if (p.store->Cancel(id, "server shutting down").ok()) p.spool->RemoveJob(id);
+      if (p.store->Cancel(id, "server shutting down").ok()) {
+        p.spool->RemoveJob(id);
+        Log("job_cancelled", {{"job", id}, {"reason", "server shutting down"}});
+      }
     }
     if (!p.store->AwaitIdle(absl::Now() + p.options.shutdown_grace)) {
       Log("shutdown_cancelling_running_jobs");

@@ -56,16 +56,18 @@ grpc::Status SegmentationService::Upload(grpc::ServerContext* context,
 
     store_.Add(job_id, std::filesystem::path(path).filename().string(), header.total_size(),
                path, std::move(params));
-    if (absl::Status pushed = queue_.Push(job_id); !pushed.ok()) {
-      store_.Remove(job_id);
-      return pushed;
-    }
-    response->set_job_id(job_id);
-    response->set_queue_position(std::max(0, queue_.Position(job_id)));
+    // Logged before the push: a free worker may log job_started at once.
     Log("job_queued", {{"job", job_id},
                        {"file", path.substr(path.find_last_of('/') + 1)},
                        {"bytes", absl::StrCat(header.total_size())},
                        {"peer", context->peer()}});
+    if (absl::Status pushed = queue_.Push(job_id); !pushed.ok()) {
+      store_.Remove(job_id);
+      Log("job_dropped", {{"job", job_id}, {"error", std::string(pushed.message())}});
+      return pushed;
+    }
+    response->set_job_id(job_id);
+    response->set_queue_position(std::max(0, queue_.Position(job_id)));
     return absl::OkStatus();
   };
 
