@@ -127,6 +127,18 @@ TEST(ReadStl, RejectsEmptySolid) {
   EXPECT_THAT(testing_files::Message(mesh.status()), HasSubstr("empty_solid.stl"));
 }
 
+TEST(ReadStl, RejectsBinaryWhoseTrianglesAreAllDegenerate) {
+  // Two triangles: three collinear corners, and one corner repeated (which
+  // welding turns into a repeated index).
+  const std::vector<testing_files::Tri> tris = {
+      {{{0.0f, 0.0f, 0.0f}, {1.0f, 0.0f, 0.0f}, {2.0f, 0.0f, 0.0f}}},
+      {{{0.0f, 0.0f, 0.0f}, {0.0f, 0.0f, 0.0f}, {0.0f, 1.0f, 0.0f}}}};
+  const absl::StatusOr<Mesh> mesh = ReadMesh(WriteTemp("all_degenerate.stl", BinaryStl(tris)));
+  ASSERT_EQ(mesh.status().code(), absl::StatusCode::kInvalidArgument) << mesh.status();
+  EXPECT_THAT(testing_files::Message(mesh.status()), HasSubstr("all_degenerate.stl"));
+  EXPECT_THAT(testing_files::Message(mesh.status()), HasSubstr("all 2 faces dropped (2 degenerate"));
+}
+
 TEST(ReadStl, RejectsShortBinary) {
   const absl::StatusOr<Mesh> mesh = ReadMesh(WriteTemp("short.stl", std::string(40, '\0')));
   ASSERT_EQ(mesh.status().code(), absl::StatusCode::kInvalidArgument) << mesh.status();
