@@ -19,6 +19,7 @@ absl::Status RunResult(const Argv& argv) {
   MESHSEG_ASSIGN_OR_RETURN(const std::string json, ResultJson(result));
   MESHSEG_RETURN_IF_ERROR(WriteTextFile(*out, json));
   std::fputs(RegionTable(result).c_str(), stdout);
+  std::fputs(TopologySummary(result).c_str(), stdout);
   std::printf("wrote %s\n", out->c_str());
   return absl::OkStatus();
 }

@@ -85,6 +85,7 @@ absl::Status RunSegment(const Argv& argv) {
     MESHSEG_RETURN_IF_ERROR(WriteColored(input, *result, *ply));
   }
   std::fputs(RegionTable(*result).c_str(), stdout);
+  std::fputs(TopologySummary(*result).c_str(), stdout);
   std::printf("wrote %s\n", out->c_str());
   return absl::OkStatus();
 }

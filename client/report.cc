@@ -1,7 +1,11 @@
 #include "client/report.h"
 
+#include <map>
+
+#include "absl/strings/ascii.h"
 #include "absl/strings/str_cat.h"
 #include "absl/strings/str_format.h"
+#include "absl/strings/str_join.h"
 #include "absl/strings/strip.h"
 
 namespace meshseg::cli {
@@ -31,7 +35,54 @@ std::string KeyParameters(const v1::Region& r) {
   }
 }
 
+// "LOOP_KIND_OUTER" -> "outer".
+std::string EnumWord(const std::string& name, absl::string_view prefix) {
+  return absl::AsciiStrToLower(absl::StripPrefix(name, prefix));
+}
+
+std::string FeatureLine(const v1::Feature& f) {
+  std::string line = absl::StrFormat(
+      "  %-28s regions %s", EnumWord(v1::FeatureType_Name(f.type()), "FEATURE_TYPE_"),
+      absl::StrJoin(f.regions(), ","));
+  switch (f.type()) {
+    case v1::FEATURE_TYPE_LINEAR_EXTRUSION:
+      absl::StrAppend(&line, "  direction=", Vec(f.direction()));
+      break;
+    case v1::FEATURE_TYPE_REVOLUTION:
+      absl::StrAppend(&line, "  axis=", Vec(f.direction()), " through ", Vec(f.point()));
+      break;
+    default:
+      absl::StrAppendFormat(&line, "  r=%.4g %s", f.radius(), f.convex() ? "convex" : "concave");
+  }
+  return line + "\n";
+}
+
 }  // namespace
+
+std::string TopologySummary(const v1::SegmentationResult& result) {
+  std::map<std::string, int> geometry, loops;
+  int sharp = 0;
+  for (const v1::BoundaryCurve& c : result.curves()) {
+    ++geometry[EnumWord(v1::CurveGeometryType_Name(c.geometry().type()), "CURVE_GEOMETRY_TYPE_")];
+    sharp += c.sharp() ? 1 : 0;
+  }
+  for (const v1::Loop& l : result.loops()) {
+    ++loops[EnumWord(v1::LoopKind_Name(l.kind()), "LOOP_KIND_")];
+  }
+  const auto counts = [](const std::map<std::string, int>& m) {
+    return absl::StrJoin(m, ", ", [](std::string* out, const auto& e) {
+      absl::StrAppend(out, e.second, " ", e.first);
+    });
+  };
+  std::string out = absl::StrFormat(
+      "boundaries: %d curves (%s; %d sharp, %d smooth), %d loops (%s), %d corners, "
+      "%d adjacent region pairs\n",
+      result.curves_size(), counts(geometry), sharp, result.curves_size() - sharp,
+      result.loops_size(), counts(loops), result.corners_size(), result.adjacency_size());
+  absl::StrAppend(&out, "features: ", result.features_size(), "\n");
+  for (const v1::Feature& f : result.features()) absl::StrAppend(&out, FeatureLine(f));
+  return out;
+}
 
 std::string RegionTable(const v1::SegmentationResult& result) {
   int64_t labelled = 0;

@@ -14,6 +14,10 @@ namespace meshseg::cli {
 // Returns a summary line and a table: id, type, faces, key parameters, rms.
 std::string RegionTable(const v1::SegmentationResult& result);
 
+// Returns two lines counting curves (by geometry, sharp/smooth), loops (by
+// kind), corners and adjacent region pairs, then one line per feature.
+std::string TopologySummary(const v1::SegmentationResult& result);
+
 // Returns one line: id, state, file, progress or error.
 std::string JobLine(const v1::Job& job);
 

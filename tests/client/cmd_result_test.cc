@@ -49,6 +49,11 @@ TEST(MeshsegResult, WritesTheSegmentJsonByteForByte) {
   EXPECT_EQ(r.err, "");
   EXPECT_THAT(r.out, HasSubstr("regions cover"));
   EXPECT_THAT(r.out, HasSubstr("wrote " + out));
+  // The boundary and feature summary after the table (issue 5 item 5).
+  EXPECT_THAT(r.out, ::testing::ContainsRegex(
+                         "boundaries: [1-9][0-9]* curves \\([^)]*line[^)]*\\), [1-9][0-9]* loops"));
+  EXPECT_THAT(r.out, HasSubstr("fillet_torus_cylinder_plane  regions "));
+  EXPECT_THAT(r.out, HasSubstr("revolution "));
   const std::string json = ReadText(out);
   const std::string expected = ReadText(dir + "/offline.json");
   EXPECT_GT(testing_cli::ParseJsonObject(json).fields().at("regions").list_value().values_size(), 3)
