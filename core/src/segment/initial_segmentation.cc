@@ -61,12 +61,17 @@ void GrowAndType(const SegmentContext& c, int id, std::vector<int>* labels,
     GrowTyped(c, *plane, id, labels, &region);
     return;
   }
+  // DecideCurvedType falls back to the quadric when no analytic type fits
+  // any vertex; here that is no answer yet (the quadric may have grown over
+  // two planes and their fillet, a product of planes fitting all three), so
+  // it goes on to the seed's own analytic trials below.
   TypedFit typed = DecideCurvedType(c, region.vertices, c.tolerance);
-  if (typed.fraction > c.alpha) {
+  const bool analytic = typed.type != SurfaceType::kQuadric;
+  if (analytic && typed.fraction > c.alpha) {
     GrowTyped(c, typed, id, labels, &region);
     return;
   }
-  if (typed.fraction >= kTrimFraction) {
+  if (analytic && typed.fraction >= kTrimFraction) {
     std::erase_if(region.vertices, [&](int v) {
       if (Fits(c, v, ProjectVertex(c, typed.fit.surface, v), c.tolerance)) return false;
       (*labels)[v] = -1;
