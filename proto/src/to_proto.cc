@@ -7,12 +7,6 @@
 namespace meshseg {
 namespace {
 
-void SetVec3(const Eigen::Vector3d& v, v1::Vec3* out) {
-  out->set_x(v.x());
-  out->set_y(v.y());
-  out->set_z(v.z());
-}
-
 v1::SurfaceType ToProto(SurfaceType type) {
   switch (type) {
     case SurfaceType::kPlane: return v1::SURFACE_TYPE_PLANE;

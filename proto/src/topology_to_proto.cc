@@ -2,13 +2,14 @@
 #include "proto/src/topology_to_proto.h"
 
 namespace meshseg {
-namespace {
 
 void SetVec3(const Eigen::Vector3d& v, v1::Vec3* out) {
   out->set_x(v.x());
   out->set_y(v.y());
   out->set_z(v.z());
 }
+
+namespace {
 
 v1::CurveGeometryType ToProto(CurveGeometryType type) {
   switch (type) {

@@ -10,6 +10,9 @@
 
 namespace meshseg {
 
+// Copies an Eigen vector into a Vec3 (shared with to_proto.cc).
+void SetVec3(const Eigen::Vector3d& v, v1::Vec3* out);
+
 // Appends the curves, loops, corners, adjacency arcs and features to `out`
 // (ids and order as in `topology` and `features`).
 void SetTopology(const Topology& topology, std::span<const Feature> features,
