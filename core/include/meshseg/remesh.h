@@ -76,8 +76,8 @@ TessellationShape Assess(const Mesh& mesh, const RemeshParams& params = {});
 // Returns an isotropic remesh of `mesh` with edges of about
 // `target_edge_length` (> 0): near-equilateral triangles whose vertices lie on
 // the input surface; edges sharper than params.feature_angle_deg are kept as
-// polylines. face_of_input of the result is the identity (its faces are not
-// the input's; map labels back by position). Reports progress as "remesh".
+// polylines. face_of_input of the result indexes the remesh's own triangles,
+// not the input's faces: map labels back by position. Reports progress as "remesh".
 // Errors: INVALID_ARGUMENT for a non-positive target or a mesh without faces;
 // INTERNAL if the remeshed surface cannot be rebuilt; CANCELLED on stop.
 absl::StatusOr<Mesh> IsotropicRemesh(const Mesh& mesh, double target_edge_length,
