@@ -12,8 +12,10 @@
 namespace meshseg::reconstruct_internal {
 
 // Moves the vertices with `selected` set, `iterations` times by
-// v ← v + λU then v ← v − λU' (U the umbrella vector: mean of the
-// neighbours minus v); the other vertices stay where they are.
+// v ← v + λU then v ← v − λU' (U the umbrella vector: the mean of the
+// neighbours weighted by 1 / edge length, minus v; Fujiwara 1995, as
+// Desbrun et al. 1999 for irregular meshes); the other vertices stay where
+// they are.
 void SmoothSelected(const std::vector<std::array<int, 3>>& triangles,
                     const std::vector<uint8_t>& selected, double lambda, int iterations,
                     std::vector<Eigen::Vector3d>* vertices);
