@@ -9,6 +9,7 @@
 #include "client/report.h"
 #include "meshseg/mesh.h"
 #include "meshseg/pipeline.h"
+#include "meshseg/point_cloud.h"
 #include "meshseg/proto/convert.h"
 #include "meshseg/proto/result_json.h"
 #include "meshseg/status_macros.h"
@@ -36,10 +37,22 @@ absl::StatusOr<v1::SegmentationResult> SegmentOnServer(const Args& args, const s
   return client.Segment(path, options, [&](const v1::JobEvent& e) { progress.Event(e); });
 }
 
-// Writes the input mesh coloured by region; labels are per input face.
-absl::Status WriteColored(const std::string& input, const v1::SegmentationResult& result,
-                          const std::string& out) {
-  MESHSEG_ASSIGN_OR_RETURN(const Mesh mesh, ReadMesh(input));
+// Writes the input coloured by region: a mesh with one colour per input face;
+// a point cloud (whose result has point labels) as its points, one colour per
+// point, as the reconstructed mesh is not part of the result.
+absl::Status WriteColored(const std::string& input, const std::optional<FileFormat>& format,
+                          const v1::SegmentationResult& result, const std::string& out) {
+  if (result.point_labels_size() > 0) {
+    MESHSEG_ASSIGN_OR_RETURN(const PointCloud cloud, ReadPointCloud(input, {.format = format}));
+    const std::vector<int> labels(result.point_labels().begin(), result.point_labels().end());
+    if (labels.size() != cloud.points.size()) {
+      return absl::InternalError(absl::StrCat("colored ply: result has ", labels.size(),
+                                              " point labels, input has ", cloud.points.size(),
+                                              " points"));
+    }
+    return WriteColoredPointPly(cloud, labels, out);
+  }
+  MESHSEG_ASSIGN_OR_RETURN(const Mesh mesh, ReadMesh(input, {.format = format}));
   if (mesh.face_of_input.size() != static_cast<std::size_t>(result.face_labels_size())) {
     return absl::InternalError(absl::StrCat("colored ply: result has ", result.face_labels_size(),
                                             " face labels, input has ",
@@ -73,7 +86,8 @@ absl::Status RunSegment(const Argv& argv) {
   if (angle) options.segment.set_angle_tolerance_deg(*angle);
   // Same validation on both paths (the server repeats it).
   MESHSEG_RETURN_IF_ERROR(FromProto(options.segment).status());
-  MESHSEG_RETURN_IF_ERROR(FormatFromHint(options.format_hint).status());
+  MESHSEG_ASSIGN_OR_RETURN(const std::optional<FileFormat> format,
+                           FormatFromHint(options.format_hint));
 
   absl::StatusOr<v1::SegmentationResult> result =
       args.Has("--server") ? SegmentOnServer(args, input, options)
@@ -82,7 +96,7 @@ absl::Status RunSegment(const Argv& argv) {
   MESHSEG_ASSIGN_OR_RETURN(const std::string json, ResultJson(*result));
   MESHSEG_RETURN_IF_ERROR(WriteTextFile(*out, json));
   if (const std::optional<std::string> ply = args.Value("--colored-ply")) {
-    MESHSEG_RETURN_IF_ERROR(WriteColored(input, *result, *ply));
+    MESHSEG_RETURN_IF_ERROR(WriteColored(input, format, *result, *ply));
   }
   std::fputs(RegionTable(*result).c_str(), stdout);
   std::fputs(TopologySummary(*result).c_str(), stdout);

@@ -1,7 +1,13 @@
 // meshseg segment: offline writes the result JSON with one label per input
 // face; with --server the same bytes come from a real server on 127.0.0.1;
 // point clouds work on both paths; errors are one line and exit code 1.
+#include <array>
+#include <cstdint>
 #include <filesystem>
+#include <map>
+#include <set>
+#include <string>
+#include <vector>
 
 #include <gmock/gmock.h>
 #include <google/protobuf/util/json_util.h>
@@ -16,6 +22,7 @@ namespace meshseg {
 namespace {
 
 using ::testing::HasSubstr;
+using ::testing::Not;
 using ::testing::SizeIs;
 using testing_cli::Lines;
 using testing_cli::RunCli;
@@ -97,6 +104,76 @@ TEST(MeshsegSegment, ServerPathWritesTheOfflineBytes) {
     EXPECT_FALSE(a.empty());
     EXPECT_EQ(ReadText(input + ".server.json"), a) << name;
   }
+}
+
+// The colours of a binary PLY written by meshseg: `count` elements of
+// `stride` bytes, starting `skip` bytes after the header (past the vertices
+// when they are faces), the last 3 bytes of each the colour.
+std::vector<std::array<uint8_t, 3>> PlyColors(const std::string& bytes, size_t skip,
+                                              int64_t count, size_t stride) {
+  const std::string end = "end_header\n";
+  const size_t start = bytes.find(end) + end.size() + skip;
+  EXPECT_EQ(bytes.size(), start + count * stride) << "nothing after the colored elements";
+  std::vector<std::array<uint8_t, 3>> colors(count);
+  for (int64_t i = 0; i < count && start + (i + 1) * stride <= bytes.size(); ++i) {
+    for (int c = 0; c < 3; ++c) colors[i][c] = bytes[start + (i + 1) * stride - 3 + c];
+  }
+  return colors;
+}
+
+// Labels and colours correspond one to one: equal labels, equal colours;
+// different labels, different colours; -1 grey.
+void ExpectColorsFollowLabels(const std::vector<int>& labels,
+                              const std::vector<std::array<uint8_t, 3>>& colors) {
+  ASSERT_EQ(labels.size(), colors.size());
+  std::map<int, std::array<uint8_t, 3>> color_of;
+  std::set<std::array<uint8_t, 3>> distinct;
+  for (size_t i = 0; i < labels.size(); ++i) {
+    if (labels[i] < 0) {
+      EXPECT_EQ(colors[i], (std::array<uint8_t, 3>{128, 128, 128})) << i;
+      continue;
+    }
+    const auto [it, added] = color_of.emplace(labels[i], colors[i]);
+    if (added) distinct.insert(colors[i]);
+    EXPECT_EQ(it->second, colors[i]) << "element " << i << ", label " << labels[i];
+  }
+  EXPECT_EQ(distinct.size(), color_of.size()) << "one colour per label";
+}
+
+// --colored-ply colours a mesh by face; a point cloud (whose mesh is
+// reconstructed and not in the result) by point, the outliers grey.
+TEST(MeshsegSegment, ColoredPlyColoursTheFacesOfAMeshAndThePointsOfACloud) {
+  const std::string dir = FreshDir("files");
+  const testing_files::TestMesh box = testing_files::SplitBox(4, {2.0, 1.0, 0.5});
+  testing_files::WriteOff(box, dir + "/box.off");
+  testing_files::TestMesh cloud = testing_files::SplitBox(16, {2.0, 1.5, 1.0});
+  cloud.v.emplace_back(9.0, 9.0, 9.0);  // far outlier: label -1
+  testing_files::WriteXyz(cloud, dir + "/cloud.xyz");
+
+  testing_cli::CliRun r = RunCli({"segment", dir + "/box.off", "-o", dir + "/box.json",
+                                  "--colored-ply", dir + "/box.ply"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  v1::SegmentationResult result = ParseResult(ReadText(dir + "/box.json"));
+  ASSERT_EQ(result.face_labels_size(), static_cast<int>(box.f.size()));
+  const std::string mesh_ply = ReadText(dir + "/box.ply");
+  EXPECT_THAT(mesh_ply, HasSubstr("element face " + std::to_string(box.f.size()) + "\n"));
+  // Vertices: 3 doubles; faces: 1 count byte, 3 int32 indices, 3 colour bytes.
+  ExpectColorsFollowLabels(
+      {result.face_labels().begin(), result.face_labels().end()},
+      PlyColors(mesh_ply, box.v.size() * 24, static_cast<int64_t>(box.f.size()), 16));
+
+  r = RunCli({"segment", dir + "/cloud.xyz", "-o", dir + "/cloud.json", "--colored-ply",
+              dir + "/cloud.ply"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  result = ParseResult(ReadText(dir + "/cloud.json"));
+  ASSERT_EQ(result.point_labels_size(), static_cast<int>(cloud.v.size()));
+  EXPECT_EQ(result.point_labels(cloud.v.size() - 1), -1) << "the outlier";
+  const std::string cloud_ply = ReadText(dir + "/cloud.ply");
+  EXPECT_THAT(cloud_ply, HasSubstr("element vertex " + std::to_string(cloud.v.size()) + "\n"));
+  EXPECT_THAT(cloud_ply, Not(HasSubstr("element face")));
+  // Per point: 3 doubles, 3 colour bytes.
+  ExpectColorsFollowLabels({result.point_labels().begin(), result.point_labels().end()},
+                           PlyColors(cloud_ply, 0, static_cast<int64_t>(cloud.v.size()), 27));
 }
 
 TEST(MeshsegSegment, UnreachableServerExitsOneWithOneLine) {

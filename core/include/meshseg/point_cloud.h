@@ -35,6 +35,13 @@ absl::StatusOr<PointCloud> ReadPointCloud(const std::string& path,
 // Writes `cloud` as XYZ (with normals when it has them).
 absl::Status WritePointCloud(const PointCloud& cloud, const std::string& path);
 
+// Writes the points of `cloud` as a binary PLY with one colour per point:
+// points with the same label share a colour (the colours of WriteColoredPly),
+// label -1 (outliers, unlabelled) is grey. `point_labels` has one entry per
+// point. Errors: INVALID_ARGUMENT if the sizes differ; INTERNAL on write failure.
+absl::Status WriteColoredPointPly(const PointCloud& cloud, const std::vector<int>& point_labels,
+                                  const std::string& path);
+
 }  // namespace meshseg
 
 #endif  // MESHSEG_POINT_CLOUD_H_

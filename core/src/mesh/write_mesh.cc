@@ -1,4 +1,5 @@
-// Writers: binary little-endian PLY (optionally with face colours) and OFF.
+// Writers: binary little-endian PLY (optionally with face colours), OFF, and
+// points with colours as PLY.
 #include <array>
 #include <bit>
 #include <cctype>
@@ -9,6 +10,7 @@
 
 #include "absl/strings/str_cat.h"
 #include "meshseg/mesh.h"
+#include "meshseg/point_cloud.h"
 #include "mesh/source.h"
 
 namespace meshseg {
@@ -116,6 +118,25 @@ absl::Status WriteColoredPly(const TriMesh& mesh, const std::vector<int>& face_l
         " face labels for ", mesh.n_faces(), " faces"));
   }
   return WriteBytes(path, PlyBytes(mesh, &face_labels));
+}
+
+absl::Status WriteColoredPointPly(const PointCloud& cloud, const std::vector<int>& point_labels,
+                                  const std::string& path) {
+  if (point_labels.size() != cloud.points.size()) {
+    return absl::InvalidArgumentError(absl::StrCat(
+        "write_colored_ply: \"", mesh_internal::FileName(path), "\": ", point_labels.size(),
+        " point labels for ", cloud.points.size(), " points"));
+  }
+  std::string out = absl::StrCat(
+      "ply\nformat binary_little_endian 1.0\ncomment written by meshseg\nelement vertex ",
+      cloud.points.size(), "\nproperty double x\nproperty double y\nproperty double z\n",
+      "property uchar red\nproperty uchar green\nproperty uchar blue\nend_header\n");
+  out.reserve(out.size() + cloud.points.size() * 27);
+  for (size_t i = 0; i < cloud.points.size(); ++i) {
+    for (int c = 0; c < 3; ++c) Append<double>(out, cloud.points[i][c]);
+    for (uint8_t c : LabelColor(point_labels[i])) Append<uint8_t>(out, c);
+  }
+  return WriteBytes(path, out);
 }
 
 }  // namespace meshseg

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "meshseg/mesh.h"
+#include "meshseg/point_cloud.h"
 #include "temp_file.h"
 
 namespace meshseg {
@@ -107,6 +108,47 @@ TEST(WriteColoredPly, RejectsWrongLabelCount) {
       WriteColoredPly(mesh->tri, {1, 2}, testing_files::WriteTemp("labels.ply", ""));
   EXPECT_EQ(status.code(), absl::StatusCode::kInvalidArgument);
   EXPECT_THAT(Message(status), HasSubstr("2 face labels for 12 faces"));
+}
+
+// The coloured points read back as the same points (ReadPointCloud reads
+// PLY vertices), and the colours follow the labels.
+TEST(WriteColoredPointPly, WritesThePointsWithOneColourPerLabel) {
+  PointCloud cloud;
+  for (int i = 0; i < 5; ++i) cloud.points.emplace_back(i / 3.0, 1.0 - i / 7.0, 2.0 * i);
+  const std::vector<int> labels = {2, 2, 0, -1, 7};
+  const std::string path = testing_files::WriteTemp("points.ply", "");
+  ASSERT_TRUE(WriteColoredPointPly(cloud, labels, path).ok());
+  const absl::StatusOr<PointCloud> back = ReadPointCloud(path);
+  ASSERT_TRUE(back.ok()) << back.status();
+  EXPECT_EQ(back->points, cloud.points);
+  std::string bytes;
+  {
+    FILE* f = std::fopen(path.c_str(), "rb");
+    ASSERT_NE(f, nullptr);
+    char buffer[4096];
+    for (size_t n; (n = std::fread(buffer, 1, sizeof(buffer), f)) > 0;) bytes.append(buffer, n);
+    std::fclose(f);
+  }
+  ASSERT_GE(bytes.size(), 5u * 27);
+  std::vector<std::array<uint8_t, 3>> colors;
+  for (int i = 0; i < 5; ++i) {
+    const char* c = bytes.data() + bytes.size() - (5 - i) * 27 + 24;
+    colors.push_back({static_cast<uint8_t>(c[0]), static_cast<uint8_t>(c[1]),
+                      static_cast<uint8_t>(c[2])});
+  }
+  EXPECT_EQ(colors[0], colors[1]);
+  EXPECT_EQ(colors[3], (std::array<uint8_t, 3>{128, 128, 128}));
+  const std::set<std::array<uint8_t, 3>> distinct(colors.begin(), colors.end());
+  EXPECT_EQ(distinct.size(), 4u);  // labels 2, 0, 7 and grey
+}
+
+TEST(WriteColoredPointPly, RejectsWrongLabelCount) {
+  PointCloud cloud;
+  cloud.points.assign(3, Eigen::Vector3d::Zero());
+  const absl::Status status =
+      WriteColoredPointPly(cloud, {1}, testing_files::WriteTemp("points.ply", ""));
+  EXPECT_EQ(status.code(), absl::StatusCode::kInvalidArgument);
+  EXPECT_THAT(Message(status), HasSubstr("1 point labels for 3 points"));
 }
 
 }  // namespace
