@@ -33,21 +33,40 @@ Neighbors VertexNeighbors(const std::vector<std::array<int, 3>>& triangles, size
   return nb;
 }
 
+// Edges shorter than this many mean edge lengths weigh as if this long.
+// Measured on the hard clouds of the generated parts (fraction of vertices
+// within 0.5 spacing, test piece with normals): 0.05 → 0.976, 0.15 → 0.970,
+// 0.25 → 0.963, 0.5 → 0.957; and 1e-12 × l kept coincident vertices together
+// (ReadMesh then dropped their degenerate triangles).
+constexpr double kMinLengthInMeanEdges = 0.05;
+
+// Mean length of the surface's edges (each counted once per triangle side).
+double MeanEdgeLength(const std::vector<std::array<int, 3>>& triangles,
+                      const std::vector<Eigen::Vector3d>& vertices) {
+  double sum = 0.0;
+  for (const auto& t : triangles) {
+    for (int i = 0; i < 3; ++i) sum += (vertices[t[i]] - vertices[t[(i + 1) % 3]]).norm();
+  }
+  return triangles.empty() ? 0.0 : sum / (3.0 * triangles.size());
+}
+
 // The scale-dependent umbrella vector of v (Fujiwara weights 1/|e|): the
 // weighted mean of its neighbours minus v. The marching-tetrahedra surface
 // joins vertices a fraction of a point spacing apart with edges of several
 // spacings to the far side of a thin wall or round a sharp edge; with equal
 // weights those few long edges drag a flat face's vertex off it (up to 5
 // spacings measured on the hard clouds of the generated parts), with 1/|e|
-// they count in proportion to how near they are.
-Eigen::Vector3d Umbrella(const Neighbors& nb, const std::vector<Eigen::Vector3d>& vertices,
-                         int v) {
-  constexpr double kMinLength = 1e-12;  // coincident vertices (same-sign placement)
+// they count in proportion to how near they are. Edges shorter than
+// `min_length` weigh as if that long: vertices placed on the same tet vertex
+// start coincident, and an unbounded weight would keep them so (their
+// triangles degenerate).
+Eigen::Vector3d Umbrella(const Neighbors& nb, const std::vector<Eigen::Vector3d>& vertices, int v,
+                         double min_length) {
   Eigen::Vector3d sum = Eigen::Vector3d::Zero();
   double weight_sum = 0.0;
   for (int e = nb.offset[v]; e < nb.offset[v + 1]; ++e) {
     const Eigen::Vector3d& u = vertices[nb.adj[e]];
-    const double w = 1.0 / std::max((u - vertices[v]).norm(), kMinLength);
+    const double w = 1.0 / std::max((u - vertices[v]).norm(), min_length);
     sum += w * u;
     weight_sum += w;
   }
@@ -66,13 +85,15 @@ void SmoothSelected(const std::vector<std::array<int, 3>>& triangles,
   }
   if (moving.empty()) return;
   const Neighbors nb = VertexNeighbors(triangles, vertices->size());
+  const double min_length =
+      std::max(kMinLengthInMeanEdges * MeanEdgeLength(triangles, *vertices), 1e-300);
   std::vector<Eigen::Vector3d> next(moving.size());
   for (int step = 0; step < 2 * iterations; ++step) {
     const double l = step % 2 == 0 ? lambda : -lambda;
     tbb::parallel_for(tbb::blocked_range<size_t>(0, moving.size()), [&](const auto& range) {
       for (size_t i = range.begin(); i != range.end(); ++i) {
         const int v = moving[i];
-        next[i] = (*vertices)[v] + l * Umbrella(nb, *vertices, v);
+        next[i] = (*vertices)[v] + l * Umbrella(nb, *vertices, v, min_length);
       }
     });
     for (size_t i = 0; i < moving.size(); ++i) (*vertices)[moving[i]] = next[i];

@@ -13,7 +13,8 @@ namespace meshseg::reconstruct_internal {
 
 // Moves the vertices with `selected` set, `iterations` times by
 // v ← v + λU then v ← v − λU' (U the umbrella vector: the mean of the
-// neighbours weighted by 1 / edge length, minus v; Fujiwara 1995, as
+// neighbours weighted by 1 / edge length (edges under 0.05 of the mean length
+// weigh as if that long), minus v; Fujiwara 1995, as
 // Desbrun et al. 1999 for irregular meshes); the other vertices stay where
 // they are.
 void SmoothSelected(const std::vector<std::array<int, 3>>& triangles,
