@@ -43,6 +43,8 @@ struct ReconstructParams {
   // (our addition; seed 001 §4 leaves a better k as open). 0 keeps all.
   double min_component_fraction = 0.01;
   // Step λ of the bi-Laplacian smoothing and the number of +λ/−λ step pairs.
+  // Its umbrella weighs neighbours by 1/edge length (the paper does not say;
+  // equal weights dragged flat faces inward, see reconstruct/smoothing.h).
   // Seed 001 §2.3.
   double smoothing_lambda = 0.5;
   int smoothing_iterations = 30;
