@@ -15,10 +15,11 @@ using ::testing::HasSubstr;
 using ::testing::SizeIs;
 using testing_cli::Lines;
 using testing_cli::RunCli;
-using testing_server::Eventually;
 using testing_server::FreshDir;
 using testing_server::Gate;
+using testing_server::RunningAndQueued;
 using testing_server::TestServer;
+using testing_server::UploadRunningAndQueued;
 
 TEST(MeshsegJobs, ListsEveryJobOnOneLineWithItsState) {
   Gate gate;
@@ -26,9 +27,10 @@ TEST(MeshsegJobs, ListsEveryJobOnOneLineWithItsState) {
   MeshsegClient client = server.Client();
   const std::string path = FreshDir("files") + "/box.off";
   testing_files::WriteOff(testing_files::SplitBox(2, {1, 1, 1}), path);
-  const std::string running = client.Upload(path)->job_id();
-  const std::string queued = client.Upload(path)->job_id();
-  ASSERT_TRUE(Eventually([&] { return gate.entered == 1; }));
+  const absl::StatusOr<RunningAndQueued> jobs = UploadRunningAndQueued(client, gate, path);
+  ASSERT_TRUE(jobs.ok()) << jobs.status();
+  const std::string& running = jobs->running;
+  const std::string& queued = jobs->queued;
 
   const testing_cli::CliRun during = RunCli({"jobs", "--server", server.address()});
   ASSERT_EQ(during.exit_code, 0) << during.err;

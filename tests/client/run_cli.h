@@ -21,6 +21,8 @@
 #include <google/protobuf/util/json_util.h>
 #include <gtest/gtest.h>
 
+#include "tests/server/test_files.h"
+
 namespace meshseg::testing_cli {
 
 inline const std::string kMeshseg = std::string(MESHSEG_BIN_DIR) + "/meshseg";
@@ -57,11 +59,6 @@ inline int ExitCode(pid_t pid) {
   while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
   }
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
-
-inline std::string Slurp(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
 }
 
 }  // namespace internal
@@ -125,7 +122,7 @@ inline CliRun RunCli(std::vector<std::string> args, const OnOutput& on_output = 
   run.out = internal::ReadAll(out[0], on_output);
   close(out[0]);
   run.exit_code = internal::ExitCode(pid);
-  run.err = internal::Slurp(err_path);
+  run.err = testing_files::ReadText(err_path);
   return run;
 }
 

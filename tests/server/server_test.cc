@@ -23,7 +23,9 @@ using testing_server::Eventually;
 using testing_server::FreshDir;
 using testing_server::Gate;
 using testing_server::HealthStatus;
+using testing_server::RunningAndQueued;
 using testing_server::TestServer;
+using testing_server::UploadRunningAndQueued;
 
 namespace pb = ::google::protobuf;
 
@@ -175,9 +177,10 @@ TEST(Server, ShutdownLetsRunningJobsFinishAndCancelsQueuedOnes) {
   MeshsegClient client = server.Client();
   const std::string path = FreshDir("files") + "/box.off";
   testing_files::WriteOff(testing_files::SplitBox(1, {1, 1, 1}), path);
-  const std::string running = client.Upload(path)->job_id();
-  const std::string queued = client.Upload(path)->job_id();
-  ASSERT_TRUE(Eventually([&] { return gate.entered == 1; }));
+  const absl::StatusOr<RunningAndQueued> jobs = UploadRunningAndQueued(client, gate, path);
+  ASSERT_TRUE(jobs.ok()) << jobs.status();
+  const std::string& running = jobs->running;
+  const std::string& queued = jobs->queued;
   std::thread stopper([&] { server.server().Shutdown(); });
   ASSERT_TRUE(Eventually([&] { return HealthStatus(server.address()) == 2; }));
   EXPECT_EQ(client.Upload(path).status().code(), absl::StatusCode::kUnavailable);

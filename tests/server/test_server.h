@@ -116,6 +116,25 @@ bool Eventually(Pred pred) {
   return pred();
 }
 
+// Two jobs of the file at `path` on a one-worker server whose runner is
+// `gate`'s: the first inside the gate (RUNNING), the second queued behind it.
+struct RunningAndQueued {
+  std::string running;
+  std::string queued;
+};
+inline absl::StatusOr<RunningAndQueued> UploadRunningAndQueued(MeshsegClient& client,
+                                                               const Gate& gate,
+                                                               const std::string& path) {
+  const absl::StatusOr<v1::UploadResponse> first = client.Upload(path);
+  if (!first.ok()) return first.status();
+  const absl::StatusOr<v1::UploadResponse> second = client.Upload(path);
+  if (!second.ok()) return second.status();
+  if (!Eventually([&] { return gate.entered == 1; })) {
+    return absl::DeadlineExceededError("the first job never entered the gate");
+  }
+  return RunningAndQueued{.running = first->job_id(), .queued = second->job_id()};
+}
+
 }  // namespace meshseg::testing_server
 
 #endif  // MESHSEG_TESTS_SERVER_TEST_SERVER_H_

@@ -7,6 +7,7 @@
 #include "meshseg/mesh.h"
 #include "meshseg/point_cloud.h"
 #include "temp_file.h"
+#include "server/test_files.h"
 
 namespace meshseg {
 namespace {
@@ -75,14 +76,7 @@ TEST(WriteColoredPly, GivesEachLabelItsOwnColourAndGreyToMinusOne) {
   const std::string path = testing_files::WriteTemp("labels.ply", "");
   ASSERT_TRUE(WriteColoredPly(mesh->tri, labels, path).ok());
   // Read the colours back: 12 faces of 1 + 12 + 3 bytes at the end of the file.
-  std::string bytes;
-  {
-    FILE* f = std::fopen(path.c_str(), "rb");
-    ASSERT_NE(f, nullptr);
-    char buffer[4096];
-    for (size_t n; (n = std::fread(buffer, 1, sizeof(buffer), f)) > 0;) bytes.append(buffer, n);
-    std::fclose(f);
-  }
+  const std::string bytes = testing_files::ReadText(path);
   EXPECT_THAT(bytes, HasSubstr("property uchar red\nproperty uchar green\nproperty uchar blue\n"));
   const size_t faces = bytes.size() - 12 * 16;
   std::vector<std::array<uint8_t, 3>> colors;
@@ -121,14 +115,7 @@ TEST(WriteColoredPointPly, WritesThePointsWithOneColourPerLabel) {
   const absl::StatusOr<PointCloud> back = ReadPointCloud(path);
   ASSERT_TRUE(back.ok()) << back.status();
   EXPECT_EQ(back->points, cloud.points);
-  std::string bytes;
-  {
-    FILE* f = std::fopen(path.c_str(), "rb");
-    ASSERT_NE(f, nullptr);
-    char buffer[4096];
-    for (size_t n; (n = std::fread(buffer, 1, sizeof(buffer), f)) > 0;) bytes.append(buffer, n);
-    std::fclose(f);
-  }
+  const std::string bytes = testing_files::ReadText(path);
   ASSERT_GE(bytes.size(), 5u * 27);
   std::vector<std::array<uint8_t, 3>> colors;
   for (int i = 0; i < 5; ++i) {
