@@ -65,14 +65,14 @@ absl::StatusOr<std::vector<int>> SegmentMesh(const Mesh& mesh, const PipelinePar
 absl::StatusOr<std::vector<int>> SegmentRemeshed(const Mesh& mesh, double edge_length,
                                                  const PipelineParams& params,
                                                  const RunContext& ctx, PipelineResult* result) {
-  const absl::StatusOr<Mesh> fine = IsotropicRemesh(mesh, edge_length, params.remesh, ctx);
-  if (!fine.ok()) return fine.status();
+  MESHSEG_ASSIGN_OR_RETURN(const Mesh fine,
+                           IsotropicRemesh(mesh, edge_length, params.remesh, ctx));
   MESHSEG_ASSIGN_OR_RETURN(CurvatureField curvature,
-                           EstimateCurvature(*fine, params.curvature, ctx));
+                           EstimateCurvature(fine, params.curvature, ctx));
   MESHSEG_ASSIGN_OR_RETURN(Segmentation segmentation,
-                           Segment(*fine, curvature, params.segment, ctx));
+                           Segment(fine, curvature, params.segment, ctx));
   std::vector<int> labels =
-      pipeline_internal::TransferFaceLabels(fine->tri, segmentation.face_labels, mesh.tri);
+      pipeline_internal::TransferFaceLabels(fine.tri, segmentation.face_labels, mesh.tri);
   result->vertex_labels = pipeline_internal::VertexLabelsFromFaces(mesh.tri, labels);
   result->regions = std::move(segmentation.regions);
   pipeline_internal::CompactRegions(&labels, &result->vertex_labels, &result->regions);
@@ -81,7 +81,7 @@ absl::StatusOr<std::vector<int>> SegmentRemeshed(const Mesh& mesh, double edge_l
   result->mesh = MeshStatistics(mesh);
   result->estimates = segmentation.estimates;
   result->remesh_edge_length = edge_length;
-  result->remesh_face_count = static_cast<int64_t>(fine->tri.n_faces());
+  result->remesh_face_count = static_cast<int64_t>(fine.tri.n_faces());
   return labels;
 }
 
