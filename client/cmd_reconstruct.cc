@@ -36,10 +36,12 @@ absl::Status RunReconstruct(const Argv& argv) {
   progress.Finish();
   if (!r.ok()) return r.status();
   MESHSEG_RETURN_IF_ERROR(WriteMesh(r->mesh.tri, *out));
-  std::printf("wrote %s: %zu vertices, %zu faces from %zu points (%lld outliers, spacing %.6g%s)\n",
-              out->c_str(), r->mesh.tri.n_vertices(), r->mesh.tri.n_faces(), cloud.points.size(),
-              static_cast<long long>(r->stats.outlier_count), r->stats.point_spacing,
-              r->stats.normals_estimated ? ", normals estimated" : "");
+  std::printf(
+      "wrote %s: %zu vertices, %zu faces from %zu points (%lld outliers, spacing %.6g, "
+      "edge %.6g%s)\n",
+      out->c_str(), r->mesh.tri.n_vertices(), r->mesh.tri.n_faces(), cloud.points.size(),
+      static_cast<long long>(r->stats.outlier_count), r->stats.point_spacing,
+      r->stats.refine_edge_length, r->stats.normals_estimated ? ", normals estimated" : "");
   return absl::OkStatus();
 }
 

@@ -5,7 +5,9 @@
 // Ohtake, Suzuki; ALGORITHMS.md S3): a partition-of-unity implicit f over a
 // random covering by support balls, inside/outside labels of the support
 // centres by a graph cut on their regular tetrahedralization, marching
-// tetrahedra on the labels, then selective bi-Laplacian smoothing.
+// tetrahedra on the labels, then selective bi-Laplacian smoothing. Last (our
+// addition) the mesh is refined for segmentation: remeshed into triangles of
+// about 1.5 point spacings and projected onto the points (reconstruct/refine.h).
 //
 // In: a PointCloud (normals optional; estimated when absent). Out: a Mesh and
 // per-point outlier flags.
@@ -48,6 +50,18 @@ struct ReconstructParams {
   // Seed 001 §2.3.
   double smoothing_lambda = 0.5;
   int smoothing_iterations = 30;
+  // Edge length of the refined mesh, in h; 0 keeps the marching-tetrahedra
+  // mesh as seed 001 leaves it (edges of 3-4 h, slivers; segmenting it
+  // mistypes planes, see reconstruct/refine.h). Our addition. 1.5 was
+  // measured: 1.0 segments as well at twice the faces.
+  double refine_edge_length = 1.5;
+  // The edge is raised so the refined mesh has at most this many triangles
+  // (CGAL's remeshing runs on one thread).
+  int64_t refine_max_faces = 400'000;
+  // Radius of the moving-least-squares projection of the refined vertices
+  // onto the points, in h: about 20 points per plane fit, so the noise of
+  // one point averages out (reconstruct/project_to_points.h).
+  double projection_radius = 2.5;
   // A support holding fewer input points than this counts as sparsely
   // sampled; surface vertices on its edges are smoothed. Seed 001 §2.3.
   int sparse_support_points = 10;
@@ -76,6 +90,7 @@ struct ReconstructStats {
   int64_t relabelled_count = 0;   // tet vertices whose cut label differs from sign(f)
   int64_t smoothed_vertex_count = 0;
   int64_t dropped_component_count = 0;  // see min_component_fraction
+  double refine_edge_length = 0.0;      // model units; 0 = not refined
   int64_t outlier_count = 0;            // isolated points left out of the fits
   bool normals_estimated = false;       // the cloud had no normals
   bool normals_flipped = false;         // given normals pointed outward (or were re-oriented)
@@ -93,6 +108,7 @@ struct Reconstruction {
 // Inputs: points (and optionally one normal per point, either orientation;
 // they are converted to the inward convention of seed 001).
 // Outputs: Reconstruction::mesh, is_outlier with cloud.points.size() entries.
+// Reports progress as "reconstruct" (and "remesh" while refining).
 // Errors: INVALID_ARGUMENT for bad params, fewer than 20 points, NaN/Inf
 // coordinates or normals, a normal count different from the point count, or
 // all points (nearly) coincident; CANCELLED when ctx requests a stop.

@@ -17,6 +17,7 @@
 #include "reconstruct/outliers.h"
 #include "reconstruct/point_index.h"
 #include "reconstruct/pu_function.h"
+#include "reconstruct/refine.h"
 #include "reconstruct/regular_triangulation.h"
 #include "reconstruct/small_components.h"
 #include "reconstruct/smoothing.h"
@@ -63,6 +64,15 @@ absl::Status ValidateParams(const ReconstructParams& p) {
   if (!(p.min_component_fraction >= 0 && p.min_component_fraction <= 1)) {
     return bad(
         absl::StrCat("min_component_fraction ", p.min_component_fraction, " outside [0, 1]"));
+  }
+  if (!(p.refine_edge_length >= 0)) {
+    return bad(absl::StrCat("refine_edge_length ", p.refine_edge_length, " must be >= 0"));
+  }
+  if (p.refine_max_faces <= 0) {
+    return bad(absl::StrCat("refine_max_faces ", p.refine_max_faces, " must be > 0"));
+  }
+  if (!(p.projection_radius > 0)) {
+    return bad(absl::StrCat("projection_radius ", p.projection_radius, " must be > 0"));
   }
   if (!(p.outlier_distance > 0)) {
     return bad(absl::StrCat("outlier_distance ", p.outlier_distance, " must be > 0"));
@@ -217,6 +227,12 @@ absl::StatusOr<Reconstruction> Reconstruct(const PointCloud& cloud, const Recons
                  params.smoothing_iterations, &surface.vertices);
   ctx.Progress(kStage, 0.9);
   MESHSEG_ASSIGN_OR_RETURN(out.mesh, SurfaceMesh(surface.vertices, surface.triangles, cloud.name));
+
+  // Step 7 (our addition): a finer, scan-like mesh on the points.
+  if (params.refine_edge_length > 0) {
+    MESHSEG_ASSIGN_OR_RETURN(out.mesh,
+                             RefineOnPoints(out.mesh, points, index, h, params, ctx, &stats));
+  }
 
   ctx.Progress(kStage, 1.0);
   return out;

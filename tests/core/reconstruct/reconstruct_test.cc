@@ -1,5 +1,6 @@
 #include "meshseg/reconstruct.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stop_token>
@@ -7,7 +8,9 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include "absl/strings/str_cat.h"
 #include "clouds.h"
+#include "meshseg/remesh.h"
 
 namespace meshseg {
 namespace {
@@ -86,6 +89,66 @@ TEST(Reconstruct, PointsWithoutNormalsDoAsWellAsWithNormals) {
   ExpectClosedManifoldSingleAccurate(*without, sphere, h);
   EXPECT_GE(test::FractionWithin(without->mesh.tri, sphere, kDistanceTol * h),
             test::FractionWithin(with->mesh.tri, sphere, kDistanceTol * h) - kMaxLoss);
+}
+
+// Mean angle, in degrees, between the face normals of `m` and the normal of
+// the face of the axis-aligned box `half` they lie on, over faces farther than
+// `margin` from the box's edges.
+double MeanBoxNormalErrorDeg(const TriMesh& m, const Eigen::Vector3d& half, double margin) {
+  double sum = 0.0;
+  int count = 0;
+  for (const auto f : m.faces()) {
+    const Eigen::Vector3d c = ToEigen(m.calc_face_centroid(f));
+    const Eigen::Vector3d out = c.cwiseAbs() - half;  // per axis: > -margin near that face
+    int axis = 0;
+    out.maxCoeff(&axis);
+    int near_faces = 0;
+    for (int k = 0; k < 3; ++k) near_faces += out[k] > -margin;
+    if (near_faces != 1) continue;
+    const Eigen::Vector3d truth = std::copysign(1.0, c[axis]) * Eigen::Vector3d::Unit(axis);
+    sum += std::acos(std::clamp(ToEigen(m.normal(f)).dot(truth), -1.0, 1.0)) * 180.0 / M_PI;
+    ++count;
+  }
+  return count > 0 ? sum / count : 180.0;
+}
+
+// The refinement (reconstruct/refine.h) turns the marching-tetrahedra mesh
+// (edges of 3-4 spacings, slivers) into one with edges of about
+// refine_edge_length spacings and face normals the segmentation can use.
+// Measured on this cloud: mean edge 3.2 h before and 1.4 h after; mean normal
+// error on the box faces away from its edges 12.2 deg before and 8.0 after;
+// area in thin triangles (aspect > 6) 12.8 % before and 1.2 % after.
+TEST(Reconstruct, RefinementGivesShortEdgesAndTrueNormals) {
+  const Eigen::Vector3d half(1.0, 0.7, 0.5);
+  const Shape box = test::Box(half);
+  const PointCloud cloud = test::MakeCloud(box, HardSpec({0.3, 0.2, 0.5}, true));
+  const auto refined = Reconstruct(cloud);
+  const auto coarse = Reconstruct(cloud, {.refine_edge_length = 0});
+  ASSERT_TRUE(refined.ok()) << refined.status();
+  ASSERT_TRUE(coarse.ok()) << coarse.status();
+  const double h = refined->stats.point_spacing;
+  EXPECT_DOUBLE_EQ(refined->stats.refine_edge_length, 1.5 * h);
+  EXPECT_EQ(coarse->stats.refine_edge_length, 0.0);
+  const double refined_edge = MeanEdgeLength(refined->mesh.tri) / h;
+  const double coarse_edge = MeanEdgeLength(coarse->mesh.tri) / h;
+  EXPECT_GT(refined_edge, 1.2);
+  EXPECT_LT(refined_edge, 1.8);
+  EXPECT_GT(coarse_edge, 2.5);
+  ::testing::Test::RecordProperty("edge_h", absl::StrCat(coarse_edge, " -> ", refined_edge));
+  const double refined_error = MeanBoxNormalErrorDeg(refined->mesh.tri, half, 3 * h);
+  const double coarse_error = MeanBoxNormalErrorDeg(coarse->mesh.tri, half, 3 * h);
+  EXPECT_LT(refined_error, 0.8 * coarse_error);
+  ::testing::Test::RecordProperty("normal_error_deg",
+                                  absl::StrCat(coarse_error, " -> ", refined_error));
+  // Read back as a mesh, the marching-tetrahedra mesh passed for a CAD
+  // export (slivers); the refined one is scan-like, as it should be.
+  const TessellationShape refined_shape = Assess(refined->mesh);
+  const TessellationShape coarse_shape = Assess(coarse->mesh);
+  EXPECT_FALSE(refined_shape.cad_like) << refined_shape.thin_area_fraction;
+  EXPECT_TRUE(coarse_shape.cad_like) << coarse_shape.thin_area_fraction;
+  ::testing::Test::RecordProperty("thin_area", absl::StrCat(coarse_shape.thin_area_fraction, " -> ",
+                                                            refined_shape.thin_area_fraction));
+  ExpectClosedManifoldSingleAccurate(*refined, box, h);
 }
 
 TEST(Reconstruct, OutwardAndInwardNormalsGiveTheSameMesh) {
@@ -226,6 +289,12 @@ TEST(Reconstruct, BadParamsAreInvalid) {
               HasSubstr("octree_max_level 40 outside [1, 16]"));
   EXPECT_EQ(Reconstruct(cloud, {.graph_cut_k = -1}).status().code(),
             absl::StatusCode::kInvalidArgument);
+  EXPECT_THAT(Reconstruct(cloud, {.refine_edge_length = -1}).status().message(),
+              HasSubstr("refine_edge_length -1 must be >= 0"));
+  EXPECT_THAT(Reconstruct(cloud, {.refine_max_faces = 0}).status().message(),
+              HasSubstr("refine_max_faces 0 must be > 0"));
+  EXPECT_THAT(Reconstruct(cloud, {.projection_radius = 0}).status().message(),
+              HasSubstr("projection_radius 0 must be > 0"));
 }
 
 TEST(Reconstruct, StopRequestIsCancelled) {
