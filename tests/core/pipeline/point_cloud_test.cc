@@ -228,31 +228,19 @@ TEST(RunPipelineOnPoints, FindsTheTestPieceBoreAndGrooveAsCylinders) {
 }
 
 // Issue 6: "segmenting the reconstructed test piece finds its cylinders and
-// planes with the right types": for each of three clouds (seeds 1-3), the
-// region holding most of the points of each plane and cylinder has its type.
-// Fails. Measured after the smoothing fix of the reconstruction (vertices
-// within 0.5 h: 0.97), seed: primitive -> type of the region holding most of it:
-//   1: boss_top (a disc of radius 5, ~30 faces of the 2.45 mm mesh) -> the
-//      boss cone (absorbed as a leftover: it never seeds);
-//   2: right and back -> one cone region (rms 1.13);
-//   3: top -> cylinder of radius 220;
-//   4: left -> cylinder of radius 56, boss_top -> cylinder; 5: right and
-//      front -> one cone; 6: passes.
-// What a stage-by-stage dump of Segment on seed 2 shows: the marching-
-// tetrahedra mesh is coarse (mean edge 2.45 mm = 3.6 h) and full of slivers;
-// 40 % of its vertices are sharp and the derived tolerances are loose
-// (1.22 mm = 0.5 l_avg, 12.8 deg). Region growing already makes the cone:
-// grown from a seed on back, it takes 143 back and 47 right vertices at a
-// fitting fraction of 0.99, and absorbing leftovers grows it to 479. Planes
-// with a dent or the refilled hole pass as cylinders of radius 50-700.
-// Tighter tolerances move the failures around rather than remove them
-// (0.3 l_avg and 8 deg: seeds 1, 2 and 4 of 6 still fail), and an isotropic
-// remesh of the reconstruction before segmenting is worse (70+ regions,
-// fillets as cones).
-TEST(RunPipelineOnPoints, DISABLED_FindsTheTestPieceCylindersAndPlanesWithTheRightTypes) {
+// planes with the right types": for each of six clouds, the region holding
+// most of the points of each plane and cylinder has its type.
+// This failed on 5 of the 6 clouds while the pipeline segmented the marching-
+// tetrahedra mesh itself (edges of 3.6 h, slivers, 40 % of the vertices sharp:
+// planes merged into cones, planes typed as cylinders of radius 50-700). It
+// passes on the refined mesh (reconstruct/refine.h): edges of 1.5 h on the
+// points, 16 regions for the 15 true faces on cloud 2. Remeshing alone, without
+// the projection onto the points, still failed on all six (boss_top typed as
+// a cylinder, sphere or quadric).
+TEST(RunPipelineOnPoints, FindsTheTestPieceCylindersAndPlanesWithTheRightTypes) {
   const absl::StatusOr<GeneratedPart> part = GeneratePart("test_piece");
   ASSERT_TRUE(part.ok()) << part.status();
-  for (const unsigned seed : {1u, 2u, 3u}) {
+  for (const unsigned seed : {1u, 2u, 3u, 4u, 5u, 6u}) {
     SCOPED_TRACE("cloud seed " + std::to_string(seed));
     const PartCloud cloud = WriteHardCloud(*part, seed);
     const absl::StatusOr<PipelineResult> r = RunPipeline(cloud.path);
