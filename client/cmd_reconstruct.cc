@@ -38,10 +38,11 @@ absl::Status RunReconstruct(const Argv& argv) {
   MESHSEG_RETURN_IF_ERROR(WriteMesh(r->mesh.tri, *out));
   std::printf(
       "wrote %s: %zu vertices, %zu faces from %zu points (%lld outliers, spacing %.6g, "
-      "edge %.6g%s)\n",
+      "edge %.6g, %lld vertices far from the points put on f = 0%s)\n",
       out->c_str(), r->mesh.tri.n_vertices(), r->mesh.tri.n_faces(), cloud.points.size(),
       static_cast<long long>(r->stats.outlier_count), r->stats.point_spacing,
-      r->stats.refine_edge_length, r->stats.normals_estimated ? ", normals estimated" : "");
+      r->stats.refine_edge_length, static_cast<long long>(r->stats.unsupported_vertex_count),
+      r->stats.normals_estimated ? ", normals estimated" : "");
   return absl::OkStatus();
 }
 

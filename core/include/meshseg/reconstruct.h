@@ -91,6 +91,8 @@ struct ReconstructStats {
   int64_t smoothed_vertex_count = 0;
   int64_t dropped_component_count = 0;  // see min_component_fraction
   double refine_edge_length = 0.0;      // model units; 0 = not refined
+  int64_t unsupported_vertex_count = 0;  // refined vertices far from every
+                                         // point, put on f = 0 instead
   int64_t outlier_count = 0;            // isolated points left out of the fits
   bool normals_estimated = false;       // the cloud had no normals
   bool normals_flipped = false;         // given normals pointed outward (or were re-oriented)

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <utility>
 
 #include <Eigen/Eigenvalues>
@@ -37,9 +38,11 @@ Eigen::Vector3d OntoLocalPlane(const Eigen::Vector3d& x, const std::vector<Eigen
 
 }  // namespace
 
-void ProjectToPoints(const std::vector<Eigen::Vector3d>& points, const PointIndex& index,
-                     double radius, int iterations, TriMesh* mesh) {
+std::vector<int> ProjectToPoints(const std::vector<Eigen::Vector3d>& points,
+                                 const PointIndex& index, double radius, int iterations,
+                                 TriMesh* mesh) {
   const double sigma2 = radius * radius / 4.0;
+  std::vector<uint8_t> left(mesh->n_vertices(), 0);
   tbb::parallel_for(tbb::blocked_range<size_t>(0, mesh->n_vertices()), [&](const auto& range) {
     std::vector<std::pair<uint32_t, double>> found;
     std::vector<uint32_t> nearest;
@@ -53,7 +56,10 @@ void ProjectToPoints(const std::vector<Eigen::Vector3d>& points, const PointInde
         if (found.size() < kMinProjectionPoints) {
           index.Nearest(x, kMinProjectionPoints, &nearest, &nearest_d2);
           const double reach = kFallbackReach * radius;
-          if (nearest.size() < kMinProjectionPoints || nearest_d2.back() > reach * reach) break;
+          if (nearest.size() < kMinProjectionPoints || nearest_d2.back() > reach * reach) {
+            left[v] = step == 0;
+            break;
+          }
           found.clear();
           for (size_t k = 0; k < nearest.size(); ++k) found.emplace_back(nearest[k], nearest_d2[k]);
           widened = nearest_d2.back() / 4.0;
@@ -64,6 +70,11 @@ void ProjectToPoints(const std::vector<Eigen::Vector3d>& points, const PointInde
     }
   });
   mesh->update_normals();
+  std::vector<int> out;
+  for (size_t v = 0; v < left.size(); ++v) {
+    if (left[v]) out.push_back(static_cast<int>(v));
+  }
+  return out;
 }
 
 }  // namespace meshseg::reconstruct_internal

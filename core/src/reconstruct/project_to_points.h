@@ -17,23 +17,24 @@ namespace meshseg::reconstruct_internal {
 // Fewer points than this within `radius` (a vertex rounded off a sharp edge,
 // or over a hole in the scan) and the nearest this many are used instead,
 // with the Gaussian widened to reach them, if they lie within
-// kFallbackReach × radius. Farther than that (an occlusion gap) the vertex
-// stays where the implicit put it: the plane of the nearest points there is
-// often another face's. Measured on the shared-data clouds (p95 distance to
-// the truth, in spacings): unbounded reach took the simulated ABC scan from
-// 1.7 to 4.6; no reach left the broken bullet's edges at 3.3; a reach of 3
-// gives 2.2 and 1.7.
+// kFallbackReach × radius. Farther than that (an occlusion gap) the vertex is
+// left to the caller: the plane of the nearest points there is often another
+// face's. Measured on the shared-data clouds (p95 distance to the truth, in
+// spacings): unbounded reach took the simulated ABC scan from 1.7 to 4.6; no
+// reach left the broken bullet's edges at 3.3; a reach of 3 gives 2.2 and 1.7.
 inline constexpr int kMinProjectionPoints = 12;
 inline constexpr double kFallbackReach = 3.0;
 
 // Moves every vertex of `mesh` `iterations` times onto the plane fitted to
 // `points` (indexed by `index`) within `radius` of it, weighted by
-// exp(−4 d² / radius²), and updates the normals. Vertices with no
-// kMinProjectionPoints points within kFallbackReach × radius do not move. Noise along the normal
+// exp(−4 d² / radius²), and updates the normals. Returns the vertices with
+// no kMinProjectionPoints points within kFallbackReach × radius; they do not
+// move. Noise along the normal
 // averages out over the ~π(radius/h)² points of a disc; sharp edges are
 // rounded over about `radius`.
-void ProjectToPoints(const std::vector<Eigen::Vector3d>& points, const PointIndex& index,
-                     double radius, int iterations, TriMesh* mesh);
+std::vector<int> ProjectToPoints(const std::vector<Eigen::Vector3d>& points,
+                                 const PointIndex& index, double radius, int iterations,
+                                 TriMesh* mesh);
 
 }  // namespace meshseg::reconstruct_internal
 

@@ -231,7 +231,7 @@ absl::StatusOr<Reconstruction> Reconstruct(const PointCloud& cloud, const Recons
   // Step 7 (our addition): a finer, scan-like mesh on the points.
   if (params.refine_edge_length > 0) {
     MESHSEG_ASSIGN_OR_RETURN(out.mesh,
-                             RefineOnPoints(out.mesh, points, index, h, params, ctx, &stats));
+                             RefineOnPoints(out.mesh, points, index, f, h, params, ctx, &stats));
   }
 
   ctx.Progress(kStage, 1.0);

@@ -7,10 +7,35 @@
 #include "meshseg/status_macros.h"
 #include "reconstruct/project_to_points.h"
 
+#include <tbb/parallel_for.h>
+
 namespace meshseg::reconstruct_internal {
+namespace {
+
+// Newton steps of x towards f = 0 along the central-difference gradient of f
+// (step `delta`), each at most `max_step` long; stops where f is flat.
+Eigen::Vector3d OntoZeroSet(const PuFunction& f, Eigen::Vector3d x, double delta,
+                            double max_step) {
+  for (int step = 0; step < kZeroSetIterations; ++step) {
+    const double value = f(x);
+    Eigen::Vector3d gradient;
+    for (int k = 0; k < 3; ++k) {
+      const Eigen::Vector3d e = delta * Eigen::Vector3d::Unit(k);
+      gradient[k] = (f(x + e) - f(x - e)) / (2.0 * delta);
+    }
+    const double g2 = gradient.squaredNorm();
+    if (!(g2 > kMinGradient * kMinGradient)) break;
+    Eigen::Vector3d move = -value / g2 * gradient;
+    if (move.norm() > max_step) move *= max_step / move.norm();
+    x += move;
+  }
+  return x;
+}
+
+}  // namespace
 
 absl::StatusOr<Mesh> RefineOnPoints(const Mesh& mesh, const std::vector<Eigen::Vector3d>& points,
-                                    const PointIndex& index, double h,
+                                    const PointIndex& index, const PuFunction& f, double h,
                                     const ReconstructParams& params, const RunContext& ctx,
                                     ReconstructStats* stats) {
   // An equilateral triangle of edge l has area (√3/4) l²: the edge at which
@@ -22,7 +47,16 @@ absl::StatusOr<Mesh> RefineOnPoints(const Mesh& mesh, const std::vector<Eigen::V
   remesh.feature_angle_deg = 180.0;  // no feature edges, see refine.h
   MESHSEG_ASSIGN_OR_RETURN(Mesh fine,
                            IsotropicRemesh(mesh, stats->refine_edge_length, remesh, ctx));
-  ProjectToPoints(points, index, params.projection_radius * h, kProjectionIterations, &fine.tri);
+  const double radius = params.projection_radius * h;
+  const std::vector<int> left =
+      ProjectToPoints(points, index, radius, kProjectionIterations, &fine.tri);
+  stats->unsupported_vertex_count = static_cast<int64_t>(left.size());
+  tbb::parallel_for(size_t{0}, left.size(), [&](size_t i) {
+    const TriMesh::VertexHandle v(left[i]);
+    const Eigen::Vector3d x = OntoZeroSet(f, ToEigen(fine.tri.point(v)), 0.5 * h, radius);
+    fine.tri.set_point(v, TriMesh::Point(x[0], x[1], x[2]));
+  });
+  fine.tri.update_normals();
   return fine;
 }
 

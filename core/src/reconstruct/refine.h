@@ -11,6 +11,13 @@
 // marching-tetrahedra mesh are slivers, not features), then moves every vertex
 // onto the input points (project_to_points.h). The result is the scan-like
 // mesh the curvature and segmentation stages expect, with the same topology.
+//
+// Vertices with no points near them go onto f = 0 instead (Newton steps on
+// the partition-of-unity implicit). They are of two kinds: in occlusion gaps
+// of a scan, where f = 0 is the surface the reconstruction chose; and on
+// "tents", marching-tetrahedra triangles up to 26 mm long that span between
+// two faces through the solid (on the test piece at h 0.68, along its
+// back-bottom edge), where f = 0 follows the faces the triangles cut off.
 #ifndef MESHSEG_RECONSTRUCT_REFINE_H_
 #define MESHSEG_RECONSTRUCT_REFINE_H_
 
@@ -23,18 +30,25 @@
 #include "meshseg/reconstruct.h"
 #include "meshseg/run_context.h"
 #include "reconstruct/point_index.h"
+#include "reconstruct/pu_function.h"
 
 namespace meshseg::reconstruct_internal {
 
 // Projection steps per vertex; the second and third move a vertex by less
 // than a hundredth of a spacing on the test parts.
 inline constexpr int kProjectionIterations = 3;
+// Newton steps onto f = 0 for the vertices far from every point; below this
+// gradient norm f is flat (no support reaches there) and the vertex stays.
+inline constexpr int kZeroSetIterations = 10;
+inline constexpr double kMinGradient = 1e-3;
 
 // Returns `mesh` remeshed and projected onto `points` (the non-outliers,
-// indexed by `index`) with point spacing `h`, per the refine_* parameters of
-// `params`; sets stats->refine_edge_length. Errors: those of IsotropicRemesh.
+// indexed by `index`) with point spacing `h`, or onto the zero set of `f`
+// far from them, per the refine_* parameters of `params`; sets
+// stats->refine_edge_length and unsupported_vertex_count. Errors: those of
+// IsotropicRemesh.
 absl::StatusOr<Mesh> RefineOnPoints(const Mesh& mesh, const std::vector<Eigen::Vector3d>& points,
-                                    const PointIndex& index, double h,
+                                    const PointIndex& index, const PuFunction& f, double h,
                                     const ReconstructParams& params, const RunContext& ctx,
                                     ReconstructStats* stats);
 

@@ -1,11 +1,15 @@
 #include "reconstruct/refine.h"
 
+#include <algorithm>
 #include <cmath>
 #include <random>
+#include <string>
 
 #include <gtest/gtest.h>
 
 #include "core/curvature/test_meshes.h"
+#include "reconstruct/project_to_points.h"
+#include "grid_supports.h"
 
 namespace meshseg::reconstruct_internal {
 namespace {
@@ -30,27 +34,37 @@ Mesh CoarseSphere() {
   return *std::move(mesh);
 }
 
-std::vector<Eigen::Vector3d> SpherePoints() {
+// kPoints uniform on the sphere, keeping those with z above `min_z`.
+std::vector<Eigen::Vector3d> SpherePoints(double min_z = -2 * kRadius) {
   std::mt19937 rng(11);
   std::normal_distribution<double> g;
   std::vector<Eigen::Vector3d> points;
   for (int i = 0; i < kPoints; ++i) {
-    points.push_back(kRadius * Eigen::Vector3d(g(rng), g(rng), g(rng)).normalized());
+    const Eigen::Vector3d p = kRadius * Eigen::Vector3d(g(rng), g(rng), g(rng)).normalized();
+    if (p.z() > min_z) points.push_back(p);
   }
   return points;
 }
 
+// The implicit of the unit sphere (f = 1 − |x| to first order, positive
+// inside) over supports on a 9³ grid.
+class RefineOnPointsTest : public ::testing::Test {
+ protected:
+  const std::vector<Support> supports_ = test::GridSupports(9, 1.5 * kRadius);
+  const PuFunction f_{supports_};
+};
+
 // The coarse sphere becomes a fine one on the points: every vertex within the
 // sag of the projection (radius² / 8R, see project_to_points_test) plus 0.1 h,
 // edges of about refine_edge_length spacings, the same closed genus-0 surface.
-TEST(RefineOnPoints, TurnsACoarseMeshIntoAFineOneOnThePoints) {
+TEST_F(RefineOnPointsTest, TurnsACoarseMeshIntoAFineOneOnThePoints) {
   const std::vector<Eigen::Vector3d> points = SpherePoints();
   const PointIndex index(points);
   const double h = Spacing();
   const ReconstructParams params;
   ReconstructStats stats;
   const absl::StatusOr<Mesh> fine =
-      RefineOnPoints(CoarseSphere(), points, index, h, params, {}, &stats);
+      RefineOnPoints(CoarseSphere(), points, index, f_, h, params, {}, &stats);
   ASSERT_TRUE(fine.ok()) << fine.status();
   const TriMesh& m = fine->tri;
   EXPECT_DOUBLE_EQ(stats.refine_edge_length, params.refine_edge_length * h);
@@ -62,26 +76,57 @@ TEST(RefineOnPoints, TurnsACoarseMeshIntoAFineOneOnThePoints) {
     ASSERT_NEAR(ToEigen(m.point(v)).norm(), kRadius - r * r / (8 * kRadius), 0.1 * h)
         << "vertex " << v.idx();
   }
+  EXPECT_EQ(stats.unsupported_vertex_count, 0);
   EXPECT_EQ(static_cast<int64_t>(m.n_vertices()) - static_cast<int64_t>(m.n_edges()) +
                 static_cast<int64_t>(m.n_faces()),
             2);
   for (const auto e : m.edges()) ASSERT_FALSE(m.is_boundary(e));
 }
 
-TEST(RefineOnPoints, MaxFacesLengthensTheEdges) {
+TEST_F(RefineOnPointsTest, MaxFacesLengthensTheEdges) {
   constexpr int64_t kMaxFaces = 2000;
   const std::vector<Eigen::Vector3d> points = SpherePoints();
   const PointIndex index(points);
   const double h = Spacing();
   ReconstructStats stats;
   const absl::StatusOr<Mesh> fine = RefineOnPoints(
-      CoarseSphere(), points, index, h, {.refine_max_faces = kMaxFaces}, {}, &stats);
+      CoarseSphere(), points, index, f_, h, {.refine_max_faces = kMaxFaces}, {}, &stats);
   ASSERT_TRUE(fine.ok()) << fine.status();
   EXPECT_GT(stats.refine_edge_length, 1.5 * h);
   // CGAL keeps edges within 4/5 and 4/3 of the target, so the count is about,
   // not at most, the cap.
   EXPECT_GT(fine->tri.n_faces(), 0.5 * kMaxFaces);
   EXPECT_LT(fine->tri.n_faces(), 1.5 * kMaxFaces);
+}
+
+// Points on the upper part only, as if the scanner never saw the rest:
+// vertices over kFallbackReach projection radii from every point go onto
+// f = 0 instead (the grid supports put it near the unit sphere).
+TEST_F(RefineOnPointsTest, VerticesFarFromThePointsGoOntoTheImplicit) {
+  const std::vector<Eigen::Vector3d> points = SpherePoints(0.0);
+  const PointIndex index(points);
+  const double h = Spacing();
+  const ReconstructParams params;
+  ReconstructStats stats;
+  const absl::StatusOr<Mesh> fine =
+      RefineOnPoints(CoarseSphere(), points, index, f_, h, params, {}, &stats);
+  ASSERT_TRUE(fine.ok()) << fine.status();
+  const TriMesh& m = fine->tri;
+  const double reach = kFallbackReach * params.projection_radius * h;
+  int64_t far = 0;
+  double worst = 0.0;
+  for (const auto v : m.vertices()) {
+    const Eigen::Vector3d x = ToEigen(m.point(v));
+    if (x.z() > -reach) continue;  // near the points, or widened to reach them
+    ++far;
+    worst = std::max(worst, std::abs(f_(x)));
+  }
+  EXPECT_GT(far, 0);
+  EXPECT_GE(stats.unsupported_vertex_count, far);
+  // |∇f| ≈ 1, so |f| is the distance to the zero set, which on this coarse
+  // grid lies up to 1.4 h inside the unit sphere: left where the remesh put
+  // them, the vertices would be 1–2 h from it.
+  EXPECT_LT(worst, 0.01 * h);
 }
 
 }  // namespace
