@@ -14,12 +14,11 @@
 #include "segment/finalize_regions.h"
 #include "segment/initial_segmentation.h"
 #include "segment/merge_regions.h"
+#include "segment/refine_boundaries.h"
 #include "segment/segment_internal.h"
 
 namespace meshseg {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 absl::Status ValidateParams(const SegmentParams& p) {
   if (!(p.distance_tolerance > 0.0) || !std::isfinite(p.distance_tolerance)) {
@@ -37,15 +36,6 @@ absl::Status ValidateParams(const SegmentParams& p) {
   return absl::OkStatus();
 }
 
-std::vector<double> VertexAreas(const TriMesh& mesh) {
-  std::vector<double> area(mesh.n_vertices(), 0.0);
-  for (const auto fh : mesh.faces()) {
-    const double third = mesh.calc_face_area(fh) / 3.0;
-    for (auto it = mesh.cfv_iter(fh); it.is_valid(); ++it) area[it->idx()] += third;
-  }
-  return area;
-}
-
 }  // namespace
 
 absl::StatusOr<Segmentation> Segment(const Mesh& mesh, const CurvatureField& curvature,
@@ -61,17 +51,8 @@ absl::StatusOr<Segmentation> Segment(const Mesh& mesh, const CurvatureField& cur
         "\" has ", mesh.tri.n_vertices()));
   }
   MESHSEG_RETURN_IF_ERROR(ctx.CheckStop("segment"));
-  SegmentContext c;
-  c.graph = BuildVertexGraph(mesh.tri);
-  c.curvature = &curvature;
-  c.vertex_area = VertexAreas(mesh.tri);
-  c.mean_edge_length = MeanEdgeLength(mesh.tri);
-  c.alpha = params.alpha;
-  c.run = &ctx;
-  const SegmentEstimates estimates = EstimateNoise(curvature, c.mean_edge_length, params);
-  c.tolerance.distance = estimates.distance_tolerance;
-  c.angle_tolerance_deg = estimates.angle_tolerance_deg;
-  c.tolerance.cos_angle = std::cos(estimates.angle_tolerance_deg * kPi / 180.0);
+  const SegmentEstimates estimates = EstimateNoise(curvature, MeanEdgeLength(mesh.tri), params);
+  const SegmentContext c = MakeSegmentContext(mesh.tri, curvature, estimates, params.alpha, ctx);
 
   std::vector<int> labels(c.vertex_count(), -1);
   std::vector<RegionState> regions;
@@ -84,6 +65,7 @@ absl::StatusOr<Segmentation> Segment(const Mesh& mesh, const CurvatureField& cur
   if (ReleaseSmallRegions(c, &labels, &regions) > 0) {
     MESHSEG_RETURN_IF_ERROR(AbsorbLeftovers(c, &labels, &regions));
   }
+  MESHSEG_RETURN_IF_ERROR(RefineBoundaries(c, &labels, &regions));
   FlattenNearlyFlatRegions(c, &regions);
   ctx.Progress("segment", 0.9);
   MESHSEG_RETURN_IF_ERROR(ctx.CheckStop("segment"));

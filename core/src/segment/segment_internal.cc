@@ -1,8 +1,40 @@
 #include "segment/segment_internal.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace meshseg::segment_internal {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// A third of the area of every face around each vertex.
+std::vector<double> VertexAreas(const TriMesh& mesh) {
+  std::vector<double> area(mesh.n_vertices(), 0.0);
+  for (const auto fh : mesh.faces()) {
+    const double third = mesh.calc_face_area(fh) / 3.0;
+    for (auto it = mesh.cfv_iter(fh); it.is_valid(); ++it) area[it->idx()] += third;
+  }
+  return area;
+}
+
+}  // namespace
+
+SegmentContext MakeSegmentContext(const TriMesh& mesh, const CurvatureField& curvature,
+                                  const SegmentEstimates& estimates, double alpha,
+                                  const RunContext& run) {
+  SegmentContext c;
+  c.graph = BuildVertexGraph(mesh);
+  c.curvature = &curvature;
+  c.vertex_area = VertexAreas(mesh);
+  c.mean_edge_length = estimates.mean_edge_length;
+  c.tolerance.distance = estimates.distance_tolerance;
+  c.tolerance.cos_angle = std::cos(estimates.angle_tolerance_deg * kPi / 180.0);
+  c.angle_tolerance_deg = estimates.angle_tolerance_deg;
+  c.alpha = alpha;
+  c.run = &run;
+  return c;
+}
 
 std::vector<int> Sample(std::span<const int> vertices, std::size_t max_count) {
   if (vertices.size() <= max_count) return {vertices.begin(), vertices.end()};

@@ -12,7 +12,9 @@
 
 #include "meshseg/curvature.h"
 #include "meshseg/fit.h"
+#include "meshseg/mesh.h"
 #include "meshseg/run_context.h"
+#include "meshseg/segment.h"
 #include "meshseg/surface.h"
 
 namespace meshseg::segment_internal {
@@ -45,6 +47,13 @@ struct SegmentContext {
   const Eigen::Vector3d& position(int v) const { return graph.positions[v]; }
   const Eigen::Vector3d& normal(int v) const { return curvature->smooth_normal[v]; }
 };
+
+// The context Segment() works in on `mesh` with `curvature` (which must
+// outlive it, as must `run`): the vertex graph and areas, and the l_avg and
+// tolerances of `estimates`.
+SegmentContext MakeSegmentContext(const TriMesh& mesh, const CurvatureField& curvature,
+                                  const SegmentEstimates& estimates, double alpha,
+                                  const RunContext& run);
 
 // True if vertex v with projection `pr` meets (5) and (6). Surfaces fitted
 // to a region may face either way, so the normal test ignores orientation.

@@ -1,0 +1,83 @@
+#include "segment/refine_boundaries.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include "meshseg/status_macros.h"
+
+namespace meshseg::segment_internal {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// One sweep from `labels` into `next`; returns the number of vertices moved.
+int Sweep(const SegmentContext& c, const std::vector<RegionState>& regions,
+          const std::vector<int>& labels, std::vector<int>* next) {
+  std::vector<uint8_t> moved(labels.size(), 0);
+  tbb::parallel_for(tbb::blocked_range<int>(0, c.vertex_count()), [&](const auto& range) {
+    for (int v = range.begin(); v != range.end(); ++v) {
+      (*next)[v] = labels[v];
+      const int own = labels[v];
+      if (own < 0 || c.curvature->sharp[v]) continue;
+      double best_score = -1.0;
+      int best = own;
+      for (const int u : c.graph.Neighbors(v)) {
+        const int r = labels[u];
+        if (r < 0 || r == own || r == best || !regions[r].alive) continue;
+        const Projection pr = ProjectVertex(c, regions[r].surface, v);
+        if (!Fits(c, v, pr, c.tolerance)) continue;
+        const double score = MismatchScore(c, regions[r].surface, v);
+        if (best == own || score < best_score || (score == best_score && r < best)) {
+          best = r;
+          best_score = score;
+        }
+      }
+      if (best == own || !(best_score < MismatchScore(c, regions[own].surface, v))) continue;
+      (*next)[v] = best;
+      moved[v] = 1;
+    }
+  });
+  return static_cast<int>(std::count(moved.begin(), moved.end(), 1));
+}
+
+}  // namespace
+
+double MismatchScore(const SegmentContext& c, const Surface& surface, int v) {
+  const Projection pr = ProjectVertex(c, surface, v);
+  const double cosine = std::min(1.0, std::abs(pr.normal.dot(c.normal(v))));
+  const double angle = std::acos(cosine) * 180.0 / kPi / c.angle_tolerance_deg;
+  const double distance = pr.distance / c.tolerance.distance;
+  if (!std::isfinite(distance) || !std::isfinite(angle)) return HUGE_VAL;
+  return distance * distance + angle * angle;
+}
+
+absl::Status RefineBoundaries(const SegmentContext& c, std::vector<int>* labels,
+                              std::vector<RegionState>* regions) {
+  std::vector<int> next(labels->size());
+  for (int round = 0; round < kBoundaryRounds; ++round) {
+    std::vector<uint8_t> changed(regions->size(), 0);
+    for (int sweep = 0; sweep < kMaxBoundarySweeps; ++sweep) {
+      MESHSEG_RETURN_IF_ERROR(c.run->CheckStop("segment"));
+      if (Sweep(c, *regions, *labels, &next) == 0) break;
+      for (std::size_t v = 0; v < next.size(); ++v) {
+        if (next[v] == (*labels)[v]) continue;
+        changed[(*labels)[v]] = 1;
+        changed[next[v]] = 1;
+      }
+      labels->swap(next);
+    }
+    RebuildVertexLists(*labels, regions);
+    for (std::size_t r = 0; r < regions->size(); ++r) {
+      RegionState& region = (*regions)[r];
+      if (!changed[r] || !region.alive || region.vertices.empty()) continue;
+      const FitResult fit = FitType(c, region.type, region.vertices);
+      if (fit.ok()) region.surface = fit.surface;
+    }
+  }
+  return absl::OkStatus();
+}
+
+}  // namespace meshseg::segment_internal
