@@ -112,6 +112,12 @@ PairFit FitUnion(const SegmentContext& c, const RegionState& x, const RegionStat
     if (t != SurfaceType::kQuadric) types.push_back(t);
   }
   if (types.empty()) types.push_back(SurfaceType::kQuadric);
+  // Two planes across a smooth arc may be facets of one cylinder: at high
+  // noise th_dis and th_nm let a radius-10 h fillet pass as planes 20-25°
+  // wide, which no plane fits as a pair.
+  if (x.type == SurfaceType::kPlane && y.type == SurfaceType::kPlane) {
+    types.push_back(SurfaceType::kCylinder);
+  }
   std::sort(types.begin(), types.end(),
             [](SurfaceType a, SurfaceType b) { return TypeRank(a) < TypeRank(b); });
   types.erase(std::unique(types.begin(), types.end()), types.end());
@@ -200,6 +206,29 @@ void RetypeQuadrics(const SegmentContext& c, std::vector<RegionState>* regions) 
     r.type = typed->type;
     r.surface = typed->fit.surface;
   }
+}
+
+bool RetypeCurved(const SegmentContext& c, RegionState* r) {
+  const std::vector<int> smooth = SmoothVertices(c, r->vertices);
+  if (smooth.size() < kMinRetypeVertices) return false;
+  const TypedFit curved = DecideCurvedType(c, smooth, c.tolerance);
+  if (!(curved.fraction > c.alpha) || curved.type == SurfaceType::kQuadric) return false;
+  r->type = curved.type;
+  r->surface = curved.fit.surface;
+  return true;
+}
+
+std::vector<int> RetypeBentPlanes(const SegmentContext& c, std::vector<RegionState>* regions) {
+  std::vector<int> retyped;
+  for (int id = 0; id < static_cast<int>(regions->size()); ++id) {
+    RegionState& r = (*regions)[id];
+    if (!r.alive || r.type != SurfaceType::kPlane) continue;
+    const std::vector<int> smooth = SmoothVertices(c, r.vertices);
+    if (smooth.size() < kMinRetypeVertices) continue;
+    if (FitFraction(c, r.surface, smooth, c.tolerance) > c.alpha) continue;
+    if (RetypeCurved(c, &r)) retyped.push_back(id);
+  }
+  return retyped;
 }
 
 }  // namespace meshseg::segment_internal

@@ -22,6 +22,17 @@ inline constexpr std::size_t kMinRetypeVertices = 10;
 // merging, so seed 000 §3 step 5 is asked again).
 void RetypeQuadrics(const SegmentContext& c, std::vector<RegionState>* regions);
 
+// Gives plane regions that their plane no longer fits (the alpha test fails
+// on their non-sharp vertices) the first analytic curved type that passes
+// it: at high noise a fillet can start as a plane from a seed on its middle
+// and take its whole arc as leftovers. Returns the ids of those retyped.
+std::vector<int> RetypeBentPlanes(const SegmentContext& c, std::vector<RegionState>* regions);
+
+// Gives region `r` the curved type DecideCurvedType finds on its non-sharp
+// vertices if it passes the alpha test and is not a general quadric;
+// returns whether it did.
+bool RetypeCurved(const SegmentContext& c, RegionState* r);
+
 // Merges regions in place (merged-away regions get alive = false and no
 // vertices): extrapolation, refitting, retyping of quadrics, extrapolation. Errors: CANCELLED on stop.
 absl::Status MergeRegions(const SegmentContext& c, std::vector<int>* labels,

@@ -66,6 +66,14 @@ absl::StatusOr<Segmentation> Segment(const Mesh& mesh, const CurvatureField& cur
     MESHSEG_RETURN_IF_ERROR(AbsorbLeftovers(c, &labels, &regions));
   }
   MESHSEG_RETURN_IF_ERROR(RefineBoundaries(c, &labels, &regions));
+  // A plane retyped here held only part of its arc; the type is decided
+  // again once the refinement has given it the rest.
+  const std::vector<int> bent = RetypeBentPlanes(c, &regions);
+  if (!bent.empty()) {
+    MESHSEG_RETURN_IF_ERROR(RefineBoundaries(c, &labels, &regions));
+    for (const int id : bent) RetypeCurved(c, &regions[id]);
+    MESHSEG_RETURN_IF_ERROR(RefineBoundaries(c, &labels, &regions));
+  }
   FlattenNearlyFlatRegions(c, &regions);
   ctx.Progress("segment", 0.9);
   MESHSEG_RETURN_IF_ERROR(ctx.CheckStop("segment"));
