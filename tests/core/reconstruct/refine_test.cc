@@ -50,6 +50,13 @@ std::vector<Eigen::Vector3d> SpherePoints(double min_z = -2 * kRadius) {
 // inside) over supports on a 9³ grid.
 class RefineOnPointsTest : public ::testing::Test {
  protected:
+  // RefineOnPoints on CoarseSphere() with `points` and this implicit.
+  absl::StatusOr<Mesh> Refine(const std::vector<Eigen::Vector3d>& points,
+                              const ReconstructParams& params, ReconstructStats* stats) const {
+    const PointIndex index(points);
+    return RefineOnPoints(CoarseSphere(), points, index, f_, Spacing(), params, {}, stats);
+  }
+
   const std::vector<Support> supports_ = test::GridSupports(9, 1.5 * kRadius);
   const PuFunction f_{supports_};
 };
@@ -58,13 +65,10 @@ class RefineOnPointsTest : public ::testing::Test {
 // sag of the projection (radius² / 8R, see project_to_points_test) plus 0.1 h,
 // edges of about refine_edge_length spacings, the same closed genus-0 surface.
 TEST_F(RefineOnPointsTest, TurnsACoarseMeshIntoAFineOneOnThePoints) {
-  const std::vector<Eigen::Vector3d> points = SpherePoints();
-  const PointIndex index(points);
   const double h = Spacing();
   const ReconstructParams params;
   ReconstructStats stats;
-  const absl::StatusOr<Mesh> fine =
-      RefineOnPoints(CoarseSphere(), points, index, f_, h, params, {}, &stats);
+  const absl::StatusOr<Mesh> fine = Refine(SpherePoints(), params, &stats);
   ASSERT_TRUE(fine.ok()) << fine.status();
   const TriMesh& m = fine->tri;
   EXPECT_DOUBLE_EQ(stats.refine_edge_length, params.refine_edge_length * h);
@@ -85,12 +89,9 @@ TEST_F(RefineOnPointsTest, TurnsACoarseMeshIntoAFineOneOnThePoints) {
 
 TEST_F(RefineOnPointsTest, MaxFacesLengthensTheEdges) {
   constexpr int64_t kMaxFaces = 2000;
-  const std::vector<Eigen::Vector3d> points = SpherePoints();
-  const PointIndex index(points);
   const double h = Spacing();
   ReconstructStats stats;
-  const absl::StatusOr<Mesh> fine = RefineOnPoints(
-      CoarseSphere(), points, index, f_, h, {.refine_max_faces = kMaxFaces}, {}, &stats);
+  const absl::StatusOr<Mesh> fine = Refine(SpherePoints(), {.refine_max_faces = kMaxFaces}, &stats);
   ASSERT_TRUE(fine.ok()) << fine.status();
   EXPECT_GT(stats.refine_edge_length, 1.5 * h);
   // CGAL keeps edges within 4/5 and 4/3 of the target, so the count is about,
@@ -103,13 +104,10 @@ TEST_F(RefineOnPointsTest, MaxFacesLengthensTheEdges) {
 // vertices over kFallbackReach projection radii from every point go onto
 // f = 0 instead (the grid supports put it near the unit sphere).
 TEST_F(RefineOnPointsTest, VerticesFarFromThePointsGoOntoTheImplicit) {
-  const std::vector<Eigen::Vector3d> points = SpherePoints(0.0);
-  const PointIndex index(points);
   const double h = Spacing();
   const ReconstructParams params;
   ReconstructStats stats;
-  const absl::StatusOr<Mesh> fine =
-      RefineOnPoints(CoarseSphere(), points, index, f_, h, params, {}, &stats);
+  const absl::StatusOr<Mesh> fine = Refine(SpherePoints(0.0), params, &stats);
   ASSERT_TRUE(fine.ok()) << fine.status();
   const TriMesh& m = fine->tri;
   const double reach = kFallbackReach * params.projection_radius * h;
