@@ -10,18 +10,14 @@
 
 namespace meshseg::segment_internal {
 
-Segmentation FinalizeRegions(const SegmentContext& c, const TriMesh& mesh,
-                             const std::vector<int>& labels, std::vector<RegionState> regions) {
-  const int n_regions = static_cast<int>(regions.size());
-  tbb::parallel_for(0, n_regions, [&](int id) {
-    RegionState& r = regions[id];
-    if (!r.alive || r.vertices.empty()) return;
-    FitResult fit = FitType(c, r.type, r.vertices);
-    if (fit.ok()) r.surface = fit.surface;
-  });
-  const std::vector<int> face_old = FaceLabels(c, mesh, labels, regions);
+namespace {
 
-  // Renumber by first face.
+// Renumbers the regions by first face, derives the missing vertex labels
+// from incident faces and measures every region.
+Segmentation Assemble(const SegmentContext& c, const TriMesh& mesh,
+                      const std::vector<int>& face_old, const std::vector<int>& labels,
+                      const std::vector<RegionState>& regions) {
+  const int n_regions = static_cast<int>(regions.size());
   std::vector<int> new_id(n_regions, -1);
   Segmentation seg;
   for (const int old : face_old) {
@@ -74,9 +70,31 @@ Segmentation FinalizeRegions(const SegmentContext& c, const TriMesh& mesh,
     region.max_distance = std::max(region.max_distance, dist[v]);
   }
   for (Region& region : seg.regions) {
-    if (region.vertex_count > 0) region.rms_distance = std::sqrt(sum2[region.id] / region.vertex_count);
+    if (region.vertex_count > 0) {
+      region.rms_distance = std::sqrt(sum2[region.id] / region.vertex_count);
+    }
   }
   return seg;
+}
+
+}  // namespace
+
+Segmentation FinalizeRegions(const SegmentContext& c, const TriMesh& mesh,
+                             const std::vector<int>& labels, std::vector<RegionState> regions) {
+  const int n_regions = static_cast<int>(regions.size());
+  tbb::parallel_for(0, n_regions, [&](int id) {
+    RegionState& r = regions[id];
+    if (!r.alive || r.vertices.empty()) return;
+    FitResult fit = FitType(c, r.type, r.vertices);
+    if (fit.ok()) r.surface = fit.surface;
+  });
+  return Assemble(c, mesh, FaceLabels(c, mesh, labels, regions), labels, regions);
+}
+
+Segmentation FinalizeFaceRegions(const SegmentContext& c, const TriMesh& mesh,
+                                 const std::vector<int>& face_labels,
+                                 const std::vector<RegionState>& regions) {
+  return Assemble(c, mesh, face_labels, std::vector<int>(c.vertex_count(), -1), regions);
 }
 
 }  // namespace meshseg::segment_internal

@@ -17,6 +17,13 @@ namespace meshseg::segment_internal {
 Segmentation FinalizeRegions(const SegmentContext& c, const TriMesh& mesh,
                              const std::vector<int>& labels, std::vector<RegionState> regions);
 
+// The same for regions decided face by face (exact_facets.h): one label per
+// face, the regions' surfaces kept as they are, each vertex labelled with
+// an incident face's region.
+Segmentation FinalizeFaceRegions(const SegmentContext& c, const TriMesh& mesh,
+                                 const std::vector<int>& face_labels,
+                                 const std::vector<RegionState>& regions);
+
 }  // namespace meshseg::segment_internal
 
 #endif  // MESHSEG_SRC_SEGMENT_FINALIZE_REGIONS_H_

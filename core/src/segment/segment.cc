@@ -11,6 +11,7 @@
 #include "segment/absorb_leftovers.h"
 #include "segment/decide_type.h"
 #include "segment/estimate_noise.h"
+#include "segment/exact_facets.h"
 #include "segment/finalize_regions.h"
 #include "segment/initial_segmentation.h"
 #include "segment/merge_regions.h"
@@ -54,6 +55,15 @@ absl::StatusOr<Segmentation> Segment(const Mesh& mesh, const CurvatureField& cur
   const SegmentEstimates estimates = EstimateNoise(curvature, MeanEdgeLength(mesh.tri), params);
   const SegmentContext c = MakeSegmentContext(mesh.tri, curvature, estimates, params.alpha, ctx);
 
+  // A coarse CAD export has no curvature seeds on its curved faces, but
+  // exact vertices: it is segmented facet by facet (exact_facets.h).
+  if (IsCoarseExact(curvature, estimates)) {
+    MESHSEG_ASSIGN_OR_RETURN(const FaceRegions exact, SegmentExactFacets(c, mesh.tri));
+    Segmentation seg = FinalizeFaceRegions(c, mesh.tri, exact.face_labels, exact.regions);
+    seg.estimates = estimates;
+    ctx.Progress("segment", 1.0);
+    return seg;
+  }
   std::vector<int> labels(c.vertex_count(), -1);
   std::vector<RegionState> regions;
   MESHSEG_RETURN_IF_ERROR(GrowInitialRegions(c, &labels, &regions));

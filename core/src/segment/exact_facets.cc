@@ -1,0 +1,284 @@
+#include "segment/exact_facets.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <utility>
+
+#include <Eigen/Geometry>
+
+#include "meshseg/fit.h"
+#include "meshseg/status_macros.h"
+
+namespace meshseg::segment_internal {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// Flat groups of faces, each within the tolerance of one plane.
+struct Facets {
+  std::vector<int> of_face;
+  std::vector<std::vector<int>> faces;
+  std::vector<Eigen::Vector3d> normal;
+  std::vector<std::vector<int>> neighbors;         // facets across an edge
+  std::vector<std::vector<int>> smooth_neighbors;  // those at < kMaxFacetAngleDeg
+};
+
+std::array<int, 3> FaceVertices(const TriMesh& mesh, int f) {
+  std::array<int, 3> out{};
+  int k = 0;
+  for (auto it = mesh.cfv_iter(TriMesh::FaceHandle(f)); it.is_valid() && k < 3; ++it) {
+    out[k++] = it->idx();
+  }
+  return out;
+}
+
+std::vector<int> NeighborFaces(const TriMesh& mesh, int f) {
+  std::vector<int> out;
+  for (auto it = mesh.cff_iter(TriMesh::FaceHandle(f)); it.is_valid(); ++it)
+    out.push_back(it->idx());
+  return out;
+}
+
+Eigen::Vector3d FaceNormal(const SegmentContext& c, const std::array<int, 3>& v) {
+  const Eigen::Vector3d n =
+      (c.position(v[1]) - c.position(v[0])).cross(c.position(v[2]) - c.position(v[0]));
+  const double len = n.norm();
+  return len > 0.0 ? Eigen::Vector3d(n / len) : Eigen::Vector3d::Zero();
+}
+
+Facets GroupFacets(const SegmentContext& c, const TriMesh& mesh, double eps) {
+  const int n_faces = static_cast<int>(mesh.n_faces());
+  Facets facets;
+  facets.of_face.assign(n_faces, -1);
+  std::vector<int> queue;
+  for (int seed = 0; seed < n_faces; ++seed) {
+    if (facets.of_face[seed] >= 0) continue;
+    const std::array<int, 3> sv = FaceVertices(mesh, seed);
+    const Eigen::Vector3d n = FaceNormal(c, sv);
+    const Eigen::Vector3d origin = c.position(sv[0]);
+    const int id = static_cast<int>(facets.faces.size());
+    facets.faces.emplace_back();
+    facets.normal.push_back(n);
+    facets.of_face[seed] = id;
+    queue.assign(1, seed);
+    while (!queue.empty()) {
+      const int f = queue.back();
+      queue.pop_back();
+      facets.faces[id].push_back(f);
+      if (n.isZero()) continue;  // a degenerate face is a facet of its own
+      for (const int g : NeighborFaces(mesh, f)) {
+        if (facets.of_face[g] >= 0) continue;
+        bool flat = true;
+        for (const int v : FaceVertices(mesh, g)) {
+          flat = flat && std::abs(n.dot(c.position(v) - origin)) < eps;
+        }
+        if (!flat) continue;
+        facets.of_face[g] = id;
+        queue.push_back(g);
+      }
+    }
+    std::sort(facets.faces[id].begin(), facets.faces[id].end());
+  }
+  const double cos_max = std::cos(kMaxFacetAngleDeg * kPi / 180.0);
+  facets.neighbors.resize(facets.faces.size());
+  facets.smooth_neighbors.resize(facets.faces.size());
+  for (int f = 0; f < n_faces; ++f) {
+    const int a = facets.of_face[f];
+    for (const int g : NeighborFaces(mesh, f)) {
+      const int b = facets.of_face[g];
+      if (a == b) continue;
+      facets.neighbors[a].push_back(b);
+      // Either orientation: the facets of a closed part may not agree.
+      if (std::abs(facets.normal[a].dot(facets.normal[b])) > cos_max) {
+        facets.smooth_neighbors[a].push_back(b);
+      }
+    }
+  }
+  for (auto* lists : {&facets.neighbors, &facets.smooth_neighbors}) {
+    for (std::vector<int>& list : *lists) {
+      std::sort(list.begin(), list.end());
+      list.erase(std::unique(list.begin(), list.end()), list.end());
+    }
+  }
+  return facets;
+}
+
+// The vertices of `members` (facet ids), sorted, with area-weighted normals
+// of the members' faces.
+struct FacetSample {
+  std::vector<int> vertices;
+  std::vector<Eigen::Vector3d> points;
+  std::vector<Eigen::Vector3d> normals;
+};
+
+FacetSample SampleOf(const SegmentContext& c, const TriMesh& mesh, const Facets& facets,
+                     const std::vector<int>& members) {
+  std::vector<std::pair<int, Eigen::Vector3d>> contributions;
+  for (const int m : members) {
+    for (const int f : facets.faces[m]) {
+      const std::array<int, 3> v = FaceVertices(mesh, f);
+      const Eigen::Vector3d area_normal =
+          (c.position(v[1]) - c.position(v[0])).cross(c.position(v[2]) - c.position(v[0]));
+      for (const int x : v) contributions.emplace_back(x, area_normal);
+    }
+  }
+  std::sort(contributions.begin(), contributions.end(),
+            [](const auto& a, const auto& b) { return a.first < b.first; });
+  FacetSample s;
+  for (std::size_t i = 0; i < contributions.size();) {
+    Eigen::Vector3d n = Eigen::Vector3d::Zero();
+    std::size_t j = i;
+    for (; j < contributions.size() && contributions[j].first == contributions[i].first; ++j) {
+      // Facet normals of a closed part may face either way; align to the first.
+      const Eigen::Vector3d& m = contributions[j].second;
+      n += (n.dot(m) < 0.0 ? -m : m);
+    }
+    s.vertices.push_back(contributions[i].first);
+    s.points.push_back(c.position(contributions[i].first));
+    s.normals.push_back(n.norm() > 0.0 ? Eigen::Vector3d(n.normalized())
+                                       : Eigen::Vector3d::UnitZ());
+    i = j;
+  }
+  return s;
+}
+
+int ParameterCount(SurfaceType type) {
+  switch (type) {
+    case SurfaceType::kPlane:
+      return 3;
+    case SurfaceType::kSphere:
+      return 4;
+    case SurfaceType::kCylinder:
+      return 5;
+    case SurfaceType::kCone:
+      return 6;
+    case SurfaceType::kTorus:
+      return 7;
+    default:
+      return 9;
+  }
+}
+
+// The first of cylinder, cone, sphere, torus that every point of `s` meets
+// within `eps`, with more points than parameters + 2; type kQuadric if none.
+std::pair<SurfaceType, Surface> ExactCurvedFit(const FacetSample& s, double eps) {
+  for (const SurfaceType type :
+       {SurfaceType::kCylinder, SurfaceType::kCone, SurfaceType::kSphere, SurfaceType::kTorus}) {
+    if (static_cast<int>(s.points.size()) < ParameterCount(type) + 3) continue;
+    const FitResult fit = FitOfType(type, {.points = s.points, .normals = s.normals});
+    if (fit.ok() && fit.max_distance < eps) return {type, fit.surface};
+  }
+  return {SurfaceType::kQuadric, Surface{}};
+}
+
+// True if every vertex of facet m lies on `surface` and the facet is one of
+// its facets, not a chord across it: its normal is within kMaxChordAngleDeg
+// of the surface normal at each of its vertices.
+bool FacetOnSurface(const SegmentContext& c, const TriMesh& mesh, const Facets& facets, int m,
+                    const Surface& surface, double eps) {
+  const double cos_max = std::cos(kMaxChordAngleDeg * kPi / 180.0);
+  for (const int f : facets.faces[m]) {
+    for (const int v : FaceVertices(mesh, f)) {
+      const Projection pr = Project(surface, c.position(v), Eigen::Vector3d::Zero());
+      if (!(std::abs(pr.distance) < eps) ||
+          !(std::abs(pr.normal.dot(facets.normal[m])) > cos_max)) {
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
+// Seed sets around facet p: its smooth neighbourhood two steps deep, then
+// chains of three (p, a neighbour, and a neighbour of either).
+std::vector<std::vector<int>> SeedSets(const Facets& facets, const std::vector<int>& taken, int p) {
+  auto free_neighbors = [&](int m) {
+    std::vector<int> out;
+    for (const int q : facets.smooth_neighbors[m]) {
+      if (taken[q] < 0) out.push_back(q);
+    }
+    return out;
+  };
+  std::vector<std::vector<int>> sets;
+  const std::vector<int> first = free_neighbors(p);
+  if (first.empty()) return sets;
+  std::vector<int> deep = first;
+  deep.push_back(p);
+  for (const int q : first) {
+    for (const int r : free_neighbors(q)) deep.push_back(r);
+  }
+  std::sort(deep.begin(), deep.end());
+  deep.erase(std::unique(deep.begin(), deep.end()), deep.end());
+  for (const int q : first) {
+    std::vector<int> thirds = first;
+    for (const int r : free_neighbors(q)) thirds.push_back(r);
+    for (const int r : thirds) {
+      if (r == p || r <= q) continue;
+      sets.push_back({p, q, r});
+    }
+  }
+  sets.push_back(deep);
+  return sets;
+}
+
+}  // namespace
+
+bool IsCoarseExact(const CurvatureField& curvature, const SegmentEstimates& estimates) {
+  if (curvature.sharp.empty()) return false;
+  if (!(estimates.noise_sigma <= kExactNoise * estimates.mean_edge_length)) return false;
+  const auto sharp = std::count(curvature.sharp.begin(), curvature.sharp.end(), 1);
+  return sharp > kCoarseSharpShare * static_cast<double>(curvature.sharp.size());
+}
+
+absl::StatusOr<FaceRegions> SegmentExactFacets(const SegmentContext& c, const TriMesh& mesh) {
+  const double eps = kExactTolerance * c.mean_edge_length;
+  const Facets facets = GroupFacets(c, mesh, eps);
+  const int n_facets = static_cast<int>(facets.faces.size());
+  std::vector<int> taken(n_facets, -1);
+  FaceRegions out;
+  for (int p = 0; p < n_facets; ++p) {
+    if (taken[p] >= 0) continue;
+    if (p % 256 == 0) MESHSEG_RETURN_IF_ERROR(c.run->CheckStop("segment"));
+    for (const std::vector<int>& seed : SeedSets(facets, taken, p)) {
+      if (static_cast<int>(seed.size()) < kMinFacets) continue;
+      const FacetSample sample = SampleOf(c, mesh, facets, seed);
+      if (sample.points.size() > kMaxSeedVertices) continue;
+      auto [type, surface] = ExactCurvedFit(sample, eps);
+      if (type == SurfaceType::kQuadric) continue;
+
+      const int id = static_cast<int>(out.regions.size());
+      std::vector<int> members = seed;
+      for (const int m : members) taken[m] = id;
+      for (std::size_t k = 0; k < members.size(); ++k) {
+        for (const int q : facets.neighbors[members[k]]) {
+          if (taken[q] >= 0 || !FacetOnSurface(c, mesh, facets, q, surface, eps)) continue;
+          taken[q] = id;
+          members.push_back(q);
+        }
+      }
+      const FacetSample all = SampleOf(c, mesh, facets, members);
+      const FitResult refit = FitOfType(type, {.points = all.points, .normals = all.normals});
+      if (refit.ok() && refit.max_distance < eps) surface = refit.surface;
+      out.regions.push_back({.type = type, .surface = surface, .vertices = all.vertices});
+      break;
+    }
+  }
+  // The facets left are planes.
+  for (int p = 0; p < n_facets; ++p) {
+    if (taken[p] >= 0) continue;
+    taken[p] = static_cast<int>(out.regions.size());
+    const FacetSample s = SampleOf(c, mesh, facets, {p});
+    const FitResult plane = FitOfType(SurfaceType::kPlane, {.points = s.points});
+    out.regions.push_back({.type = SurfaceType::kPlane,
+                           .surface = plane.ok() ? plane.surface : Surface{},
+                           .vertices = s.vertices});
+  }
+  out.face_labels.resize(mesh.n_faces());
+  for (std::size_t f = 0; f < out.face_labels.size(); ++f) {
+    out.face_labels[f] = taken[facets.of_face[f]];
+  }
+  return out;
+}
+
+}  // namespace meshseg::segment_internal

@@ -1,0 +1,67 @@
+// Segmentation of coarse exact meshes (our addition for CAD exports such as
+// ABC's abc_00007974_5.obj): every vertex lies on its surface to rounding
+// error, but a cylinder of radius 0.5–2 is tessellated with edges of 1.4, so
+// 37 % of the vertices are sharp and no curvature seed starts on a curved
+// face. Seeds 000 and 002 assume a dense scan; here the exactness is used
+// instead:
+//  1. faces are grouped into exact planes (every vertex within the tolerance
+//     of the seed face's plane), which also splits each curved face into its
+//     flat facets (a quad between two rulings of a cylinder is planar);
+//  2. chains of at least kMinFacets facets meeting at less than
+//     kMaxFacetAngleDeg are fitted with cylinder, cone, sphere and torus; the
+//     first one that every vertex meets exactly grows over the neighbouring
+//     facets that meet it too;
+//  3. the facets left are planes.
+#ifndef MESHSEG_SRC_SEGMENT_EXACT_FACETS_H_
+#define MESHSEG_SRC_SEGMENT_EXACT_FACETS_H_
+
+#include <vector>
+
+#include "absl/status/statusor.h"
+#include "meshseg/curvature.h"
+#include "meshseg/mesh.h"
+#include "meshseg/segment.h"
+#include "segment/segment_internal.h"
+
+namespace meshseg::segment_internal {
+
+// A mesh is exact when the estimated noise is below this fraction of l_avg
+// (CAD exports and noise-free generated parts: 0 to 1e-15 l_avg; the
+// cleanest scan in shared/data, fandisk, 2.5e-4).
+inline constexpr double kExactNoise = 1e-9;
+// ... and coarse when this share of its vertices is sharp (abc_00007974_5:
+// 0.37; the generated parts 0.02–0.15; fandisk 0.18).
+inline constexpr double kCoarseSharpShare = 0.3;
+// Distance within which a vertex lies on a surface, in l_avg.
+inline constexpr double kExactTolerance = 1e-4;
+// Facets of one curved face meet at less than this; the faces of a part
+// mostly meet at 90°. A regular prism with more than 6 sides is a
+// tessellated cylinder to this test, as it is to the eye.
+inline constexpr double kMaxFacetAngleDeg = 60.0;
+// A facet whose vertices all lie on a curved surface is one of its facets
+// if its normal is within this of the surface normal at each vertex (half
+// the arc it spans, under 90°); the flat bottom of a half round, a chord
+// across it, is at 90°.
+inline constexpr double kMaxChordAngleDeg = 80.0;
+// A curved region holds at least this many facets: three parallel lines lie
+// on a cylinder whatever they are, four do not. (A curved face tessellated
+// with two facets is two planes to us: nothing tells it from a crease.)
+inline constexpr int kMinFacets = 3;
+// Seed sets with more vertices than this hold a large plane and are not fitted.
+inline constexpr std::size_t kMaxSeedVertices = 200;
+
+// True if `estimates` and `curvature` say the mesh is coarse and exact.
+bool IsCoarseExact(const CurvatureField& curvature, const SegmentEstimates& estimates);
+
+struct FaceRegions {
+  std::vector<int> face_labels;     // one per face, into `regions`
+  std::vector<RegionState> regions; // vertices: those of the region's faces
+};
+
+// Segments `mesh` (the mesh of `c`) face by face as above.
+// Errors: CANCELLED on stop.
+absl::StatusOr<FaceRegions> SegmentExactFacets(const SegmentContext& c, const TriMesh& mesh);
+
+}  // namespace meshseg::segment_internal
+
+#endif  // MESHSEG_SRC_SEGMENT_EXACT_FACETS_H_

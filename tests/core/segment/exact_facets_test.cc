@@ -1,0 +1,121 @@
+#include "segment/exact_facets.h"
+
+#include <array>
+#include <cmath>
+#include <numbers>
+#include <variant>
+#include <vector>
+
+#include <Eigen/Geometry>
+#include <gtest/gtest.h>
+
+#include "meshseg/curvature.h"
+#include "meshseg/generate.h"
+#include "segment/estimate_noise.h"
+
+namespace meshseg::segment_internal {
+namespace {
+
+constexpr double kLength = 20.0;
+
+// A prism along x, length kLength, over the polygon of `count` points on a
+// circle of `radius` from angle 0 to `arc_deg` (closed by the chord when
+// arc_deg < 360), with fan caps: every vertex exact, the side triangles
+// long and thin like a CAD export's.
+Mesh ArcPrism(double radius, int count, double arc_deg) {
+  const bool closed = arc_deg >= 360.0;
+  const double step = arc_deg / (closed ? count : count - 1) * std::numbers::pi / 180.0;
+  std::vector<Eigen::Vector3d> v;
+  for (const double x : {0.0, kLength}) {
+    for (int i = 0; i < count; ++i) {
+      v.emplace_back(x, radius * std::cos(i * step), radius * std::sin(i * step));
+    }
+  }
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+  for (int i = 0; i < count; ++i) centre += v[i] / count;
+  v.push_back(centre);
+  v.push_back(centre + Eigen::Vector3d(kLength, 0, 0));
+  const int c0 = 2 * count;
+  const int c1 = c0 + 1;
+  std::vector<std::array<int, 3>> f;
+  for (int i = 0; i < count; ++i) {
+    const int j = (i + 1) % count;
+    f.push_back({i, j, count + j});
+    f.push_back({i, count + j, count + i});
+    f.push_back({c0, j, i});
+    f.push_back({c1, count + i, count + j});
+  }
+  absl::StatusOr<Mesh> mesh = BuildMesh(std::move(v), f, "prism");
+  EXPECT_TRUE(mesh.ok()) << mesh.status();
+  return *std::move(mesh);
+}
+
+struct ExactRun {
+  CurvatureField field;
+  SegmentEstimates estimates;
+  FaceRegions regions;
+};
+
+ExactRun SegmentExact(const Mesh& mesh) {
+  ExactRun run;
+  absl::StatusOr<CurvatureField> field = EstimateCurvature(mesh);
+  EXPECT_TRUE(field.ok()) << field.status();
+  run.field = *std::move(field);
+  run.estimates = EstimateNoise(run.field, MeanEdgeLength(mesh.tri), {});
+  const RunContext ctx;
+  const SegmentContext c = MakeSegmentContext(mesh.tri, run.field, run.estimates, 0.9, ctx);
+  absl::StatusOr<FaceRegions> regions = SegmentExactFacets(c, mesh.tri);
+  EXPECT_TRUE(regions.ok()) << regions.status();
+  run.regions = *std::move(regions);
+  return run;
+}
+
+// A half round in 8 facets on a flat bottom: one exact cylinder (all 16 side
+// triangles of the arc) and three planes. The bottom's corners lie on the
+// cylinder too; its normal, at 90° to the cylinder's there, keeps it out.
+TEST(SegmentExactFacets, FindsTheCylinderOfACoarseHalfRound) {
+  const Mesh mesh = ArcPrism(2.0, 9, 180.0);
+  const ExactRun run = SegmentExact(mesh);
+  ASSERT_EQ(run.regions.regions.size(), 4u);
+  int cylinders = 0;
+  for (std::size_t r = 0; r < run.regions.regions.size(); ++r) {
+    const RegionState& region = run.regions.regions[r];
+    if (const auto* cyl = std::get_if<Cylinder>(&region.surface)) {
+      ++cylinders;
+      EXPECT_EQ(region.type, SurfaceType::kCylinder);
+      EXPECT_NEAR(cyl->radius, 2.0, 1e-6);
+      EXPECT_NEAR(std::abs(cyl->axis_direction.x()), 1.0, 1e-9);
+      EXPECT_EQ(std::count(run.regions.face_labels.begin(), run.regions.face_labels.end(),
+                           static_cast<int>(r)),
+                16);
+    } else {
+      EXPECT_EQ(region.type, SurfaceType::kPlane);
+    }
+  }
+  EXPECT_EQ(cylinders, 1);
+}
+
+// A pentagonal prism's sides meet at 72 degrees: seven planes, no cylinder.
+TEST(SegmentExactFacets, KeepsThePlanesOfAPentagonalPrism) {
+  const Mesh mesh = ArcPrism(2.0, 5, 360.0);
+  const ExactRun run = SegmentExact(mesh);
+  ASSERT_EQ(run.regions.regions.size(), 7u);
+  for (const RegionState& region : run.regions.regions) {
+    EXPECT_EQ(region.type, SurfaceType::kPlane);
+  }
+}
+
+// Dense meshes keep the curvature-seeded path: a noise-free generated part
+// is exact, but few of its vertices are sharp. (abc_00007974_5.obj, the
+// case this path is for, is in tests/core/pipeline/real_files_test.cc.)
+TEST(IsCoarseExact, OnlyForCoarseExactMeshes) {
+  absl::StatusOr<GeneratedPart> part = GeneratePart("small_block", {.noise = 0.0});
+  ASSERT_TRUE(part.ok()) << part.status();
+  absl::StatusOr<CurvatureField> field = EstimateCurvature(part->mesh);
+  ASSERT_TRUE(field.ok()) << field.status();
+  const SegmentEstimates estimates = EstimateNoise(*field, MeanEdgeLength(part->mesh.tri), {});
+  EXPECT_FALSE(IsCoarseExact(*field, estimates));
+}
+
+}  // namespace
+}  // namespace meshseg::segment_internal
