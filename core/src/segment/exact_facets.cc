@@ -190,8 +190,9 @@ bool FacetOnSurface(const SegmentContext& c, const TriMesh& mesh, const Facets& 
   return true;
 }
 
-// Seed sets around facet p: its smooth neighbourhood two steps deep, then
-// chains of three (p, a neighbour, and a neighbour of either).
+// Seed sets around facet p, cheapest first: chains of three (p, a smooth
+// neighbour, and a smooth neighbour of either), then its whole smooth
+// neighbourhood two steps deep.
 std::vector<std::vector<int>> SeedSets(const Facets& facets, const std::vector<int>& taken, int p) {
   auto free_neighbors = [&](int m) {
     std::vector<int> out;
@@ -246,7 +247,6 @@ absl::StatusOr<FaceRegions> SegmentExactFacets(const SegmentContext& c, const Tr
       if (sample.points.size() > kMaxSeedVertices) continue;
       auto [type, surface] = ExactCurvedFit(sample, eps);
       if (type == SurfaceType::kQuadric) continue;
-
       const int id = static_cast<int>(out.regions.size());
       std::vector<int> members = seed;
       for (const int m : members) taken[m] = id;
