@@ -4,36 +4,39 @@
 #include <cmath>
 #include <cstdint>
 #include <utility>
+#include <variant>
 
-#include <Eigen/Eigenvalues>
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+
+#include "meshseg/fit.h"
 
 namespace meshseg::reconstruct_internal {
 namespace {
 
-// One projection step of x onto the weighted plane of its neighbourhood.
-// `found` holds (point index, squared distance to x).
+// Reusable per-thread inputs of the plane fit.
+struct PlaneScratch {
+  std::vector<Eigen::Vector3d> points;
+  std::vector<double> weights;
+};
+
+// One projection step of x onto the Gaussian-weighted least-squares plane
+// (FitPlane) of its neighbourhood. `found` holds (point index, squared
+// distance to x).
 Eigen::Vector3d OntoLocalPlane(const Eigen::Vector3d& x, const std::vector<Eigen::Vector3d>& points,
-                               const std::vector<std::pair<uint32_t, double>>& found,
-                               double sigma2) {
-  Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
-  double weight_sum = 0.0;
+                               const std::vector<std::pair<uint32_t, double>>& found, double sigma2,
+                               PlaneScratch* scratch) {
+  scratch->points.clear();
+  scratch->weights.clear();
   for (const auto& [j, d2] : found) {
-    const double w = std::exp(-d2 / sigma2);
-    centroid += w * points[j];
-    weight_sum += w;
+    scratch->points.push_back(points[j]);
+    scratch->weights.push_back(std::exp(-d2 / sigma2));
   }
-  if (!(weight_sum > 0.0)) return x;
-  centroid /= weight_sum;
-  Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
-  for (const auto& [j, d2] : found) {
-    const Eigen::Vector3d d = points[j] - centroid;
-    covariance += std::exp(-d2 / sigma2) * d * d.transpose();
-  }
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(covariance);
-  const Eigen::Vector3d normal = eig.eigenvectors().col(0);
-  return x - normal.dot(x - centroid) * normal;
+  const FitResult fit =
+      FitPlane({.points = scratch->points, .normals = {}, .weights = scratch->weights});
+  if (!fit.ok()) return x;
+  const Plane& plane = std::get<Plane>(fit.surface);
+  return x - plane.normal.dot(x - plane.point) * plane.normal;
 }
 
 }  // namespace
@@ -47,6 +50,7 @@ std::vector<int> ProjectToPoints(const std::vector<Eigen::Vector3d>& points,
     std::vector<std::pair<uint32_t, double>> found;
     std::vector<uint32_t> nearest;
     std::vector<double> nearest_d2;
+    PlaneScratch scratch;
     for (size_t v = range.begin(); v != range.end(); ++v) {
       const TriMesh::VertexHandle vh(static_cast<int>(v));
       Eigen::Vector3d x = ToEigen(mesh->point(vh));
@@ -64,12 +68,11 @@ std::vector<int> ProjectToPoints(const std::vector<Eigen::Vector3d>& points,
           for (size_t k = 0; k < nearest.size(); ++k) found.emplace_back(nearest[k], nearest_d2[k]);
           widened = nearest_d2.back() / 4.0;
         }
-        x = OntoLocalPlane(x, points, found, widened);
+        x = OntoLocalPlane(x, points, found, widened, &scratch);
       }
       mesh->set_point(vh, TriMesh::Point(x[0], x[1], x[2]));
     }
   });
-  mesh->update_normals();
   std::vector<int> out;
   for (size_t v = 0; v < left.size(); ++v) {
     if (left[v]) out.push_back(static_cast<int>(v));

@@ -27,11 +27,11 @@ inline constexpr double kFallbackReach = 3.0;
 
 // Moves every vertex of `mesh` `iterations` times onto the plane fitted to
 // `points` (indexed by `index`) within `radius` of it, weighted by
-// exp(−4 d² / radius²), and updates the normals. Returns the vertices with
-// no kMinProjectionPoints points within kFallbackReach × radius; they do not
-// move. Noise along the normal
-// averages out over the ~π(radius/h)² points of a disc; sharp edges are
-// rounded over about `radius`.
+// exp(−4 d² / radius²). Returns the vertices with no kMinProjectionPoints
+// points within kFallbackReach × radius; they do not move. The caller
+// updates the normals (refine.h moves those vertices first). Noise along the
+// normal averages out over the ~π(radius/h)² points of a disc; sharp edges
+// are rounded over about `radius`.
 std::vector<int> ProjectToPoints(const std::vector<Eigen::Vector3d>& points,
                                  const PointIndex& index, double radius, int iterations,
                                  TriMesh* mesh);
