@@ -5,8 +5,6 @@
 #include <cmath>
 #include <utility>
 
-#include <Eigen/Geometry>
-
 #include "meshseg/fit.h"
 #include "meshseg/status_macros.h"
 
@@ -40,13 +38,6 @@ std::vector<int> NeighborFaces(const TriMesh& mesh, int f) {
   return out;
 }
 
-Eigen::Vector3d FaceNormal(const SegmentContext& c, const std::array<int, 3>& v) {
-  const Eigen::Vector3d n =
-      (c.position(v[1]) - c.position(v[0])).cross(c.position(v[2]) - c.position(v[0]));
-  const double len = n.norm();
-  return len > 0.0 ? Eigen::Vector3d(n / len) : Eigen::Vector3d::Zero();
-}
-
 Facets GroupFacets(const SegmentContext& c, const TriMesh& mesh, double eps) {
   const int n_faces = static_cast<int>(mesh.n_faces());
   Facets facets;
@@ -55,7 +46,7 @@ Facets GroupFacets(const SegmentContext& c, const TriMesh& mesh, double eps) {
   for (int seed = 0; seed < n_faces; ++seed) {
     if (facets.of_face[seed] >= 0) continue;
     const std::array<int, 3> sv = FaceVertices(mesh, seed);
-    const Eigen::Vector3d n = FaceNormal(c, sv);
+    const Eigen::Vector3d n = ToEigen(mesh.normal(TriMesh::FaceHandle(seed)));
     const Eigen::Vector3d origin = c.position(sv[0]);
     const int id = static_cast<int>(facets.faces.size());
     facets.faces.emplace_back();
@@ -117,10 +108,9 @@ FacetSample SampleOf(const SegmentContext& c, const TriMesh& mesh, const Facets&
   std::vector<std::pair<int, Eigen::Vector3d>> contributions;
   for (const int m : members) {
     for (const int f : facets.faces[m]) {
-      const std::array<int, 3> v = FaceVertices(mesh, f);
-      const Eigen::Vector3d area_normal =
-          (c.position(v[1]) - c.position(v[0])).cross(c.position(v[2]) - c.position(v[0]));
-      for (const int x : v) contributions.emplace_back(x, area_normal);
+      const TriMesh::FaceHandle fh(f);
+      const Eigen::Vector3d area_normal = mesh.calc_face_area(fh) * ToEigen(mesh.normal(fh));
+      for (const int x : FaceVertices(mesh, f)) contributions.emplace_back(x, area_normal);
     }
   }
   std::sort(contributions.begin(), contributions.end(),
@@ -166,7 +156,8 @@ std::pair<SurfaceType, Surface> ExactCurvedFit(const FacetSample& s, double eps)
   for (const SurfaceType type :
        {SurfaceType::kCylinder, SurfaceType::kCone, SurfaceType::kSphere, SurfaceType::kTorus}) {
     if (static_cast<int>(s.points.size()) < ParameterCount(type) + 3) continue;
-    const FitResult fit = FitOfType(type, {.points = s.points, .normals = s.normals});
+    const FitResult fit =
+        FitOfType(type, {.points = s.points, .normals = s.normals, .weights = {}});
     if (fit.ok() && fit.max_distance < eps) return {type, fit.surface};
   }
   return {SurfaceType::kQuadric, Surface{}};
@@ -258,7 +249,8 @@ absl::StatusOr<FaceRegions> SegmentExactFacets(const SegmentContext& c, const Tr
         }
       }
       const FacetSample all = SampleOf(c, mesh, facets, members);
-      const FitResult refit = FitOfType(type, {.points = all.points, .normals = all.normals});
+      const FitResult refit =
+          FitOfType(type, {.points = all.points, .normals = all.normals, .weights = {}});
       if (refit.ok() && refit.max_distance < eps) surface = refit.surface;
       out.regions.push_back({.type = type, .surface = surface, .vertices = all.vertices});
       break;
@@ -269,7 +261,8 @@ absl::StatusOr<FaceRegions> SegmentExactFacets(const SegmentContext& c, const Tr
     if (taken[p] >= 0) continue;
     taken[p] = static_cast<int>(out.regions.size());
     const FacetSample s = SampleOf(c, mesh, facets, {p});
-    const FitResult plane = FitOfType(SurfaceType::kPlane, {.points = s.points});
+    const FitResult plane =
+        FitOfType(SurfaceType::kPlane, {.points = s.points, .normals = {}, .weights = {}});
     out.regions.push_back({.type = SurfaceType::kPlane,
                            .surface = plane.ok() ? plane.surface : Surface{},
                            .vertices = s.vertices});

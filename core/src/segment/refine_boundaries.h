@@ -20,10 +20,10 @@ namespace meshseg::segment_internal {
 inline constexpr int kMaxBoundarySweeps = 10;
 inline constexpr int kBoundaryRounds = 2;
 
-// How badly vertex v matches `surface`: (d / th_dis)² + (θ / th_nm)², with d
-// its distance to the surface and θ the angle between n'_v and the surface
-// normal at the closest point.
-double MismatchScore(const SegmentContext& c, const Surface& surface, int v);
+// How badly vertex v matches the surface it projects onto as `pr`:
+// (d / th_dis)² + (θ / th_nm)², with d its distance to the surface and θ the
+// angle between n'_v and the surface normal at the closest point.
+double MismatchScore(const SegmentContext& c, int v, const Projection& pr);
 
 // Moves non-sharp vertices to the neighbouring region (a region one of their
 // edges leads to) with the lowest MismatchScore, if they meet (5) and (6)
