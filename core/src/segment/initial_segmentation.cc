@@ -77,6 +77,9 @@ void GrowAndType(const SegmentContext& c, int id, std::vector<int>* labels,
       (*labels)[v] = -1;
       return true;
     });
+    // What is left may be a plane the curved fit bent over to reach a
+    // tangent fillet's first rows; plane comes first in seed 000's order.
+    if (auto plane = PlaneIfFits(c, region.vertices, c.tolerance)) typed = *plane;
     GrowTyped(c, typed, id, labels, &region);
     return;
   }
