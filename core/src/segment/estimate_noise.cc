@@ -14,12 +14,33 @@ constexpr double kMaxAngleDeg = 30.0;
 // Test (6) uses n'_i, whose noise is a fraction of the tilt of n_i against
 // it; the median tilt of n_i is a generous bound for n'_i's scatter.
 constexpr double kAngleSpread = 1.5;
+// A vertex whose local fit residual is within this factor of the most
+// common residual sees noise only. The others' neighbourhoods leak over an
+// edge that the sharp test missed (at high noise on a small part, half of
+// them), and their residual measures the edge, not the noise.
+constexpr double kCleanResidual = 1.5;
+// Below this share of clean vertices the mode is not trusted and every
+// vertex counts, as in seed 000.
+constexpr double kMinCleanShare = 0.1;
 
 double Median(std::vector<double> x) {
   if (x.empty()) return 0.0;
   const auto mid = x.begin() + x.size() / 2;
   std::nth_element(x.begin(), mid, x.end());
   return *mid;
+}
+
+// The mode of `x`: the middle of the shortest interval holding a quarter of
+// the values.
+double Mode(std::vector<double> x) {
+  if (x.empty()) return 0.0;
+  std::sort(x.begin(), x.end());
+  const std::size_t k = std::max<std::size_t>(1, x.size() / 4);
+  std::size_t best = 0;
+  for (std::size_t i = 0; i + k <= x.size(); ++i) {
+    if (x[i + k - 1] - x[i] < x[best + k - 1] - x[best]) best = i;
+  }
+  return x[best + k / 2];
 }
 
 }  // namespace
@@ -33,6 +54,18 @@ SegmentEstimates EstimateNoise(const CurvatureField& curvature, double l_avg,
     residual.push_back(curvature.fit_residual[v]);
     const double cosine = std::clamp(curvature.normal[v].dot(curvature.smooth_normal[v]), -1.0, 1.0);
     tilt_deg.push_back(std::acos(cosine) * 180.0 / kPi);
+  }
+  const double limit = kCleanResidual * Mode(residual);
+  std::vector<double> clean_residual;
+  std::vector<double> clean_tilt_deg;
+  for (std::size_t k = 0; k < residual.size(); ++k) {
+    if (residual[k] > limit) continue;
+    clean_residual.push_back(residual[k]);
+    clean_tilt_deg.push_back(tilt_deg[k]);
+  }
+  if (clean_residual.size() >= kMinCleanShare * residual.size()) {
+    residual = std::move(clean_residual);
+    tilt_deg = std::move(clean_tilt_deg);
   }
   SegmentEstimates e;
   e.mean_edge_length = l_avg;
