@@ -11,6 +11,11 @@ namespace {
 // A cone (one more parameter) replaces a passing cylinder only if it is
 // clearly more accurate.
 constexpr double kConeGain = 0.8;
+// Where n'_i is bent (see DecideCurvedType), a later type wins on test (5)
+// alone: if it meets (6) at this share, and its model error is under
+// kConeGain of the other's, which must exceed kMinModelError noise sigmas.
+constexpr double kBentNormalFraction = 0.75;
+constexpr double kMinModelError = 0.25;
 // Types within this fraction of the best count as equally good; the earlier
 // one in seed 000's order (cylinder, sphere, cone, torus) wins.
 constexpr double kFractionTie = 0.02;
@@ -23,6 +28,33 @@ TypedFit Try(const SegmentContext& c, SurfaceType type, std::span<const int> ver
   k.fit = FitType(c, type, vertices);
   if (k.fit.ok()) k.fraction = FitFraction(c, k.fit.surface, vertices, tol);
   return k;
+}
+
+// How far `fit` misses its vertices beyond the noise, sqrt(rms^2 - sigma^2).
+// At 0.15 h the rms of a sphere on a narrow 45-degree chamfer is only 10 %
+// above the cone's, which sits at the noise; their model errors are
+// 0.45 sigma and 0.
+double ModelError(const SegmentContext& c, const FitResult& fit) {
+  return std::sqrt(
+      std::max(0.0, fit.rms_distance * fit.rms_distance - c.noise_sigma * c.noise_sigma));
+}
+
+// True if `t` fits `vertices` clearly better than the passing `pass` by
+// distance alone: see kBentNormalFraction.
+bool WinsOnDistance(const SegmentContext& c, const TypedFit& t, const TypedFit& pass,
+                    std::span<const int> vertices, const Tolerance& tol) {
+  const double pass_error = ModelError(c, pass.fit);
+  if (!(t.fraction >= kBentNormalFraction) || t.fraction > c.alpha ||
+      !(pass_error > kMinModelError * c.noise_sigma) ||
+      !(ModelError(c, t.fit) < kConeGain * pass_error)) {
+    return false;
+  }
+  const std::vector<int> sample = Sample(vertices);
+  std::size_t near = 0;
+  for (const int v : sample) {
+    if (std::abs(ProjectVertex(c, t.fit.surface, v).distance) < tol.distance) ++near;
+  }
+  return near > c.alpha * sample.size();
 }
 
 // The smallest principal radius of curvature of a curved fit near `at`.
@@ -116,12 +148,21 @@ TypedFit DecideCurvedType(const SegmentContext& c, std::span<const int> vertices
   }
   // The first type in seed 000's order that passes the alpha test, unless
   // a later passing one is clearly more accurate at no loss of fraction (a
-  // sphere passes on a noisy cone band only thanks to the tolerances) ...
-  const TypedFit* pass = nullptr;
-  for (const TypedFit& t : k) {
-    if (!(t.fraction > c.alpha)) continue;
-    if (pass == nullptr || (t.fraction >= pass->fraction - kFractionTie &&
-                            t.fit.rms_distance < kConeGain * pass->fit.rms_distance)) {
+  // sphere passes on a noisy cone band only thanks to the tolerances), or
+  // a later one wins on distance where n'_i is bent: on a band narrower
+  // than N'(i, W2) between two creases the sharp test misses (a 45-degree
+  // chamfer, 6 h wide), n'_i turns toward both neighbours as a sphere's
+  // normals would, and at 0.15 h a fifth of the n_i miss th_nm by noise.
+  // The later type then keeps the fraction the earlier one earned ...
+  TypedFit* pass = nullptr;
+  for (TypedFit& t : k) {
+    if (pass == nullptr) {
+      if (t.fraction > c.alpha) pass = &t;
+    } else if (t.fraction > c.alpha && t.fraction >= pass->fraction - kFractionTie &&
+               t.fit.rms_distance < kConeGain * pass->fit.rms_distance) {
+      pass = &t;
+    } else if (WinsOnDistance(c, t, *pass, vertices, tol)) {
+      t.fraction = pass->fraction;
       pass = &t;
     }
   }

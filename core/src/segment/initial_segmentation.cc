@@ -77,9 +77,15 @@ void GrowAndType(const SegmentContext& c, int id, std::vector<int>* labels,
       (*labels)[v] = -1;
       return true;
     });
-    // What is left may be a plane the curved fit bent over to reach a
-    // tangent fillet's first rows; plane comes first in seed 000's order.
-    if (auto plane = PlaneIfFits(c, region.vertices, c.tolerance)) typed = *plane;
+    // The type is decided again on what is left: it may be a plane the
+    // curved fit bent over to reach a tangent fillet's first rows, or a
+    // narrow chamfer that the cone fits better once its rims are gone.
+    if (auto plane = PlaneIfFits(c, region.vertices, c.tolerance)) {
+      typed = *plane;
+    } else if (TypedFit again = DecideCurvedType(c, region.vertices, c.tolerance);
+               again.type != SurfaceType::kQuadric && again.fraction > c.alpha) {
+      typed = std::move(again);
+    }
     GrowTyped(c, typed, id, labels, &region);
     return;
   }

@@ -28,6 +28,7 @@ SegmentContext MakeSegmentContext(const TriMesh& mesh, const CurvatureField& cur
   c.curvature = &curvature;
   c.vertex_area = VertexAreas(mesh);
   c.mean_edge_length = estimates.mean_edge_length;
+  c.noise_sigma = estimates.noise_sigma;
   c.tolerance.distance = estimates.distance_tolerance;
   c.tolerance.cos_angle = std::cos(estimates.angle_tolerance_deg * kPi / 180.0);
   c.angle_tolerance_deg = estimates.angle_tolerance_deg;

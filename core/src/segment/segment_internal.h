@@ -38,6 +38,7 @@ struct SegmentContext {
   const CurvatureField* curvature = nullptr;  // n_i, n'_i, kappa, sharp
   std::vector<double> vertex_area;            // a third of incident face areas
   double mean_edge_length = 0.0;              // l_avg
+  double noise_sigma = 0.0;                   // estimated, model units
   Tolerance tolerance;                        // the base (5)/(6) thresholds
   double angle_tolerance_deg = 0.0;
   double alpha = 0.9;                         // seed 000 §3 step 3
