@@ -2,6 +2,8 @@
 #include "meshseg/segment.h"
 
 #include <cmath>
+#include <cstdint>
+#include <cstdlib>
 #include <numbers>
 #include <string>
 
@@ -29,9 +31,16 @@ struct PartRun {
   Evaluation eval;
 };
 
+// The noise seed of the generated parts: 7, or $MESHSEG_NOISE_SEED, so that
+// scripts/segment_seed_matrix.sh can run these tests over other noise draws.
+uint64_t NoiseSeed() {
+  const char* seed = std::getenv("MESHSEG_NOISE_SEED");
+  return seed != nullptr ? std::strtoull(seed, nullptr, 10) : 7;
+}
+
 PartRun Segmented(const std::string& name, double voxel, double noise) {
   PartRun run;
-  auto part = GeneratePart(name, {.voxel_size = voxel, .noise = noise, .seed = 7});
+  auto part = GeneratePart(name, {.voxel_size = voxel, .noise = noise, .seed = NoiseSeed()});
   EXPECT_TRUE(part.ok()) << part.status();
   if (!part.ok()) return run;
   run.part = std::move(*part);
@@ -142,8 +151,8 @@ INSTANTIATE_TEST_SUITE_P(Parts, SegmentPart,
                                            std::tuple{std::string("stepped_shaft"), 0.0}),
                          [](const auto& info) { return std::get<0>(info.param); });
 
-// Not yet at 0.15 h: stepped_shaft (the narrow 45-degree chamfer typed
-// sphere). It joins this list when fixed.
+// All 8 parts pass with noise seed 7. Other seeds still fail some parts at
+// 0.15 h (scripts/segment_seed_matrix.sh lists which).
 INSTANTIATE_TEST_SUITE_P(Parts, SegmentPartHighNoise,
                          ::testing::Values(std::tuple{std::string("test_piece"), 1.0},
                                            std::tuple{std::string("torus_ring"), 0.0},
@@ -151,7 +160,8 @@ INSTANTIATE_TEST_SUITE_P(Parts, SegmentPartHighNoise,
                                            std::tuple{std::string("blend_block"), 0.0},
                                            std::tuple{std::string("rounded_prism"), 0.0},
                                            std::tuple{std::string("plate_boss"), 0.0},
-                                           std::tuple{std::string("small_block"), 0.0}),
+                                           std::tuple{std::string("small_block"), 0.0},
+                                           std::tuple{std::string("stepped_shaft"), 0.0}),
                          [](const auto& info) { return std::get<0>(info.param); });
 
 // The noise estimate that th_dis and th_nm derive from matches the noise
@@ -163,7 +173,7 @@ class NoiseEstimate : public ::testing::TestWithParam<std::tuple<std::string, do
 TEST_P(NoiseEstimate, MatchesTheAddedNoise) {
   constexpr double kRelativeError = 0.15;
   const auto& [name, relative_noise] = GetParam();
-  auto part = GeneratePart(name, {.noise = relative_noise, .seed = 7});
+  auto part = GeneratePart(name, {.noise = relative_noise, .seed = NoiseSeed()});
   ASSERT_TRUE(part.ok()) << part.status();
   auto field = EstimateCurvature(part->mesh);
   ASSERT_TRUE(field.ok()) << field.status();
