@@ -31,7 +31,7 @@ class RefineBoundariesTest : public ::testing::Test {
   std::vector<RegionState> TrueRegions() const {
     std::vector<RegionState> regions;
     for (const PrimitiveTruth& p : part_.primitives) {
-      regions.push_back({.type = TypeOf(p.surface), .surface = p.surface});
+      regions.push_back({.type = TypeOf(p.surface), .surface = p.surface, .vertices = {}, .alive = true});
     }
     return regions;
   }
@@ -105,7 +105,7 @@ TEST_F(RefineBoundariesTest, LeavesTheTrueLabelsAlmostAlone) {
 TEST_F(RefineBoundariesTest, StopsWhenCancelled) {
   std::stop_source source;
   source.request_stop();
-  const RunContext cancelled{.stop = source.get_token()};
+  const RunContext cancelled{.stop = source.get_token(), .on_progress = {}};
   const SegmentContext c = MakeSegmentContext(part_.mesh.tri, field_, estimates_, 0.9, cancelled);
   std::vector<RegionState> regions = TrueRegions();
   std::vector<int> labels = part_.vertex_primitive;
