@@ -38,9 +38,10 @@ uint64_t NoiseSeed() {
   return seed != nullptr ? std::strtoull(seed, nullptr, 10) : 7;
 }
 
-PartRun Segmented(const std::string& name, double voxel, double noise) {
+PartRun Segmented(const std::string& name, double voxel, double noise,
+                  uint64_t seed = NoiseSeed()) {
   PartRun run;
-  auto part = GeneratePart(name, {.voxel_size = voxel, .noise = noise, .seed = NoiseSeed()});
+  auto part = GeneratePart(name, {.voxel_size = voxel, .noise = noise, .seed = seed});
   EXPECT_TRUE(part.ok()) << part.status();
   if (!part.ok()) return run;
   run.part = std::move(*part);
@@ -122,9 +123,7 @@ TEST_P(SegmentPart, FindsEveryPrimitiveWithItsTypeAndParameters) {
 // 1.5 deg, torus radii 0.5 h.
 class SegmentPartHighNoise : public SegmentPart {};
 
-TEST_P(SegmentPartHighNoise, KeepsTypesAtHighNoise) {
-  const auto& [name, voxel] = GetParam();
-  const PartRun run = Segmented(name, voxel, 0.15);
+void ExpectTypesAtHighNoise(const PartRun& run) {
   SCOPED_TRACE(::testing::Message()
                << run.eval << "noise " << run.part.noise << " estimated " << run.seg.estimates.noise_sigma
                << ", th_dis " << run.seg.estimates.distance_tolerance << ", th_nm "
@@ -139,6 +138,36 @@ TEST_P(SegmentPartHighNoise, KeepsTypesAtHighNoise) {
   ExpectTypesAndParameters(run, loose, /*check_parameters=*/true);
   ExpectLabelsAndCount(run);
 }
+
+TEST_P(SegmentPartHighNoise, KeepsTypesAtHighNoise) {
+  const auto& [name, voxel] = GetParam();
+  ExpectTypesAtHighNoise(Segmented(name, voxel, 0.15));
+}
+
+// Noise draws other than seed 7 that failed before the fixes of stop 13 and
+// pass now (scripts/segment_seed_matrix.sh): small_block's round taken by a
+// wide cylinder (noise overestimated 1.8x), rounded_prism's side typed
+// torus, stepped_shaft's chamfer typed sphere, test_piece's countersink
+// typed torus.
+class SegmentPartHighNoiseOtherSeed
+    : public ::testing::TestWithParam<std::tuple<std::string, double, uint64_t>> {};
+
+TEST_P(SegmentPartHighNoiseOtherSeed, KeepsTypesAtHighNoise) {
+  const auto& [name, voxel, seed] = GetParam();
+  ExpectTypesAtHighNoise(Segmented(name, voxel, 0.15, seed));
+}
+
+INSTANTIATE_TEST_SUITE_P(Draws, SegmentPartHighNoiseOtherSeed,
+                         ::testing::Values(std::tuple{std::string("small_block"), 0.0, uint64_t{3}},
+                                           std::tuple{std::string("small_block"), 0.0, uint64_t{10}},
+                                           std::tuple{std::string("rounded_prism"), 0.0, uint64_t{1}},
+                                           std::tuple{std::string("rounded_prism"), 0.0, uint64_t{3}},
+                                           std::tuple{std::string("stepped_shaft"), 0.0, uint64_t{1}},
+                                           std::tuple{std::string("test_piece"), 1.0, uint64_t{2}}),
+                         [](const auto& info) {
+                           return std::get<0>(info.param) + "_seed_" +
+                                  std::to_string(std::get<2>(info.param));
+                         });
 
 INSTANTIATE_TEST_SUITE_P(Parts, SegmentPart,
                          ::testing::Values(std::tuple{std::string("test_piece"), 1.0},
