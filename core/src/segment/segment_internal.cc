@@ -18,6 +18,20 @@ std::vector<double> VertexAreas(const TriMesh& mesh) {
   return area;
 }
 
+// True if `torus` is a spindle torus (tube radius above the major radius)
+// and some of `points` lie within r - R of its axis, where its two sheets
+// meet in a cusp. Such a fit bends a flat disc with a small step to its rim
+// (plate_boss's boss top with the first rows of its edge round: R 6.5,
+// r 88); no machined surface has that shape.
+bool ReachesSpindleCusp(const Torus& torus, std::span<const Eigen::Vector3d> points) {
+  const double inner = torus.minor_radius - torus.major_radius;
+  if (!(inner > 0.0)) return false;
+  return std::any_of(points.begin(), points.end(), [&](const Eigen::Vector3d& p) {
+    const Eigen::Vector3d d = p - torus.center;
+    return (d - d.dot(torus.axis_direction) * torus.axis_direction).norm() < inner;
+  });
+}
+
 }  // namespace
 
 SegmentContext MakeSegmentContext(const TriMesh& mesh, const CurvatureField& curvature,
@@ -59,7 +73,12 @@ FitResult FitType(const SegmentContext& c, SurfaceType type, std::span<const int
     normals.push_back(c.curvature->smooth_normal[v]);
     weights.push_back(c.vertex_area[v] + 1e-12);
   }
-  return FitOfType(type, {.points = points, .normals = normals, .weights = weights});
+  FitResult fit = FitOfType(type, {.points = points, .normals = normals, .weights = weights});
+  if (const auto* torus = std::get_if<Torus>(&fit.surface);
+      torus != nullptr && fit.ok() && ReachesSpindleCusp(*torus, points)) {
+    fit.valid = false;
+  }
+  return fit;
 }
 
 double FitFraction(const SegmentContext& c, const Surface& surface, std::span<const int> vertices,
