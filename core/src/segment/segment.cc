@@ -84,6 +84,14 @@ absl::StatusOr<Segmentation> Segment(const Mesh& mesh, const CurvatureField& cur
     for (const int id : bent) RetypeCurved(c, &regions[id]);
     MESHSEG_RETURN_IF_ERROR(RefineBoundaries(c, &labels, &regions));
   }
+  // The refinement can shrink a region it started with below the size floor
+  // (a sliver of cylinder between a countersink and its plane); its vertices
+  // go to their neighbours, and the pieces it kept apart may merge now.
+  if (ReleaseSmallRegions(c, &labels, &regions) > 0) {
+    MESHSEG_RETURN_IF_ERROR(AbsorbLeftovers(c, &labels, &regions));
+    MESHSEG_RETURN_IF_ERROR(MergeRegions(c, &labels, &regions));
+    MESHSEG_RETURN_IF_ERROR(RefineBoundaries(c, &labels, &regions));
+  }
   FlattenNearlyFlatRegions(c, &regions);
   ctx.Progress("segment", 0.9);
   MESHSEG_RETURN_IF_ERROR(ctx.CheckStop("segment"));
