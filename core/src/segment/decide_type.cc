@@ -32,15 +32,6 @@ TypedFit Try(const SegmentContext& c, SurfaceType type, std::span<const int> ver
   return k;
 }
 
-// How far `fit` misses its vertices beyond the noise, sqrt(rms^2 - sigma^2).
-// At 0.15 h the rms of a sphere on a narrow 45-degree chamfer is only 10 %
-// above the cone's, which sits at the noise; their model errors are
-// 0.45 sigma and 0.
-double ModelError(const SegmentContext& c, const FitResult& fit) {
-  return std::sqrt(
-      std::max(0.0, fit.rms_distance * fit.rms_distance - c.noise_sigma * c.noise_sigma));
-}
-
 // True if `surface` meets test (5) at more than alpha of `vertices`.
 bool NearAtAlpha(const SegmentContext& c, const Surface& surface, std::span<const int> vertices,
                  const Tolerance& tol) {
@@ -94,6 +85,11 @@ bool NearlyFlatImpl(const SegmentContext& c, const Surface& surface, double rms,
 }
 
 }  // namespace
+
+double ModelError(const SegmentContext& c, const FitResult& fit) {
+  return std::sqrt(
+      std::max(0.0, fit.rms_distance * fit.rms_distance - c.noise_sigma * c.noise_sigma));
+}
 
 bool NearlyFlat(const SegmentContext& c, const Surface& surface, double rms,
                 std::span<const int> vertices, const Tolerance& tol) {

@@ -88,6 +88,9 @@ int TypeRank(SurfaceType t) {
 
 // Fractions within this of each other count as equal (simpler type wins).
 constexpr double kFractionTie = 0.02;
+// RetypeInaccurateCurved looks again at curved regions whose model error
+// exceeds this many noise sigmas (rms above 1.12 sigma).
+constexpr double kInaccurateError = 0.5;
 
 struct PairFit {
   double fraction = 0.0;
@@ -227,6 +230,33 @@ std::vector<int> RetypeBentPlanes(const SegmentContext& c, std::vector<RegionSta
     if (smooth.size() < kMinRetypeVertices) continue;
     if (FitFraction(c, r.surface, smooth, c.tolerance) > c.alpha) continue;
     if (RetypeCurved(c, &r)) retyped.push_back(id);
+  }
+  return retyped;
+}
+
+std::vector<int> RetypeInaccurateCurved(const SegmentContext& c,
+                                        std::vector<RegionState>* regions) {
+  std::vector<int> retyped;
+  for (int id = 0; id < static_cast<int>(regions->size()); ++id) {
+    RegionState& r = (*regions)[id];
+    if (!r.alive || r.type == SurfaceType::kPlane || r.type == SurfaceType::kQuadric ||
+        r.type == SurfaceType::kFreeform) {
+      continue;
+    }
+    const std::vector<int> smooth = SmoothVertices(c, r.vertices);
+    if (smooth.size() < kMinRetypeVertices) continue;
+    const FitResult current = FitType(c, r.type, smooth);
+    if (!current.ok()) continue;
+    const double error = ModelError(c, current);
+    if (!(error > kInaccurateError * c.noise_sigma)) continue;
+    const TypedFit curved = DecideCurvedType(c, smooth, c.tolerance);
+    if (curved.type == r.type || curved.type == SurfaceType::kQuadric ||
+        !(curved.fraction > c.alpha) || !(ModelError(c, curved.fit) < 0.5 * error)) {
+      continue;
+    }
+    r.type = curved.type;
+    r.surface = curved.fit.surface;
+    retyped.push_back(id);
   }
   return retyped;
 }

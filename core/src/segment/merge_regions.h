@@ -33,6 +33,15 @@ std::vector<int> RetypeBentPlanes(const SegmentContext& c, std::vector<RegionSta
 // returns whether it did.
 bool RetypeCurved(const SegmentContext& c, RegionState* r);
 
+// Gives a curved region whose fit misses it by more than kInaccurateError
+// noise sigmas beyond the noise (ModelError) the curved type that
+// DecideCurvedType finds on its non-sharp vertices, if that passes the alpha
+// test with under half the model error. A seed on a long noisy cone can grow
+// as a sphere that passes the tolerances (stepped_shaft at 0.15 h: r 14.7,
+// model error 1.0 sigma, where the cone's is 0). Returns the ids retyped.
+std::vector<int> RetypeInaccurateCurved(const SegmentContext& c,
+                                        std::vector<RegionState>* regions);
+
 // Merges regions in place (merged-away regions get alive = false and no
 // vertices): extrapolation, refitting, retyping of quadrics, extrapolation. Errors: CANCELLED on stop.
 absl::Status MergeRegions(const SegmentContext& c, std::vector<int>* labels,

@@ -92,6 +92,12 @@ absl::StatusOr<Segmentation> Segment(const Mesh& mesh, const CurvatureField& cur
     MESHSEG_RETURN_IF_ERROR(MergeRegions(c, &labels, &regions));
     MESHSEG_RETURN_IF_ERROR(RefineBoundaries(c, &labels, &regions));
   }
+  // A region whose type misses it by more than the noise gets the type that
+  // fits; it may then merge with the pieces of its surface around it.
+  if (!RetypeInaccurateCurved(c, &regions).empty()) {
+    MESHSEG_RETURN_IF_ERROR(MergeRegions(c, &labels, &regions));
+    MESHSEG_RETURN_IF_ERROR(RefineBoundaries(c, &labels, &regions));
+  }
   FlattenNearlyFlatRegions(c, &regions);
   ctx.Progress("segment", 0.9);
   MESHSEG_RETURN_IF_ERROR(ctx.CheckStop("segment"));

@@ -1,0 +1,79 @@
+// A SegmentContext over a parametric sheet (u, v) -> (point, unit normal),
+// triangulated as a grid, with exact normals as n_i and n'_i and no sharp
+// vertices: for tests of single segment steps without a curvature stage.
+#ifndef MESHSEG_TESTS_CORE_SEGMENT_SHEET_CONTEXT_H_
+#define MESHSEG_TESTS_CORE_SEGMENT_SHEET_CONTEXT_H_
+
+#include <cmath>
+#include <functional>
+#include <utility>
+#include <vector>
+
+#include "meshseg/curvature.h"
+#include "meshseg/mesh.h"
+#include "segment/segment_internal.h"
+
+namespace meshseg::segment_internal::testing {
+
+using SheetPoint = std::function<std::pair<Eigen::Vector3d, Eigen::Vector3d>(double u, double v)>;
+
+struct Sheet {
+  TriMesh mesh;
+  CurvatureField field;
+  SegmentContext c;
+  std::vector<double> u;  // parameters per vertex
+  std::vector<double> v;
+};
+
+// `nu` x `nv` vertices over [u0, u1] x [v0, v1]; th_dis `distance`, th_nm
+// `angle_deg`, alpha 0.9, noise 0.
+inline void BuildSheet(const SheetPoint& f, double u0, double u1, int nu, double v0, double v1,
+                       int nv, double distance, double angle_deg, Sheet* s) {
+  std::vector<TriMesh::VertexHandle> handles;
+  for (int j = 0; j < nv; ++j) {
+    for (int i = 0; i < nu; ++i) {
+      const double u = u0 + (u1 - u0) * i / (nu - 1);
+      const double v = v0 + (v1 - v0) * j / (nv - 1);
+      const auto [p, n] = f(u, v);
+      handles.push_back(s->mesh.add_vertex(TriMesh::Point(p.x(), p.y(), p.z())));
+      s->field.normal.push_back(n.normalized());
+      s->field.smooth_normal.push_back(n.normalized());
+      s->u.push_back(u);
+      s->v.push_back(v);
+    }
+  }
+  for (int j = 0; j + 1 < nv; ++j) {
+    for (int i = 0; i + 1 < nu; ++i) {
+      const auto a = handles[j * nu + i], b = handles[j * nu + i + 1];
+      const auto c = handles[(j + 1) * nu + i], d = handles[(j + 1) * nu + i + 1];
+      s->mesh.add_face(a, b, d);
+      s->mesh.add_face(a, d, c);
+    }
+  }
+  const std::size_t n = handles.size();
+  s->field.sharp.assign(n, 0);
+  s->c.graph = BuildVertexGraph(s->mesh);
+  s->c.curvature = &s->field;
+  s->c.vertex_area.assign(n, 1.0);
+  s->c.mean_edge_length = MeanEdgeLength(s->mesh);
+  s->c.noise_sigma = 0.0;
+  s->c.tolerance.distance = distance;
+  s->c.tolerance.cos_angle = std::cos(angle_deg * 3.14159265358979323846 / 180.0);
+  s->c.angle_tolerance_deg = angle_deg;
+  s->c.alpha = 0.9;
+}
+
+// Regions from a label per vertex (-1: none), fitted with `types[label]`.
+inline std::vector<RegionState> RegionsFromLabels(const SegmentContext& c,
+                                                  const std::vector<int>& labels,
+                                                  const std::vector<SurfaceType>& types) {
+  std::vector<RegionState> regions(types.size());
+  for (std::size_t r = 0; r < types.size(); ++r) regions[r].type = types[r];
+  RebuildVertexLists(labels, &regions);
+  for (RegionState& r : regions) r.surface = FitType(c, r.type, r.vertices).surface;
+  return regions;
+}
+
+}  // namespace meshseg::segment_internal::testing
+
+#endif  // MESHSEG_TESTS_CORE_SEGMENT_SHEET_CONTEXT_H_
