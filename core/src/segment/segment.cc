@@ -10,6 +10,7 @@
 #include "meshseg/status_macros.h"
 #include "segment/absorb_leftovers.h"
 #include "segment/decide_type.h"
+#include "segment/dissolve_crease_bands.h"
 #include "segment/estimate_noise.h"
 #include "segment/exact_facets.h"
 #include "segment/finalize_regions.h"
@@ -96,6 +97,9 @@ absl::StatusOr<Segmentation> Segment(const Mesh& mesh, const CurvatureField& cur
   // fits; it may then merge with the pieces of its surface around it.
   if (!RetypeInaccurateCurved(c, &regions).empty()) {
     MESHSEG_RETURN_IF_ERROR(MergeRegions(c, &labels, &regions));
+    MESHSEG_RETURN_IF_ERROR(RefineBoundaries(c, &labels, &regions));
+  }
+  if (DissolveCreaseBands(c, &labels, &regions) > 0) {
     MESHSEG_RETURN_IF_ERROR(RefineBoundaries(c, &labels, &regions));
   }
   FlattenNearlyFlatRegions(c, &regions);

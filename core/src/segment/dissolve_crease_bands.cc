@@ -1,0 +1,76 @@
+#include "segment/dissolve_crease_bands.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+
+namespace meshseg::segment_internal {
+namespace {
+
+// The regions other than `id` that an edge from `id`'s vertices leads to,
+// sorted.
+std::vector<int> NeighbourRegions(const SegmentContext& c, int id, const std::vector<int>& labels,
+                                  const RegionState& region) {
+  std::vector<int> out;
+  for (const int v : region.vertices) {
+    for (const int u : c.graph.Neighbors(v)) {
+      if (labels[u] >= 0 && labels[u] != id) out.push_back(labels[u]);
+    }
+  }
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
+}
+
+}  // namespace
+
+int DissolveCreaseBands(const SegmentContext& c, std::vector<int>* labels,
+                        std::vector<RegionState>* regions) {
+  int dissolved = 0;
+  std::vector<uint8_t> grew(regions->size(), 0);
+  for (int id = 0; id < static_cast<int>(regions->size()); ++id) {
+    RegionState& region = (*regions)[id];
+    if (!region.alive || region.vertices.empty() || region.type == SurfaceType::kPlane) continue;
+    const std::vector<int> around = NeighbourRegions(c, id, *labels, region);
+    if (around.empty()) continue;
+    std::vector<int> nearest(region.vertices.size(), -1);
+    std::size_t near = 0;
+    double own_sum2 = 0.0;
+    double near_sum2 = 0.0;
+    for (std::size_t k = 0; k < region.vertices.size(); ++k) {
+      const double own = ProjectVertex(c, region.surface, region.vertices[k]).distance;
+      own_sum2 += own * own;
+      double best = HUGE_VAL;
+      for (const int r : around) {
+        const double d = std::abs(ProjectVertex(c, (*regions)[r].surface, region.vertices[k]).distance);
+        if (d < best) {
+          best = d;
+          nearest[k] = r;
+        }
+      }
+      if (best < c.tolerance.distance) ++near;
+      near_sum2 += best * best;
+    }
+    if (!(near > c.alpha * region.vertices.size()) || !(near_sum2 <= own_sum2)) continue;
+    for (std::size_t k = 0; k < region.vertices.size(); ++k) {
+      const int v = region.vertices[k];
+      (*labels)[v] = nearest[k];
+      (*regions)[nearest[k]].vertices.push_back(v);
+      grew[nearest[k]] = 1;
+    }
+    region.vertices.clear();
+    region.alive = false;
+    ++dissolved;
+  }
+  if (dissolved == 0) return 0;
+  RebuildVertexLists(*labels, regions);
+  for (std::size_t r = 0; r < regions->size(); ++r) {
+    RegionState& region = (*regions)[r];
+    if (!grew[r] || !region.alive || region.vertices.empty()) continue;
+    const FitResult fit = FitType(c, region.type, region.vertices);
+    if (fit.ok()) region.surface = fit.surface;
+  }
+  return dissolved;
+}
+
+}  // namespace meshseg::segment_internal

@@ -1,0 +1,32 @@
+// Crease bands (our addition to seeds 000 and 002): where two surfaces meet
+// at a crease the sharp test misses (45 degrees at noise 0.15 h), n'_i turns
+// across the crease, so the vertices there meet test (6) for neither side
+// and can form a region of their own: a torus of tube radius 2 h along the
+// cone-cylinder crease of stepped_shaft. Their distances still say where
+// they belong.
+#ifndef MESHSEG_SRC_SEGMENT_DISSOLVE_CREASE_BANDS_H_
+#define MESHSEG_SRC_SEGMENT_DISSOLVE_CREASE_BANDS_H_
+
+#include <vector>
+
+#include "segment/segment_internal.h"
+
+namespace meshseg::segment_internal {
+
+// Dissolves every curved region of which more than alpha of the vertices
+// lie within th_dis (test (5) alone) of the surface of a neighbouring region
+// (one an edge leads to), and whose distances to the nearest of those
+// surfaces are no larger (root mean square) than to its own, into those
+// neighbours: each vertex goes to the one it is nearest. A true fillet is
+// not dissolved: the middle of its arc lies r (1 - cos(theta / 2)) off both
+// tangent surfaces, which its own surface fits better (on an exact CAD
+// remesh, plate_holes' corner tori fit to 1e-5 and their neighbours, a
+// plane, a cylinder and a sphere, pass within th_dis of 90 % of them). Regions are taken in id
+// order, each against the labels left by the ones before; the regions that
+// grew are refitted. Returns the number dissolved.
+int DissolveCreaseBands(const SegmentContext& c, std::vector<int>* labels,
+                        std::vector<RegionState>* regions);
+
+}  // namespace meshseg::segment_internal
+
+#endif  // MESHSEG_SRC_SEGMENT_DISSOLVE_CREASE_BANDS_H_
