@@ -12,6 +12,9 @@ namespace meshseg::segment_internal {
 
 namespace {
 
+constexpr int kInlierRounds = 2;
+constexpr double kMinInlierShare = 0.5;
+
 // Renumbers the regions by first face, derives the missing vertex labels
 // from incident faces and measures every region.
 Segmentation Assemble(const SegmentContext& c, const TriMesh& mesh,
@@ -77,6 +80,30 @@ Segmentation Assemble(const SegmentContext& c, const TriMesh& mesh,
   return seg;
 }
 
+// The fit of `r`'s type to its vertices, refitted on those that meet (5)
+// and (6) for it while they are at least kMinInlierShare of the region.
+// Leftover absorption can hand a region vertices of a small face it could
+// not tell apart: test_piece's boss cone at 0.15 h took the 183-face boss
+// top, and its half-angle came out 29.7 degrees for 20.6.
+FitResult InlierFit(const SegmentContext& c, const RegionState& r) {
+  FitResult fit = FitType(c, r.type, r.vertices);
+  std::vector<int> inliers;
+  for (int round = 0; round < kInlierRounds && fit.ok(); ++round) {
+    inliers.clear();
+    for (const int v : r.vertices) {
+      if (Fits(c, v, ProjectVertex(c, fit.surface, v), c.tolerance)) inliers.push_back(v);
+    }
+    if (inliers.size() == r.vertices.size() ||
+        inliers.size() < kMinInlierShare * static_cast<double>(r.vertices.size())) {
+      break;
+    }
+    FitResult refit = FitType(c, r.type, inliers);
+    if (!refit.ok()) break;
+    fit = std::move(refit);
+  }
+  return fit;
+}
+
 }  // namespace
 
 Segmentation FinalizeRegions(const SegmentContext& c, const TriMesh& mesh,
@@ -85,8 +112,7 @@ Segmentation FinalizeRegions(const SegmentContext& c, const TriMesh& mesh,
   tbb::parallel_for(0, n_regions, [&](int id) {
     RegionState& r = regions[id];
     if (!r.alive || r.vertices.empty()) return;
-    FitResult fit = FitType(c, r.type, r.vertices);
-    if (fit.ok()) r.surface = fit.surface;
+    r.surface = InlierFit(c, r).surface;
   });
   return Assemble(c, mesh, FaceLabels(c, mesh, labels, regions), labels, regions);
 }

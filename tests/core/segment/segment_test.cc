@@ -172,7 +172,8 @@ TEST_P(SegmentPartHighNoise, KeepsTypesAtHighNoise) {
 // wide cylinder (noise overestimated 1.8x), rounded_prism's side typed
 // torus, stepped_shaft's chamfer typed sphere, test_piece's countersink
 // typed torus; at stop 14, stepped_shaft's long cone grown as a sphere with
-// a torus along its crease to the r 8 cylinder (seed 8).
+// a torus along its crease to the r 8 cylinder (seed 8); test_piece's boss
+// cone fitted together with the boss top it absorbed (seed 5).
 class SegmentPartHighNoiseOtherSeed
     : public ::testing::TestWithParam<std::tuple<std::string, double, uint64_t>> {};
 
@@ -188,7 +189,8 @@ INSTANTIATE_TEST_SUITE_P(Draws, SegmentPartHighNoiseOtherSeed,
                                            std::tuple{std::string("rounded_prism"), 0.0, uint64_t{3}},
                                            std::tuple{std::string("stepped_shaft"), 0.0, uint64_t{1}},
                                            std::tuple{std::string("test_piece"), 1.0, uint64_t{2}},
-                                           std::tuple{std::string("stepped_shaft"), 0.0, uint64_t{8}}),
+                                           std::tuple{std::string("stepped_shaft"), 0.0, uint64_t{8}},
+                                           std::tuple{std::string("test_piece"), 1.0, uint64_t{5}}),
                          [](const auto& info) {
                            return std::get<0>(info.param) + "_seed_" +
                                   std::to_string(std::get<2>(info.param));
