@@ -42,7 +42,8 @@ int DissolveCreaseBands(const SegmentContext& c, std::vector<int>* labels,
       own_sum2 += own * own;
       double best = HUGE_VAL;
       for (const int r : around) {
-        const double d = std::abs(ProjectVertex(c, (*regions)[r].surface, region.vertices[k]).distance);
+        const double d =
+            std::abs(ProjectVertex(c, (*regions)[r].surface, region.vertices[k]).distance);
         if (d < best) {
           best = d;
           nearest[k] = r;

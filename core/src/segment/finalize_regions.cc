@@ -112,7 +112,8 @@ Segmentation FinalizeRegions(const SegmentContext& c, const TriMesh& mesh,
   tbb::parallel_for(0, n_regions, [&](int id) {
     RegionState& r = regions[id];
     if (!r.alive || r.vertices.empty()) return;
-    r.surface = InlierFit(c, r).surface;
+    const FitResult fit = InlierFit(c, r);
+    if (fit.ok()) r.surface = fit.surface;
   });
   return Assemble(c, mesh, FaceLabels(c, mesh, labels, regions), labels, regions);
 }

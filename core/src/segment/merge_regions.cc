@@ -1,6 +1,7 @@
 #include "segment/merge_regions.h"
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <optional>
 #include <utility>
@@ -91,6 +92,9 @@ constexpr double kFractionTie = 0.02;
 // RetypeInaccurateCurved looks again at curved regions whose model error
 // exceeds this many noise sigmas (rms above 1.12 sigma).
 constexpr double kInaccurateError = 0.5;
+// ... and takes a type that fits this share of a region its own type no
+// longer fits validly (the trim share of the initial segmentation).
+constexpr double kStaleTypeFraction = 0.75;
 
 struct PairFit {
   double fraction = 0.0;
@@ -245,17 +249,29 @@ std::vector<int> RetypeInaccurateCurved(const SegmentContext& c,
     }
     const std::vector<int> smooth = SmoothVertices(c, r.vertices);
     if (smooth.size() < kMinRetypeVertices) continue;
+    // A type with no valid fit left (a torus whose cusp the region grew
+    // over) misses by any amount.
     const FitResult current = FitType(c, r.type, smooth);
-    if (!current.ok()) continue;
-    const double error = ModelError(c, current);
+    const double error = current.ok() ? ModelError(c, current) : HUGE_VAL;
     if (!(error > kInaccurateError * c.noise_sigma)) continue;
-    const TypedFit curved = DecideCurvedType(c, smooth, c.tolerance);
-    if (curved.type == r.type || curved.type == SurfaceType::kQuadric ||
-        !(curved.fraction > c.alpha) || !(ModelError(c, curved.fit) < 0.5 * error)) {
+    const std::optional<TypedFit> plane = PlaneIfFits(c, smooth, c.tolerance);
+    TypedFit typed = plane ? *plane : DecideCurvedType(c, smooth, c.tolerance);
+    // With no valid fit left, a type that fits kStaleTypeFraction will do:
+    // the boundary refinement that follows hands the rest to the
+    // neighbours (the boss top holds the first rows of its edge round).
+    double needed = c.alpha;
+    if (!current.ok() && !(typed.fraction > c.alpha)) {
+      needed = kStaleTypeFraction;
+      TypedFit flat{.type = SurfaceType::kPlane, .fit = FitType(c, SurfaceType::kPlane, smooth)};
+      if (flat.fit.ok()) flat.fraction = FitFraction(c, flat.fit.surface, smooth, c.tolerance);
+      if (flat.fraction >= typed.fraction - kFractionTie) typed = std::move(flat);
+    }
+    if (typed.type == r.type || typed.type == SurfaceType::kQuadric ||
+        !(typed.fraction >= needed) || !(ModelError(c, typed.fit) < 0.5 * error)) {
       continue;
     }
-    r.type = curved.type;
-    r.surface = curved.fit.surface;
+    r.type = typed.type;
+    r.surface = typed.fit.surface;
     retyped.push_back(id);
   }
   return retyped;

@@ -2,12 +2,12 @@
 // true fillet.
 #include "segment/dissolve_crease_bands.h"
 
+#include <gtest/gtest.h>
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <vector>
-
-#include <gtest/gtest.h>
 
 #include "sheet_context.h"
 
@@ -60,9 +60,9 @@ TEST_P(TrueFillet, Stays) {
   // = 0.23. With th_dis 0.3 every fillet vertex is within th_dis of a plane
   // (as on plate_holes' remesh), and only the fit errors keep the fillet.
   constexpr double kRadius = 3.0;
-  const double half = std::numbers::pi / 8.0;            // half the 45-degree turn
-  const double arc = kRadius * 2.0 * half;               // fillet length in u
-  const Eigen::Vector3d centre(0.0, 0.0, kRadius);       // at u = 0, mid-fillet
+  const double half = std::numbers::pi / 8.0;       // half the 45-degree turn
+  const double arc = kRadius * 2.0 * half;          // fillet length in u
+  const Eigen::Vector3d centre(0.0, 0.0, kRadius);  // at u = 0, mid-fillet
   Sheet s;
   BuildSheet(
       [&](double u, double v) {

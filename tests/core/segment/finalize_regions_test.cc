@@ -2,12 +2,12 @@
 // surface, not to vertices of a small face absorbed with it.
 #include "segment/finalize_regions.h"
 
+#include <gtest/gtest.h>
+
 #include <cmath>
 #include <numbers>
 #include <variant>
 #include <vector>
-
-#include <gtest/gtest.h>
 
 #include "sheet_context.h"
 

@@ -1,12 +1,12 @@
 // RetypeInaccurateCurved on sheets cut from a cone and from a sphere.
 #include "segment/merge_regions.h"
 
+#include <gtest/gtest.h>
+
 #include <cmath>
 #include <numbers>
 #include <variant>
 #include <vector>
-
-#include <gtest/gtest.h>
 
 #include "sheet_context.h"
 
@@ -24,8 +24,10 @@ void ConeBand(Sheet* s) {
   BuildSheet(
       [&](double t, double phi) {
         const Eigen::Vector3d radial(std::cos(phi), std::sin(phi), 0.0);
-        const Eigen::Vector3d p = t * (std::sin(half) * radial + std::cos(half) * Eigen::Vector3d::UnitZ());
-        const Eigen::Vector3d n = std::cos(half) * radial - std::sin(half) * Eigen::Vector3d::UnitZ();
+        const Eigen::Vector3d p =
+            t * (std::sin(half) * radial + std::cos(half) * Eigen::Vector3d::UnitZ());
+        const Eigen::Vector3d n =
+            std::cos(half) * radial - std::sin(half) * Eigen::Vector3d::UnitZ();
         return std::pair{p, n};
       },
       4.0, 10.0, 31, 0.0, std::numbers::pi, 61, /*distance=*/0.15, /*angle_deg=*/5.0, s);
@@ -64,6 +66,46 @@ TEST(RetypeInaccurateCurvedTest, SphereWithinTheNoiseStays) {
   s.c.noise_sigma = FitType(s.c, SurfaceType::kSphere, regions[0].vertices).rms_distance;
   EXPECT_TRUE(RetypeInaccurateCurved(s.c, &regions).empty());
   EXPECT_EQ(regions[0].type, SurfaceType::kSphere);
+}
+
+TEST(RetypeInaccurateCurvedTest, TorusWithNoValidFitLeftBecomesAPlane) {
+  // plate_boss's boss top at 0.15 h: typed a torus on a ring at its rim,
+  // then grown over the whole disc (radius 6) and the first 25 degrees of
+  // its edge round (radius 2), where only a spindle torus with its cusp on
+  // the disc fits. A plane fits the disc, under alpha of the vertices but
+  // over kStaleTypeFraction.
+  constexpr double kDisc = 6.0, kRound = 2.0, kRoundDeg = 25.0;
+  constexpr int kDiscRows = 25, kRoundRows = 6;
+  const double step = kDisc / (kDiscRows - 1);
+  Sheet s;
+  BuildSheet(
+      [&](double row, double phi) {
+        const Eigen::Vector3d radial(std::cos(phi), std::sin(phi), 0.0);
+        if (row <= kDiscRows - 1) {
+          return std::pair{Eigen::Vector3d(row * step * radial), Eigen::Vector3d(0, 0, 1)};
+        }
+        const double t =
+            (row - (kDiscRows - 1)) / kRoundRows * kRoundDeg * std::numbers::pi / 180.0;
+        const Eigen::Vector3d n = std::sin(t) * radial + std::cos(t) * Eigen::Vector3d::UnitZ();
+        return std::pair{
+            Eigen::Vector3d(kDisc * radial - kRound * Eigen::Vector3d::UnitZ() + kRound * n), n};
+      },
+      0.0, kDiscRows - 1 + kRoundRows, kDiscRows + kRoundRows, 0.0,
+      2.0 * std::numbers::pi * 47 / 48, 48, /*distance=*/0.15, /*angle_deg=*/5.0, &s);
+  std::vector<int> labels(s.u.size(), 0);
+  std::vector<RegionState> regions(1);
+  regions[0].type = SurfaceType::kTorus;
+  regions[0].surface = Torus{.center = Eigen::Vector3d(0, 0, -2),
+                             .axis_direction = Eigen::Vector3d::UnitZ(),
+                             .major_radius = 6.0,
+                             .minor_radius = 2.0};  // the ring it was typed on
+  RebuildVertexLists(labels, &regions);
+  ASSERT_FALSE(FitType(s.c, SurfaceType::kTorus, regions[0].vertices).ok());
+
+  EXPECT_EQ(RetypeInaccurateCurved(s.c, &regions), std::vector<int>{0});
+  ASSERT_EQ(regions[0].type, SurfaceType::kPlane);
+  EXPECT_GT(std::abs(std::get<Plane>(regions[0].surface).normal.z()),
+            std::cos(1.0 * std::numbers::pi / 180.0));
 }
 
 }  // namespace

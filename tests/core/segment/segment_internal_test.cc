@@ -2,13 +2,13 @@
 // region's vertices.
 #include "segment/segment_internal.h"
 
+#include <gtest/gtest.h>
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <variant>
 #include <vector>
-
-#include <gtest/gtest.h>
 
 namespace meshseg::segment_internal {
 namespace {
@@ -45,9 +45,10 @@ PointContext TorusBand(double major, double minor, double t0, double t1) {
     const double t = t0 + (t1 - t0) * i / kRings;
     for (int j = 0; j < kAround; ++j) {
       const double phi = 2.0 * std::numbers::pi * j / kAround;
-      const Eigen::Vector3d n(std::cos(t) * std::cos(phi), std::cos(t) * std::sin(phi), std::sin(t));
-      const Eigen::Vector3d p = Eigen::Vector3d(major * std::cos(phi), major * std::sin(phi), 0.0) +
-                                minor * n;
+      const Eigen::Vector3d n(std::cos(t) * std::cos(phi), std::cos(t) * std::sin(phi),
+                              std::sin(t));
+      const Eigen::Vector3d p =
+          Eigen::Vector3d(major * std::cos(phi), major * std::sin(phi), 0.0) + minor * n;
       pc.Add(p, n);
     }
   }
@@ -76,7 +77,8 @@ TEST(FitTypeTest, FlatDiscWithTheStartOfARoundIsNoTorus) {
     const int around = std::max(1, static_cast<int>(2.0 * std::numbers::pi * rho / 0.25));
     for (int j = 0; j < around; ++j) {
       const double phi = 2.0 * std::numbers::pi * j / around;
-      pc.Add(Eigen::Vector3d(rho * std::cos(phi), rho * std::sin(phi), 0.0), Eigen::Vector3d::UnitZ());
+      pc.Add(Eigen::Vector3d(rho * std::cos(phi), rho * std::sin(phi), 0.0),
+             Eigen::Vector3d::UnitZ());
     }
   }
   for (double deg = 5.0; deg <= 25.0; deg += 5.0) {
