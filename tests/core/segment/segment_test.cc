@@ -174,7 +174,8 @@ TEST_P(SegmentPartHighNoise, KeepsTypesAtHighNoise) {
 // typed torus; at stop 14, stepped_shaft's long cone grown as a sphere with
 // a torus along its crease to the r 8 cylinder (seed 8); test_piece's boss
 // cone fitted together with the boss top it absorbed (seed 5); plate_boss's
-// boss top left a torus with no valid fit (seed 9).
+// boss top left a torus with no valid fit (seed 9); a rounded_prism round
+// whose cylinder fit took the wrong axis (seed 6).
 class SegmentPartHighNoiseOtherSeed
     : public ::testing::TestWithParam<std::tuple<std::string, double, uint64_t>> {};
 
@@ -192,7 +193,8 @@ INSTANTIATE_TEST_SUITE_P(Draws, SegmentPartHighNoiseOtherSeed,
                                            std::tuple{std::string("test_piece"), 1.0, uint64_t{2}},
                                            std::tuple{std::string("stepped_shaft"), 0.0, uint64_t{8}},
                                            std::tuple{std::string("test_piece"), 1.0, uint64_t{5}},
-                                           std::tuple{std::string("plate_boss"), 0.0, uint64_t{9}}),
+                                           std::tuple{std::string("plate_boss"), 0.0, uint64_t{9}},
+                                           std::tuple{std::string("rounded_prism"), 0.0, uint64_t{6}}),
                          [](const auto& info) {
                            return std::get<0>(info.param) + "_seed_" +
                                   std::to_string(std::get<2>(info.param));
