@@ -65,12 +65,7 @@ int DissolveCreaseBands(const SegmentContext& c, std::vector<int>* labels,
   }
   if (dissolved == 0) return 0;
   RebuildVertexLists(*labels, regions);
-  for (std::size_t r = 0; r < regions->size(); ++r) {
-    RegionState& region = (*regions)[r];
-    if (!grew[r] || !region.alive || region.vertices.empty()) continue;
-    const FitResult fit = FitType(c, region.type, region.vertices);
-    if (fit.ok()) region.surface = fit.surface;
-  }
+  RefitRegions(c, grew, regions);
   return dissolved;
 }
 

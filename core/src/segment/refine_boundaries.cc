@@ -71,12 +71,7 @@ absl::Status RefineBoundaries(const SegmentContext& c, std::vector<int>* labels,
       labels->swap(next);
     }
     RebuildVertexLists(*labels, regions);
-    for (std::size_t r = 0; r < regions->size(); ++r) {
-      RegionState& region = (*regions)[r];
-      if (!changed[r] || !region.alive || region.vertices.empty()) continue;
-      const FitResult fit = FitType(c, region.type, region.vertices);
-      if (fit.ok()) region.surface = fit.surface;
-    }
+    RefitRegions(c, changed, regions);
   }
   return absl::OkStatus();
 }

@@ -99,6 +99,16 @@ void RebuildVertexLists(const std::vector<int>& labels, std::vector<RegionState>
   }
 }
 
+void RefitRegions(const SegmentContext& c, const std::vector<uint8_t>& refit,
+                  std::vector<RegionState>* regions) {
+  for (std::size_t r = 0; r < regions->size(); ++r) {
+    RegionState& region = (*regions)[r];
+    if (!refit[r] || !region.alive || region.vertices.empty()) continue;
+    const FitResult fit = FitType(c, region.type, region.vertices);
+    if (fit.ok()) region.surface = fit.surface;
+  }
+}
+
 void MergeInto(int into, int from, std::vector<int>* labels, std::vector<RegionState>* regions) {
   RegionState& a = (*regions)[into];
   RegionState& b = (*regions)[from];

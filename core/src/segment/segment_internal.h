@@ -5,6 +5,7 @@
 #define MESHSEG_SRC_SEGMENT_SEGMENT_INTERNAL_H_
 
 #include <cmath>
+#include <cstdint>
 #include <span>
 #include <vector>
 
@@ -84,6 +85,11 @@ double FitFraction(const SegmentContext& c, const Surface& surface, std::span<co
 
 // Rebuilds every region's vertex list from `labels` (dead regions: empty).
 void RebuildVertexLists(const std::vector<int>& labels, std::vector<RegionState>* regions);
+
+// Refits, with its own type, every alive region r with vertices and
+// refit[r] set; a region whose fit is invalid keeps its surface.
+void RefitRegions(const SegmentContext& c, const std::vector<uint8_t>& refit,
+                  std::vector<RegionState>* regions);
 
 // Moves every vertex of region `from` into region `into`.
 void MergeInto(int into, int from, std::vector<int>* labels, std::vector<RegionState>* regions);

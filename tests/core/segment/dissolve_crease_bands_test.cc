@@ -15,6 +15,7 @@ namespace meshseg::segment_internal {
 namespace {
 
 using testing::BuildSheet;
+using testing::Fold45;
 using testing::RegionsFromLabels;
 using testing::Sheet;
 
@@ -33,13 +34,8 @@ TEST(DissolveCreaseBandsTest, BandAlongACreaseGoesToThePlanesBesideIt) {
   // Two planes meeting at 45 degrees along v; the middle band was typed a
   // cylinder (as n'_i, bent across a crease, would make it).
   Sheet s;
-  const Eigen::Vector3d up(0, 0, 1), tilted = Eigen::Vector3d(-1, 0, 1).normalized();
-  BuildSheet(
-      [&](double u, double v) {
-        if (u <= 0.0) return std::pair{Eigen::Vector3d(u, v, 0.0), up};
-        return std::pair{Eigen::Vector3d(u, v, u), tilted};
-      },
-      -10.0, 10.0, 81, 0.0, 10.0, 41, /*distance=*/0.05, /*angle_deg=*/5.0, &s);
+  BuildSheet(Fold45(0.0), -10.0, 10.0, 81, 0.0, 10.0, 41, /*distance=*/0.05, /*angle_deg=*/5.0,
+             &s);
   std::vector<int> labels = ThreeBands(s);
   std::vector<RegionState> regions = RegionsFromLabels(
       s.c, labels, {SurfaceType::kPlane, SurfaceType::kPlane, SurfaceType::kCylinder});

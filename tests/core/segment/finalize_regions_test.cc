@@ -15,6 +15,7 @@ namespace meshseg::segment_internal {
 namespace {
 
 using testing::BuildSheet;
+using testing::Fold45;
 using testing::Sheet;
 
 TEST(FinalizeRegionsTest, SurfaceFitsTheRegionNotAnAbsorbedFlap) {
@@ -23,13 +24,7 @@ TEST(FinalizeRegionsTest, SurfaceFitsTheRegionNotAnAbsorbedFlap) {
   // absorption can leave a small face. th_dis 0.3: a noisy part's 3 sigma
   // against a flap 1 high.
   Sheet s;
-  const Eigen::Vector3d up(0, 0, 1), tilted = Eigen::Vector3d(-1, 0, 1).normalized();
-  BuildSheet(
-      [&](double u, double v) {
-        if (u <= 7.0) return std::pair{Eigen::Vector3d(u, v, 0.0), up};
-        return std::pair{Eigen::Vector3d(u, v, u - 7.0), tilted};
-      },
-      0.0, 8.0, 41, 0.0, 8.0, 41, /*distance=*/0.3, /*angle_deg=*/5.0, &s);
+  BuildSheet(Fold45(7.0), 0.0, 8.0, 41, 0.0, 8.0, 41, /*distance=*/0.3, /*angle_deg=*/5.0, &s);
   std::vector<int> labels(s.u.size(), 0);
   std::vector<RegionState> regions(1);
   regions[0].type = SurfaceType::kPlane;

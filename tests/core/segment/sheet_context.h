@@ -63,6 +63,15 @@ inline void BuildSheet(const SheetPoint& f, double u0, double u1, int nu, double
   s->c.alpha = 0.9;
 }
 
+// The plane z = 0 for u <= `crease` and, beyond it, a plane rising at 45
+// degrees; v runs along the crease.
+inline SheetPoint Fold45(double crease) {
+  return [crease](double u, double v) {
+    if (u <= crease) return std::pair{Eigen::Vector3d(u, v, 0.0), Eigen::Vector3d(0, 0, 1)};
+    return std::pair{Eigen::Vector3d(u, v, u - crease), Eigen::Vector3d(-1, 0, 1).normalized()};
+  };
+}
+
 // Regions from a label per vertex (-1: none), fitted with `types[label]`.
 inline std::vector<RegionState> RegionsFromLabels(const SegmentContext& c,
                                                   const std::vector<int>& labels,
