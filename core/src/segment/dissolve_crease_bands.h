@@ -20,10 +20,10 @@ namespace meshseg::segment_internal {
 // neighbours: each vertex goes to the one it is nearest. A true fillet is
 // not dissolved: the middle of its arc lies r (1 - cos(theta / 2)) off both
 // tangent surfaces, which its own surface fits better (on an exact CAD
-// remesh, plate_holes' corner tori fit to 1e-5 and their neighbours, a
-// plane, a cylinder and a sphere, pass within th_dis of 90 % of them). Regions are taken in id
-// order, each against the labels left by the ones before; the regions that
-// grew are refitted. Returns the number dissolved.
+// remesh, plate_holes' corner tori fit to 1e-5, while their neighbours, a
+// plane, a cylinder and a sphere, pass within th_dis of 90 % of them).
+// Regions are taken in id order, each against the labels left by the ones
+// before; the regions that grew are refitted. Returns the number dissolved.
 int DissolveCreaseBands(const SegmentContext& c, std::vector<int>* labels,
                         std::vector<RegionState>* regions);
 
