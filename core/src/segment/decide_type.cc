@@ -23,15 +23,6 @@ constexpr double kMinModelError = 0.25;
 constexpr double kFractionTie = 0.02;
 constexpr double kTorusFractionTie = 0.05;
 
-TypedFit Try(const SegmentContext& c, SurfaceType type, std::span<const int> vertices,
-             const Tolerance& tol) {
-  TypedFit k;
-  k.type = type;
-  k.fit = FitType(c, type, vertices);
-  if (k.fit.ok()) k.fraction = FitFraction(c, k.fit.surface, vertices, tol);
-  return k;
-}
-
 // True if `surface` meets test (5) at more than alpha of `vertices`.
 bool NearAtAlpha(const SegmentContext& c, const Surface& surface, std::span<const int> vertices,
                  const Tolerance& tol) {
@@ -86,6 +77,15 @@ bool NearlyFlatImpl(const SegmentContext& c, const Surface& surface, double rms,
 
 }  // namespace
 
+TypedFit TryType(const SegmentContext& c, SurfaceType type, std::span<const int> vertices,
+                 const Tolerance& tol) {
+  TypedFit k;
+  k.type = type;
+  k.fit = FitType(c, type, vertices);
+  if (k.fit.ok()) k.fraction = FitFraction(c, k.fit.surface, vertices, tol);
+  return k;
+}
+
 double ModelError(const SegmentContext& c, const FitResult& fit) {
   return std::sqrt(
       std::max(0.0, fit.rms_distance * fit.rms_distance - c.noise_sigma * c.noise_sigma));
@@ -119,17 +119,17 @@ int FlattenNearlyFlatRegions(const SegmentContext& c, std::vector<RegionState>* 
 
 std::optional<TypedFit> PlaneIfFits(const SegmentContext& c, std::span<const int> vertices,
                                     const Tolerance& tol) {
-  TypedFit plane = Try(c, SurfaceType::kPlane, vertices, tol);
+  TypedFit plane = TryType(c, SurfaceType::kPlane, vertices, tol);
   if (plane.fraction > c.alpha) return plane;
   return std::nullopt;
 }
 
 TypedFit DecideCurvedType(const SegmentContext& c, std::span<const int> vertices,
                           const Tolerance& tol) {
-  std::array<TypedFit, 4> k = {Try(c, SurfaceType::kCylinder, vertices, tol),
-                               Try(c, SurfaceType::kSphere, vertices, tol),
-                               Try(c, SurfaceType::kCone, vertices, tol),
-                               Try(c, SurfaceType::kTorus, vertices, tol)};
+  std::array<TypedFit, 4> k = {TryType(c, SurfaceType::kCylinder, vertices, tol),
+                               TryType(c, SurfaceType::kSphere, vertices, tol),
+                               TryType(c, SurfaceType::kCone, vertices, tol),
+                               TryType(c, SurfaceType::kTorus, vertices, tol)};
   // Of cylinder and cone, the more accurate (seed 000 §3 step 5).
   if (k[2].fraction >= k[0].fraction - kFractionTie &&
       k[2].fit.rms_distance < kConeGain * k[0].fit.rms_distance) {
@@ -180,7 +180,7 @@ TypedFit DecideCurvedType(const SegmentContext& c, std::span<const int> vertices
       NearlyFlat(c, pass->fit.surface, pass->fit.rms_distance, vertices, tol)) {
     // Within the tolerances the plane is the same surface; it keeps the
     // fitting fraction the curved type earned for the alpha test.
-    TypedFit plane = Try(c, SurfaceType::kPlane, vertices, tol);
+    TypedFit plane = TryType(c, SurfaceType::kPlane, vertices, tol);
     if (plane.fit.ok()) {
       plane.fraction = std::max(plane.fraction, pass->fraction);
       return plane;
@@ -193,7 +193,7 @@ TypedFit DecideCurvedType(const SegmentContext& c, std::span<const int> vertices
   for (const TypedFit& t : k) {
     if (t.fraction > 0.0 && t.fraction >= best - kFractionTie) return t;
   }
-  TypedFit quadric = Try(c, SurfaceType::kQuadric, vertices, tol);
+  TypedFit quadric = TryType(c, SurfaceType::kQuadric, vertices, tol);
   return quadric;
 }
 

@@ -17,6 +17,11 @@ struct TypedFit {
   double fraction = 0.0;  // of the vertices meeting (5) and (6)
 };
 
+// The fit of `type` to `vertices` and the fraction of them meeting (5) and
+// (6) for it (0 if the fit is invalid).
+TypedFit TryType(const SegmentContext& c, SurfaceType type, std::span<const int> vertices,
+                 const Tolerance& tol);
+
 // How far `fit` misses its vertices beyond the noise, sqrt(rms^2 - sigma^2).
 // At 0.15 h the rms of a sphere on a narrow 45-degree chamfer is only 10 %
 // above the cone's, which sits at the noise; their model errors are

@@ -254,17 +254,15 @@ std::vector<int> RetypeInaccurateCurved(const SegmentContext& c,
     const FitResult current = FitType(c, r.type, smooth);
     const double error = current.ok() ? ModelError(c, current) : HUGE_VAL;
     if (!(error > kInaccurateError * c.noise_sigma)) continue;
-    const std::optional<TypedFit> plane = PlaneIfFits(c, smooth, c.tolerance);
-    TypedFit typed = plane ? *plane : DecideCurvedType(c, smooth, c.tolerance);
+    const TypedFit plane = TryType(c, SurfaceType::kPlane, smooth, c.tolerance);
+    TypedFit typed = plane.fraction > c.alpha ? plane : DecideCurvedType(c, smooth, c.tolerance);
     // With no valid fit left, a type that fits kStaleTypeFraction will do:
     // the boundary refinement that follows hands the rest to the
     // neighbours (the boss top holds the first rows of its edge round).
     double needed = c.alpha;
     if (!current.ok() && !(typed.fraction > c.alpha)) {
       needed = kStaleTypeFraction;
-      TypedFit flat{.type = SurfaceType::kPlane, .fit = FitType(c, SurfaceType::kPlane, smooth)};
-      if (flat.fit.ok()) flat.fraction = FitFraction(c, flat.fit.surface, smooth, c.tolerance);
-      if (flat.fraction >= typed.fraction - kFractionTie) typed = std::move(flat);
+      if (plane.fraction >= typed.fraction - kFractionTie) typed = plane;
     }
     if (typed.type == r.type || typed.type == SurfaceType::kQuadric ||
         !(typed.fraction >= needed) || !(ModelError(c, typed.fit) < 0.5 * error)) {
