@@ -74,24 +74,8 @@ TEST(RetypeInaccurateCurvedTest, TorusWithNoValidFitLeftBecomesAPlane) {
   // its edge round (radius 2), where only a spindle torus with its cusp on
   // the disc fits. A plane fits the disc, under alpha of the vertices but
   // over kStaleTypeFraction.
-  constexpr double kDisc = 6.0, kRound = 2.0, kRoundDeg = 25.0;
-  constexpr int kDiscRows = 25, kRoundRows = 6;
-  const double step = kDisc / (kDiscRows - 1);
   Sheet s;
-  BuildSheet(
-      [&](double row, double phi) {
-        const Eigen::Vector3d radial(std::cos(phi), std::sin(phi), 0.0);
-        if (row <= kDiscRows - 1) {
-          return std::pair{Eigen::Vector3d(row * step * radial), Eigen::Vector3d(0, 0, 1)};
-        }
-        const double t =
-            (row - (kDiscRows - 1)) / kRoundRows * kRoundDeg * std::numbers::pi / 180.0;
-        const Eigen::Vector3d n = std::sin(t) * radial + std::cos(t) * Eigen::Vector3d::UnitZ();
-        return std::pair{
-            Eigen::Vector3d(kDisc * radial - kRound * Eigen::Vector3d::UnitZ() + kRound * n), n};
-      },
-      0.0, kDiscRows - 1 + kRoundRows, kDiscRows + kRoundRows, 0.0,
-      2.0 * std::numbers::pi * 47 / 48, 48, /*distance=*/0.15, /*angle_deg=*/5.0, &s);
+  testing::BuildDiscWithRoundStart(/*distance=*/0.15, &s);
   std::vector<int> labels(s.u.size(), 0);
   std::vector<RegionState> regions(1);
   regions[0].type = SurfaceType::kTorus;

@@ -72,6 +72,48 @@ inline SheetPoint Fold45(double crease) {
   };
 }
 
+// The torus with axis z through the origin, major radius `major`, tube
+// radius `minor`: u is the tube angle, v the angle around the axis.
+inline SheetPoint TorusPoint(double major, double minor) {
+  return [major, minor](double t, double phi) {
+    const Eigen::Vector3d n(std::cos(t) * std::cos(phi), std::cos(t) * std::sin(phi), std::sin(t));
+    const Eigen::Vector3d p =
+        Eigen::Vector3d(major * std::cos(phi), major * std::sin(phi), 0.0) + minor * n;
+    return std::pair{p, n};
+  };
+}
+
+// plate_boss's boss top as a region grown into its edge round: a disc of
+// radius 6 in z = 0 (25 rows out from the centre) and the first 25 degrees
+// of a round of radius 2 turning down from its rim (6 rows), 48 vertices
+// around. th_nm 5 degrees.
+inline void BuildDiscWithRoundStart(double distance, Sheet* s) {
+  constexpr double kDisc = 6.0, kRound = 2.0, kRoundDeg = 25.0;
+  constexpr int kDiscRows = 25, kRoundRows = 6, kAround = 48;
+  constexpr double kPi = 3.14159265358979323846;
+  const double step = kDisc / (kDiscRows - 1);
+  BuildSheet(
+      [&](double row, double phi) {
+        const Eigen::Vector3d radial(std::cos(phi), std::sin(phi), 0.0);
+        if (row <= kDiscRows - 1) {
+          return std::pair{Eigen::Vector3d(row * step * radial), Eigen::Vector3d(0, 0, 1)};
+        }
+        const double t = (row - (kDiscRows - 1)) / kRoundRows * kRoundDeg * kPi / 180.0;
+        const Eigen::Vector3d n = std::sin(t) * radial + std::cos(t) * Eigen::Vector3d::UnitZ();
+        return std::pair{
+            Eigen::Vector3d(kDisc * radial - kRound * Eigen::Vector3d::UnitZ() + kRound * n), n};
+      },
+      0.0, kDiscRows - 1 + kRoundRows, kDiscRows + kRoundRows, 0.0,
+      2.0 * kPi * (kAround - 1) / kAround, kAround, distance, /*angle_deg=*/5.0, s);
+}
+
+// Every vertex of `s`.
+inline std::vector<int> AllVertices(const Sheet& s) {
+  std::vector<int> v(s.u.size());
+  for (std::size_t i = 0; i < v.size(); ++i) v[i] = static_cast<int>(i);
+  return v;
+}
+
 // Regions from a label per vertex (-1: none), fitted with `types[label]`.
 inline std::vector<RegionState> RegionsFromLabels(const SegmentContext& c,
                                                   const std::vector<int>& labels,
