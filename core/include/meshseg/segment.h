@@ -9,10 +9,11 @@
 // are estimated from the data; boundary vertices move to the neighbour that
 // fits them best; after merging, regions the refinement shrank are released,
 // regions their type misses beyond the noise are typed again, bands along
-// creases the sharp test missed are dissolved into their neighbours, and
-// each surface is reported as fitted to its region's inliers; coarse exact
-// CAD meshes are segmented facet by facet (core/src/segment/segment.cc
-// holds the order).
+// creases the sharp test missed are dissolved into their neighbours, curved
+// types are checked on each region's interior (without the rows along its
+// creases), and each surface is reported as fitted to its region's
+// inliers; coarse exact CAD meshes are segmented facet by facet
+// (core/src/segment/segment.cc holds the order).
 //
 // In: a Mesh and its CurvatureField. Out: Segmentation with a label per mesh
 // face and vertex and one Region per label.

@@ -15,9 +15,6 @@ constexpr double kConeGain = 0.8;
 // alone: if it meets (6) at this share, and its model error is under
 // kConeGain of the other's, which must exceed kMinModelError noise sigmas.
 constexpr double kBentNormalFraction = 0.75;
-// A model error sqrt(rms^2 - sigma^2) at or under this many noise sigmas is
-// a fit at the noise.
-constexpr double kMinModelError = 0.25;
 // Types within this fraction of the best count as equally good; the earlier
 // one in seed 000's order (cylinder, sphere, cone, torus) wins.
 constexpr double kFractionTie = 0.02;

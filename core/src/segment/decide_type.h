@@ -22,6 +22,10 @@ struct TypedFit {
 TypedFit TryType(const SegmentContext& c, SurfaceType type, std::span<const int> vertices,
                  const Tolerance& tol);
 
+// A model error sqrt(rms^2 - sigma^2) at or under this many noise sigmas is
+// a fit at the noise.
+inline constexpr double kMinModelError = 0.25;
+
 // How far `fit` misses its vertices beyond the noise, sqrt(rms^2 - sigma^2).
 // At 0.15 h the rms of a sphere on a narrow 45-degree chamfer is only 10 %
 // above the cone's, which sits at the noise; their model errors are

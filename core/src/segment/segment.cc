@@ -17,6 +17,7 @@
 #include "segment/initial_segmentation.h"
 #include "segment/merge_regions.h"
 #include "segment/refine_boundaries.h"
+#include "segment/retype_by_interior.h"
 #include "segment/segment_internal.h"
 
 namespace meshseg {
@@ -102,6 +103,9 @@ absl::StatusOr<Segmentation> Segment(const Mesh& mesh, const CurvatureField& cur
   if (DissolveCreaseBands(c, &labels, &regions) > 0) {
     MESHSEG_RETURN_IF_ERROR(RefineBoundaries(c, &labels, &regions));
   }
+  // The outer rows of a narrow band can decide its type (a chamfer between
+  // rounded creases passes as a sphere); its interior tells.
+  RetypeByInterior(c, labels, &regions);
   FlattenNearlyFlatRegions(c, &regions);
   ctx.Progress("segment", 0.9);
   MESHSEG_RETURN_IF_ERROR(ctx.CheckStop("segment"));

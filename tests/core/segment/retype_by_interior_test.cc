@@ -1,0 +1,121 @@
+// RetypeByInterior on stepped_shaft's chamfer as a sheet: a cylinder of
+// radius 5, a 45-degree cone band up to radius 3.5, and a flat top.
+#include "segment/retype_by_interior.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <variant>
+#include <vector>
+
+#include "sheet_context.h"
+
+namespace meshseg::segment_internal {
+namespace {
+
+using testing::BuildSheet;
+using testing::RegionsFromLabels;
+using testing::Sheet;
+
+// Profile rows: the cylinder up to row kConeStart, the cone band to row
+// kConeEnd, the top from there on (rows 0.25 apart on the cylinder and the
+// top, 0.236 on the band). Three quarters of a turn around the z axis.
+constexpr int kConeStart = 10;
+constexpr int kConeEnd = 19;
+constexpr int kRows = 32;
+constexpr int kAround = 48;
+constexpr double kSigma = 0.01;
+
+void BuildChamfer(Sheet* s) {
+  const double band_step = 1.5 * std::numbers::sqrt2 / (kConeEnd - kConeStart);
+  BuildSheet(
+      [&](double row, double phi) {
+        const Eigen::Vector3d radial(std::cos(phi), std::sin(phi), 0.0);
+        const Eigen::Vector3d z = Eigen::Vector3d::UnitZ();
+        if (row <= kConeStart) {
+          return std::pair{Eigen::Vector3d(5.0 * radial + (66.0 + 0.25 * row) * z), radial};
+        }
+        if (row <= kConeEnd) {
+          const double t = (row - kConeStart) * band_step / std::numbers::sqrt2;
+          return std::pair{Eigen::Vector3d((5.0 - t) * radial + (68.5 + t) * z),
+                           Eigen::Vector3d((radial + z).normalized())};
+        }
+        return std::pair{Eigen::Vector3d((3.5 - 0.25 * (row - kConeEnd)) * radial + 70.0 * z), z};
+      },
+      0.0, kRows - 1, kRows, 0.0, 1.5 * std::numbers::pi, kAround, /*distance=*/5.0 * kSigma,
+      /*angle_deg=*/10.0, s);
+  s->c.noise_sigma = kSigma;
+}
+
+// Label 1 below row `first`, 0 from `first` to `last`, 2 above.
+std::vector<int> BandLabels(const Sheet& s, int first, int last) {
+  std::vector<int> labels(s.u.size());
+  for (std::size_t v = 0; v < labels.size(); ++v) {
+    const double row = s.u[v];
+    labels[v] = row < first ? 1 : (row > last ? 2 : 0);
+  }
+  return labels;
+}
+
+const std::vector<SurfaceType> kTypes = {SurfaceType::kSphere, SurfaceType::kCylinder,
+                                         SurfaceType::kPlane};
+
+TEST(RetypeByInteriorTest, SphereOnAChamferBandBecomesACone) {
+  // The band region took one row of each neighbour, as it does where the
+  // crease is rounded: over all its vertices a sphere fits it better than a
+  // cone.
+  Sheet s;
+  BuildChamfer(&s);
+  const std::vector<int> labels = BandLabels(s, kConeStart - 1, kConeEnd + 1);
+  std::vector<RegionState> regions = RegionsFromLabels(s.c, labels, kTypes);
+  ASSERT_LT(FitType(s.c, SurfaceType::kSphere, regions[0].vertices).rms_distance,
+            FitType(s.c, SurfaceType::kCone, regions[0].vertices).rms_distance);
+  EXPECT_EQ(InteriorVertices(s.c, labels, 0, regions[0]).size(),
+            static_cast<std::size_t>((kConeEnd - kConeStart + 1) * kAround));
+
+  EXPECT_EQ(RetypeByInterior(s.c, labels, &regions), std::vector<int>{0});
+  ASSERT_EQ(regions[0].type, SurfaceType::kCone);
+  EXPECT_NEAR(std::get<Cone>(regions[0].surface).half_angle, std::numbers::pi / 4.0, 0.02);
+  EXPECT_EQ(regions[1].type, SurfaceType::kCylinder);
+  EXPECT_EQ(regions[2].type, SurfaceType::kPlane);
+}
+
+TEST(RetypeByInteriorTest, TypeThatFitsItsInteriorStays) {
+  Sheet s;
+  BuildChamfer(&s);
+  const std::vector<int> labels = BandLabels(s, kConeStart - 1, kConeEnd + 1);
+  std::vector<RegionState> regions = RegionsFromLabels(
+      s.c, labels, {SurfaceType::kCone, SurfaceType::kCylinder, SurfaceType::kPlane});
+  EXPECT_TRUE(RetypeByInterior(s.c, labels, &regions).empty());
+  EXPECT_EQ(regions[0].type, SurfaceType::kCone);
+}
+
+TEST(RetypeByInteriorTest, NoTypeAtTheNoiseChangesNothing) {
+  // The band grown six rows into the top: no type fits its interior at the
+  // noise, and the scores of misfits say nothing about the type.
+  Sheet s;
+  BuildChamfer(&s);
+  const std::vector<int> labels = BandLabels(s, kConeStart - 1, kConeEnd + 7);
+  std::vector<RegionState> regions = RegionsFromLabels(s.c, labels, kTypes);
+  EXPECT_TRUE(RetypeByInterior(s.c, labels, &regions).empty());
+  EXPECT_EQ(regions[0].type, SurfaceType::kSphere);
+}
+
+TEST(RetypeByInteriorTest, SmallInteriorKeepsItsType) {
+  // A quarter-radian wedge of the band: 20 interior vertices, on which the
+  // cone would still win, but too few to trust.
+  Sheet s;
+  BuildChamfer(&s);
+  std::vector<int> labels = BandLabels(s, kConeStart - 1, kConeEnd + 1);
+  for (std::size_t v = 0; v < labels.size(); ++v) {
+    if (labels[v] == 0 && s.v[v] > 0.25) labels[v] = 1;
+  }
+  std::vector<RegionState> regions = RegionsFromLabels(s.c, labels, kTypes);
+  ASSERT_EQ(InteriorVertices(s.c, labels, 0, regions[0]).size(), 20u);
+  EXPECT_TRUE(RetypeByInterior(s.c, labels, &regions).empty());
+  EXPECT_EQ(regions[0].type, SurfaceType::kSphere);
+}
+
+}  // namespace
+}  // namespace meshseg::segment_internal
