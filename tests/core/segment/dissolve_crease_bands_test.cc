@@ -43,8 +43,11 @@ TEST(DissolveCreaseBandsTest, BandAlongACreaseGoesToThePlanesBesideIt) {
   EXPECT_EQ(DissolveCreaseBands(s.c, &labels, &regions), 1);
   EXPECT_FALSE(regions[2].alive);
   for (std::size_t k = 0; k < labels.size(); ++k) {
-    if (s.u[k] < 0.0) EXPECT_EQ(labels[k], 0) << "u " << s.u[k];
-    if (s.u[k] > 0.0) EXPECT_EQ(labels[k], 1) << "u " << s.u[k];
+    if (s.u[k] < 0.0) {
+      EXPECT_EQ(labels[k], 0) << "u " << s.u[k];
+    } else if (s.u[k] > 0.0) {
+      EXPECT_EQ(labels[k], 1) << "u " << s.u[k];
+    }
   }
 }
 
