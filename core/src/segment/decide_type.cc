@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <variant>
 
 namespace meshseg::segment_internal {
@@ -86,6 +87,31 @@ TypedFit TryType(const SegmentContext& c, SurfaceType type, std::span<const int>
 double ModelError(const SegmentContext& c, const FitResult& fit) {
   return std::sqrt(
       std::max(0.0, fit.rms_distance * fit.rms_distance - c.noise_sigma * c.noise_sigma));
+}
+
+bool FitsAtNoise(const SegmentContext& c, const FitResult& fit) {
+  return fit.ok() && ModelError(c, fit) <= kMinModelError * c.noise_sigma;
+}
+
+int ParameterCount(SurfaceType type) {
+  switch (type) {
+    case SurfaceType::kPlane: return 3;     // unit normal 2, offset
+    case SurfaceType::kSphere: return 4;    // centre 3, radius
+    case SurfaceType::kCylinder: return 5;  // axis line 4, radius
+    case SurfaceType::kCone: return 6;      // apex 3, axis 2, half-angle
+    case SurfaceType::kTorus: return 7;     // centre 3, axis 2, two radii
+    case SurfaceType::kQuadric:
+    case SurfaceType::kFreeform: return 0;
+  }
+  return 0;
+}
+
+double InformationScore(const SegmentContext& c, double mean_square, std::size_t count,
+                        int parameters) {
+  const double m = static_cast<double>(std::min(count, kMaxSample));
+  const double floor = kMinModelError * c.noise_sigma;
+  return m * std::log(std::max({mean_square, floor * floor, std::numeric_limits<double>::min()})) +
+         parameters * std::log(m);
 }
 
 bool NearlyFlat(const SegmentContext& c, const Surface& surface, double rms,

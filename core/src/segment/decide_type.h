@@ -3,6 +3,7 @@
 #ifndef MESHSEG_SRC_SEGMENT_DECIDE_TYPE_H_
 #define MESHSEG_SRC_SEGMENT_DECIDE_TYPE_H_
 
+#include <cstddef>
 #include <optional>
 #include <span>
 #include <vector>
@@ -31,6 +32,32 @@ inline constexpr double kMinModelError = 0.25;
 // above the cone's, which sits at the noise; their model errors are
 // 0.45 sigma and 0.
 double ModelError(const SegmentContext& c, const FitResult& fit);
+
+// True if `fit` is valid and meets its vertices at the noise: model error
+// at or under kMinModelError sigmas.
+bool FitsAtNoise(const SegmentContext& c, const FitResult& fit);
+
+// Free parameters of an analytic type's surface: plane 3, sphere 4,
+// cylinder 5, cone 6, torus 7 (0 for the quadric and freeform).
+int ParameterCount(SurfaceType type);
+
+// The Bayesian information criterion, for normal residuals of unknown
+// variance, of a model with `parameters` free parameters whose `count`
+// residuals have mean square `mean_square`: m ln(mean_square) +
+// parameters ln(m), m = min(count, kMaxSample) (our addition, where the
+// tolerances cannot tell types apart). Fits see at most kMaxSample
+// residuals; counting all of a large region's would also make the
+// meshing's correlated residuals decisive. The variance is the model's own,
+// not the noise estimate, which a region's local noise can miss by 5 %;
+// but a mean square under (kMinModelError sigma)^2 counts as that much: on
+// an exact CAD mesh a cylinder and a cone of half-angle 0 both fit to
+// rounding, and the log of rounding errors would pick either.
+// One model is taken over another only if it scores kScoreMargin less: a
+// likelihood ratio of e^5, where a type that fits the same points only by
+// chance gains about its extra parameter count.
+double InformationScore(const SegmentContext& c, double mean_square, std::size_t count,
+                        int parameters);
+inline constexpr double kScoreMargin = 10.0;
 
 // Returns the plane fit of `vertices` if it passes the alpha test.
 std::optional<TypedFit> PlaneIfFits(const SegmentContext& c, std::span<const int> vertices,

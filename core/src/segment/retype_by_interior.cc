@@ -13,70 +13,52 @@
 namespace meshseg::segment_internal {
 namespace {
 
-constexpr double kScoreMargin = 10.0;
-
 constexpr std::array<SurfaceType, 4> kCurvedTypes = {SurfaceType::kCylinder, SurfaceType::kSphere,
                                                      SurfaceType::kCone, SurfaceType::kTorus};
-
-// Free parameters of a curved type's surface.
-int ParameterCount(SurfaceType type) {
-  switch (type) {
-    case SurfaceType::kCylinder:
-      return 5;  // axis line 4, radius
-    case SurfaceType::kSphere:
-      return 4;
-    case SurfaceType::kCone:
-      return 6;  // apex 3, axis 2, angle
-    case SurfaceType::kTorus:
-      return 7;  // centre 3, axis 2, two radii
-    default:
-      return 0;
-  }
-}
 
 bool IsCurved(SurfaceType type) {
   return std::find(kCurvedTypes.begin(), kCurvedTypes.end(), type) != kCurvedTypes.end();
 }
 
-// The type (of kCurvedTypes) to give a region with interior `interior` and
-// type `own`; `own` if none scores kScoreMargin below it.
+// The curved type to give a region of type `own` with interior `interior`
+// (`own` if none scores kScoreMargin below it), and its fit there.
 SurfaceType BestInteriorType(const SegmentContext& c, SurfaceType own,
                              const std::vector<int>& interior, FitResult* interior_fit) {
   std::array<FitResult, kCurvedTypes.size()> fits;
-  double least_rms = std::numeric_limits<double>::infinity();
+  bool any_at_noise = false;
   for (std::size_t t = 0; t < kCurvedTypes.size(); ++t) {
     fits[t] = FitType(c, kCurvedTypes[t], interior);
-    if (fits[t].ok()) least_rms = std::min(least_rms, fits[t].rms_distance);
+    any_at_noise = any_at_noise || FitsAtNoise(c, fits[t]);
   }
-  // Only a type that fits at the noise tells types apart by their scores:
-  // on a remeshed CAD export the residuals are the facets' chords, which
-  // any type with more parameters follows better.
-  if (!(least_rms <= std::hypot(c.noise_sigma, kMinModelError * c.noise_sigma))) return own;
-  const double n = static_cast<double>(Sample(interior).size());
-  const double sigma2 = c.noise_sigma * c.noise_sigma;
-  std::array<double, kCurvedTypes.size()> score;
+  if (!any_at_noise) return own;
   std::size_t best = 0;
+  double best_score = std::numeric_limits<double>::infinity();
   double own_score = std::numeric_limits<double>::infinity();
   for (std::size_t t = 0; t < kCurvedTypes.size(); ++t) {
-    score[t] = fits[t].ok() ? n * fits[t].rms_distance * fits[t].rms_distance / sigma2 +
-                                  ParameterCount(kCurvedTypes[t]) * std::log(n)
-                            : std::numeric_limits<double>::infinity();
-    if (score[t] < score[best]) best = t;
-    if (kCurvedTypes[t] == own) own_score = score[t];
+    if (!fits[t].ok()) continue;
+    const double score = InformationScore(c, fits[t].rms_distance * fits[t].rms_distance,
+                                          interior.size(), ParameterCount(kCurvedTypes[t]));
+    if (score < best_score) {
+      best_score = score;
+      best = t;
+    }
+    if (kCurvedTypes[t] == own) own_score = score;
   }
-  if (!(score[best] + kScoreMargin < own_score)) return own;
+  if (!(best_score + kScoreMargin < own_score)) return own;
   *interior_fit = fits[best];
   return kCurvedTypes[best];
 }
 
 }  // namespace
 
-std::vector<int> InteriorVertices(const SegmentContext& c, const std::vector<int>& labels, int id,
-                                  const RegionState& region) {
+std::vector<int> InteriorVertices(const SegmentContext& c, const std::vector<int>& labels,
+                                  std::span<const int> ids, std::span<const int> vertices) {
   std::vector<int> interior;
-  for (const int v : region.vertices) {
+  for (const int v : vertices) {
     const auto around = c.graph.Neighbors(v);
-    if (std::all_of(around.begin(), around.end(), [&](int u) { return labels[u] == id; })) {
+    if (std::all_of(around.begin(), around.end(), [&](int u) {
+          return std::find(ids.begin(), ids.end(), labels[u]) != ids.end();
+        })) {
       interior.push_back(v);
     }
   }
@@ -85,12 +67,14 @@ std::vector<int> InteriorVertices(const SegmentContext& c, const std::vector<int
 
 std::vector<int> RetypeByInterior(const SegmentContext& c, const std::vector<int>& labels,
                                   std::vector<RegionState>* regions) {
+  if (!(c.noise_sigma > 0.0)) return {};  // a noise-free mesh: nothing fits "at the noise"
   const int n_regions = static_cast<int>(regions->size());
   std::vector<uint8_t> retyped(n_regions, 0);
   tbb::parallel_for(0, n_regions, [&](int id) {
     RegionState& r = (*regions)[id];
     if (!r.alive || !IsCurved(r.type)) return;
-    const std::vector<int> interior = InteriorVertices(c, labels, id, r);
+    const int ids[] = {id};
+    const std::vector<int> interior = InteriorVertices(c, labels, ids, r.vertices);
     if (interior.size() < kMinInteriorVertices) return;
     FitResult interior_fit;
     const SurfaceType type = BestInteriorType(c, r.type, interior, &interior_fit);

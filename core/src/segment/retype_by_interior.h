@@ -11,6 +11,7 @@
 #define MESHSEG_SRC_SEGMENT_RETYPE_BY_INTERIOR_H_
 
 #include <cstddef>
+#include <span>
 #include <vector>
 
 #include "segment/segment_internal.h"
@@ -20,23 +21,19 @@ namespace meshseg::segment_internal {
 // Below this many interior vertices a region keeps its type.
 inline constexpr std::size_t kMinInteriorVertices = 30;
 
-// The vertices of `region` (region `id` of `labels`) whose every neighbour
-// is in the region too.
-std::vector<int> InteriorVertices(const SegmentContext& c, const std::vector<int>& labels, int id,
-                                  const RegionState& region);
+// The vertices (of `vertices`) whose every neighbour is labelled with one
+// of `ids`.
+std::vector<int> InteriorVertices(const SegmentContext& c, const std::vector<int>& labels,
+                                  std::span<const int> ids, std::span<const int> vertices);
 
 // Gives every cylinder, sphere, cone or torus region the curved type that
-// explains its interior vertices best, if that is clearly better than its
-// own. Each type's fit to the interior (n vertices, k parameters, rms r) is
-// scored by the Bayesian information criterion n r^2 / sigma^2 + k ln n. A
-// type replaces the region's own if it scores kScoreMargin less (a
-// likelihood ratio of e^5; a type that fits the same points only by chance
-// gains about its extra parameter count), and only if some type fits the
-// interior at the noise (model error under kMinModelError sigma): on a
-// noise-free or remeshed CAD mesh the residuals are the meshing's, which a
-// type with more parameters follows better, and on a mixed region the
-// scores of misfits say nothing. The new surface is fitted to the whole
-// region. Returns the ids retyped.
+// explains its interior vertices best (InformationScore), if that scores
+// kScoreMargin less than its own type, and only if some type fits the
+// interior at the noise (FitsAtNoise): on a noise-free or remeshed CAD mesh
+// the residuals are the meshing's, which a type with more parameters
+// follows better (plate_holes' countersinks would become tori), and on a
+// mixed region the scores of misfits say nothing. The new surface is
+// fitted to the whole region. Returns the ids retyped.
 std::vector<int> RetypeByInterior(const SegmentContext& c, const std::vector<int>& labels,
                                   std::vector<RegionState>* regions);
 

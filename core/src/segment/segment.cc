@@ -16,6 +16,7 @@
 #include "segment/finalize_regions.h"
 #include "segment/initial_segmentation.h"
 #include "segment/merge_regions.h"
+#include "segment/merge_same_surface.h"
 #include "segment/refine_boundaries.h"
 #include "segment/retype_by_interior.h"
 #include "segment/segment_internal.h"
@@ -106,6 +107,11 @@ absl::StatusOr<Segmentation> Segment(const Mesh& mesh, const CurvatureField& cur
   // The outer rows of a narrow band can decide its type (a chamfer between
   // rounded creases passes as a sphere); its interior tells.
   RetypeByInterior(c, labels, &regions);
+  // Pieces of one surface typed apart (a countersink grown from two seeds
+  // as a sphere and a cone) are joined by the same test.
+  if (MergeSameSurface(c, &labels, &regions) > 0) {
+    MESHSEG_RETURN_IF_ERROR(RefineBoundaries(c, &labels, &regions));
+  }
   FlattenNearlyFlatRegions(c, &regions);
   ctx.Progress("segment", 0.9);
   MESHSEG_RETURN_IF_ERROR(ctx.CheckStop("segment"));

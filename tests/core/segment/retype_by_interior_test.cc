@@ -26,6 +26,7 @@ constexpr int kConeEnd = 19;
 constexpr int kRows = 32;
 constexpr int kAround = 48;
 constexpr double kSigma = 0.01;
+constexpr int kBand[] = {0};  // the band's label
 
 void BuildChamfer(Sheet* s) {
   const double band_step = 1.5 * std::numbers::sqrt2 / (kConeEnd - kConeStart);
@@ -71,7 +72,7 @@ TEST(RetypeByInteriorTest, SphereOnAChamferBandBecomesACone) {
   std::vector<RegionState> regions = RegionsFromLabels(s.c, labels, kTypes);
   ASSERT_LT(FitType(s.c, SurfaceType::kSphere, regions[0].vertices).rms_distance,
             FitType(s.c, SurfaceType::kCone, regions[0].vertices).rms_distance);
-  EXPECT_EQ(InteriorVertices(s.c, labels, 0, regions[0]).size(),
+  EXPECT_EQ(InteriorVertices(s.c, labels, kBand, regions[0].vertices).size(),
             static_cast<std::size_t>((kConeEnd - kConeStart + 1) * kAround));
 
   EXPECT_EQ(RetypeByInterior(s.c, labels, &regions), std::vector<int>{0});
@@ -112,7 +113,7 @@ TEST(RetypeByInteriorTest, SmallInteriorKeepsItsType) {
     if (labels[v] == 0 && s.v[v] > 0.25) labels[v] = 1;
   }
   std::vector<RegionState> regions = RegionsFromLabels(s.c, labels, kTypes);
-  ASSERT_EQ(InteriorVertices(s.c, labels, 0, regions[0]).size(), 20u);
+  ASSERT_EQ(InteriorVertices(s.c, labels, kBand, regions[0].vertices).size(), 20u);
   EXPECT_TRUE(RetypeByInterior(s.c, labels, &regions).empty());
   EXPECT_EQ(regions[0].type, SurfaceType::kSphere);
 }

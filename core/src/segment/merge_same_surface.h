@@ -1,0 +1,31 @@
+// Merging pieces of one surface (our addition to seed 000 §4): the region
+// graph keeps an arc only between regions of the same type, so two pieces
+// of one surface that were typed apart stay apart. At 0.15 h test_piece's
+// countersink (a 45-degree cone band 4 h wide) grew from two seeds, one
+// typed a sphere and one a cone, and both are right within the tolerances.
+// Whether they are one surface is asked of their interiors, where the rows
+// along creases cannot bias the fits (retype_by_interior.h).
+#ifndef MESHSEG_SRC_SEGMENT_MERGE_SAME_SURFACE_H_
+#define MESHSEG_SRC_SEGMENT_MERGE_SAME_SURFACE_H_
+
+#include <vector>
+
+#include "segment/segment_internal.h"
+
+namespace meshseg::segment_internal {
+
+// Repeatedly merges the pair of analytic regions across a smooth arc (not
+// two planes: the refit merge takes those) that one surface explains
+// clearly better than two. On the union's interior vertices, each member's
+// part fitted with its own type is scored against one fit of each analytic
+// type to all of it (InformationScore, parameters counted for both
+// members); the pair merges if one type fits at the noise and scores
+// kScoreMargin less, taking that type, largest gain first. Both parts need
+// kMinInteriorVertices. Does nothing at noise 0 (noise-free meshes have no
+// scale for the scores). Returns the number of merges.
+int MergeSameSurface(const SegmentContext& c, std::vector<int>* labels,
+                     std::vector<RegionState>* regions);
+
+}  // namespace meshseg::segment_internal
+
+#endif  // MESHSEG_SRC_SEGMENT_MERGE_SAME_SURFACE_H_

@@ -1,0 +1,102 @@
+// MergeSameSurface on sheets: a cone band in two pieces typed apart, and a
+// cylinder with its tangent fillet.
+#include "segment/merge_same_surface.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <variant>
+#include <vector>
+
+#include "sheet_context.h"
+
+namespace meshseg::segment_internal {
+namespace {
+
+using testing::BuildSheet;
+using testing::RegionsFromLabels;
+using testing::Sheet;
+
+constexpr double kSigma = 0.01;
+constexpr double kPi = std::numbers::pi;
+
+// Three quarters of a turn of a 45-degree cone band (axis z) from radius 5
+// down to 3.5, 13 rows by 64 around; label 0 below angle `split`, 1 above.
+void SplitCone(double split, Sheet* s, std::vector<int>* labels) {
+  BuildSheet(
+      [](double t, double phi) {
+        const Eigen::Vector3d radial(std::cos(phi), std::sin(phi), 0.0);
+        const Eigen::Vector3d z = Eigen::Vector3d::UnitZ();
+        return std::pair{Eigen::Vector3d((5.0 - t) * radial + t * z),
+                         Eigen::Vector3d((radial + z).normalized())};
+      },
+      0.0, 1.5, 13, 0.0, 1.5 * kPi, 64, /*distance=*/5.0 * kSigma, /*angle_deg=*/10.0, s);
+  s->c.noise_sigma = kSigma;
+  labels->resize(s->u.size());
+  for (std::size_t v = 0; v < labels->size(); ++v) (*labels)[v] = s->v[v] < split ? 0 : 1;
+}
+
+TEST(MergeSameSurfaceTest, ConeBandTypedApartIsMerged) {
+  // One piece passed as a sphere (it does within the tolerances on a band
+  // this narrow), the other as a cone.
+  Sheet s;
+  std::vector<int> labels;
+  SplitCone(0.75 * kPi, &s, &labels);
+  std::vector<RegionState> regions =
+      RegionsFromLabels(s.c, labels, {SurfaceType::kSphere, SurfaceType::kCone});
+  ASSERT_GT(FitType(s.c, SurfaceType::kSphere, regions[0].vertices).rms_distance, 0.25 * kSigma);
+
+  EXPECT_EQ(MergeSameSurface(s.c, &labels, &regions), 1);
+  const int kept = regions[0].alive ? 0 : 1;
+  ASSERT_TRUE(regions[kept].alive);
+  EXPECT_FALSE(regions[1 - kept].alive);
+  EXPECT_EQ(regions[kept].vertices.size(), s.u.size());
+  ASSERT_EQ(regions[kept].type, SurfaceType::kCone);
+  EXPECT_NEAR(std::get<Cone>(regions[kept].surface).half_angle, kPi / 4.0, 1e-6);
+  for (const int label : labels) EXPECT_EQ(label, kept);
+}
+
+TEST(MergeSameSurfaceTest, NothingMergesWithoutANoiseScale) {
+  Sheet s;
+  std::vector<int> labels;
+  SplitCone(0.75 * kPi, &s, &labels);
+  s.c.noise_sigma = 0.0;
+  std::vector<RegionState> regions =
+      RegionsFromLabels(s.c, labels, {SurfaceType::kSphere, SurfaceType::kCone});
+  EXPECT_EQ(MergeSameSurface(s.c, &labels, &regions), 0);
+  EXPECT_TRUE(regions[0].alive);
+  EXPECT_TRUE(regions[1].alive);
+}
+
+TEST(MergeSameSurfaceTest, CylinderAndItsTangentFilletStayApart) {
+  // A cylinder of radius 5 (label 0) and a quarter-round of radius 2
+  // turning in from its top (label 1): the arc between them is smooth, but
+  // no one surface fits both.
+  Sheet s;
+  constexpr int kCylinderRows = 11;
+  BuildSheet(
+      [](double row, double phi) {
+        const Eigen::Vector3d radial(std::cos(phi), std::sin(phi), 0.0);
+        const Eigen::Vector3d z = Eigen::Vector3d::UnitZ();
+        if (row <= kCylinderRows - 1) {
+          return std::pair{Eigen::Vector3d(5.0 * radial + 0.25 * row * z), radial};
+        }
+        const double t = (row - (kCylinderRows - 1)) * (kPi / 2.0) / 12.0;
+        const Eigen::Vector3d n = std::cos(t) * radial + std::sin(t) * z;
+        return std::pair{Eigen::Vector3d(3.0 * radial + 2.5 * z + 2.0 * n), n};
+      },
+      0.0, kCylinderRows + 11, kCylinderRows + 12, 0.0, 1.5 * kPi, 64, /*distance=*/5.0 * kSigma,
+      /*angle_deg=*/10.0, &s);
+  s.c.noise_sigma = kSigma;
+  std::vector<int> labels(s.u.size());
+  for (std::size_t v = 0; v < labels.size(); ++v) labels[v] = s.u[v] <= kCylinderRows - 1 ? 0 : 1;
+  std::vector<RegionState> regions =
+      RegionsFromLabels(s.c, labels, {SurfaceType::kCylinder, SurfaceType::kTorus});
+  EXPECT_EQ(MergeSameSurface(s.c, &labels, &regions), 0);
+  EXPECT_EQ(regions[0].type, SurfaceType::kCylinder);
+  EXPECT_EQ(regions[1].type, SurfaceType::kTorus);
+}
+
+}  // namespace
+}  // namespace meshseg::segment_internal
