@@ -11,9 +11,10 @@
 // regions their type misses beyond the noise are typed again, bands along
 // creases the sharp test missed are dissolved into their neighbours, curved
 // types are checked on each region's interior (without the rows along its
-// creases), and each surface is reported as fitted to its region's
-// inliers; coarse exact CAD meshes are segmented facet by facet
-// (core/src/segment/segment.cc holds the order).
+// creases) and neighbours that one surface explains better than two are
+// merged, both by an information criterion; each surface is reported as
+// fitted to its region's inliers; coarse exact CAD meshes are segmented
+// facet by facet (core/src/segment/segment.cc holds the order).
 //
 // In: a Mesh and its CurvatureField. Out: Segmentation with a label per mesh
 // face and vertex and one Region per label.
