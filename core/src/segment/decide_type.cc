@@ -122,10 +122,7 @@ bool NearlyFlat(const SegmentContext& c, const Surface& surface, double rms,
 int FlattenNearlyFlatRegions(const SegmentContext& c, std::vector<RegionState>* regions) {
   int flattened = 0;
   for (RegionState& r : *regions) {
-    if (!r.alive || r.type == SurfaceType::kPlane || r.type == SurfaceType::kQuadric ||
-        r.type == SurfaceType::kFreeform) {
-      continue;
-    }
+    if (!r.alive || !IsCurved(r.type)) continue;
     const FitResult curved = FitType(c, r.type, r.vertices);
     if (!curved.ok() ||
         !NearlyFlat(c, curved.surface, curved.rms_distance, r.vertices, c.tolerance)) {

@@ -144,39 +144,14 @@ PairFit FitUnion(const SegmentContext& c, const RegionState& x, const RegionStat
 // Seed 000 §4 step 4: repeatedly merges the best-fitting pair.
 absl::Status MergeByRefitting(const SegmentContext& c, std::vector<int>* labels,
                               std::vector<RegionState>* regions) {
-  std::map<std::pair<int, int>, PairFit> cache;
-  while (true) {
-    MESHSEG_RETURN_IF_ERROR(c.run->CheckStop("segment"));
-    const std::vector<RegionArc> arcs = BuildRegionGraph(c, *labels, *regions);
-    const RegionArc* best_arc = nullptr;
-    const PairFit* best = nullptr;
-    for (const RegionArc& arc : arcs) {
-      if (!arc.kept) continue;
-      auto it = cache.find({arc.a, arc.b});
-      if (it == cache.end()) {
-        it = cache.emplace(std::pair{arc.a, arc.b},
-                           FitUnion(c, (*regions)[arc.a], (*regions)[arc.b])).first;
-      }
-      if (it->second.fraction < kBeta2) continue;
-      if (best == nullptr || it->second.fraction > best->fraction) {
-        best = &it->second;
-        best_arc = &arc;
-      }
-    }
-    if (best == nullptr) return absl::OkStatus();
-    const int a = best_arc->a;
-    const int b = best_arc->b;
-    const bool a_larger = (*regions)[a].vertices.size() >= (*regions)[b].vertices.size();
-    const int into = a_larger ? a : b;
-    const PairFit merged = *best;
-    MergeInto(into, a_larger ? b : a, labels, regions);
-    (*regions)[into].type = merged.type;
-    (*regions)[into].surface = merged.surface;
-    std::erase_if(cache, [&](const auto& e) {
-      return e.first.first == a || e.first.second == a || e.first.first == b ||
-             e.first.second == b;
-    });
-  }
+  return MergeBestPairs(
+             c, labels, regions, [](const RegionArc& arc) { return arc.kept; },
+             [&](int a, int b) -> std::optional<PairMerge> {
+               const PairFit fit = FitUnion(c, (*regions)[a], (*regions)[b]);
+               if (fit.fraction < kBeta2) return std::nullopt;
+               return PairMerge{.score = fit.fraction, .type = fit.type, .surface = fit.surface};
+             })
+      .status();
 }
 
 }  // namespace
@@ -243,10 +218,7 @@ std::vector<int> RetypeInaccurateCurved(const SegmentContext& c,
   std::vector<int> retyped;
   for (int id = 0; id < static_cast<int>(regions->size()); ++id) {
     RegionState& r = (*regions)[id];
-    if (!r.alive || r.type == SurfaceType::kPlane || r.type == SurfaceType::kQuadric ||
-        r.type == SurfaceType::kFreeform) {
-      continue;
-    }
+    if (!r.alive || !IsCurved(r.type)) continue;
     const std::vector<int> smooth = SmoothVertices(c, r.vertices);
     if (smooth.size() < kMinRetypeVertices) continue;
     // A type with no valid fit left (a torus whose cusp the region grew

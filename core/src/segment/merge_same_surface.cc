@@ -3,8 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <map>
-#include <utility>
+#include <optional>
 
 #include "segment/decide_type.h"
 #include "segment/region_graph.h"
@@ -17,9 +16,7 @@ constexpr std::array<SurfaceType, 5> kAnalyticTypes = {SurfaceType::kPlane, Surf
                                                        SurfaceType::kSphere, SurfaceType::kCone,
                                                        SurfaceType::kTorus};
 
-bool IsAnalytic(SurfaceType type) {
-  return std::find(kAnalyticTypes.begin(), kAnalyticTypes.end(), type) != kAnalyticTypes.end();
-}
+bool IsAnalytic(SurfaceType type) { return type == SurfaceType::kPlane || IsCurved(type); }
 
 struct UnionTest {
   double gain = 0.0;  // score of two surfaces minus score of one
@@ -57,49 +54,22 @@ UnionTest TestUnion(const SegmentContext& c, const std::vector<int>& labels, int
 
 }  // namespace
 
-int MergeSameSurface(const SegmentContext& c, std::vector<int>* labels,
-                     std::vector<RegionState>* regions) {
+absl::StatusOr<int> MergeSameSurface(const SegmentContext& c, std::vector<int>* labels,
+                                     std::vector<RegionState>* regions) {
   if (!(c.noise_sigma > 0.0)) return 0;
-  std::map<std::pair<int, int>, UnionTest> cache;
-  int merges = 0;
-  while (true) {
-    const std::vector<RegionArc> arcs = BuildRegionGraph(c, *labels, *regions);
-    const RegionArc* best_arc = nullptr;
-    const UnionTest* best = nullptr;
-    for (const RegionArc& arc : arcs) {
-      const SurfaceType type_a = (*regions)[arc.a].type;
-      const SurfaceType type_b = (*regions)[arc.b].type;
-      if (!arc.smooth || !IsAnalytic(type_a) || !IsAnalytic(type_b) ||
-          (type_a == SurfaceType::kPlane && type_b == SurfaceType::kPlane)) {
-        continue;
-      }
-      auto it = cache.find({arc.a, arc.b});
-      if (it == cache.end()) {
-        it = cache.emplace(std::pair{arc.a, arc.b}, TestUnion(c, *labels, arc.a, arc.b, *regions))
-                 .first;
-      }
-      if (!(it->second.gain > kScoreMargin)) continue;
-      if (best == nullptr || it->second.gain > best->gain) {
-        best = &it->second;
-        best_arc = &arc;
-      }
-    }
-    if (best == nullptr) return merges;
-    const int a = best_arc->a;
-    const int b = best_arc->b;
-    const bool a_larger = (*regions)[a].vertices.size() >= (*regions)[b].vertices.size();
-    const int into = a_larger ? a : b;
-    const SurfaceType type = best->type;
-    MergeInto(into, a_larger ? b : a, labels, regions);
-    RegionState& merged = (*regions)[into];
-    merged.type = type;
-    const FitResult fit = FitType(c, type, merged.vertices);
-    if (fit.ok()) merged.surface = fit.surface;
-    ++merges;
-    std::erase_if(cache, [&](const auto& e) {
-      return e.first.first == a || e.first.second == a || e.first.first == b || e.first.second == b;
-    });
-  }
+  return MergeBestPairs(
+      c, labels, regions,
+      [&](const RegionArc& arc) {
+        const SurfaceType type_a = (*regions)[arc.a].type;
+        const SurfaceType type_b = (*regions)[arc.b].type;
+        return arc.smooth && IsAnalytic(type_a) && IsAnalytic(type_b) &&
+               !(type_a == SurfaceType::kPlane && type_b == SurfaceType::kPlane);
+      },
+      [&](int a, int b) -> std::optional<PairMerge> {
+        const UnionTest t = TestUnion(c, *labels, a, b, *regions);
+        if (!(t.gain > kScoreMargin)) return std::nullopt;
+        return PairMerge{.score = t.gain, .type = t.type, .surface = std::nullopt};
+      });
 }
 
 }  // namespace meshseg::segment_internal

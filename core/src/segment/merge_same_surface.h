@@ -10,6 +10,7 @@
 
 #include <vector>
 
+#include "absl/status/statusor.h"
 #include "segment/segment_internal.h"
 
 namespace meshseg::segment_internal {
@@ -22,9 +23,10 @@ namespace meshseg::segment_internal {
 // members); the pair merges if one type fits at the noise and scores
 // kScoreMargin less, taking that type, largest gain first. Both parts need
 // kMinInteriorVertices. Does nothing at noise 0 (noise-free meshes have no
-// scale for the scores). Returns the number of merges.
-int MergeSameSurface(const SegmentContext& c, std::vector<int>* labels,
-                     std::vector<RegionState>* regions);
+// scale for the scores). Returns the number of merges. Errors: CANCELLED
+// on stop.
+absl::StatusOr<int> MergeSameSurface(const SegmentContext& c, std::vector<int>* labels,
+                                     std::vector<RegionState>* regions);
 
 }  // namespace meshseg::segment_internal
 

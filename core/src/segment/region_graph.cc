@@ -7,6 +7,8 @@
 
 #include <Eigen/Geometry>
 
+#include "meshseg/status_macros.h"
+
 namespace meshseg::segment_internal {
 namespace {
 
@@ -52,6 +54,49 @@ std::vector<RegionArc> BuildRegionGraph(const SegmentContext& c, const std::vect
     arcs.push_back(arc);
   }
   return arcs;
+}
+
+absl::StatusOr<int> MergeBestPairs(
+    const SegmentContext& c, std::vector<int>* labels, std::vector<RegionState>* regions,
+    const std::function<bool(const RegionArc&)>& eligible,
+    const std::function<std::optional<PairMerge>(int a, int b)>& test) {
+  std::map<std::pair<int, int>, std::optional<PairMerge>> cache;
+  int merges = 0;
+  while (true) {
+    MESHSEG_RETURN_IF_ERROR(c.run->CheckStop("segment"));
+    const std::vector<RegionArc> arcs = BuildRegionGraph(c, *labels, *regions);
+    const RegionArc* best_arc = nullptr;
+    const PairMerge* best = nullptr;
+    for (const RegionArc& arc : arcs) {
+      if (!eligible(arc)) continue;
+      auto it = cache.find({arc.a, arc.b});
+      if (it == cache.end()) it = cache.emplace(std::pair{arc.a, arc.b}, test(arc.a, arc.b)).first;
+      if (!it->second) continue;
+      if (best == nullptr || it->second->score > best->score) {
+        best = &*it->second;
+        best_arc = &arc;
+      }
+    }
+    if (best == nullptr) return merges;
+    const int a = best_arc->a;
+    const int b = best_arc->b;
+    const bool a_larger = (*regions)[a].vertices.size() >= (*regions)[b].vertices.size();
+    const int into = a_larger ? a : b;
+    const PairMerge merge = *best;
+    MergeInto(into, a_larger ? b : a, labels, regions);
+    RegionState& merged = (*regions)[into];
+    merged.type = merge.type;
+    if (merge.surface) {
+      merged.surface = *merge.surface;
+    } else if (const FitResult fit = FitType(c, merge.type, merged.vertices); fit.ok()) {
+      merged.surface = fit.surface;
+    }
+    ++merges;
+    std::erase_if(cache, [&](const auto& e) {
+      return e.first.first == a || e.first.second == a || e.first.first == b ||
+             e.first.second == b;
+    });
+  }
 }
 
 }  // namespace meshseg::segment_internal

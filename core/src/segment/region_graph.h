@@ -5,8 +5,11 @@
 #ifndef MESHSEG_SRC_SEGMENT_REGION_GRAPH_H_
 #define MESHSEG_SRC_SEGMENT_REGION_GRAPH_H_
 
+#include <functional>
+#include <optional>
 #include <vector>
 
+#include "absl/status/statusor.h"
 #include "segment/segment_internal.h"
 
 namespace meshseg::segment_internal {
@@ -24,6 +27,27 @@ inline constexpr double kSharpBoundaryDeg = 45.0;  // th_bnd, seed 000 §4 step 
 // Returns the arcs between alive regions, sorted by (a, b).
 std::vector<RegionArc> BuildRegionGraph(const SegmentContext& c, const std::vector<int>& labels,
                                         const std::vector<RegionState>& regions);
+
+// A merge of an arc's two regions that a merge step accepts: its score
+// (the highest is merged first) and the merged region's type and surface
+// (unset: fitted to the merged vertices, keeping the larger region's
+// surface if that fit is invalid).
+struct PairMerge {
+  double score = 0.0;
+  SurfaceType type = SurfaceType::kQuadric;
+  std::optional<Surface> surface;
+};
+
+// The loop of seed 000 §4 step 4 that MergeByRefitting and MergeSameSurface
+// share: repeatedly merges, the smaller region into the larger, the pair
+// across an arc that `eligible` admits with the highest score `test(a, b)`
+// gives (nullopt: not to be merged), until none is left. Tests are cached
+// per arc and redone only for pairs a merge changed. Returns the number of
+// merges. Errors: CANCELLED on stop.
+absl::StatusOr<int> MergeBestPairs(
+    const SegmentContext& c, std::vector<int>* labels, std::vector<RegionState>* regions,
+    const std::function<bool(const RegionArc&)>& eligible,
+    const std::function<std::optional<PairMerge>(int a, int b)>& test);
 
 }  // namespace meshseg::segment_internal
 

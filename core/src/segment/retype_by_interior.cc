@@ -1,12 +1,12 @@
 #include "segment/retype_by_interior.h"
 
-#include <tbb/parallel_for.h>
-
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
 #include <limits>
+
+#include <tbb/parallel_for.h>
 
 #include "segment/decide_type.h"
 
@@ -15,10 +15,6 @@ namespace {
 
 constexpr std::array<SurfaceType, 4> kCurvedTypes = {SurfaceType::kCylinder, SurfaceType::kSphere,
                                                      SurfaceType::kCone, SurfaceType::kTorus};
-
-bool IsCurved(SurfaceType type) {
-  return std::find(kCurvedTypes.begin(), kCurvedTypes.end(), type) != kCurvedTypes.end();
-}
 
 // The curved type to give a region of type `own` with interior `interior`
 // (`own` if none scores kScoreMargin below it), and its fit there.

@@ -109,9 +109,8 @@ absl::StatusOr<Segmentation> Segment(const Mesh& mesh, const CurvatureField& cur
   RetypeByInterior(c, labels, &regions);
   // Pieces of one surface typed apart (a countersink grown from two seeds
   // as a sphere and a cone) are joined by the same test.
-  if (MergeSameSurface(c, &labels, &regions) > 0) {
-    MESHSEG_RETURN_IF_ERROR(RefineBoundaries(c, &labels, &regions));
-  }
+  MESHSEG_ASSIGN_OR_RETURN(const int same_surface, MergeSameSurface(c, &labels, &regions));
+  if (same_surface > 0) MESHSEG_RETURN_IF_ERROR(RefineBoundaries(c, &labels, &regions));
   FlattenNearlyFlatRegions(c, &regions);
   ctx.Progress("segment", 0.9);
   MESHSEG_RETURN_IF_ERROR(ctx.CheckStop("segment"));

@@ -28,6 +28,12 @@ struct RegionState {
   bool alive = true;
 };
 
+// True for the curved analytic types: cylinder, sphere, cone, torus.
+inline bool IsCurved(SurfaceType type) {
+  return type == SurfaceType::kCylinder || type == SurfaceType::kSphere ||
+         type == SurfaceType::kCone || type == SurfaceType::kTorus;
+}
+
 // Thresholds of seed 000 eqs. (5) and (6).
 struct Tolerance {
   double distance = 0.0;  // th_dis, model units

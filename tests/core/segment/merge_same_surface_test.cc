@@ -47,7 +47,7 @@ TEST(MergeSameSurfaceTest, ConeBandTypedApartIsMerged) {
       RegionsFromLabels(s.c, labels, {SurfaceType::kSphere, SurfaceType::kCone});
   ASSERT_GT(FitType(s.c, SurfaceType::kSphere, regions[0].vertices).rms_distance, 0.25 * kSigma);
 
-  EXPECT_EQ(MergeSameSurface(s.c, &labels, &regions), 1);
+  EXPECT_EQ(MergeSameSurface(s.c, &labels, &regions).value(), 1);
   const int kept = regions[0].alive ? 0 : 1;
   ASSERT_TRUE(regions[kept].alive);
   EXPECT_FALSE(regions[1 - kept].alive);
@@ -64,7 +64,7 @@ TEST(MergeSameSurfaceTest, NothingMergesWithoutANoiseScale) {
   s.c.noise_sigma = 0.0;
   std::vector<RegionState> regions =
       RegionsFromLabels(s.c, labels, {SurfaceType::kSphere, SurfaceType::kCone});
-  EXPECT_EQ(MergeSameSurface(s.c, &labels, &regions), 0);
+  EXPECT_EQ(MergeSameSurface(s.c, &labels, &regions).value(), 0);
   EXPECT_TRUE(regions[0].alive);
   EXPECT_TRUE(regions[1].alive);
 }
@@ -93,7 +93,7 @@ TEST(MergeSameSurfaceTest, CylinderAndItsTangentFilletStayApart) {
   for (std::size_t v = 0; v < labels.size(); ++v) labels[v] = s.u[v] <= kCylinderRows - 1 ? 0 : 1;
   std::vector<RegionState> regions =
       RegionsFromLabels(s.c, labels, {SurfaceType::kCylinder, SurfaceType::kTorus});
-  EXPECT_EQ(MergeSameSurface(s.c, &labels, &regions), 0);
+  EXPECT_EQ(MergeSameSurface(s.c, &labels, &regions).value(), 0);
   EXPECT_EQ(regions[0].type, SurfaceType::kCylinder);
   EXPECT_EQ(regions[1].type, SurfaceType::kTorus);
 }

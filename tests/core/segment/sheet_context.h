@@ -21,6 +21,7 @@ struct Sheet {
   TriMesh mesh;
   CurvatureField field;
   SegmentContext c;
+  RunContext run;  // never stopped
   std::vector<double> u;  // parameters per vertex
   std::vector<double> v;
 };
@@ -54,6 +55,7 @@ inline void BuildSheet(const SheetPoint& f, double u0, double u1, int nu, double
   s->field.sharp.assign(n, 0);
   s->c.graph = BuildVertexGraph(s->mesh);
   s->c.curvature = &s->field;
+  s->c.run = &s->run;
   s->c.vertex_area.assign(n, 1.0);
   s->c.mean_edge_length = MeanEdgeLength(s->mesh);
   s->c.noise_sigma = 0.0;
