@@ -114,6 +114,24 @@ double InformationScore(const SegmentContext& c, double mean_square, std::size_t
          parameters * std::log(m);
 }
 
+ScoredFit ScoreType(const SegmentContext& c, SurfaceType type, std::span<const int> vertices) {
+  ScoredFit out{.type = type, .fit = FitType(c, type, vertices)};
+  if (out.fit.ok()) {
+    out.score = InformationScore(c, out.fit.rms_distance * out.fit.rms_distance, vertices.size(),
+                                 ParameterCount(type));
+  }
+  return out;
+}
+
+std::array<ScoredFit, kCurvedTypes.size()> ScoreCurvedTypes(const SegmentContext& c,
+                                                           std::span<const int> vertices) {
+  std::array<ScoredFit, kCurvedTypes.size()> out;
+  for (std::size_t t = 0; t < kCurvedTypes.size(); ++t) {
+    out[t] = ScoreType(c, kCurvedTypes[t], vertices);
+  }
+  return out;
+}
+
 bool NearlyFlat(const SegmentContext& c, const Surface& surface, double rms,
                 std::span<const int> vertices, const Tolerance& tol) {
   return NearlyFlatImpl(c, surface, rms, vertices, tol);

@@ -3,7 +3,9 @@
 #ifndef MESHSEG_SRC_SEGMENT_DECIDE_TYPE_H_
 #define MESHSEG_SRC_SEGMENT_DECIDE_TYPE_H_
 
+#include <array>
 #include <cstddef>
+#include <limits>
 #include <optional>
 #include <span>
 #include <vector>
@@ -58,6 +60,23 @@ int ParameterCount(SurfaceType type);
 double InformationScore(const SegmentContext& c, double mean_square, std::size_t count,
                         int parameters);
 inline constexpr double kScoreMargin = 10.0;
+
+// A fit of one type to a vertex set with its InformationScore there
+// (infinite if the fit is invalid).
+struct ScoredFit {
+  SurfaceType type = SurfaceType::kQuadric;
+  FitResult fit;
+  double score = std::numeric_limits<double>::infinity();
+};
+ScoredFit ScoreType(const SegmentContext& c, SurfaceType type, std::span<const int> vertices);
+
+// The curved types in seed 000's order, then seed 002's torus.
+inline constexpr std::array<SurfaceType, 4> kCurvedTypes = {
+    SurfaceType::kCylinder, SurfaceType::kSphere, SurfaceType::kCone, SurfaceType::kTorus};
+
+// ScoreType of each of kCurvedTypes on `vertices`.
+std::array<ScoredFit, kCurvedTypes.size()> ScoreCurvedTypes(const SegmentContext& c,
+                                                           std::span<const int> vertices);
 
 // Returns the plane fit of `vertices` if it passes the alpha test.
 std::optional<TypedFit> PlaneIfFits(const SegmentContext& c, std::span<const int> vertices,

@@ -1,12 +1,15 @@
 #include "segment/initial_segmentation.h"
 
+#include <algorithm>
 #include <array>
+#include <cstdint>
 #include <optional>
 #include <vector>
 
 #include "meshseg/status_macros.h"
 #include "segment/decide_type.h"
 #include "segment/grow_region.h"
+#include "segment/retype_by_interior.h"
 #include "segment/seeds.h"
 
 namespace meshseg::segment_internal {
@@ -36,6 +39,31 @@ void GrowTyped(const SegmentContext& c, const TypedFit& typed, int id, std::vect
   if (GrowRegion(c, &model, c.tolerance, id, labels, &region->vertices)) {
     region->surface = model.fit().surface;
   }
+}
+
+// Grows `region` (its seed, labelled `id`) with the height function and,
+// if that is a plane, as a plane. True if it is one and no curved type
+// explains its interior kScoreMargin better; else its vertices are freed
+// again and `region` holds all it reached.
+bool GrowPlane(const SegmentContext& c, int id, std::vector<int>* labels, RegionState* region) {
+  HeightModel height;
+  GrowRegion(c, &height, c.tolerance, id, labels, &region->vertices);
+  if (auto plane = PlaneIfFits(c, region->vertices, c.tolerance)) {
+    GrowTyped(c, *plane, id, labels, region);
+    const int ids[] = {id};
+    const std::vector<int> interior = InteriorVertices(c, *labels, ids, region->vertices);
+    if (interior.size() >= kMinInteriorVertices) {
+      const double plane_score = ScoreType(c, SurfaceType::kPlane, interior).score;
+      const auto curved = ScoreCurvedTypes(c, interior);
+      if (std::none_of(curved.begin(), curved.end(), [&](const ScoredFit& s) {
+            return s.score + kScoreMargin < plane_score;
+          })) {
+        return true;
+      }
+    }
+  }
+  for (const int v : region->vertices) (*labels)[v] = -1;
+  return false;
 }
 
 }  // namespace
@@ -152,11 +180,37 @@ void GrowAndType(const SegmentContext& c, int id, std::vector<int>* labels,
   region.surface = FitType(c, SurfaceType::kQuadric, region.vertices).surface;
 }
 
+absl::Status GrowPlanesFirst(const SegmentContext& c, const std::vector<int>& order,
+                             std::vector<int>* labels, std::vector<RegionState>* regions) {
+  std::vector<uint8_t> tried(c.vertex_count(), 0);
+  NeighborhoodScratch scratch;
+  int count = 0;
+  for (const int i : order) {
+    if ((*labels)[i] != -1 || tried[i]) continue;
+    tried[i] = 1;
+    if (++count % kStopCheckEvery == 0) MESHSEG_RETURN_IF_ERROR(c.run->CheckStop("segment"));
+    std::vector<int> seed = CollectSeed(c, i, *labels, &scratch);
+    if (seed.empty() || !PlaneIfFits(c, seed, c.tolerance)) continue;
+    const int id = static_cast<int>(regions->size());
+    for (const int v : seed) (*labels)[v] = id;
+    RegionState region{
+        .type = SurfaceType::kPlane, .surface = Plane{}, .vertices = std::move(seed), .alive = true};
+    if (GrowPlane(c, id, labels, &region)) {
+      regions->push_back(std::move(region));
+    } else {
+      for (const int v : region.vertices) tried[v] = 1;
+    }
+  }
+  return absl::OkStatus();
+}
+
 absl::Status GrowInitialRegions(const SegmentContext& c, std::vector<int>* labels,
                                 std::vector<RegionState>* regions) {
   const std::vector<int> order = SeedOrder(c);
+  if (c.noise_sigma > 0.0) MESHSEG_RETURN_IF_ERROR(GrowPlanesFirst(c, order, labels, regions));
   NeighborhoodScratch scratch;
   std::size_t labelled = 0;
+  for (const RegionState& plane : *regions) labelled += plane.vertices.size();
   int tried = 0;
   for (const int i : order) {
     if ((*labels)[i] != -1) continue;

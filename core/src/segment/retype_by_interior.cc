@@ -13,36 +13,24 @@
 namespace meshseg::segment_internal {
 namespace {
 
-constexpr std::array<SurfaceType, 4> kCurvedTypes = {SurfaceType::kCylinder, SurfaceType::kSphere,
-                                                     SurfaceType::kCone, SurfaceType::kTorus};
-
 // The curved type to give a region of type `own` with interior `interior`
 // (`own` if none scores kScoreMargin below it), and its fit there.
 SurfaceType BestInteriorType(const SegmentContext& c, SurfaceType own,
                              const std::vector<int>& interior, FitResult* interior_fit) {
-  std::array<FitResult, kCurvedTypes.size()> fits;
-  bool any_at_noise = false;
-  for (std::size_t t = 0; t < kCurvedTypes.size(); ++t) {
-    fits[t] = FitType(c, kCurvedTypes[t], interior);
-    any_at_noise = any_at_noise || FitsAtNoise(c, fits[t]);
+  const auto scored = ScoreCurvedTypes(c, interior);
+  if (std::none_of(scored.begin(), scored.end(),
+                   [&](const ScoredFit& s) { return FitsAtNoise(c, s.fit); })) {
+    return own;
   }
-  if (!any_at_noise) return own;
-  std::size_t best = 0;
-  double best_score = std::numeric_limits<double>::infinity();
+  const ScoredFit* best = &scored.front();
   double own_score = std::numeric_limits<double>::infinity();
-  for (std::size_t t = 0; t < kCurvedTypes.size(); ++t) {
-    if (!fits[t].ok()) continue;
-    const double score = InformationScore(c, fits[t].rms_distance * fits[t].rms_distance,
-                                          interior.size(), ParameterCount(kCurvedTypes[t]));
-    if (score < best_score) {
-      best_score = score;
-      best = t;
-    }
-    if (kCurvedTypes[t] == own) own_score = score;
+  for (const ScoredFit& s : scored) {
+    if (s.score < best->score) best = &s;
+    if (s.type == own) own_score = s.score;
   }
-  if (!(best_score + kScoreMargin < own_score)) return own;
-  *interior_fit = fits[best];
-  return kCurvedTypes[best];
+  if (!(best->score + kScoreMargin < own_score)) return own;
+  *interior_fit = best->fit;
+  return best->type;
 }
 
 }  // namespace

@@ -120,7 +120,9 @@ TEST_P(SegmentPart, FindsEveryPrimitiveWithItsTypeAndParameters) {
 // Noise draws other than seed 7 that failed at 0.05 h before stop 14
 // (scripts/segment_seed_matrix.sh): plate_boss's boss top typed as a
 // spindle torus (seed 2); slivers of cylinder and torus left by the boundary
-// refinement around test_piece's countersink (seed 9).
+// refinement around test_piece's countersink (seed 9). At stop 16: planes
+// grown first from flat-looking seeds on torus_ring, splitting its torus in
+// two, before GrowPlanesFirst checked them against curved types (seed 10).
 class SegmentPartOtherSeed
     : public ::testing::TestWithParam<std::tuple<std::string, double, uint64_t>> {};
 
@@ -134,7 +136,8 @@ TEST_P(SegmentPartOtherSeed, FindsEveryPrimitiveWithItsTypeAndParameters) {
 
 INSTANTIATE_TEST_SUITE_P(Draws, SegmentPartOtherSeed,
                          ::testing::Values(std::tuple{std::string("plate_boss"), 0.0, uint64_t{2}},
-                                           std::tuple{std::string("test_piece"), 1.0, uint64_t{9}}),
+                                           std::tuple{std::string("test_piece"), 1.0, uint64_t{9}},
+                                           std::tuple{std::string("torus_ring"), 0.0, uint64_t{10}}),
                          [](const auto& info) {
                            return std::get<0>(info.param) + "_seed_" +
                                   std::to_string(std::get<2>(info.param));
@@ -175,7 +178,8 @@ TEST_P(SegmentPartHighNoise, KeepsTypesAtHighNoise) {
 // a torus along its crease to the r 8 cylinder (seed 8); test_piece's boss
 // cone fitted together with the boss top it absorbed (seed 5); plate_boss's
 // boss top left a torus with no valid fit (seed 9); a rounded_prism round
-// whose cylinder fit took the wrong axis (seed 6).
+// whose cylinder fit took the wrong axis (seed 6); at stop 16, plate_boss's
+// edge-round torus grown over the boss top before any seed there (seed 10).
 class SegmentPartHighNoiseOtherSeed
     : public ::testing::TestWithParam<std::tuple<std::string, double, uint64_t>> {};
 
@@ -196,7 +200,8 @@ INSTANTIATE_TEST_SUITE_P(Draws, SegmentPartHighNoiseOtherSeed,
                                            std::tuple{std::string("plate_boss"), 0.0, uint64_t{9}},
                                            std::tuple{std::string("rounded_prism"), 0.0, uint64_t{6}},
                                            std::tuple{std::string("stepped_shaft"), 0.0, uint64_t{3}},
-                                           std::tuple{std::string("test_piece"), 1.0, uint64_t{4}}),
+                                           std::tuple{std::string("test_piece"), 1.0, uint64_t{4}},
+                                           std::tuple{std::string("plate_boss"), 0.0, uint64_t{10}}),
                          [](const auto& info) {
                            return std::get<0>(info.param) + "_seed_" +
                                   std::to_string(std::get<2>(info.param));
