@@ -23,6 +23,20 @@ struct UnionTest {
   SurfaceType type = SurfaceType::kQuadric;
 };
 
+// The residual sum of squares of `part` (of region `r`) under a fit of r's
+// type to it; under r's own surface if that fit fails (a torus on a narrow
+// piece of band).
+double SumOfSquares(const SegmentContext& c, const RegionState& r, const std::vector<int>& part) {
+  const FitResult fit = FitType(c, r.type, part);
+  if (fit.ok()) return part.size() * fit.rms_distance * fit.rms_distance;
+  double sum = 0.0;
+  for (const int v : part) {
+    const double d = ProjectVertex(c, r.surface, v).distance;
+    sum += d * d;
+  }
+  return sum;
+}
+
 UnionTest TestUnion(const SegmentContext& c, const std::vector<int>& labels, int a, int b,
                     const std::vector<RegionState>& regions) {
   const int ids[] = {a, b};
@@ -35,11 +49,7 @@ UnionTest TestUnion(const SegmentContext& c, const std::vector<int>& labels, int
   std::sort(both.begin(), both.end());
   const SurfaceType type_a = regions[a].type;
   const SurfaceType type_b = regions[b].type;
-  const FitResult fit_a = FitType(c, type_a, part_a);
-  const FitResult fit_b = FitType(c, type_b, part_b);
-  if (!fit_a.ok() || !fit_b.ok()) return out;
-  const double squares = part_a.size() * fit_a.rms_distance * fit_a.rms_distance +
-                         part_b.size() * fit_b.rms_distance * fit_b.rms_distance;
+  const double squares = SumOfSquares(c, regions[a], part_a) + SumOfSquares(c, regions[b], part_b);
   const double two = InformationScore(c, squares / both.size(), both.size(),
                                       ParameterCount(type_a) + ParameterCount(type_b));
   for (const SurfaceType type : kAnalyticTypes) {

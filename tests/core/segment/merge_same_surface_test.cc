@@ -9,6 +9,7 @@
 #include <variant>
 #include <vector>
 
+#include "segment/retype_by_interior.h"
 #include "sheet_context.h"
 
 namespace meshseg::segment_internal {
@@ -55,6 +56,35 @@ TEST(MergeSameSurfaceTest, ConeBandTypedApartIsMerged) {
   ASSERT_EQ(regions[kept].type, SurfaceType::kCone);
   EXPECT_NEAR(std::get<Cone>(regions[kept].surface).half_angle, kPi / 4.0, 1e-6);
   for (const int label : labels) EXPECT_EQ(label, kept);
+}
+
+TEST(MergeSameSurfaceTest, PieceWhoseTypeCannotBeFittedIsMerged) {
+  // A torus-typed piece of the band: a torus cannot be fitted to a cone
+  // band (its minor radius runs off), so the piece's residuals are taken
+  // under its region's surface instead.
+  Sheet s;
+  std::vector<int> labels;
+  SplitCone(1.2 * kPi, &s, &labels);
+  std::vector<RegionState> regions =
+      RegionsFromLabels(s.c, labels, {SurfaceType::kCone, SurfaceType::kTorus});
+  const int ids[] = {0, 1};
+  ASSERT_FALSE(
+      FitType(s.c, SurfaceType::kTorus, InteriorVertices(s.c, labels, ids, regions[1].vertices))
+          .ok());
+  // The region's own torus, as fitted to a wider piece: its tube circle,
+  // of radius 20, touches the band's profile at mid-width (radius 4.25,
+  // height 0.75) and misses its ends by 2.5 sigma.
+  const double offset = 20.0 / std::numbers::sqrt2;
+  regions[1].surface = Torus{.center = Eigen::Vector3d(0.0, 0.0, 0.75 + offset),
+                             .axis_direction = Eigen::Vector3d::UnitZ(),
+                             .major_radius = 4.25 + offset,
+                             .minor_radius = 20.0};
+
+  EXPECT_EQ(MergeSameSurface(s.c, &labels, &regions).value(), 1);
+  EXPECT_TRUE(regions[0].alive);
+  EXPECT_FALSE(regions[1].alive);
+  ASSERT_EQ(regions[0].type, SurfaceType::kCone);
+  EXPECT_EQ(regions[0].vertices.size(), s.u.size());
 }
 
 TEST(MergeSameSurfaceTest, NothingMergesWithoutANoiseScale) {
