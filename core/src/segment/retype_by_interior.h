@@ -28,7 +28,10 @@ std::vector<int> InteriorVertices(const SegmentContext& c, const std::vector<int
 
 // Gives every cylinder, sphere, cone or torus region the curved type that
 // explains its interior vertices best (InformationScore), if that scores
-// kScoreMargin less than its own type, and only if some type fits the
+// kScoreMargin less than its own type; or, before that, the simplest limit
+// of its own type (a cone or cylinder for a torus, a cylinder for a cone)
+// that fits at the noise and scores within kScoreMargin of the best. Only
+// if some type fits the
 // interior at the noise (FitsAtNoise): on a noise-free or remeshed CAD mesh
 // the residuals are the meshing's, which a type with more parameters
 // follows better (plate_holes' countersinks would become tori), and on a

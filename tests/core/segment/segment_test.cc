@@ -179,7 +179,9 @@ TEST_P(SegmentPartHighNoise, KeepsTypesAtHighNoise) {
 // cone fitted together with the boss top it absorbed (seed 5); plate_boss's
 // boss top left a torus with no valid fit (seed 9); a rounded_prism round
 // whose cylinder fit took the wrong axis (seed 6); at stop 16, plate_boss's
-// edge-round torus grown over the boss top before any seed there (seed 10).
+// edge-round torus grown over the boss top before any seed there (seed 10);
+// test_piece's countersink typed torus, the cone it is a limit of scoring
+// only 0.9 worse (seed 9).
 class SegmentPartHighNoiseOtherSeed
     : public ::testing::TestWithParam<std::tuple<std::string, double, uint64_t>> {};
 
@@ -201,7 +203,8 @@ INSTANTIATE_TEST_SUITE_P(Draws, SegmentPartHighNoiseOtherSeed,
                                            std::tuple{std::string("rounded_prism"), 0.0, uint64_t{6}},
                                            std::tuple{std::string("stepped_shaft"), 0.0, uint64_t{3}},
                                            std::tuple{std::string("test_piece"), 1.0, uint64_t{4}},
-                                           std::tuple{std::string("plate_boss"), 0.0, uint64_t{10}}),
+                                           std::tuple{std::string("plate_boss"), 0.0, uint64_t{10}},
+                                           std::tuple{std::string("test_piece"), 1.0, uint64_t{9}}),
                          [](const auto& info) {
                            return std::get<0>(info.param) + "_seed_" +
                                   std::to_string(std::get<2>(info.param));
