@@ -100,7 +100,7 @@ int ParameterCount(SurfaceType type) {
     case SurfaceType::kCylinder: return 5;  // axis line 4, radius
     case SurfaceType::kCone: return 6;      // apex 3, axis 2, half-angle
     case SurfaceType::kTorus: return 7;     // centre 3, axis 2, two radii
-    case SurfaceType::kQuadric:
+    case SurfaceType::kQuadric: return 9;   // 10 coefficients up to scale
     case SurfaceType::kFreeform: return 0;
   }
   return 0;

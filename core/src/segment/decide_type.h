@@ -39,8 +39,9 @@ double ModelError(const SegmentContext& c, const FitResult& fit);
 // at or under kMinModelError sigmas.
 bool FitsAtNoise(const SegmentContext& c, const FitResult& fit);
 
-// Free parameters of an analytic type's surface: plane 3, sphere 4,
-// cylinder 5, cone 6, torus 7 (0 for the quadric and freeform).
+// Free parameters of a type's surface: plane 3, sphere 4, cylinder 5,
+// cone 6, torus 7, general quadric 9 (10 coefficients up to scale); 0 for
+// freeform.
 int ParameterCount(SurfaceType type);
 
 // The Bayesian information criterion, for normal residuals of unknown

@@ -72,7 +72,12 @@ absl::StatusOr<int> MergeSameSurface(const SegmentContext& c, std::vector<int>* 
       [&](const RegionArc& arc) {
         const SurfaceType type_a = (*regions)[arc.a].type;
         const SurfaceType type_b = (*regions)[arc.b].type;
-        return arc.smooth && IsAnalytic(type_a) && IsAnalytic(type_b) &&
+        // A quadric piece next to an analytic one may be part of its
+        // surface (seed 000 keeps arcs to quadrics); pairs of quadrics are
+        // left to the refit merge.
+        const bool a_ok = IsAnalytic(type_a) || type_a == SurfaceType::kQuadric;
+        const bool b_ok = IsAnalytic(type_b) || type_b == SurfaceType::kQuadric;
+        return arc.smooth && a_ok && b_ok && (IsAnalytic(type_a) || IsAnalytic(type_b)) &&
                !(type_a == SurfaceType::kPlane && type_b == SurfaceType::kPlane);
       },
       [&](int a, int b) -> std::optional<PairMerge> {

@@ -15,10 +15,12 @@
 
 namespace meshseg::segment_internal {
 
-// Repeatedly merges the pair of analytic regions across a smooth arc (not
-// two planes: the refit merge takes those) that one surface explains
-// clearly better than two. On the union's interior vertices, each member's
-// part fitted with its own type is scored against one fit of each analytic
+// Repeatedly merges the pair of regions across a smooth arc, both analytic
+// or one a general quadric (not two planes or two quadrics: the refit merge
+// takes those), that one surface explains clearly better than two. On the
+// union's interior vertices, each member's part fitted with its own type
+// (or, if that fit fails, taken under its region's surface) is scored
+// against one fit of each analytic
 // type to all of it (InformationScore, parameters counted for both
 // members); the pair merges if one type fits at the noise and scores
 // kScoreMargin less, taking that type, largest gain first. Both parts need

@@ -87,6 +87,21 @@ TEST(MergeSameSurfaceTest, PieceWhoseTypeCannotBeFittedIsMerged) {
   EXPECT_EQ(regions[0].vertices.size(), s.u.size());
 }
 
+TEST(MergeSameSurfaceTest, QuadricPieceOfTheBandIsMerged) {
+  // What SplitOffPlanes leaves of a quadric that had grown over a cone and
+  // the face across its crease: a quadric piece of the cone.
+  Sheet s;
+  std::vector<int> labels;
+  SplitCone(kPi, &s, &labels);
+  std::vector<RegionState> regions =
+      RegionsFromLabels(s.c, labels, {SurfaceType::kCone, SurfaceType::kQuadric});
+
+  EXPECT_EQ(MergeSameSurface(s.c, &labels, &regions).value(), 1);
+  const int kept = regions[0].alive ? 0 : 1;
+  ASSERT_EQ(regions[kept].type, SurfaceType::kCone);
+  EXPECT_EQ(regions[kept].vertices.size(), s.u.size());
+}
+
 TEST(MergeSameSurfaceTest, NothingMergesWithoutANoiseScale) {
   Sheet s;
   std::vector<int> labels;
