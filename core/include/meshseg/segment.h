@@ -6,15 +6,18 @@
 // improvements (labelled seeds incl. torus histogram, fast linear fits from
 // smoothed normals, leftover absorption with stepped thresholds, face labels).
 // Our additions, for noisy scans and CAD exports: the noise and tolerances
-// are estimated from the data; boundary vertices move to the neighbour that
+// are estimated from the data; on a noisy mesh, flat seeds grow as planes
+// before seed 000's loop; boundary vertices move to the neighbour that
 // fits them best; after merging, regions the refinement shrank are released,
 // regions their type misses beyond the noise are typed again, bands along
-// creases the sharp test missed are dissolved into their neighbours, curved
-// types are checked on each region's interior (without the rows along its
-// creases) and neighbours that one surface explains better than two are
-// merged, both by an information criterion; each surface is reported as
-// fitted to its region's inliers; coarse exact CAD meshes are segmented
-// facet by facet (core/src/segment/segment.cc holds the order).
+// creases the sharp test missed are dissolved into their neighbours, small
+// faces a curved region absorbed across a crease are split off as planes,
+// curved types are checked on each region's interior (without the rows
+// along its creases) and neighbours that one surface explains better than
+// two are merged, the last three by an information criterion; each
+// surface is reported as fitted to its region's inliers; coarse exact CAD
+// meshes are segmented facet by facet (core/src/segment/segment.cc holds
+// the order).
 //
 // In: a Mesh and its CurvatureField. Out: Segmentation with a label per mesh
 // face and vertex and one Region per label.

@@ -20,6 +20,7 @@
 #include "segment/refine_boundaries.h"
 #include "segment/retype_by_interior.h"
 #include "segment/segment_internal.h"
+#include "segment/split_off_planes.h"
 
 namespace meshseg {
 namespace {
@@ -104,6 +105,10 @@ absl::StatusOr<Segmentation> Segment(const Mesh& mesh, const CurvatureField& cur
   if (DissolveCreaseBands(c, &labels, &regions) > 0) {
     MESHSEG_RETURN_IF_ERROR(RefineBoundaries(c, &labels, &regions));
   }
+  // A small face across a crease that a curved region absorbed (a boss
+  // top in a piece of its cone) becomes a plane of its own; the rest of the
+  // region is then typed on its interior like every other.
+  SplitOffPlanes(c, &labels, &regions);
   // The outer rows of a narrow band can decide its type (a chamfer between
   // rounded creases passes as a sphere); its interior tells.
   RetypeByInterior(c, labels, &regions);

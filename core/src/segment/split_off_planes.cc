@@ -1,0 +1,194 @@
+#include "segment/split_off_planes.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <optional>
+
+#include "segment/absorb_leftovers.h"
+#include "segment/decide_type.h"
+#include "segment/region_graph.h"
+#include "segment/retype_by_interior.h"
+
+namespace meshseg::segment_internal {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+// Candidate directions: the n_i of this many of the region's vertices.
+constexpr std::size_t kDirectionSamples = 200;
+// Rounds of giving the region's vertices to the nearer surface.
+constexpr int kSplitRounds = 3;
+// A junction is a crease at min(th_bnd, this many th_nm): measured on
+// fitted surfaces, a tangent junction stays within a row's turn (9 degrees
+// on plate_boss's boss fillet at 0.05 h, th_nm 5), the boss top's crease
+// (69 degrees) comes out at 40-51 against a quadric or sphere bent toward it.
+constexpr double kCreaseAngles = 3.0;
+
+struct Split {
+  FitResult plane;
+  FitResult curved;
+  std::vector<int> on_plane;
+  std::vector<int> rest;
+};
+
+// The vertices of `vertices` whose n_i lie within th_nm of the direction
+// that the most of them do (the mean of the n_i near one of theirs). The
+// raw n_i, not n'_i: on a face narrower than N'(i, W2) every n'_i is bent.
+std::vector<int> DominantNormalVertices(const SegmentContext& c, const std::vector<int>& vertices) {
+  const double cos_max = std::cos(c.angle_tolerance_deg * kPi / 180.0);
+  const std::vector<Eigen::Vector3d>& n = c.curvature->normal;
+  const std::vector<int> sample = Sample(vertices);
+  std::size_t best_count = 0;
+  Eigen::Vector3d best = Eigen::Vector3d::Zero();
+  for (const int s : Sample(vertices, kDirectionSamples)) {
+    Eigen::Vector3d d = Eigen::Vector3d::Zero();
+    for (const int v : sample) {
+      if (n[v].dot(n[s]) > cos_max) d += n[v];
+    }
+    if (!(d.norm() > 0.0)) continue;
+    d.normalize();
+    const auto count = static_cast<std::size_t>(
+        std::count_if(sample.begin(), sample.end(), [&](int v) { return n[v].dot(d) > cos_max; }));
+    if (count > best_count) {
+      best_count = count;
+      best = d;
+    }
+  }
+  std::vector<int> out;
+  for (const int v : vertices) {
+    if (n[v].dot(best) > cos_max) out.push_back(v);
+  }
+  return out;
+}
+
+double SquaredDistances(const SegmentContext& c, const Surface& surface,
+                        const std::vector<int>& vertices) {
+  double sum = 0.0;
+  for (const int v : vertices) {
+    const double d = ProjectVertex(c, surface, v).distance;
+    sum += d * d;
+  }
+  return sum;
+}
+
+// Mean angle, in degrees, between the plane's normal and the curved
+// surface's at the rest's vertices next to the plane's.
+double JunctionAngleDeg(const SegmentContext& c, const Split& s) {
+  std::vector<uint8_t> on_plane(c.vertex_count(), 0);
+  for (const int v : s.on_plane) on_plane[v] = 1;
+  const Eigen::Vector3d normal = ProjectVertex(c, s.plane.surface, s.on_plane.front()).normal;
+  double sum = 0.0;
+  int count = 0;
+  for (const int v : s.rest) {
+    const auto around = c.graph.Neighbors(v);
+    if (std::none_of(around.begin(), around.end(), [&](int u) { return on_plane[u] != 0; })) {
+      continue;
+    }
+    const double cosine =
+        std::min(1.0, std::abs(ProjectVertex(c, s.curved.surface, v).normal.dot(normal)));
+    sum += std::acos(cosine) * 180.0 / kPi;
+    ++count;
+  }
+  return count > 0 ? sum / count : 0.0;
+}
+
+// Steps 1 and 2 of SplitOffPlanes on region `r`.
+std::optional<Split> FindSplit(const SegmentContext& c, const RegionState& r) {
+  const std::vector<int> flat = DominantNormalVertices(c, r.vertices);
+  if (flat.size() < kMinInteriorVertices) return std::nullopt;
+  Split s;
+  s.plane = FitType(c, SurfaceType::kPlane, flat);
+  if (!s.plane.ok()) return std::nullopt;
+  for (const int v : r.vertices) {
+    (Fits(c, v, ProjectVertex(c, s.plane.surface, v), c.tolerance) ? s.on_plane : s.rest)
+        .push_back(v);
+  }
+  // The face itself must be flat; the rows the reassignment adds along the
+  // crease are rounded by the meshing.
+  if (s.on_plane.size() < kMinInteriorVertices ||
+      !FitsAtNoise(c, FitType(c, SurfaceType::kPlane, s.on_plane))) {
+    return std::nullopt;
+  }
+  for (int round = 0; round < kSplitRounds; ++round) {
+    if (s.on_plane.size() < kMinInteriorVertices || s.rest.size() < kMinRegionVertices) {
+      return std::nullopt;
+    }
+    s.plane = FitType(c, SurfaceType::kPlane, s.on_plane);
+    s.curved = FitType(c, r.type, s.rest);
+    if (!s.plane.ok() || !s.curved.ok()) return std::nullopt;
+    s.on_plane.clear();
+    s.rest.clear();
+    for (const int v : r.vertices) {
+      const bool nearer_plane = std::abs(ProjectVertex(c, s.plane.surface, v).distance) <
+                                std::abs(ProjectVertex(c, s.curved.surface, v).distance);
+      (nearer_plane ? s.on_plane : s.rest).push_back(v);
+    }
+  }
+  if (s.on_plane.size() < kMinRegionVertices || s.rest.size() < kMinRegionVertices) {
+    return std::nullopt;
+  }
+  s.plane = FitType(c, SurfaceType::kPlane, s.on_plane);
+  s.curved = FitType(c, r.type, s.rest);
+  if (!s.plane.ok() || !s.curved.ok()) return std::nullopt;
+  return s;
+}
+
+// Step 3: whether `s` explains region `r` clearly better than r's type.
+bool SplitPays(const SegmentContext& c, const RegionState& r, const Split& s) {
+  const double crease = std::min(kSharpBoundaryDeg, kCreaseAngles * c.angle_tolerance_deg);
+  if (!(JunctionAngleDeg(c, s) >= crease)) return false;
+  const FitResult alone = FitType(c, r.type, r.vertices);
+  if (!alone.ok()) return false;
+  const std::size_t n = r.vertices.size();
+  const double squares = SquaredDistances(c, s.plane.surface, s.on_plane) +
+                         SquaredDistances(c, s.curved.surface, s.rest);
+  const double two = InformationScore(c, squares / n, n,
+                                      ParameterCount(SurfaceType::kPlane) + ParameterCount(r.type));
+  const double one = InformationScore(c, SquaredDistances(c, alone.surface, r.vertices) / n, n,
+                                      ParameterCount(r.type));
+  return two + kScoreMargin < one;
+}
+
+}  // namespace
+
+std::vector<int> SplitOffPlanes(const SegmentContext& c, std::vector<int>* labels,
+                                std::vector<RegionState>* regions) {
+  std::vector<int> split;
+  if (!(c.noise_sigma > 0.0)) return split;
+  const std::size_t n_regions = regions->size();
+  for (std::size_t id = 0; id < n_regions; ++id) {
+    const RegionState& r = (*regions)[id];
+    if (!r.alive || !(IsCurved(r.type) || r.type == SurfaceType::kQuadric) ||
+        r.vertices.size() < 2 * kMinRegionVertices) {
+      continue;
+    }
+    const int ids[] = {static_cast<int>(id)};
+    const std::vector<int> interior = InteriorVertices(c, *labels, ids, r.vertices);
+    if (interior.size() < kMinInteriorVertices || FitsAtNoise(c, FitType(c, r.type, interior))) {
+      continue;
+    }
+    const std::optional<Split> s = FindSplit(c, r);
+    if (!s || !SplitPays(c, r, *s)) continue;
+    const int plane_id = static_cast<int>(regions->size());
+    for (const int v : s->on_plane) (*labels)[v] = plane_id;
+    RegionState& kept = (*regions)[id];
+    kept.vertices = s->rest;
+    kept.surface = s->curved.surface;
+    // The quadric may have been the mix; the rest may have a type.
+    if (kept.type == SurfaceType::kQuadric) {
+      const TypedFit typed = DecideCurvedType(c, kept.vertices, c.tolerance);
+      if (typed.type != SurfaceType::kQuadric && typed.fraction > c.alpha) {
+        kept.type = typed.type;
+        kept.surface = typed.fit.surface;
+      }
+    }
+    regions->push_back(RegionState{.type = SurfaceType::kPlane,
+                                   .surface = s->plane.surface,
+                                   .vertices = s->on_plane,
+                                   .alive = true});
+    split.push_back(static_cast<int>(id));
+  }
+  return split;
+}
+
+}  // namespace meshseg::segment_internal

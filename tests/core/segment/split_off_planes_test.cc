@@ -1,0 +1,106 @@
+// SplitOffPlanes on sheets: test_piece's boss top absorbed by its cone (a
+// crease), and a fillet that took rows of its floor (a tangent junction).
+#include "segment/split_off_planes.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+#include "sheet_context.h"
+
+namespace meshseg::segment_internal {
+namespace {
+
+using testing::BuildSheet;
+using testing::RegionsFromLabels;
+using testing::Sheet;
+
+constexpr double kSigma = 0.01;
+constexpr double kStep = 0.25;  // between rows
+constexpr int kAround = 64;
+constexpr int kTopRows = 17;   // the top: radius 1 to 5
+constexpr int kConeRows = 34;  // the cone: 8.5 down its side
+
+// test_piece's boss: an annular top (z = 0, radius 1 to 5) and, below its
+// rim, the boss cone widening at 20.6 degrees from the axis (atan 3/8),
+// 69.4 degrees from the top.
+void BuildBoss(Sheet* s) {
+  const double half_angle = std::atan(3.0 / 8.0);
+  BuildSheet(
+      [half_angle](double row, double phi) {
+        const Eigen::Vector3d radial(std::cos(phi), std::sin(phi), 0.0);
+        const Eigen::Vector3d z = Eigen::Vector3d::UnitZ();
+        if (row < kTopRows) return std::pair{Eigen::Vector3d((1.0 + kStep * row) * radial), z};
+        const double t = kStep * (row - (kTopRows - 1));
+        return std::pair{Eigen::Vector3d((5.0 + t * std::sin(half_angle)) * radial -
+                                         t * std::cos(half_angle) * z),
+                         Eigen::Vector3d(std::cos(half_angle) * radial + std::sin(half_angle) * z)};
+      },
+      0.0, kTopRows + kConeRows - 1, kTopRows + kConeRows, 0.0,
+      2.0 * std::numbers::pi * (kAround - 1) / kAround, kAround, /*distance=*/5.0 * kSigma,
+      /*angle_deg=*/10.0, s);
+  s->c.noise_sigma = kSigma;
+}
+
+TEST(SplitOffPlanesTest, TopAbsorbedByItsConeIsSplitOff) {
+  Sheet s;
+  BuildBoss(&s);
+  std::vector<int> labels(s.u.size(), 0);
+  std::vector<RegionState> regions = RegionsFromLabels(s.c, labels, {SurfaceType::kCone});
+
+  EXPECT_EQ(SplitOffPlanes(s.c, &labels, &regions), std::vector<int>{0});
+  ASSERT_EQ(regions.size(), 2u);
+  EXPECT_EQ(regions[0].type, SurfaceType::kCone);
+  EXPECT_EQ(regions[1].type, SurfaceType::kPlane);
+  // Every top vertex but the rim's goes to the plane, every cone vertex
+  // below the rim stays.
+  for (std::size_t v = 0; v < labels.size(); ++v) {
+    if (s.u[v] < kTopRows - 1.5) {
+      EXPECT_EQ(labels[v], 1) << "top row " << s.u[v];
+    } else if (s.u[v] > kTopRows - 0.5) {
+      EXPECT_EQ(labels[v], 0) << "cone row " << s.u[v];
+    }
+  }
+}
+
+TEST(SplitOffPlanesTest, NothingSplitsAtNoiseZero) {
+  Sheet s;
+  BuildBoss(&s);
+  s.c.noise_sigma = 0.0;
+  std::vector<int> labels(s.u.size(), 0);
+  std::vector<RegionState> regions = RegionsFromLabels(s.c, labels, {SurfaceType::kCone});
+  EXPECT_TRUE(SplitOffPlanes(s.c, &labels, &regions).empty());
+  EXPECT_EQ(regions.size(), 1u);
+}
+
+TEST(SplitOffPlanesTest, FilletRowsOfItsFloorStay) {
+  // A quarter-round fillet of radius 1 (rows 0.1 apart) grown 6 rows into
+  // the floor it runs tangent into: its cylinder misses those rows, and a
+  // plane for them scores better, but they meet the fillet without a
+  // crease.
+  Sheet s;
+  constexpr double kRowStep = 0.1;
+  constexpr int kFloorRows = 6, kFilletRows = 16;
+  BuildSheet(
+      [](double row, double v) {
+        if (row < kFloorRows) {
+          return std::pair{Eigen::Vector3d(kRowStep * (row - kFloorRows), v, 0.0),
+                           Eigen::Vector3d(Eigen::Vector3d::UnitZ())};
+        }
+        const double t = (row - kFloorRows) * std::numbers::pi / 2.0 / kFilletRows;
+        return std::pair{Eigen::Vector3d(std::sin(t), v, 1.0 - std::cos(t)),
+                         Eigen::Vector3d(-std::sin(t), 0.0, std::cos(t))};
+      },
+      0.0, kFloorRows + kFilletRows, kFloorRows + kFilletRows + 1, 0.0, 3.0, 31,
+      /*distance=*/5.0 * kSigma, /*angle_deg=*/10.0, &s);
+  s.c.noise_sigma = kSigma;
+  std::vector<int> labels(s.u.size(), 0);
+  std::vector<RegionState> regions = RegionsFromLabels(s.c, labels, {SurfaceType::kCylinder});
+  EXPECT_TRUE(SplitOffPlanes(s.c, &labels, &regions).empty());
+  EXPECT_EQ(regions.size(), 1u);
+}
+
+}  // namespace
+}  // namespace meshseg::segment_internal
