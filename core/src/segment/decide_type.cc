@@ -124,7 +124,7 @@ ScoredFit ScoreType(const SegmentContext& c, SurfaceType type, std::span<const i
 }
 
 std::array<ScoredFit, kCurvedTypes.size()> ScoreCurvedTypes(const SegmentContext& c,
-                                                           std::span<const int> vertices) {
+                                                            std::span<const int> vertices) {
   std::array<ScoredFit, kCurvedTypes.size()> out;
   for (std::size_t t = 0; t < kCurvedTypes.size(); ++t) {
     out[t] = ScoreType(c, kCurvedTypes[t], vertices);

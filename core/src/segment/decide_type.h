@@ -77,7 +77,7 @@ inline constexpr std::array<SurfaceType, 4> kCurvedTypes = {
 
 // ScoreType of each of kCurvedTypes on `vertices`.
 std::array<ScoredFit, kCurvedTypes.size()> ScoreCurvedTypes(const SegmentContext& c,
-                                                           std::span<const int> vertices);
+                                                            std::span<const int> vertices);
 
 // Returns the plane fit of `vertices` if it passes the alpha test.
 std::optional<TypedFit> PlaneIfFits(const SegmentContext& c, std::span<const int> vertices,

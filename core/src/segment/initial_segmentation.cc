@@ -55,9 +55,8 @@ bool GrowPlane(const SegmentContext& c, int id, std::vector<int>* labels, Region
     if (interior.size() >= kMinInteriorVertices) {
       const double plane_score = ScoreType(c, SurfaceType::kPlane, interior).score;
       const auto curved = ScoreCurvedTypes(c, interior);
-      if (std::none_of(curved.begin(), curved.end(), [&](const ScoredFit& s) {
-            return s.score + kScoreMargin < plane_score;
-          })) {
+      if (std::none_of(curved.begin(), curved.end(),
+                       [&](const ScoredFit& s) { return s.score + kScoreMargin < plane_score; })) {
         return true;
       }
     }
@@ -193,8 +192,10 @@ absl::Status GrowPlanesFirst(const SegmentContext& c, const std::vector<int>& or
     if (seed.empty() || !PlaneIfFits(c, seed, c.tolerance)) continue;
     const int id = static_cast<int>(regions->size());
     for (const int v : seed) (*labels)[v] = id;
-    RegionState region{
-        .type = SurfaceType::kPlane, .surface = Plane{}, .vertices = std::move(seed), .alive = true};
+    RegionState region{.type = SurfaceType::kPlane,
+                       .surface = Plane{},
+                       .vertices = std::move(seed),
+                       .alive = true};
     if (GrowPlane(c, id, labels, &region)) {
       regions->push_back(std::move(region));
     } else {

@@ -29,12 +29,7 @@ struct UnionTest {
 double SumOfSquares(const SegmentContext& c, const RegionState& r, const std::vector<int>& part) {
   const FitResult fit = FitType(c, r.type, part);
   if (fit.ok()) return part.size() * fit.rms_distance * fit.rms_distance;
-  double sum = 0.0;
-  for (const int v : part) {
-    const double d = ProjectVertex(c, r.surface, v).distance;
-    sum += d * d;
-  }
-  return sum;
+  return SquaredDistances(c, r.surface, part);
 }
 
 UnionTest TestUnion(const SegmentContext& c, const std::vector<int>& labels, int a, int b,

@@ -52,7 +52,9 @@ SurfaceType BestInteriorType(const SegmentContext& c, SurfaceType own,
         !(s.score <= best->score + kScoreMargin)) {
       continue;
     }
-    if (simplest == nullptr || ParameterCount(s.type) < ParameterCount(simplest->type)) simplest = &s;
+    if (simplest == nullptr || ParameterCount(s.type) < ParameterCount(simplest->type)) {
+      simplest = &s;
+    }
   }
   if (simplest != nullptr) {
     *interior_fit = simplest->fit;

@@ -92,6 +92,16 @@ double FitFraction(const SegmentContext& c, const Surface& surface, std::span<co
   return static_cast<double>(fit) / sample.size();
 }
 
+double SquaredDistances(const SegmentContext& c, const Surface& surface,
+                        std::span<const int> vertices) {
+  double sum = 0.0;
+  for (const int v : vertices) {
+    const double d = ProjectVertex(c, surface, v).distance;
+    sum += d * d;
+  }
+  return sum;
+}
+
 void RebuildVertexLists(const std::vector<int>& labels, std::vector<RegionState>* regions) {
   for (RegionState& r : *regions) r.vertices.clear();
   for (std::size_t v = 0; v < labels.size(); ++v) {

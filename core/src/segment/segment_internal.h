@@ -89,6 +89,10 @@ FitResult FitType(const SegmentContext& c, SurfaceType type, std::span<const int
 double FitFraction(const SegmentContext& c, const Surface& surface, std::span<const int> vertices,
                    const Tolerance& tol);
 
+// Sum of the squared distances of `vertices` (all of them) to `surface`.
+double SquaredDistances(const SegmentContext& c, const Surface& surface,
+                        std::span<const int> vertices);
+
 // Rebuilds every region's vertex list from `labels` (dead regions: empty).
 void RebuildVertexLists(const std::vector<int>& labels, std::vector<RegionState>* regions);
 

@@ -61,16 +61,6 @@ std::vector<int> DominantNormalVertices(const SegmentContext& c, const std::vect
   return out;
 }
 
-double SquaredDistances(const SegmentContext& c, const Surface& surface,
-                        const std::vector<int>& vertices) {
-  double sum = 0.0;
-  for (const int v : vertices) {
-    const double d = ProjectVertex(c, surface, v).distance;
-    sum += d * d;
-  }
-  return sum;
-}
-
 // Mean angle, in degrees, between the plane's normal and the curved
 // surface's at the rest's vertices next to the plane's.
 double JunctionAngleDeg(const SegmentContext& c, const Split& s) {
