@@ -7,6 +7,7 @@
 
 #include "meshseg/fit.h"
 #include "meshseg/status_macros.h"
+#include "segment/decide_type.h"
 
 namespace meshseg::segment_internal {
 namespace {
@@ -131,23 +132,6 @@ FacetSample SampleOf(const SegmentContext& c, const TriMesh& mesh, const Facets&
     i = j;
   }
   return s;
-}
-
-int ParameterCount(SurfaceType type) {
-  switch (type) {
-    case SurfaceType::kPlane:
-      return 3;
-    case SurfaceType::kSphere:
-      return 4;
-    case SurfaceType::kCylinder:
-      return 5;
-    case SurfaceType::kCone:
-      return 6;
-    case SurfaceType::kTorus:
-      return 7;
-    default:
-      return 9;
-  }
 }
 
 // The first of cylinder, cone, sphere, torus that every point of `s` meets

@@ -99,13 +99,16 @@ std::optional<Split> FindSplit(const SegmentContext& c, const RegionState& r) {
       !FitsAtNoise(c, FitType(c, SurfaceType::kPlane, s.on_plane))) {
     return std::nullopt;
   }
-  for (int round = 0; round < kSplitRounds; ++round) {
+  // Fit both, give each vertex to the nearer, kSplitRounds times; then fit
+  // both to their final sets.
+  for (int round = 0;; ++round) {
     if (s.on_plane.size() < kMinInteriorVertices || s.rest.size() < kMinRegionVertices) {
       return std::nullopt;
     }
     s.plane = FitType(c, SurfaceType::kPlane, s.on_plane);
     s.curved = FitType(c, r.type, s.rest);
     if (!s.plane.ok() || !s.curved.ok()) return std::nullopt;
+    if (round == kSplitRounds) break;
     s.on_plane.clear();
     s.rest.clear();
     for (const int v : r.vertices) {
@@ -114,12 +117,7 @@ std::optional<Split> FindSplit(const SegmentContext& c, const RegionState& r) {
       (nearer_plane ? s.on_plane : s.rest).push_back(v);
     }
   }
-  if (s.on_plane.size() < kMinRegionVertices || s.rest.size() < kMinRegionVertices) {
-    return std::nullopt;
-  }
-  s.plane = FitType(c, SurfaceType::kPlane, s.on_plane);
-  s.curved = FitType(c, r.type, s.rest);
-  if (!s.plane.ok() || !s.curved.ok()) return std::nullopt;
+  if (s.on_plane.size() < kMinRegionVertices) return std::nullopt;
   return s;
 }
 
