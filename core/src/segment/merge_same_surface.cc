@@ -44,12 +44,20 @@ UnionTest TestUnion(const SegmentContext& c, const std::vector<int>& labels, int
   std::sort(both.begin(), both.end());
   const SurfaceType type_a = regions[a].type;
   const SurfaceType type_b = regions[b].type;
-  const double squares = SumOfSquares(c, regions[a], part_a) + SumOfSquares(c, regions[b], part_b);
+  const double squares_a = SumOfSquares(c, regions[a], part_a);
+  const double squares_b = SumOfSquares(c, regions[b], part_b);
+  const double squares = squares_a + squares_b;
+  // One surface must meet the union at the noise, or as closely as the
+  // closer of the two parts' own surfaces meets its part.
+  const double sigma2 = c.noise_sigma * c.noise_sigma;
+  const double part_error = std::sqrt(
+      std::max(0.0, std::min(squares_a / part_a.size(), squares_b / part_b.size()) - sigma2));
+  const double error_limit = std::max(kMinModelError * c.noise_sigma, part_error);
   const double two = InformationScore(c, squares / both.size(), both.size(),
                                       ParameterCount(type_a) + ParameterCount(type_b));
   for (const SurfaceType type : kAnalyticTypes) {
     const FitResult fit = FitType(c, type, both);
-    if (!FitsAtNoise(c, fit)) continue;
+    if (!fit.ok() || !(ModelError(c, fit) <= error_limit)) continue;
     const double gain = two - InformationScore(c, fit.rms_distance * fit.rms_distance, both.size(),
                                                ParameterCount(type));
     if (gain > out.gain) out = UnionTest{.gain = gain, .type = type};
@@ -72,8 +80,7 @@ absl::StatusOr<int> MergeSameSurface(const SegmentContext& c, std::vector<int>* 
         // left to the refit merge.
         const bool a_ok = IsAnalytic(type_a) || type_a == SurfaceType::kQuadric;
         const bool b_ok = IsAnalytic(type_b) || type_b == SurfaceType::kQuadric;
-        return arc.smooth && a_ok && b_ok && (IsAnalytic(type_a) || IsAnalytic(type_b)) &&
-               !(type_a == SurfaceType::kPlane && type_b == SurfaceType::kPlane);
+        return arc.smooth && a_ok && b_ok && (IsAnalytic(type_a) || IsAnalytic(type_b));
       },
       [&](int a, int b) -> std::optional<PairMerge> {
         const UnionTest t = TestUnion(c, *labels, a, b, *regions);
