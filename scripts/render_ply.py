@@ -7,6 +7,10 @@ shaded by the face's angle to the view. Reads the binary little-endian PLY
 with double vertices and per-face uchar colours that meshseg writes.
 
   scripts/render_ply.py seg.ply out.png [--size 700] [--view=iso|-iso|x|-x|y|-y|z|-z]
+                        [--box XMIN,YMIN,ZMIN,XMAX,YMAX,ZMAX]
+
+--box draws only the faces inside the box, scaled to fill the image (a
+close look at a hole or a slot of a large plate).
 """
 import argparse
 import math
@@ -63,8 +67,9 @@ def render(vertices, faces, view, size):
     d, u, w = basis(view)
     proj = [(sum(a * b for a, b in zip(p, u)), sum(a * b for a, b in zip(p, w)),
              sum(a * b for a, b in zip(p, d))) for p in vertices]
-    xs = [p[0] for p in proj]
-    ys = [p[1] for p in proj]
+    used = sorted({i for idx, _ in faces for i in idx}) or range(len(proj))
+    xs = [proj[i][0] for i in used]
+    ys = [proj[i][1] for i in used]
     scale = (size - 20) / max(max(xs) - min(xs), max(ys) - min(ys), 1e-12)
     x0, y0 = min(xs), min(ys)
     screen = [((p[0] - x0) * scale + 10, (size - 10) - (p[1] - y0) * scale, p[2]) for p in proj]
@@ -122,8 +127,17 @@ def main():
     parser.add_argument("png")
     parser.add_argument("--size", type=int, default=700)
     parser.add_argument("--view", choices=sorted(VIEWS), default="iso")
+    parser.add_argument("--box", help="XMIN,YMIN,ZMIN,XMAX,YMAX,ZMAX: draw only faces inside")
     args = parser.parse_args()
     vertices, faces = read_ply(args.ply)
+    if args.box:
+        box = [float(x) for x in args.box.split(",")]
+        if len(box) != 6:
+            sys.exit(f"--box needs 6 numbers, got {args.box}")
+        inside = [all(box[k] <= v[k] <= box[k + 3] for k in range(3)) for v in vertices]
+        faces = [(idx, rgb) for idx, rgb in faces if all(inside[i] for i in idx)]
+        if not faces:
+            sys.exit(f"{args.ply}: no face inside --box {args.box}")
     # The view direction points from the part to the eye; depth grows towards it.
     write_png(args.png, render(vertices, faces, VIEWS[args.view], args.size))
 

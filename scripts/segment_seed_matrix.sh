@@ -5,6 +5,7 @@
 #
 # usage: scripts/segment_seed_matrix.sh [BUILD_DIR] [SEEDS...]
 #   default: build 1 2 3 4 5 6 7 8 9 10 11
+#   SEGMENT_TEST_BINARY=path runs that binary instead of BUILD_DIR/bin/segment_test.
 # Output: one line per seed ("seed 3: stepped_shaft@0.15h ..."), then the
 # number of failing (part, noise) pairs. Exit status 0 either way.
 set -euo pipefail
@@ -12,7 +13,7 @@ build=${1:-build}
 shift || true
 seeds=("$@")
 [[ ${#seeds[@]} -gt 0 ]] || seeds=(1 2 3 4 5 6 7 8 9 10 11)
-binary="$build/bin/segment_test"
+binary="${SEGMENT_TEST_BINARY:-$build/bin/segment_test}"
 [[ -x $binary ]] || { echo "segment_seed_matrix: no $binary; build first" >&2; exit 1; }
 total=0
 for seed in "${seeds[@]}"; do
