@@ -66,9 +66,16 @@ struct TessellationShape {
   // remeshed surface stays under RemeshParams::max_faces.
   double target_edge_length = 0.0;
   bool cad_like = false;  // thin_area_fraction over the params' limit
+  // CAD-like, and max_faces raises the remesh's edges over
+  // kMaxRemeshCoarsening times the median shortest edge: the remesh would
+  // lose what the export resolves. tray_bottom_1002.stl: edges 1.86 against
+  // 0.44, walls of 3.175 and holes of radius 1.13. The pipeline segments
+  // such an input facet by facet instead (SegmentParams::exact_facets).
+  bool too_fine_to_remesh = false;
 };
 
 inline constexpr double kThinAspect = 6.0;
+inline constexpr double kMaxRemeshCoarsening = 2.0;
 
 // Returns the shape statistics of `mesh` and the remeshing decision.
 TessellationShape Assess(const Mesh& mesh, const RemeshParams& params = {});

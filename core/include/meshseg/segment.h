@@ -16,8 +16,8 @@
 // along its creases) and neighbours that one surface explains better than
 // two are merged, the last three by an information criterion; each
 // surface is reported as fitted to its region's inliers; coarse exact CAD
-// meshes are segmented facet by facet (core/src/segment/segment.cc holds
-// the order).
+// meshes, and CAD exports the pipeline cannot remesh finely enough, are
+// segmented facet by facet (core/src/segment/segment.cc holds the order).
 //
 // In: a Mesh and its CurvatureField. Out: Segmentation with a label per mesh
 // face and vertex and one Region per label.
@@ -49,6 +49,10 @@ struct SegmentParams {
   double alpha = 0.9;
   // Randomness (tie breaking) comes from here, never a global RNG.
   uint64_t seed = 0;
+  // Segment facet by facet, as a coarse exact CAD mesh is (the pipeline
+  // sets this for CAD exports too fine to remesh: remesh.h). Fails with
+  // FAILED_PRECONDITION if the mesh is not an exact tessellation.
+  bool exact_facets = false;
 };
 
 struct Region {

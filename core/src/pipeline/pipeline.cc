@@ -112,6 +112,19 @@ absl::StatusOr<PipelineResult> RunOnMesh(const std::string& input_path,
   ctx.Progress("read", 1.0);
   PipelineResult result;
   const TessellationShape shape = Assess(mesh, params.remesh);
+  if (params.remesh.mode == RemeshMode::kAuto && shape.too_fine_to_remesh) {
+    // A remesh at the face budget would lose what the export resolves (thin
+    // walls, small holes): the input is segmented facet by facet, if exact.
+    PipelineParams exact = params;
+    exact.segment.exact_facets = true;
+    absl::StatusOr<std::vector<int>> mesh_labels = SegmentMesh(mesh, exact, ctx, &result);
+    if (mesh_labels.ok()) {
+      result.face_labels = pipeline_internal::InputFaceLabels(mesh.face_of_input, *mesh_labels);
+      return result;
+    }
+    if (!absl::IsFailedPrecondition(mesh_labels.status())) return mesh_labels.status();
+    result = PipelineResult{};
+  }
   const bool remesh = params.remesh.mode == RemeshMode::kAlways ||
                       (params.remesh.mode == RemeshMode::kAuto && shape.cad_like);
   const double edge_length = params.remesh.target_edge_length > 0.0

@@ -40,6 +40,9 @@ TessellationShape Assess(const Mesh& mesh, const RemeshParams& params) {
       std::sqrt(4.0 * shape.surface_area / (std::sqrt(3.0) * static_cast<double>(params.max_faces)));
   shape.target_edge_length = std::max(shape.median_shortest_edge, min_length);
   shape.cad_like = shape.thin_area_fraction > params.thin_area_fraction;
+  shape.too_fine_to_remesh =
+      shape.cad_like &&
+      shape.target_edge_length > kMaxRemeshCoarsening * shape.median_shortest_edge;
   return shape;
 }
 

@@ -9,9 +9,14 @@
 //     flat facets (a quad between two rulings of a cylinder is planar);
 //  2. chains of at least kMinFacets facets meeting at less than
 //     kMaxFacetAngleDeg are fitted with cylinder, cone, sphere and torus; the
-//     first one that every vertex meets exactly grows over the neighbouring
-//     facets that meet it too;
+//     first one that every facet corner meets exactly grows over the
+//     neighbouring facets that meet it too, refitted as it grows. (Only the
+//     corners of a facet's outline must be exact: a tessellator adds vertices
+//     on a facet's edges to meet the next face, under the arc on a chord.)
 //  3. the facets left are planes.
+// The pipeline also takes this path for CAD exports too fine to remesh
+// (remesh.h, SegmentParams::exact_facets), such as tray_bottom_1002.stl, a
+// plate 3.175 thick with holes of radius 1.13 to 4.56.
 #ifndef MESHSEG_SRC_SEGMENT_EXACT_FACETS_H_
 #define MESHSEG_SRC_SEGMENT_EXACT_FACETS_H_
 
@@ -43,24 +48,42 @@ inline constexpr double kMaxFacetAngleDeg = 60.0;
 // the arc it spans, under 90°); the flat bottom of a half round, a chord
 // across it, is at 90°.
 inline constexpr double kMaxChordAngleDeg = 80.0;
+// A facet's vertices between its corners (on its straight edges) lie on
+// its surface or under it on a chord by at most this, in l_avg: the
+// tessellator's chordal deviation (tray_bottom_1002.stl: 0.0097, 9e-4 l_avg,
+// under 10-degree facets of small holes), far less than the cut of a flat
+// face across a cylinder (abc_00007974_5.obj: 1.2 l_avg).
+inline constexpr double kMaxSagitta = 0.01;
 // A curved region holds at least this many facets: three parallel lines lie
 // on a cylinder whatever they are, four do not. (A curved face tessellated
 // with two facets is two planes to us: nothing tells it from a crease.)
 inline constexpr int kMinFacets = 3;
 // Seed sets with more vertices than this hold a large plane and are not fitted.
 inline constexpr std::size_t kMaxSeedVertices = 200;
+// A curved region is grown and refitted at most this many times.
+inline constexpr int kMaxGrowRounds = 4;
 
 // True if `estimates` and `curvature` say the mesh is coarse and exact.
 bool IsCoarseExact(const CurvatureField& curvature, const SegmentEstimates& estimates);
 
 struct FaceRegions {
-  std::vector<int> face_labels;     // one per face, into `regions`
-  std::vector<RegionState> regions; // vertices: those of the region's faces
+  std::vector<int> face_labels;      // one per face, into `regions`
+  std::vector<RegionState> regions;  // vertices: the corners of the region's facets
 };
 
 // Segments `mesh` (the mesh of `c`) face by face as above.
 // Errors: CANCELLED on stop.
 absl::StatusOr<FaceRegions> SegmentExactFacets(const SegmentContext& c, const TriMesh& mesh);
+
+// An exact tessellation has at least this share of its faces in curved
+// regions or in planes of more than one face. On a noisy mesh no two
+// triangles are coplanar to kExactTolerance and no chain of them fits a
+// surface exactly: nearly every face is a plane of its own.
+inline constexpr double kMinExactShare = 0.5;
+
+// OK if `regions` (SegmentExactFacets of `mesh`) say the mesh is exact;
+// else FAILED_PRECONDITION naming the mesh and the share.
+absl::Status ExpectExactTessellation(const Mesh& mesh, const FaceRegions& regions);
 
 }  // namespace meshseg::segment_internal
 

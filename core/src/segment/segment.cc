@@ -61,10 +61,17 @@ absl::StatusOr<Segmentation> Segment(const Mesh& mesh, const CurvatureField& cur
 
   // A coarse CAD export has no curvature seeds on its curved faces, but
   // exact vertices: it is segmented facet by facet (exact_facets.h).
-  if (IsCoarseExact(curvature, estimates)) {
+  if (params.exact_facets || IsCoarseExact(curvature, estimates)) {
     MESHSEG_ASSIGN_OR_RETURN(const FaceRegions exact, SegmentExactFacets(c, mesh.tri));
     Segmentation seg = FinalizeFaceRegions(c, mesh.tri, exact.face_labels, exact.regions);
     seg.estimates = estimates;
+    if (params.exact_facets) {
+      MESHSEG_RETURN_IF_ERROR(ExpectExactTessellation(mesh, exact));
+      // The local fits behind the noise estimate straddle walls thinner
+      // than their neighbourhoods; the facets are exact by construction.
+      seg.estimates.noise_sigma = 0.0;
+      seg.estimates.distance_tolerance = params.distance_tolerance * estimates.mean_edge_length;
+    }
     ctx.Progress("segment", 1.0);
     return seg;
   }

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <filesystem>
 #include <map>
+#include <random>
 #include <string>
 #include <variant>
 
@@ -88,6 +89,49 @@ TEST(CadInput, NeverModeSegmentsTheInputAsRead) {
   ASSERT_TRUE(result.ok()) << result.status();
   EXPECT_EQ(result->remesh_face_count, 0);
   EXPECT_EQ(result->remesh_edge_length, 0.0);
+}
+
+// With a face budget of 1000 the remesh would need edges of 5.6 for strips
+// 1.3 wide (remesh.h: too_fine_to_remesh): the input itself is segmented,
+// facet by facet, into the exact cylinder and its caps.
+TEST(CadInput, TooFineToRemeshIsSegmentedFacetByFacet) {
+  const testing::CadShape shape = testing::CadCylinder(10.0, 40.0, 48);
+  const std::string path = WriteCadCylinder(shape, "cad_cylinder_too_fine_test.ply");
+  PipelineParams params;
+  params.remesh.max_faces = 1000;
+  const absl::StatusOr<PipelineResult> result = RunPipeline(path, params);
+  std::filesystem::remove(path);
+  ASSERT_TRUE(result.ok()) << result.status();
+  EXPECT_EQ(result->remesh_face_count, 0);
+  EXPECT_EQ(result->estimates.noise_sigma, 0.0);
+  ASSERT_EQ(result->regions.size(), 3u);
+  for (std::size_t f = 0; f < shape.triangles.size(); ++f) {
+    const Region& r = result->regions[result->face_labels[f]];
+    ASSERT_EQ(r.type, shape.surface[f] == 0 ? SurfaceType::kCylinder : SurfaceType::kPlane);
+    if (r.type == SurfaceType::kCylinder) {
+      EXPECT_NEAR(std::get<Cylinder>(r.surface).radius, 10.0, 1e-9);
+    }
+  }
+}
+
+// The same shape with noise of 0.01 on its vertices: it is not an exact
+// tessellation (no two triangles coplanar), so the pipeline remeshes it
+// after all.
+TEST(CadInput, TooFineButNotExactIsRemeshed) {
+  testing::CadShape shape = testing::CadCylinder(10.0, 40.0, 48);
+  std::mt19937 random(7);
+  std::normal_distribution<double> noise(0.0, 0.01);
+  for (Eigen::Vector3d& v : shape.vertices) {
+    v += Eigen::Vector3d(noise(random), noise(random), noise(random));
+  }
+  const std::string path = WriteCadCylinder(shape, "cad_cylinder_not_exact_test.ply");
+  PipelineParams params;
+  params.remesh.max_faces = 1000;
+  const absl::StatusOr<PipelineResult> result = RunPipeline(path, params);
+  std::filesystem::remove(path);
+  ASSERT_TRUE(result.ok()) << result.status();
+  EXPECT_GT(result->remesh_face_count, 0);
+  EXPECT_EQ(result->face_labels.size(), shape.triangles.size());
 }
 
 }  // namespace

@@ -1,6 +1,8 @@
 // RunPipeline() on the real meshes of shared/data, labels per input face:
-// the ABC CAD part against its per-face ground truth (.yml), and the CAD
-// exports that go through the remesh path (meshseg/remesh.h).
+// the ABC CAD part against its per-face ground truth (.yml), the CAD
+// exports that go through the remesh path (meshseg/remesh.h), and the one
+// too fine to remesh.
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <map>
@@ -115,6 +117,43 @@ TEST(SegmentReal, AbcPartPatchesGetRegionsOfTheirType) {
       EXPECT_NEAR(c->radius, p.radius, kRadiusTolerance * p.radius);
     }
   }
+}
+
+// tray_bottom_1002.stl is a CAD plate 3.175 thick whose remesh at the face
+// budget (edges 1.86 against a median shortest edge of 0.44) cannot hold its
+// walls and holes, so it is segmented facet by facet. Its truth, read off
+// the file (circles through the wall facets' corners, all exact to 1e-4,
+// and looked at in the coloured PLY): the top and the bottom, 8 octagon
+// sides with 8 corner rounds of radius 5/32", a slot of 4 sides and 4
+// rounds of 0.1", and 22 holes: 4 of radius 1.13, 4 of 1/16", 3 of 1.899,
+// 4 of 2.489, 3 of 3.264 and 4 of 4.564. Every round and hole is one exact
+// cylinder along the plate's normal (y); nothing else is curved.
+TEST(SegmentReal, TrayBottomIsSegmentedFacetByFacet) {
+  const absl::StatusOr<PipelineResult> result =
+      RunPipeline(testing::SharedData("tray_bottom_1002.stl"));
+  ASSERT_TRUE(result.ok()) << result.status();
+  EXPECT_EQ(result->remesh_face_count, 0);
+  EXPECT_EQ(result->estimates.noise_sigma, 0.0);
+  std::map<double, int> holes;  // radius rounded to 0.01 -> cylinders
+  int planes = 0, plate_faces = 0;
+  for (const Region& r : result->regions) {
+    if (const auto* c = std::get_if<Cylinder>(&r.surface)) {
+      EXPECT_EQ(r.type, SurfaceType::kCylinder);
+      EXPECT_NEAR(std::abs(c->axis_direction.y()), 1.0, 1e-9) << "region " << r.id;
+      EXPECT_LT(r.max_distance, 1e-3) << "region " << r.id;
+      ++holes[std::round(100.0 * c->radius) / 100.0];
+    } else {
+      ASSERT_EQ(r.type, SurfaceType::kPlane) << "region " << r.id;
+      ++planes;
+      const auto& plane = std::get<Plane>(r.surface);
+      if (std::abs(plane.normal.y()) > 1.0 - 1e-9) plate_faces += r.face_count;
+    }
+  }
+  const std::map<double, int> truth = {{1.13, 4}, {1.59, 4}, {1.9, 3},  {2.49, 4},
+                                       {2.54, 4}, {3.26, 3}, {3.97, 8}, {4.56, 4}};
+  EXPECT_EQ(holes, truth);
+  EXPECT_EQ(planes, 2 + 8 + 4);
+  EXPECT_EQ(plate_faces, 2 * 1310);  // the top and bottom fans, whole
 }
 
 // abc_00016513_gt.ply has no per-face truth, but its CAD vertices lie on its

@@ -44,5 +44,19 @@ TEST(Assess, TargetLengthKeepsTheRemeshUnderMaxFaces) {
               capped.surface_area, 1e-6 * capped.surface_area);
 }
 
+TEST(Assess, TooFineToRemeshWhenTheCapCoarsensTheRemesh) {
+  // Median shortest edge 1.31 (the strips' width); at 1000 faces the remesh
+  // needs edges of 5.6, over kMaxRemeshCoarsening times that.
+  const Mesh mesh = MeshOf(testing::CadCylinder(10.0, 40.0, 48));
+  EXPECT_FALSE(Assess(mesh, {.max_faces = 100'000'000}).too_fine_to_remesh);
+  const TessellationShape capped = Assess(mesh, {.max_faces = 1000});
+  ASSERT_GT(capped.target_edge_length, kMaxRemeshCoarsening * capped.median_shortest_edge);
+  EXPECT_TRUE(capped.too_fine_to_remesh);
+  // A scan-like mesh is never "too fine": it is not remeshed at all.
+  const absl::StatusOr<GeneratedPart> part = GeneratePart("test_piece", {.voxel_size = 1.0});
+  ASSERT_TRUE(part.ok()) << part.status();
+  EXPECT_FALSE(Assess(part->mesh, {.max_faces = 1000}).too_fine_to_remesh);
+}
+
 }  // namespace
 }  // namespace meshseg

@@ -3,6 +3,7 @@
 #include <array>
 #include <cmath>
 #include <numbers>
+#include <string>
 #include <variant>
 #include <vector>
 
@@ -21,8 +22,11 @@ constexpr double kLength = 20.0;
 // A prism along x, length kLength, over the polygon of `count` points on a
 // circle of `radius` from angle 0 to `arc_deg` (closed by the chord when
 // arc_deg < 360), with fan caps: every vertex exact, the side triangles
-// long and thin like a CAD export's.
-Mesh ArcPrism(double radius, int count, double arc_deg) {
+// long and thin like a CAD export's. With `chord_facet` >= 0, that side
+// facet has a vertex in the middle of its edge on the x = 0 cap, on the
+// chord under the arc, in three triangles: a CAD tessellator adds such a
+// vertex to meet the cap's triangulation.
+Mesh ArcPrism(double radius, int count, double arc_deg, int chord_facet = -1) {
   const bool closed = arc_deg >= 360.0;
   const double step = arc_deg / (closed ? count : count - 1) * std::numbers::pi / 180.0;
   std::vector<Eigen::Vector3d> v;
@@ -40,9 +44,19 @@ Mesh ArcPrism(double radius, int count, double arc_deg) {
   std::vector<std::array<int, 3>> f;
   for (int i = 0; i < count; ++i) {
     const int j = (i + 1) % count;
-    f.push_back({i, j, count + j});
-    f.push_back({i, count + j, count + i});
-    f.push_back({c0, j, i});
+    if (i == chord_facet) {
+      const int m = static_cast<int>(v.size());
+      v.push_back(0.5 * (v[i] + v[j]));
+      f.push_back({i, m, count + i});
+      f.push_back({m, j, count + j});
+      f.push_back({m, count + j, count + i});
+      f.push_back({c0, m, i});
+      f.push_back({c0, j, m});
+    } else {
+      f.push_back({i, j, count + j});
+      f.push_back({i, count + j, count + i});
+      f.push_back({c0, j, i});
+    }
     f.push_back({c1, count + i, count + j});
   }
   absl::StatusOr<Mesh> mesh = BuildMesh(std::move(v), f, "prism");
@@ -95,6 +109,26 @@ TEST(SegmentExactFacets, FindsTheCylinderOfACoarseHalfRound) {
   EXPECT_EQ(cylinders, 1);
 }
 
+// A half round in 18 facets of 10 degrees, one of them with a vertex on its
+// cap edge 0.0076 under the arc (tray_bottom_1002.stl's slot ends and holes
+// are so): one cylinder still holds all 37 side triangles.
+TEST(SegmentExactFacets, AFacetWithAVertexOnItsChordStaysOnTheCylinder) {
+  const Mesh mesh = ArcPrism(2.0, 19, 180.0, /*chord_facet=*/8);
+  const ExactRun run = SegmentExact(mesh);
+  int cylinders = 0;
+  for (std::size_t r = 0; r < run.regions.regions.size(); ++r) {
+    const RegionState& region = run.regions.regions[r];
+    if (region.type != SurfaceType::kCylinder) continue;
+    ++cylinders;
+    EXPECT_NEAR(std::get<Cylinder>(region.surface).radius, 2.0, 1e-6);
+    EXPECT_EQ(std::count(run.regions.face_labels.begin(), run.regions.face_labels.end(),
+                         static_cast<int>(r)),
+              37);
+  }
+  EXPECT_EQ(cylinders, 1);
+  EXPECT_EQ(run.regions.regions.size(), 4u);  // the cylinder, two caps, the flat bottom
+}
+
 // A pentagonal prism's sides meet at 72 degrees: seven planes, no cylinder.
 TEST(SegmentExactFacets, KeepsThePlanesOfAPentagonalPrism) {
   const Mesh mesh = ArcPrism(2.0, 5, 360.0);
@@ -103,6 +137,21 @@ TEST(SegmentExactFacets, KeepsThePlanesOfAPentagonalPrism) {
   for (const RegionState& region : run.regions.regions) {
     EXPECT_EQ(region.type, SurfaceType::kPlane);
   }
+}
+
+// Asked to segment facet by facet (SegmentParams::exact_facets), a noisy
+// mesh is refused by name: nearly every face is a plane of its own.
+TEST(SegmentExactFacets, RefusesAMeshThatIsNotExact) {
+  absl::StatusOr<GeneratedPart> part =
+      GeneratePart("small_block", {.voxel_size = 1.0, .noise = 0.05});
+  ASSERT_TRUE(part.ok()) << part.status();
+  absl::StatusOr<CurvatureField> field = EstimateCurvature(part->mesh);
+  ASSERT_TRUE(field.ok()) << field.status();
+  const absl::StatusOr<Segmentation> seg = Segment(part->mesh, *field, {.exact_facets = true});
+  ASSERT_EQ(seg.status().code(), absl::StatusCode::kFailedPrecondition) << seg.status();
+  EXPECT_NE(seg.status().message().find("\"" + part->mesh.name + "\" is not an exact tessellation"),
+            std::string::npos)
+      << seg.status();
 }
 
 // Dense meshes keep the curvature-seeded path: a noise-free generated part
