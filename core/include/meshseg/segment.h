@@ -10,11 +10,12 @@
 // before seed 000's loop; boundary vertices move to the neighbour that
 // fits them best; after merging, regions the refinement shrank are released,
 // regions their type misses beyond the noise are typed again, bands along
-// creases the sharp test missed are dissolved into their neighbours, small
+// creases the sharp test missed are dissolved into their neighbours, rows
+// of neighbouring faces a curved region bent over are given back, small
 // faces a curved region absorbed across a crease are split off as planes,
 // curved types are checked on each region's interior (without the rows
 // along its creases) and neighbours that one surface explains better than
-// two are merged, the last three by an information criterion; each
+// two are merged, the last four by an information criterion; each
 // surface is reported as fitted to its region's inliers; coarse exact CAD
 // meshes, and CAD exports the pipeline cannot remesh finely enough, are
 // segmented facet by facet (core/src/segment/segment.cc holds the order).

@@ -14,6 +14,7 @@
 #include "segment/estimate_noise.h"
 #include "segment/exact_facets.h"
 #include "segment/finalize_regions.h"
+#include "segment/give_back_rows.h"
 #include "segment/initial_segmentation.h"
 #include "segment/merge_regions.h"
 #include "segment/merge_same_surface.h"
@@ -110,6 +111,10 @@ absl::StatusOr<Segmentation> Segment(const Mesh& mesh, const CurvatureField& cur
     MESHSEG_RETURN_IF_ERROR(RefineBoundaries(c, &labels, &regions));
   }
   if (DissolveCreaseBands(c, &labels, &regions) > 0) {
+    MESHSEG_RETURN_IF_ERROR(RefineBoundaries(c, &labels, &regions));
+  }
+  // Rows of a neighbour's face a curved region bent over go back to it.
+  if (!GiveBackRows(c, &labels, &regions).empty()) {
     MESHSEG_RETURN_IF_ERROR(RefineBoundaries(c, &labels, &regions));
   }
   // A small face across a crease that a curved region absorbed (a boss

@@ -208,7 +208,8 @@ INSTANTIATE_TEST_SUITE_P(Draws, SegmentPartHighNoiseOtherSeed,
                                            std::tuple{std::string("test_piece"), 1.0, uint64_t{9}},
                                            std::tuple{std::string("test_piece"), 1.0, uint64_t{6}},
                                            std::tuple{std::string("test_piece"), 1.0, uint64_t{8}},
-                                           std::tuple{std::string("rounded_prism"), 0.0, uint64_t{16}}),
+                                           std::tuple{std::string("rounded_prism"), 0.0, uint64_t{16}},
+                                           std::tuple{std::string("test_piece"), 1.0, uint64_t{13}}),
                          [](const auto& info) {
                            return std::get<0>(info.param) + "_seed_" +
                                   std::to_string(std::get<2>(info.param));

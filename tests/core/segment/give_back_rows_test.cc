@@ -1,0 +1,94 @@
+// GiveBackRows on a sheet: a countersink (a 45-degree cone band) whose
+// region took rows of the flat face around it.
+#include "segment/give_back_rows.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+#include "sheet_context.h"
+
+namespace meshseg::segment_internal {
+namespace {
+
+using testing::BuildSheet;
+using testing::RegionsFromLabels;
+using testing::Sheet;
+
+constexpr double kSigma = 0.001;
+constexpr double kStep = 0.25;  // between rows
+constexpr int kFlatRows = 13;   // the face: radius 8 in to 5
+constexpr int kConeRows = 12;   // the countersink: 2.75 down its side
+constexpr int kTakenRows = 5;   // face rows the countersink's region took
+constexpr int kAround = 64;
+
+// A flat face (z = 0) from radius 8 in to 5 and, inside its rim, a cone
+// band going down at 45 degrees: row u at radius 8 - u kStep on the face.
+void BuildCountersink(Sheet* s) {
+  BuildSheet(
+      [](double row, double phi) {
+        const Eigen::Vector3d radial(std::cos(phi), std::sin(phi), 0.0);
+        const Eigen::Vector3d z = Eigen::Vector3d::UnitZ();
+        if (row < kFlatRows) return std::pair{Eigen::Vector3d((8.0 - kStep * row) * radial), z};
+        const double t = kStep * (row - (kFlatRows - 1)) / std::numbers::sqrt2;
+        return std::pair{Eigen::Vector3d((5.0 - t) * radial - t * z),
+                         Eigen::Vector3d((z - radial) / std::numbers::sqrt2)};
+      },
+      0.0, kFlatRows + kConeRows - 1, kFlatRows + kConeRows, 0.0,
+      2.0 * std::numbers::pi * (kAround - 1) / kAround, kAround, /*distance=*/5.0 * kSigma,
+      /*angle_deg=*/10.0, s);
+  s->c.noise_sigma = kSigma;
+}
+
+// Label 0 (the face) on rows before `first`, 1 (the countersink) on the rest.
+std::vector<int> LabelsFrom(const Sheet& s, int first) {
+  std::vector<int> labels(s.u.size());
+  for (std::size_t v = 0; v < labels.size(); ++v) labels[v] = s.u[v] < first - 0.5 ? 0 : 1;
+  return labels;
+}
+
+TEST(GiveBackRowsTest, CountersinkGivesTheFaceItsRowsBack) {
+  // As a torus the region bends from the face into the band and meets
+  // both within the tolerances, but not at the noise.
+  Sheet s;
+  BuildCountersink(&s);
+  std::vector<int> labels = LabelsFrom(s, kFlatRows - kTakenRows);
+  std::vector<RegionState> regions =
+      RegionsFromLabels(s.c, labels, {SurfaceType::kPlane, SurfaceType::kTorus});
+
+  EXPECT_EQ(GiveBackRows(s.c, &labels, &regions), std::vector<int>{1});
+  EXPECT_EQ(regions[1].type, SurfaceType::kCone);
+  // The face's rows are the face's again, the band's stay.
+  for (std::size_t v = 0; v < labels.size(); ++v) {
+    EXPECT_EQ(labels[v], s.u[v] < kFlatRows - 0.5 ? 0 : 1) << "row " << s.u[v];
+  }
+}
+
+TEST(GiveBackRowsTest, ARegionItsTypeFitsKeepsItsVertices) {
+  // The countersink's region holds the band and nothing else; the face
+  // next to it could take its rim row (within the distance tolerance) but
+  // is not asked to.
+  Sheet s;
+  BuildCountersink(&s);
+  std::vector<int> labels = LabelsFrom(s, kFlatRows);
+  const std::vector<int> before = labels;
+  std::vector<RegionState> regions =
+      RegionsFromLabels(s.c, labels, {SurfaceType::kPlane, SurfaceType::kCone});
+  EXPECT_TRUE(GiveBackRows(s.c, &labels, &regions).empty());
+  EXPECT_EQ(labels, before);
+}
+
+TEST(GiveBackRowsTest, NothingHappensWithoutANoiseScale) {
+  Sheet s;
+  BuildCountersink(&s);
+  s.c.noise_sigma = 0.0;
+  std::vector<int> labels = LabelsFrom(s, kFlatRows - kTakenRows);
+  std::vector<RegionState> regions =
+      RegionsFromLabels(s.c, labels, {SurfaceType::kPlane, SurfaceType::kTorus});
+  EXPECT_TRUE(GiveBackRows(s.c, &labels, &regions).empty());
+}
+
+}  // namespace
+}  // namespace meshseg::segment_internal
