@@ -13,6 +13,11 @@
 namespace meshseg::segment_internal {
 namespace {
 
+// A type fits "near the noise and far closer" than the region's own at
+// this share of its model error and at most this many sigmas.
+constexpr double kCloserError = 0.5;
+constexpr double kNearNoiseError = 1.0;
+
 // True if `special` is a limit of `general` with fewer parameters, in the
 // family of surfaces around an axis: a cylinder is a cone of half-angle 0,
 // and both are tori of infinite minor radius. (A sphere is a torus of major
@@ -35,8 +40,17 @@ bool IsLimitOf(SurfaceType special, SurfaceType general) {
 SurfaceType BestInteriorType(const SegmentContext& c, SurfaceType own,
                              const std::vector<int>& interior, FitResult* interior_fit) {
   const auto scored = ScoreCurvedTypes(c, interior);
-  if (std::none_of(scored.begin(), scored.end(),
-                   [&](const ScoredFit& s) { return FitsAtNoise(c, s.fit); })) {
+  // Some type must fit at the noise, or near it and far closer than `own`
+  // does (seed 26's countersink at 0.15 h: torus 3.26 sigma, cone 0.28).
+  double limit = kMinModelError * c.noise_sigma;
+  for (const ScoredFit& s : scored) {
+    if (s.type != own || !s.fit.ok()) continue;
+    limit = std::max(limit, std::min(kCloserError * ModelError(c, s.fit),
+                                     kNearNoiseError * c.noise_sigma));
+  }
+  if (std::none_of(scored.begin(), scored.end(), [&](const ScoredFit& s) {
+        return s.fit.ok() && ModelError(c, s.fit) <= limit;
+      })) {
     return own;
   }
   const ScoredFit* best = &scored.front();

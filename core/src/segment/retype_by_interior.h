@@ -31,11 +31,12 @@ std::vector<int> InteriorVertices(const SegmentContext& c, const std::vector<int
 // kScoreMargin less than its own type; or, before that, the simplest limit
 // of its own type (a cone or cylinder for a torus, a cylinder for a cone)
 // that fits at the noise and scores within kScoreMargin of the best. Only
-// if some type fits the
-// interior at the noise (FitsAtNoise): on a noise-free or remeshed CAD mesh
-// the residuals are the meshing's, which a type with more parameters
-// follows better (plate_holes' countersinks would become tori), and on a
-// mixed region the scores of misfits say nothing. The new surface is
+// if some type fits the interior at the noise (FitsAtNoise), or near it
+// (within a sigma) and at half the own type's model error or less (a
+// torus on a countersink, 3.26 sigma off where the cone is 0.28): on a
+// noise-free or remeshed CAD mesh the residuals are the meshing's, which a
+// type with more parameters follows better (plate_holes' countersinks would
+// become tori), and on a mixed region the scores of misfits say nothing. The new surface is
 // fitted to the whole region. Returns the ids retyped.
 std::vector<int> RetypeByInterior(const SegmentContext& c, const std::vector<int>& labels,
                                   std::vector<RegionState>* regions);

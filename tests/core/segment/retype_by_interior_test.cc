@@ -30,7 +30,9 @@ constexpr int kAround = 48;
 constexpr double kSigma = 0.01;
 constexpr int kBand[] = {0};  // the band's label
 
-void BuildChamfer(Sheet* s) {
+// `ripple`: the band's radius varies by that much around (8 waves), a
+// stand-in for the meshing error of a CT part.
+void BuildChamfer(Sheet* s, double ripple = 0.0) {
   const double band_step = 1.5 * std::numbers::sqrt2 / (kConeEnd - kConeStart);
   BuildSheet(
       [&](double row, double phi) {
@@ -41,7 +43,8 @@ void BuildChamfer(Sheet* s) {
         }
         if (row <= kConeEnd) {
           const double t = (row - kConeStart) * band_step / std::numbers::sqrt2;
-          return std::pair{Eigen::Vector3d((5.0 - t) * radial + (68.5 + t) * z),
+          const double wave = ripple * std::sin(8.0 * phi);
+          return std::pair{Eigen::Vector3d((5.0 - t + wave) * radial + (68.5 + t) * z),
                            Eigen::Vector3d((radial + z).normalized())};
         }
         return std::pair{Eigen::Vector3d((3.5 - 0.25 * (row - kConeEnd)) * radial + 70.0 * z), z};
@@ -137,6 +140,25 @@ TEST(RetypeByInteriorTest, TorusFilletStaysATorus) {
   std::vector<RegionState> regions = RegionsFromLabels(s.c, labels, {SurfaceType::kTorus});
   EXPECT_TRUE(RetypeByInterior(s.c, labels, &regions).empty());
   EXPECT_EQ(regions[0].type, SurfaceType::kTorus);
+}
+
+TEST(RetypeByInteriorTest, TypeFarOffGivesWayToOneNearTheNoise) {
+  // A cylinder-typed band (model error 34 sigma on its interior) whose cone
+  // misses the noise by 0.64 sigma, for the ripple: no type fits at the
+  // noise, but the cone near it and far closer (seed 26's countersink at
+  // 0.15 h, typed torus).
+  Sheet s;
+  BuildChamfer(&s, /*ripple=*/2.4 * kSigma);
+  const std::vector<int> labels = BandLabels(s, kConeStart, kConeEnd);
+  std::vector<RegionState> regions = RegionsFromLabels(
+      s.c, labels, {SurfaceType::kCylinder, SurfaceType::kCylinder, SurfaceType::kPlane});
+  const std::vector<int> interior = InteriorVertices(s.c, labels, kBand, regions[0].vertices);
+  const double cone = ModelError(s.c, FitType(s.c, SurfaceType::kCone, interior));
+  ASSERT_GT(cone, kMinModelError * kSigma);
+  ASSERT_LT(cone, kSigma);
+
+  EXPECT_EQ(RetypeByInterior(s.c, labels, &regions), std::vector<int>{0});
+  EXPECT_EQ(regions[0].type, SurfaceType::kCone);
 }
 
 TEST(RetypeByInteriorTest, TypeThatFitsItsInteriorStays) {
