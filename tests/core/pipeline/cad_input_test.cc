@@ -17,19 +17,21 @@
 namespace meshseg {
 namespace {
 
-std::string WriteCadCylinder(const testing::CadShape& shape, const std::string& name) {
+// RunPipeline on `shape` written to a temporary file `name`.
+absl::StatusOr<PipelineResult> RunOnShape(const testing::CadShape& shape, const std::string& name,
+                                          const PipelineParams& params = {}) {
   absl::StatusOr<Mesh> mesh = BuildMesh(shape.vertices, shape.triangles, name);
   EXPECT_TRUE(mesh.ok()) << mesh.status();
   const std::string path = (std::filesystem::temp_directory_path() / name).string();
   EXPECT_TRUE(WriteMesh(mesh->tri, path).ok());
-  return path;
+  absl::StatusOr<PipelineResult> result = RunPipeline(path, params);
+  std::filesystem::remove(path);
+  return result;
 }
 
 TEST(CadInput, CylinderOfLongStripsComesBackAsOneExactCylinderAndTwoPlanes) {
   const testing::CadShape shape = testing::CadCylinder(10.0, 40.0, 48);
-  const std::string path = WriteCadCylinder(shape, "cad_cylinder_input_test.ply");
-  const absl::StatusOr<PipelineResult> result = RunPipeline(path);
-  std::filesystem::remove(path);
+  const absl::StatusOr<PipelineResult> result = RunOnShape(shape, "cad_cylinder_input_test.ply");
   ASSERT_TRUE(result.ok()) << result.status();
   EXPECT_GT(result->remesh_face_count, 10 * static_cast<int64_t>(shape.triangles.size()));
   EXPECT_GT(result->remesh_edge_length, 0.0);
@@ -81,11 +83,10 @@ TEST(CadInput, CylinderOfLongStripsComesBackAsOneExactCylinderAndTwoPlanes) {
 
 TEST(CadInput, NeverModeSegmentsTheInputAsRead) {
   const testing::CadShape shape = testing::CadCylinder(10.0, 40.0, 48);
-  const std::string path = WriteCadCylinder(shape, "cad_cylinder_never_test.ply");
   PipelineParams params;
   params.remesh.mode = RemeshMode::kNever;
-  const absl::StatusOr<PipelineResult> result = RunPipeline(path, params);
-  std::filesystem::remove(path);
+  const absl::StatusOr<PipelineResult> result =
+      RunOnShape(shape, "cad_cylinder_never_test.ply", params);
   ASSERT_TRUE(result.ok()) << result.status();
   EXPECT_EQ(result->remesh_face_count, 0);
   EXPECT_EQ(result->remesh_edge_length, 0.0);
@@ -96,11 +97,10 @@ TEST(CadInput, NeverModeSegmentsTheInputAsRead) {
 // facet by facet, into the exact cylinder and its caps.
 TEST(CadInput, TooFineToRemeshIsSegmentedFacetByFacet) {
   const testing::CadShape shape = testing::CadCylinder(10.0, 40.0, 48);
-  const std::string path = WriteCadCylinder(shape, "cad_cylinder_too_fine_test.ply");
   PipelineParams params;
   params.remesh.max_faces = 1000;
-  const absl::StatusOr<PipelineResult> result = RunPipeline(path, params);
-  std::filesystem::remove(path);
+  const absl::StatusOr<PipelineResult> result =
+      RunOnShape(shape, "cad_cylinder_too_fine_test.ply", params);
   ASSERT_TRUE(result.ok()) << result.status();
   EXPECT_EQ(result->remesh_face_count, 0);
   EXPECT_EQ(result->estimates.noise_sigma, 0.0);
@@ -124,11 +124,10 @@ TEST(CadInput, TooFineButNotExactIsRemeshed) {
   for (Eigen::Vector3d& v : shape.vertices) {
     v += Eigen::Vector3d(noise(random), noise(random), noise(random));
   }
-  const std::string path = WriteCadCylinder(shape, "cad_cylinder_not_exact_test.ply");
   PipelineParams params;
   params.remesh.max_faces = 1000;
-  const absl::StatusOr<PipelineResult> result = RunPipeline(path, params);
-  std::filesystem::remove(path);
+  const absl::StatusOr<PipelineResult> result =
+      RunOnShape(shape, "cad_cylinder_not_exact_test.ply", params);
   ASSERT_TRUE(result.ok()) << result.status();
   EXPECT_GT(result->remesh_face_count, 0);
   EXPECT_EQ(result->face_labels.size(), shape.triangles.size());
