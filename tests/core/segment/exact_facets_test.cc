@@ -147,7 +147,9 @@ TEST(SegmentExactFacets, RefusesAMeshThatIsNotExact) {
   ASSERT_TRUE(part.ok()) << part.status();
   absl::StatusOr<CurvatureField> field = EstimateCurvature(part->mesh);
   ASSERT_TRUE(field.ok()) << field.status();
-  const absl::StatusOr<Segmentation> seg = Segment(part->mesh, *field, {.exact_facets = true});
+  SegmentParams params;
+  params.exact_facets = true;
+  const absl::StatusOr<Segmentation> seg = Segment(part->mesh, *field, params);
   ASSERT_EQ(seg.status().code(), absl::StatusCode::kFailedPrecondition) << seg.status();
   EXPECT_NE(seg.status().message().find("\"" + part->mesh.name + "\" is not an exact tessellation"),
             std::string::npos)
