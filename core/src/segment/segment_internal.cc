@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include <Eigen/Eigenvalues>
+
 namespace meshseg::segment_internal {
 namespace {
 
@@ -100,6 +102,22 @@ double SquaredDistances(const SegmentContext& c, const Surface& surface,
     sum += d * d;
   }
   return sum;
+}
+
+bool CurvedField(const SegmentContext& c, std::span<const int> vertices) {
+  if (vertices.empty()) return false;
+  int positive = 0;
+  Eigen::Matrix3d directions = Eigen::Matrix3d::Zero();
+  for (const int v : vertices) {
+    positive += c.curvature->kappa_max[v] > 0.0;
+    const Eigen::Vector3d& d = c.curvature->dir_max[v];
+    directions.noalias() += d * d.transpose();
+  }
+  const double n = static_cast<double>(vertices.size());
+  const double sign_share = std::max(positive, static_cast<int>(vertices.size()) - positive) / n;
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(directions / n,
+                                                             Eigen::EigenvaluesOnly);
+  return sign_share >= kCurvedSignShare && eigen.eigenvalues()(2) >= kCurvedDirection;
 }
 
 void RebuildVertexLists(const std::vector<int>& labels, std::vector<RegionState>* regions) {

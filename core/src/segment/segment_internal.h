@@ -93,6 +93,17 @@ double FitFraction(const SegmentContext& c, const Surface& surface, std::span<co
 double SquaredDistances(const SegmentContext& c, const Surface& surface,
                         std::span<const int> vertices);
 
+// True if the principal curvatures over `vertices` are a curved face's:
+// kappa_max has one sign at kCurvedSignShare of them, and its direction is
+// shared (the largest eigenvalue of the mean d d^T is at least
+// kCurvedDirection; 1/2 for directions spread in the tangent plane). A strip
+// of a round that a plane fits within the tolerances (rounded_prism at
+// 0.15 h) scores 0.96-1.0 and 0.92-0.97; flat faces have direction 0.5-0.76
+// (the noise biases kappa on them to one sign at 60-95 % of the vertices).
+bool CurvedField(const SegmentContext& c, std::span<const int> vertices);
+inline constexpr double kCurvedSignShare = 0.9;
+inline constexpr double kCurvedDirection = 0.85;
+
 // Rebuilds every region's vertex list from `labels` (dead regions: empty).
 void RebuildVertexLists(const std::vector<int>& labels, std::vector<RegionState>* regions);
 

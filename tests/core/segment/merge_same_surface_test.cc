@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <random>
 #include <variant>
 #include <vector>
 
@@ -183,6 +184,50 @@ TEST(MergeSameSurfaceTest, PlanesAtACreaseStayApart) {
   EXPECT_EQ(MergeSameSurface(s.c, &labels, &regions).value(), 0);
   EXPECT_TRUE(regions[0].alive);
   EXPECT_TRUE(regions[1].alive);
+}
+
+// A 60-degree round of radius 4 (axis z, 24 rows 0.25 apart, 49 columns)
+// with noise of sigma 0.01 along its normals (mt19937 draw 9); label 1 on
+// the first `strip_columns` columns, 0 on the rest.
+void NoisyRoundWithStrip(int strip_columns, Sheet* s, std::vector<int>* labels) {
+  std::mt19937 random(9);
+  std::normal_distribution<double> noise(0.0, kSigma);
+  BuildSheet(
+      [&](double z, double phi) {
+        const Eigen::Vector3d radial(std::cos(phi), std::sin(phi), 0.0);
+        return std::pair{
+            Eigen::Vector3d((4.0 + noise(random)) * radial + z * Eigen::Vector3d::UnitZ()), radial};
+      },
+      0.0, 5.75, 24, 0.0, kPi / 3.0, 49, /*distance=*/5.0 * kSigma, /*angle_deg=*/10.0, s);
+  s->c.noise_sigma = kSigma;
+  labels->resize(s->u.size());
+  const double edge = strip_columns * (kPi / 3.0) / 48.0;
+  for (std::size_t v = 0; v < labels->size(); ++v) (*labels)[v] = s->v[v] < edge - 1e-9 ? 1 : 0;
+}
+
+TEST(MergeSameSurfaceTest, PlaneStripWithARoundsCurvatureJoinsIt) {
+  // A strip of 3 columns (3.75 degrees) passes as a plane; on this draw
+  // the information criterion prefers two surfaces (most draws of 12 do
+  // not). With the round's principal curvatures (kappa 1/4 across it, one
+  // sign, one direction) it is the round's.
+  Sheet s;
+  std::vector<int> labels;
+  NoisyRoundWithStrip(3, &s, &labels);
+  const std::vector<int> before = labels;
+  std::vector<RegionState> regions =
+      RegionsFromLabels(s.c, labels, {SurfaceType::kCylinder, SurfaceType::kPlane});
+  ASSERT_EQ(MergeSameSurface(s.c, &labels, &regions).value(), 0);
+
+  for (std::size_t v = 0; v < s.u.size(); ++v) {
+    s.field.kappa_max[v] = -0.25;
+    s.field.dir_max[v] = Eigen::Vector3d(-std::sin(s.v[v]), std::cos(s.v[v]), 0.0);
+  }
+  labels = before;
+  regions = RegionsFromLabels(s.c, labels, {SurfaceType::kCylinder, SurfaceType::kPlane});
+  EXPECT_EQ(MergeSameSurface(s.c, &labels, &regions).value(), 1);
+  const int kept = regions[0].alive ? 0 : 1;
+  ASSERT_EQ(regions[kept].type, SurfaceType::kCylinder);
+  EXPECT_EQ(regions[kept].vertices.size(), s.u.size());
 }
 
 TEST(MergeSameSurfaceTest, CylinderAndItsTangentFilletStayApart) {

@@ -53,6 +53,11 @@ inline void BuildSheet(const SheetPoint& f, double u0, double u1, int nu, double
   }
   const std::size_t n = handles.size();
   s->field.sharp.assign(n, 0);
+  // No principal curvatures: zero, with no direction.
+  s->field.kappa_max.assign(n, 0.0);
+  s->field.kappa_min.assign(n, 0.0);
+  s->field.dir_max.assign(n, Eigen::Vector3d::Zero());
+  s->field.dir_min.assign(n, Eigen::Vector3d::Zero());
   s->c.graph = BuildVertexGraph(s->mesh);
   s->c.curvature = &s->field;
   s->c.run = &s->run;
