@@ -84,9 +84,12 @@ TypedFit TryType(const SegmentContext& c, SurfaceType type, std::span<const int>
   return k;
 }
 
+double ModelErrorOfMeanSquare(const SegmentContext& c, double mean_square) {
+  return std::sqrt(std::max(0.0, mean_square - c.noise_sigma * c.noise_sigma));
+}
+
 double ModelError(const SegmentContext& c, const FitResult& fit) {
-  return std::sqrt(
-      std::max(0.0, fit.rms_distance * fit.rms_distance - c.noise_sigma * c.noise_sigma));
+  return ModelErrorOfMeanSquare(c, fit.rms_distance * fit.rms_distance);
 }
 
 bool FitsAtNoise(const SegmentContext& c, const FitResult& fit) {

@@ -34,6 +34,8 @@ inline constexpr double kMinModelError = 0.25;
 // above the cone's, which sits at the noise; their model errors are
 // 0.45 sigma and 0.
 double ModelError(const SegmentContext& c, const FitResult& fit);
+// The same for residuals of mean square `mean_square`.
+double ModelErrorOfMeanSquare(const SegmentContext& c, double mean_square);
 
 // True if `fit` is valid and meets its vertices at the noise: model error
 // at or under kMinModelError sigmas.

@@ -1,6 +1,5 @@
 #include "segment/give_back_rows.h"
 
-#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -11,8 +10,6 @@
 
 namespace meshseg::segment_internal {
 namespace {
-
-bool IsAnalytic(SurfaceType type) { return type == SurfaceType::kPlane || IsCurved(type); }
 
 // Sets taker[v], for the vertices of region `id` its analytic neighbours
 // grow back over, to that neighbour: breadth first from the vertices next
@@ -103,10 +100,8 @@ std::vector<int> GiveBackRows(const SegmentContext& c, std::vector<int>* labels,
   std::vector<int> taker(c.vertex_count(), -1);
   for (int id = 0; id < static_cast<int>(regions->size()); ++id) {
     const RegionState& r = (*regions)[id];
-    if (!r.alive || !(IsCurved(r.type) || r.type == SurfaceType::kQuadric)) continue;
-    const int ids[] = {id};
-    const std::vector<int> interior = InteriorVertices(c, *labels, ids, r.vertices);
-    if (interior.size() < kMinInteriorVertices || FitsAtNoise(c, FitType(c, r.type, interior))) {
+    if (!r.alive || !(IsCurved(r.type) || r.type == SurfaceType::kQuadric) ||
+        !TypeMissesInterior(c, *labels, id, r)) {
       continue;
     }
     GrowBack(c, *labels, *regions, id, &taker);

@@ -17,8 +17,6 @@ constexpr std::array<SurfaceType, 5> kAnalyticTypes = {SurfaceType::kPlane, Surf
                                                        SurfaceType::kSphere, SurfaceType::kCone,
                                                        SurfaceType::kTorus};
 
-bool IsAnalytic(SurfaceType type) { return type == SurfaceType::kPlane || IsCurved(type); }
-
 struct UnionTest {
   double gain = 0.0;  // score of two surfaces minus score of one
   SurfaceType type = SurfaceType::kQuadric;
@@ -66,9 +64,8 @@ UnionTest TestUnion(const SegmentContext& c, const std::vector<int>& labels, int
   const double squares = squares_a + squares_b;
   // One surface must meet the union at the noise, or as closely as the
   // closer of the two parts' own surfaces meets its part.
-  const double sigma2 = c.noise_sigma * c.noise_sigma;
-  const double part_error = std::sqrt(
-      std::max(0.0, std::min(squares_a / part_a.size(), squares_b / part_b.size()) - sigma2));
+  const double part_error = ModelErrorOfMeanSquare(
+      c, std::min(squares_a / part_a.size(), squares_b / part_b.size()));
   const double error_limit = std::max(kMinModelError * c.noise_sigma, part_error);
   const double two = InformationScore(c, squares / both.size(), both.size(),
                                       ParameterCount(type_a) + ParameterCount(type_b));

@@ -95,6 +95,13 @@ std::vector<int> InteriorVertices(const SegmentContext& c, const std::vector<int
   return interior;
 }
 
+bool TypeMissesInterior(const SegmentContext& c, const std::vector<int>& labels, int id,
+                        const RegionState& r) {
+  const int ids[] = {id};
+  const std::vector<int> interior = InteriorVertices(c, labels, ids, r.vertices);
+  return interior.size() >= kMinInteriorVertices && !FitsAtNoise(c, FitType(c, r.type, interior));
+}
+
 std::vector<int> RetypeByInterior(const SegmentContext& c, const std::vector<int>& labels,
                                   std::vector<RegionState>* regions) {
   if (!(c.noise_sigma > 0.0)) return {};  // a noise-free mesh: nothing fits "at the noise"

@@ -26,6 +26,12 @@ inline constexpr std::size_t kMinInteriorVertices = 30;
 std::vector<int> InteriorVertices(const SegmentContext& c, const std::vector<int>& labels,
                                   std::span<const int> ids, std::span<const int> vertices);
 
+// True if region `id` (`r`) has kMinInteriorVertices interior vertices
+// and its type does not fit them at the noise (FitsAtNoise): the gate of
+// the steps that take a region apart (GiveBackRows, SplitOffPlanes).
+bool TypeMissesInterior(const SegmentContext& c, const std::vector<int>& labels, int id,
+                        const RegionState& r);
+
 // Gives every cylinder, sphere, cone or torus region the curved type that
 // explains its interior vertices best (InformationScore), if that scores
 // kScoreMargin less than its own type; or, before that, the simplest limit

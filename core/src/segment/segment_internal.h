@@ -34,6 +34,9 @@ inline bool IsCurved(SurfaceType type) {
          type == SurfaceType::kCone || type == SurfaceType::kTorus;
 }
 
+// True for the plane and the curved analytic types (not the quadric).
+inline bool IsAnalytic(SurfaceType type) { return type == SurfaceType::kPlane || IsCurved(type); }
+
 // Thresholds of seed 000 eqs. (5) and (6).
 struct Tolerance {
   double distance = 0.0;  // th_dis, model units

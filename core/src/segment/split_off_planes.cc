@@ -147,12 +147,8 @@ std::vector<int> SplitOffPlanes(const SegmentContext& c, std::vector<int>* label
   for (std::size_t id = 0; id < n_regions; ++id) {
     const RegionState& r = (*regions)[id];
     if (!r.alive || !(IsCurved(r.type) || r.type == SurfaceType::kQuadric) ||
-        r.vertices.size() < 2 * kMinRegionVertices) {
-      continue;
-    }
-    const int ids[] = {static_cast<int>(id)};
-    const std::vector<int> interior = InteriorVertices(c, *labels, ids, r.vertices);
-    if (interior.size() < kMinInteriorVertices || FitsAtNoise(c, FitType(c, r.type, interior))) {
+        r.vertices.size() < 2 * kMinRegionVertices ||
+        !TypeMissesInterior(c, *labels, static_cast<int>(id), r)) {
       continue;
     }
     const std::optional<Split> s = FindSplit(c, r);
