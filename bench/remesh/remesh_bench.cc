@@ -58,7 +58,9 @@ int main(int argc, char** argv) {
       std::printf("    %3.0f%% at %.2f s\n", 100.0 * fraction,
                   std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
     };
-    const auto remeshed = meshseg::IsotropicRemesh(*mesh, shape.target_edge_length, {}, ctx);
+    meshseg::RemeshStats stats;
+    const auto remeshed =
+        meshseg::IsotropicRemesh(*mesh, shape.target_edge_length, {}, ctx, &stats);
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (!remeshed.ok()) {
@@ -69,6 +71,10 @@ int main(int argc, char** argv) {
     std::printf("  remesh at %.4g: %zu faces, l_avg %.4g, %.2f s, peak %.1f MiB\n",
                 shape.target_edge_length, remeshed->tri.n_faces(),
                 meshseg::MeanEdgeLength(remeshed->tri), seconds, PeakMiB());
+    if (stats.small_feature_radius > 0.0) {
+      std::printf("  small features of radius %.4g: remeshed at %.4g\n", stats.small_feature_radius,
+                  stats.fine_edge_length);
+    }
     if (!out_dir.empty()) {
       const std::string path =
           (std::filesystem::path(out_dir) / (std::filesystem::path(file).stem().string() + ".remeshed.ply"))

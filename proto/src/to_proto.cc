@@ -94,6 +94,7 @@ v1::SegmentationResult ToProto(const PipelineResult& result) {
   e->set_sharp_threshold(result.estimates.sharp_threshold);
   e->set_remesh_edge_length(result.remesh_edge_length);
   e->set_remesh_face_count(result.remesh_face_count);
+  e->set_remesh_fine_edge_length(result.remesh_fine_edge_length);
   SetTopology(result.topology, result.features, &out);
   out.mutable_point_labels()->Add(result.point_labels.begin(), result.point_labels.end());
   return out;

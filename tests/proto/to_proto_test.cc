@@ -32,6 +32,7 @@ PipelineResult TwoRegions() {
   r.estimates.angle_tolerance_deg = 5.0;
   r.remesh_edge_length = 0.25;
   r.remesh_face_count = 1234;
+  r.remesh_fine_edge_length = 0.125;
   return r;
 }
 
@@ -70,6 +71,7 @@ TEST(ToProto, FillsTheSurfaceOfEachRegion) {
   EXPECT_DOUBLE_EQ(p.estimates().angle_tolerance_deg(), 5.0);
   EXPECT_DOUBLE_EQ(p.estimates().remesh_edge_length(), 0.25);
   EXPECT_EQ(p.estimates().remesh_face_count(), 1234);
+  EXPECT_DOUBLE_EQ(p.estimates().remesh_fine_edge_length(), 0.125);
 }
 
 TEST(ToProto, WritesTenQuadricCoefficients) {

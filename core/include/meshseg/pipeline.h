@@ -57,6 +57,9 @@ struct PipelineResult {
   // target edge length and face count (0 = segmented as read).
   double remesh_edge_length = 0.0;
   int64_t remesh_face_count = 0;
+  // Edge length of the remesh around small curved features (RemeshStats);
+  // 0 = uniform.
+  double remesh_fine_edge_length = 0.0;
   // Point-cloud input only: true, and one label per input point (the label
   // of the nearest reconstructed face; -1 for outliers).
   bool from_point_cloud = false;

@@ -65,8 +65,9 @@ absl::StatusOr<std::vector<int>> SegmentMesh(const Mesh& mesh, const PipelinePar
 absl::StatusOr<std::vector<int>> SegmentRemeshed(const Mesh& mesh, double edge_length,
                                                  const PipelineParams& params,
                                                  const RunContext& ctx, PipelineResult* result) {
+  RemeshStats remesh;
   MESHSEG_ASSIGN_OR_RETURN(const Mesh fine,
-                           IsotropicRemesh(mesh, edge_length, params.remesh, ctx));
+                           IsotropicRemesh(mesh, edge_length, params.remesh, ctx, &remesh));
   MESHSEG_ASSIGN_OR_RETURN(CurvatureField curvature,
                            EstimateCurvature(fine, params.curvature, ctx));
   MESHSEG_ASSIGN_OR_RETURN(Segmentation segmentation,
@@ -82,6 +83,7 @@ absl::StatusOr<std::vector<int>> SegmentRemeshed(const Mesh& mesh, double edge_l
   result->estimates = segmentation.estimates;
   result->remesh_edge_length = edge_length;
   result->remesh_face_count = static_cast<int64_t>(fine.tri.n_faces());
+  result->remesh_fine_edge_length = remesh.fine_edge_length;
   return labels;
 }
 

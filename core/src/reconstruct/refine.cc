@@ -45,6 +45,7 @@ absl::StatusOr<Mesh> RefineOnPoints(const Mesh& mesh, const std::vector<Eigen::V
   stats->refine_edge_length = std::max(params.refine_edge_length * h, capped);
   RemeshParams remesh;
   remesh.feature_angle_deg = 180.0;  // no feature edges, see refine.h
+  remesh.small_radius_edges = 0.0;   // a staircase, not facets of a CAD surface
   MESHSEG_ASSIGN_OR_RETURN(Mesh fine,
                            IsotropicRemesh(mesh, stats->refine_edge_length, remesh, ctx));
   const double radius = params.projection_radius * h;

@@ -7,11 +7,7 @@
 namespace meshseg {
 namespace {
 
-Mesh MeshOf(const testing::CadShape& shape) {
-  absl::StatusOr<Mesh> mesh = BuildMesh(shape.vertices, shape.triangles, "cad_cylinder");
-  EXPECT_TRUE(mesh.ok()) << mesh.status();
-  return *mesh;
-}
+using testing::MeshOf;
 
 TEST(Assess, CadCylinderOfLongStripsIsCadLike) {
   // 48 strips 40 long and 1.3 wide: nearly all the area is in thin triangles.

@@ -4,12 +4,18 @@
 #ifndef MESHSEG_TESTS_CORE_REMESH_CAD_SHAPES_H_
 #define MESHSEG_TESTS_CORE_REMESH_CAD_SHAPES_H_
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <numbers>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include <Eigen/Core>
+#include <gtest/gtest.h>
+
+#include "meshseg/mesh.h"
 
 namespace meshseg::testing {
 
@@ -49,6 +55,45 @@ inline CadShape CadCylinder(double radius, double height, int segments) {
     s.surface.push_back(2);
   }
   return s;
+}
+
+// A square plate [-half_width, half_width]^2 x [0, thickness] with a round
+// hole of `radius` through its centre, the hole's wall as `segments` strips
+// (a multiple of 4) spanning the thickness and each face of the plate as
+// quads from the hole out to the edge, split in two: the long slivers of a
+// CAD export. surface: 0 = hole wall, 1 = bottom, 2 = top, 3 = outer sides.
+inline CadShape CadPlateWithHole(double half_width, double thickness, double radius,
+                                 int segments) {
+  CadShape s;
+  // Per segment k: hole bottom 4k, hole top 4k+1, edge bottom 4k+2, edge top
+  // 4k+3. The rays start at 45 degrees so that the plate's corners are on them.
+  for (int k = 0; k < segments; ++k) {
+    const double t = std::numbers::pi / 4.0 + 2.0 * std::numbers::pi * k / segments;
+    const double c = std::cos(t), n = std::sin(t);
+    const double to_edge = half_width / std::max(std::abs(c), std::abs(n));
+    for (const double z : {0.0, thickness}) s.vertices.emplace_back(radius * c, radius * n, z);
+    for (const double z : {0.0, thickness}) s.vertices.emplace_back(to_edge * c, to_edge * n, z);
+  }
+  const auto quad = [&s](int a, int b, int c, int d, int surface) {  // a b c d counterclockwise
+    s.triangles.push_back({a, b, c});
+    s.triangles.push_back({a, c, d});
+    s.surface.insert(s.surface.end(), {surface, surface});
+  };
+  for (int k = 0; k < segments; ++k) {
+    const int a = 4 * k, b = 4 * ((k + 1) % segments);
+    quad(a, a + 1, b + 1, b, 0);          // wall, facing the hole's axis
+    quad(a, b, b + 2, a + 2, 1);          // bottom, facing -z
+    quad(a + 1, a + 3, b + 3, b + 1, 2);  // top, facing +z
+    quad(a + 2, b + 2, b + 3, a + 3, 3);  // outer side, facing out
+  }
+  return s;
+}
+
+// The shape as a Mesh named `name` (a test failure if it does not build).
+inline Mesh MeshOf(const CadShape& shape, const std::string& name = "cad_shape") {
+  absl::StatusOr<Mesh> mesh = BuildMesh(shape.vertices, shape.triangles, name);
+  EXPECT_TRUE(mesh.ok()) << mesh.status();
+  return mesh.ok() ? *std::move(mesh) : Mesh{};
 }
 
 }  // namespace meshseg::testing

@@ -12,24 +12,25 @@ namespace meshseg {
 namespace {
 
 Mesh CadCylinderMesh() {
-  const testing::CadShape shape = testing::CadCylinder(10.0, 40.0, 48);
-  absl::StatusOr<Mesh> mesh = BuildMesh(shape.vertices, shape.triangles, "cad_cylinder");
-  EXPECT_TRUE(mesh.ok()) << mesh.status();
-  return *mesh;
+  return testing::MeshOf(testing::CadCylinder(10.0, 40.0, 48), "cad_cylinder");
+}
+
+// Distance from p to the plane of the side facet (of `segments` around the z
+// axis, the first starting at angle 0) whose angle p falls in.
+double DistanceToSideFacet(const Eigen::Vector3d& p, int segments, double radius) {
+  const double step = 2.0 * std::numbers::pi / segments;
+  double t = std::atan2(p.y(), p.x());
+  if (t < 0) t += 2.0 * std::numbers::pi;
+  const double mid = (std::floor(t / step) + 0.5) * step;
+  const double apothem = radius * std::cos(step / 2.0);
+  return std::abs(p.x() * std::cos(mid) + p.y() * std::sin(mid) - apothem);
 }
 
 // Distance from p to the tessellated cylinder's surface (side facets or caps);
 // exact for points on the side facets and caps, which is all we test.
 double DistanceToFacets(const Eigen::Vector3d& p, int segments, double radius, double height) {
   const double z_gap = std::min(std::abs(p.z()), std::abs(p.z() - height));
-  // Distance to the facet plane of the segment p's angle falls in.
-  const double step = 2.0 * std::numbers::pi / segments;
-  double t = std::atan2(p.y(), p.x());
-  if (t < 0) t += 2.0 * std::numbers::pi;
-  const double mid = (std::floor(t / step) + 0.5) * step;
-  const double apothem = radius * std::cos(step / 2.0);
-  const double side_gap = std::abs(p.x() * std::cos(mid) + p.y() * std::sin(mid) - apothem);
-  return std::min(z_gap, side_gap);
+  return std::min(z_gap, DistanceToSideFacet(p, segments, radius));
 }
 
 TEST(IsotropicRemesh, GivesNearEquilateralTrianglesOnTheInputSurface) {
@@ -97,6 +98,68 @@ TEST(IsotropicRemesh, KeepsTheSharpRimsAsEdges) {
     }
   }
   EXPECT_EQ(rim_corners_kept, 2 * 48);
+}
+
+// Mean length of the edges of `tri` whose both ends satisfy `where`.
+template <typename Where>
+double MeanEdgeLengthWhere(const TriMesh& tri, Where where) {
+  double sum = 0.0;
+  int count = 0;
+  for (const auto e : tri.edges()) {
+    const auto h = tri.halfedge_handle(e, 0);
+    const Eigen::Vector3d a = ToEigen(tri.point(tri.from_vertex_handle(h)));
+    const Eigen::Vector3d b = ToEigen(tri.point(tri.to_vertex_handle(h)));
+    if (!where(a) || !where(b)) continue;
+    sum += (b - a).norm();
+    ++count;
+  }
+  EXPECT_GT(count, 0);
+  return sum / std::max(count, 1);
+}
+
+TEST(IsotropicRemesh, RemeshesFinerAroundASmallHole) {
+  // A hole of r = 2.5 at edges of 1.5 would get 10 edges around; the second
+  // pass gives it edges of r / 4, while the rest of the plate keeps 1.5.
+  const double radius = 2.5, thickness = 6.0, target = 1.5;
+  const testing::CadShape shape = testing::CadPlateWithHole(20.0, thickness, radius, 24);
+  RemeshStats stats;
+  const absl::StatusOr<Mesh> fine = IsotropicRemesh(testing::MeshOf(shape), target, {}, {}, &stats);
+  ASSERT_TRUE(fine.ok()) << fine.status();
+  EXPECT_NEAR(stats.small_feature_radius, radius, 0.01 * radius);
+  EXPECT_NEAR(stats.fine_edge_length, radius / 4.0, 0.01 * radius);
+  const auto on_wall = [&](const Eigen::Vector3d& p) {
+    return std::hypot(p.x(), p.y()) < radius + 1e-6;
+  };
+  const auto far_out = [&](const Eigen::Vector3d& p) {
+    return std::hypot(p.x(), p.y()) > radius + 3.0 * kZoneMargin * target;
+  };
+  EXPECT_NEAR(MeanEdgeLengthWhere(fine->tri, on_wall), radius / 4.0, 0.25 * radius / 4.0);
+  EXPECT_NEAR(MeanEdgeLengthWhere(fine->tri, far_out), target, 0.25 * target);
+  // The wall's new vertices lie on the input's facets, the rims' too, not on
+  // the first pass's chords (sagitta 0.11 for its edges of 1.5).
+  double worst = 0.0;
+  int on_the_wall = 0;
+  for (const auto v : fine->tri.vertices()) {
+    const Eigen::Vector3d p = ToEigen(fine->tri.point(v));
+    if (!on_wall(p)) continue;
+    ++on_the_wall;
+    worst = std::max(worst, DistanceToSideFacet(p, 24, radius));
+  }
+  EXPECT_GT(on_the_wall, 200);
+  EXPECT_LT(worst, 1e-6);
+}
+
+TEST(IsotropicRemesh, RemeshesUniformlyWhenToldNotToRefine) {
+  const Mesh mesh = testing::MeshOf(testing::CadPlateWithHole(20.0, 6.0, 2.5, 24));
+  RemeshParams params;
+  params.small_radius_edges = 0.0;
+  RemeshStats stats;
+  const absl::StatusOr<Mesh> fine = IsotropicRemesh(mesh, 1.5, params, {}, &stats);
+  ASSERT_TRUE(fine.ok()) << fine.status();
+  EXPECT_EQ(stats.fine_edge_length, 0.0);
+  const double wall = MeanEdgeLengthWhere(
+      fine->tri, [](const Eigen::Vector3d& p) { return std::hypot(p.x(), p.y()) < 2.5 + 1e-6; });
+  EXPECT_GT(wall, 1.0);
 }
 
 TEST(IsotropicRemesh, RejectsANonPositiveTarget) {
