@@ -34,12 +34,13 @@ int DissolveCreaseBands(const SegmentContext& c, std::vector<int>* labels,
     const std::vector<int> around = NeighbourRegions(c, id, *labels, region);
     if (around.empty()) continue;
     std::vector<int> nearest(region.vertices.size(), -1);
-    std::size_t near = 0;
+    std::size_t near = 0, own_near = 0;
     double own_sum2 = 0.0;
     double near_sum2 = 0.0;
     for (std::size_t k = 0; k < region.vertices.size(); ++k) {
       const double own = ProjectVertex(c, region.surface, region.vertices[k]).distance;
       own_sum2 += own * own;
+      if (std::abs(own) < c.tolerance.distance) ++own_near;
       double best = HUGE_VAL;
       for (const int r : around) {
         const double d =
@@ -52,7 +53,8 @@ int DissolveCreaseBands(const SegmentContext& c, std::vector<int>* labels,
       if (best < c.tolerance.distance) ++near;
       near_sum2 += best * best;
     }
-    if (!(near > c.alpha * region.vertices.size()) || !(near_sum2 <= own_sum2)) continue;
+    const bool most_near = near > c.alpha * region.vertices.size() || near >= own_near;
+    if (!most_near || !(near_sum2 <= own_sum2)) continue;
     for (std::size_t k = 0; k < region.vertices.size(); ++k) {
       const int v = region.vertices[k];
       (*labels)[v] = nearest[k];
