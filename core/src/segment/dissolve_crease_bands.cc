@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdint>
 
+#include "segment/decide_type.h"
+
 namespace meshseg::segment_internal {
 namespace {
 
@@ -54,7 +56,10 @@ int DissolveCreaseBands(const SegmentContext& c, std::vector<int>* labels,
       near_sum2 += best * best;
     }
     const bool most_near = near > c.alpha * region.vertices.size() || near >= own_near;
-    if (!most_near || !(near_sum2 <= own_sum2)) continue;
+    const bool at_noise = c.noise_sigma > 0.0 &&
+                          ModelErrorOfMeanSquare(c, near_sum2 / region.vertices.size()) <=
+                              kMinModelError * c.noise_sigma;
+    if (!most_near || !(near_sum2 <= own_sum2 || at_noise)) continue;
     for (std::size_t k = 0; k < region.vertices.size(); ++k) {
       const int v = region.vertices[k];
       (*labels)[v] = nearest[k];
