@@ -186,8 +186,11 @@ TEST_P(SegmentPartHighNoise, KeepsTypesAtHighNoise) {
 // test_piece's countersink typed torus, the cone it is a limit of scoring
 // only 0.9 worse (seed 9); test_piece's boss top absorbed by a piece of its
 // cone, typed sphere (seed 6) or quadric (seed 8); at stop 18, a quadric over
-// the edge between test_piece's top and its groove (seed 26), and a
-// rounded_prism round 0.64 h under its radius (seed 19, see the bounds).
+// the edge between test_piece's top and its groove (seed 26), a
+// rounded_prism round 0.64 h under its radius (seed 19, see the bounds), a
+// torus band along stepped_shaft's cone-cylinder crease that fitted its own
+// noise (seed 38), and test_piece's countersink typed torus over the cone,
+// its limit, from a sphere (seed 47).
 class SegmentPartHighNoiseOtherSeed
     : public ::testing::TestWithParam<std::tuple<std::string, double, uint64_t>> {};
 
@@ -216,7 +219,9 @@ INSTANTIATE_TEST_SUITE_P(Draws, SegmentPartHighNoiseOtherSeed,
                                            std::tuple{std::string("rounded_prism"), 0.0, uint64_t{16}},
                                            std::tuple{std::string("test_piece"), 1.0, uint64_t{13}},
                                            std::tuple{std::string("test_piece"), 1.0, uint64_t{26}},
-                                           std::tuple{std::string("rounded_prism"), 0.0, uint64_t{19}}),
+                                           std::tuple{std::string("rounded_prism"), 0.0, uint64_t{19}},
+                                           std::tuple{std::string("stepped_shaft"), 0.0, uint64_t{38}},
+                                           std::tuple{std::string("test_piece"), 1.0, uint64_t{47}}),
                          [](const auto& info) {
                            return std::get<0>(info.param) + "_seed_" +
                                   std::to_string(std::get<2>(info.param));
