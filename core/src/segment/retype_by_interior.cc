@@ -58,24 +58,29 @@ const ScoredFit* SimplestLimit(const SegmentContext& c, std::span<const ScoredFi
 SurfaceType BestInteriorType(const SegmentContext& c, SurfaceType own,
                              const std::vector<int>& interior, FitResult* interior_fit) {
   const auto scored = ScoreCurvedTypes(c, interior);
-  // Some type must fit at the noise, or near it and far closer than `own`
-  // does (seed 26's countersink at 0.15 h: torus 3.26 sigma, cone 0.28).
+  // Some type must fit at the noise, or near it and either far closer than
+  // `own` (seed 26's countersink at 0.15 h: torus 3.26 sigma, cone 0.28) or
+  // scoring kScoreMargin below it (stepped_shaft's chamfer at 0.15 h, seed
+  // 59: sphere 0.49 sigma, cone 0.26 sigma and 70 below).
   double limit = kMinModelError * c.noise_sigma;
+  double own_score = std::numeric_limits<double>::infinity();
   for (const ScoredFit& s : scored) {
     if (s.type != own || !s.fit.ok()) continue;
     limit = std::max(limit, std::min(kCloserError * ModelError(c, s.fit),
                                      kNearNoiseError * c.noise_sigma));
+    own_score = s.score;
   }
   if (std::none_of(scored.begin(), scored.end(), [&](const ScoredFit& s) {
-        return s.fit.ok() && ModelError(c, s.fit) <= limit;
+        if (!s.fit.ok()) return false;
+        const double e = ModelError(c, s.fit);
+        return e <= limit || (e <= kNearNoiseError * c.noise_sigma &&
+                              s.score + kScoreMargin < own_score);
       })) {
     return own;
   }
   const ScoredFit* best = &scored.front();
-  double own_score = std::numeric_limits<double>::infinity();
   for (const ScoredFit& s : scored) {
     if (s.score < best->score) best = &s;
-    if (s.type == own) own_score = s.score;
   }
   // The simplest special case of `own` that does as well.
   if (const ScoredFit* simplest = SimplestLimit(c, scored, own, best->score)) {

@@ -188,6 +188,28 @@ TEST(RetypeByInteriorTest, TypeFarOffGivesWayToOneNearTheNoise) {
   EXPECT_EQ(regions[0].type, SurfaceType::kCone);
 }
 
+TEST(RetypeByInteriorTest, TypeNearTheNoiseThatScoresFarBelowTakesOver) {
+  // Six rows of the rippled band typed a sphere (0.78 sigma on its
+  // interior): the cone misses the noise by 0.63 sigma, not half the
+  // sphere's, but scores 16.6 below it (stepped_shaft's chamfer at 0.15 h,
+  // seed 59: sphere 0.49 sigma, cone 0.26 sigma, 70 below).
+  Sheet s;
+  BuildChamfer(&s, /*ripple=*/2.4 * kSigma);
+  const std::vector<int> labels = BandLabels(s, kConeStart + 2, kConeEnd - 2);
+  std::vector<RegionState> regions = RegionsFromLabels(
+      s.c, labels, {SurfaceType::kSphere, SurfaceType::kCylinder, SurfaceType::kPlane});
+  const std::vector<int> interior = InteriorVertices(s.c, labels, kBand, regions[0].vertices);
+  const ScoredFit sphere = ScoreType(s.c, SurfaceType::kSphere, interior);
+  const ScoredFit cone = ScoreType(s.c, SurfaceType::kCone, interior);
+  ASSERT_GT(ModelError(s.c, cone.fit), kMinModelError * kSigma);
+  ASSERT_LT(ModelError(s.c, cone.fit), kSigma);
+  ASSERT_GT(ModelError(s.c, cone.fit), 0.5 * ModelError(s.c, sphere.fit));
+  ASSERT_LT(cone.score + kScoreMargin, sphere.score);
+
+  EXPECT_EQ(RetypeByInterior(s.c, labels, &regions), std::vector<int>{0});
+  EXPECT_EQ(regions[0].type, SurfaceType::kCone);
+}
+
 TEST(RetypeByInteriorTest, TypeThatFitsItsInteriorStays) {
   Sheet s;
   BuildChamfer(&s);
