@@ -18,6 +18,8 @@ namespace {
 // this share of its model error and at most this many sigmas.
 constexpr double kCloserError = 0.5;
 constexpr double kNearNoiseError = 1.0;
+// ... or within this many sigmas, scoring kScoreMargin below the own type.
+constexpr double kScoredNearError = 0.5;
 
 // True if `special` is a limit of `general` with fewer parameters, in the
 // family of surfaces around an axis: a cylinder is a cone of half-angle 0,
@@ -61,7 +63,10 @@ SurfaceType BestInteriorType(const SegmentContext& c, SurfaceType own,
   // Some type must fit at the noise, or near it and either far closer than
   // `own` (seed 26's countersink at 0.15 h: torus 3.26 sigma, cone 0.28) or
   // scoring kScoreMargin below it (stepped_shaft's chamfer at 0.15 h, seed
-  // 59: sphere 0.49 sigma, cone 0.26 sigma and 70 below).
+  // 59: sphere 0.49 sigma, cone 0.26 sigma and 70 below) and within
+  // kScoredNearError: a round of a part reconstructed from points, 0.85
+  // sigma off its cylinder, would go to a torus 0.71 off that follows the
+  // reconstruction's error.
   double limit = kMinModelError * c.noise_sigma;
   double own_score = std::numeric_limits<double>::infinity();
   for (const ScoredFit& s : scored) {
@@ -73,7 +78,7 @@ SurfaceType BestInteriorType(const SegmentContext& c, SurfaceType own,
   if (std::none_of(scored.begin(), scored.end(), [&](const ScoredFit& s) {
         if (!s.fit.ok()) return false;
         const double e = ModelError(c, s.fit);
-        return e <= limit || (e <= kNearNoiseError * c.noise_sigma &&
+        return e <= limit || (e <= kScoredNearError * c.noise_sigma &&
                               s.score + kScoreMargin < own_score);
       })) {
     return own;

@@ -40,8 +40,9 @@ bool TypeMissesInterior(const SegmentContext& c, const std::vector<int>& labels,
 // scores within kScoreMargin of the best. Only if some type fits the
 // interior at the noise (FitsAtNoise), or near it (within a sigma) and
 // either at half the own type's model error or less (a torus on a
-// countersink, 3.26 sigma off where the cone is 0.28) or scoring
-// kScoreMargin below it (a sphere on a chamfer, 0.49 sigma, the cone 0.26):
+// countersink, 3.26 sigma off where the cone is 0.28) or, within half a
+// sigma, scoring kScoreMargin below it (a sphere on a chamfer, 0.49 sigma,
+// the cone 0.26):
 // on a noise-free or remeshed CAD mesh the residuals are the meshing's,
 // which a type with more parameters follows better (plate_holes'
 // countersinks would become tori), and on a mixed region the scores of
