@@ -34,13 +34,13 @@ bool IsLimitOf(SurfaceType special, SurfaceType general) {
 }
 
 // Of `scored`, the limit of `general` (IsLimitOf) with the fewest parameters
-// that fits at the noise and scores within kScoreMargin of `best_score`.
+// whose model error is at most `max_error` and score at most `max_score`.
 const ScoredFit* SimplestLimit(const SegmentContext& c, std::span<const ScoredFit> scored,
-                               SurfaceType general, double best_score) {
+                               SurfaceType general, double max_error, double max_score) {
   const ScoredFit* simplest = nullptr;
   for (const ScoredFit& s : scored) {
-    if (!IsLimitOf(s.type, general) || !FitsAtNoise(c, s.fit) ||
-        !(s.score <= best_score + kScoreMargin)) {
+    if (!IsLimitOf(s.type, general) || !s.fit.ok() || !(ModelError(c, s.fit) <= max_error) ||
+        !(s.score <= max_score)) {
       continue;
     }
     if (simplest == nullptr || ParameterCount(s.type) < ParameterCount(simplest->type)) {
@@ -63,10 +63,10 @@ SurfaceType BestInteriorType(const SegmentContext& c, SurfaceType own,
   // Some type must fit at the noise, or near it and either far closer than
   // `own` (seed 26's countersink at 0.15 h: torus 3.26 sigma, cone 0.28) or
   // scoring kScoreMargin below it (stepped_shaft's chamfer at 0.15 h, seed
-  // 59: sphere 0.49 sigma, cone 0.26 sigma and 70 below) and within
-  // kScoredNearError: a round of a part reconstructed from points, 0.85
-  // sigma off its cylinder, would go to a torus 0.71 off that follows the
-  // reconstruction's error.
+  // 59: sphere 0.49 sigma, cone 0.26 sigma and 70 below), or a limit of
+  // `own` scoring no worse, within kScoredNearError: a round of a part
+  // reconstructed from points, 0.85 sigma off its cylinder, would go to a
+  // torus 0.71 off that follows the reconstruction's error.
   double limit = kMinModelError * c.noise_sigma;
   double own_score = std::numeric_limits<double>::infinity();
   for (const ScoredFit& s : scored) {
@@ -79,7 +79,8 @@ SurfaceType BestInteriorType(const SegmentContext& c, SurfaceType own,
         if (!s.fit.ok()) return false;
         const double e = ModelError(c, s.fit);
         return e <= limit || (e <= kScoredNearError * c.noise_sigma &&
-                              s.score + kScoreMargin < own_score);
+                              (s.score + kScoreMargin < own_score ||
+                               (IsLimitOf(s.type, own) && s.score <= own_score)));
       })) {
     return own;
   }
@@ -87,8 +88,17 @@ SurfaceType BestInteriorType(const SegmentContext& c, SurfaceType own,
   for (const ScoredFit& s : scored) {
     if (s.score < best->score) best = &s;
   }
-  // The simplest special case of `own` that does as well.
-  if (const ScoredFit* simplest = SimplestLimit(c, scored, own, best->score)) {
+  const double at_noise = kMinModelError * c.noise_sigma;
+  // The simplest special case of `own` that does as well; or, near the
+  // noise, that scores no worse than `own`: its extra parameters buy
+  // nothing (test_piece's countersink at 0.15 h, seed 75: torus 0.39 sigma,
+  // cone 0.40 and 2.6 lower).
+  const ScoredFit* simplest =
+      SimplestLimit(c, scored, own, at_noise, best->score + kScoreMargin);
+  if (simplest == nullptr) {
+    simplest = SimplestLimit(c, scored, own, kScoredNearError * c.noise_sigma, own_score);
+  }
+  if (simplest != nullptr) {
     *interior_fit = simplest->fit;
     return simplest->type;
   }
@@ -96,8 +106,9 @@ SurfaceType BestInteriorType(const SegmentContext& c, SurfaceType own,
   // The best type may itself beat its own limit by chance (test_piece's
   // countersink at 0.15 h, seed 47: a sphere whose interior scores torus
   // -1295.7, cone -1294.2, both at the noise).
-  if (const ScoredFit* simplest = SimplestLimit(c, scored, best->type, best->score)) {
-    best = simplest;
+  if (const ScoredFit* limit_of_best =
+          SimplestLimit(c, scored, best->type, at_noise, best->score + kScoreMargin)) {
+    best = limit_of_best;
   }
   *interior_fit = best->fit;
   return best->type;

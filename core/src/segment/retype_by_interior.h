@@ -37,17 +37,17 @@ bool TypeMissesInterior(const SegmentContext& c, const std::vector<int>& labels,
 // kScoreMargin less than its own type, or that type's simplest limit doing
 // as well; or, before that, the simplest limit of its own type (a cone or
 // cylinder for a torus, a cylinder for a cone) that fits at the noise and
-// scores within kScoreMargin of the best. Only if some type fits the
-// interior at the noise (FitsAtNoise), or near it (within a sigma) and
+// scores within kScoreMargin of the best, or that is within half a sigma of
+// the noise and scores no worse than its own type. Only if some type fits
+// the interior at the noise (FitsAtNoise), or near it (within a sigma) and
 // either at half the own type's model error or less (a torus on a
 // countersink, 3.26 sigma off where the cone is 0.28) or, within half a
 // sigma, scoring kScoreMargin below it (a sphere on a chamfer, 0.49 sigma,
-// the cone 0.26):
-// on a noise-free or remeshed CAD mesh the residuals are the meshing's,
-// which a type with more parameters follows better (plate_holes'
-// countersinks would become tori), and on a mixed region the scores of
-// misfits say nothing. The new surface is fitted to the whole region.
-// Returns the ids retyped.
+// the cone 0.26) or, for a limit of its own type, no worse than it: on a
+// noise-free or remeshed CAD mesh the residuals are the meshing's, which a
+// type with more parameters follows better (plate_holes' countersinks would
+// become tori), and on a mixed region the scores of misfits say nothing.
+// The new surface is fitted to the whole region. Returns the ids retyped.
 std::vector<int> RetypeByInterior(const SegmentContext& c, const std::vector<int>& labels,
                                   std::vector<RegionState>* regions);
 

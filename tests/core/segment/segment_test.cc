@@ -190,8 +190,10 @@ TEST_P(SegmentPartHighNoise, KeepsTypesAtHighNoise) {
 // rounded_prism round 0.64 h under its radius (seed 19, see the bounds), a
 // torus band along stepped_shaft's cone-cylinder crease that fitted its own
 // noise (seed 38), test_piece's countersink typed torus over the cone, its
-// limit, from a sphere (seed 47), and stepped_shaft's chamfer left a sphere
-// with the cone 70 below it, 0.26 sigma off (seed 59).
+// limit, from a sphere (seed 47), stepped_shaft's chamfer left a sphere
+// with the cone 70 below it, 0.26 sigma off (seed 59), and test_piece's
+// countersink left a torus with the cone, its limit, 2.6 below and both
+// 0.4 sigma off (seed 75).
 class SegmentPartHighNoiseOtherSeed
     : public ::testing::TestWithParam<std::tuple<std::string, double, uint64_t>> {};
 
@@ -223,7 +225,8 @@ INSTANTIATE_TEST_SUITE_P(Draws, SegmentPartHighNoiseOtherSeed,
                                            std::tuple{std::string("rounded_prism"), 0.0, uint64_t{19}},
                                            std::tuple{std::string("stepped_shaft"), 0.0, uint64_t{38}},
                                            std::tuple{std::string("test_piece"), 1.0, uint64_t{47}},
-                                           std::tuple{std::string("stepped_shaft"), 0.0, uint64_t{59}}),
+                                           std::tuple{std::string("stepped_shaft"), 0.0, uint64_t{59}},
+                                           std::tuple{std::string("test_piece"), 1.0, uint64_t{75}}),
                          [](const auto& info) {
                            return std::get<0>(info.param) + "_seed_" +
                                   std::to_string(std::get<2>(info.param));
@@ -241,7 +244,7 @@ INSTANTIATE_TEST_SUITE_P(Parts, SegmentPart,
                          [](const auto& info) { return std::get<0>(info.param); });
 
 // All 8 parts pass with noise seed 7. Other seeds still fail some parts
-// (scripts/segment_seed_matrix.sh lists which): at stop 18, 6 of the 1280
+// (scripts/segment_seed_matrix.sh lists which): at stop 18, 5 of the 1280
 // (part, noise) pairs of seeds 1-80, one at 0.05 h (test_piece's
 // countersink axis 0.51 degrees, seed 54).
 INSTANTIATE_TEST_SUITE_P(Parts, SegmentPartHighNoise,
