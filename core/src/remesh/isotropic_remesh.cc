@@ -98,18 +98,20 @@ class ProjectOnInput {
 Kernel::Point_3 ToPoint(const Eigen::Vector3d& p) { return {p.x(), p.y(), p.z()}; }
 
 // The faces of `sm` with a corner within `margin` of one of `near`'s
-// segments, and their area.
+// segments, and their area. Each vertex is asked once.
 std::vector<SurfaceMesh::Face_index> FacesNear(const SurfaceMesh& sm, const SegmentTree& near,
                                                double margin, double* area) {
+  std::vector<bool> is_near(sm.num_vertices(), false);  // by Vertex_index
+  for (const auto v : sm.vertices()) {
+    is_near[v] = near.squared_distance(sm.point(v)) <= margin * margin;
+  }
   std::vector<SurfaceMesh::Face_index> zone;
   *area = 0.0;
   for (const auto f : sm.faces()) {
-    for (const auto v : CGAL::vertices_around_face(sm.halfedge(f), sm)) {
-      if (near.squared_distance(sm.point(v)) <= margin * margin) {
-        zone.push_back(f);
-        *area += PMP::face_area(f, sm);
-        break;
-      }
+    const auto corners = CGAL::vertices_around_face(sm.halfedge(f), sm);
+    if (std::any_of(corners.begin(), corners.end(), [&](auto v) { return is_near[v]; })) {
+      zone.push_back(f);
+      *area += PMP::face_area(f, sm);
     }
   }
   return zone;

@@ -8,18 +8,6 @@
 #include <Eigen/Geometry>
 
 namespace meshseg::remesh_internal {
-namespace {
-
-// Height of `p` over the line through a and b.
-double HeightOverLine(const Eigen::Vector3d& p, const Eigen::Vector3d& a,
-                      const Eigen::Vector3d& b) {
-  const Eigen::Vector3d ab = b - a;
-  const double length = ab.norm();
-  if (length <= 0.0) return 0.0;
-  return ab.cross(p - a).norm() / length;
-}
-
-}  // namespace
 
 std::vector<CurvedEdge> SmallRadiusEdges(const TriMesh& tri, double max_radius,
                                          double feature_angle_deg) {
@@ -36,7 +24,9 @@ std::vector<CurvedEdge> SmallRadiusEdges(const TriMesh& tri, double max_radius,
     if (n0.norm() <= 0.0 || n1.norm() <= 0.0) continue;
     const double angle = std::atan2(n0.cross(n1).norm(), n0.dot(n1));
     if (!(angle > 0.0) || angle >= max_angle) continue;
-    const double width = std::max(HeightOverLine(c0, a, b), HeightOverLine(c1, a, b));
+    // a != b here: the faces' normals are not zero.
+    const auto line = Eigen::ParametrizedLine<double, 3>::Through(a, b);
+    const double width = std::max(line.distance(c0), line.distance(c1));
     const double radius = width / angle;
     if (radius < max_radius) edges.push_back({a, b, radius});
   }
