@@ -54,6 +54,12 @@ struct SegmentParams {
   // sets this for CAD exports too fine to remesh: remesh.h). Fails with
   // FAILED_PRECONDITION if the mesh is not an exact tessellation.
   bool exact_facets = false;
+  // The mesh's vertices lie on the flat facets of a CAD tessellation (the
+  // pipeline sets this for its isotropic remesh of one: remesh.h). On a
+  // curved face they sit on chords under the surface, up to the facets'
+  // sagitta, so no type fits them at the noise; the curved types are told
+  // apart by how closely they fit all of a region's vertices instead.
+  bool on_facets = false;
 };
 
 struct Region {

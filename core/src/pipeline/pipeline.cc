@@ -70,8 +70,9 @@ absl::StatusOr<std::vector<int>> SegmentRemeshed(const Mesh& mesh, double edge_l
                            IsotropicRemesh(mesh, edge_length, params.remesh, ctx, &remesh));
   MESHSEG_ASSIGN_OR_RETURN(CurvatureField curvature,
                            EstimateCurvature(fine, params.curvature, ctx));
-  MESHSEG_ASSIGN_OR_RETURN(Segmentation segmentation,
-                           Segment(fine, curvature, params.segment, ctx));
+  SegmentParams segment = params.segment;
+  segment.on_facets = true;  // the remesh's vertices lie on the input's facets
+  MESHSEG_ASSIGN_OR_RETURN(Segmentation segmentation, Segment(fine, curvature, segment, ctx));
   std::vector<int> labels =
       pipeline_internal::TransferFaceLabels(fine.tri, segmentation.face_labels, mesh.tri);
   result->vertex_labels = pipeline_internal::VertexLabelsFromFaces(mesh.tri, labels);

@@ -47,6 +47,10 @@ bool TypeMissesInterior(const SegmentContext& c, const std::vector<int>& labels,
 // noise-free or remeshed CAD mesh the residuals are the meshing's, which a
 // type with more parameters follows better (plate_holes' countersinks would
 // become tori), and on a mixed region the scores of misfits say nothing.
+// On a mesh whose vertices lie on facets (SegmentParams::on_facets) no type
+// fits at the noise; there the type of lowest score over all of the
+// region's vertices takes over if it scores kScoreMargin below its own, or
+// its simplest limit within kScoreMargin of it.
 // The new surface is fitted to the whole region. Returns the ids retyped.
 std::vector<int> RetypeByInterior(const SegmentContext& c, const std::vector<int>& labels,
                                   std::vector<RegionState>* regions);

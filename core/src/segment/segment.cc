@@ -58,7 +58,8 @@ absl::StatusOr<Segmentation> Segment(const Mesh& mesh, const CurvatureField& cur
   }
   MESHSEG_RETURN_IF_ERROR(ctx.CheckStop("segment"));
   const SegmentEstimates estimates = EstimateNoise(curvature, MeanEdgeLength(mesh.tri), params);
-  const SegmentContext c = MakeSegmentContext(mesh.tri, curvature, estimates, params.alpha, ctx);
+  SegmentContext c = MakeSegmentContext(mesh.tri, curvature, estimates, params.alpha, ctx);
+  c.on_facets = params.on_facets;
 
   // A coarse CAD export has no curvature seeds on its curved faces, but
   // exact vertices: it is segmented facet by facet (exact_facets.h).

@@ -52,6 +52,7 @@ struct SegmentContext {
   Tolerance tolerance;                        // the base (5)/(6) thresholds
   double angle_tolerance_deg = 0.0;
   double alpha = 0.9;                         // seed 000 §3 step 3
+  bool on_facets = false;                     // SegmentParams::on_facets
   const RunContext* run = nullptr;
 
   int vertex_count() const { return graph.vertex_count(); }

@@ -161,16 +161,21 @@ TEST(SegmentReal, TrayBottomIsSegmentedFacetByFacet) {
 // countersinks, one under a counterbore of r 5.5563 whose floor is at
 // z 6.35. At the remesh's edges of 1.66 a hole had 13 edges around and its
 // wall went into the bottom plane (rms 4.34); the remesh is now finer there.
+// Its vertical corners are rounds of r 25.4 (read off the file: 15-degree
+// facets from z 6.35 to the top), two of which were spheres through both
+// rims until the types were told apart on all of their remeshed vertices.
 TEST(SegmentReal, PlateHolesAreCylindersUnderConesAndACounterbore) {
   const absl::StatusOr<PipelineResult> result = RunPipeline(testing::SharedData("plate_holes.stl"));
   ASSERT_TRUE(result.ok()) << result.status();
   EXPECT_GT(result->remesh_fine_edge_length, 0.0);
-  int holes = 0, counterbores = 0, countersinks = 0;
+  int holes = 0, counterbores = 0, countersinks = 0, corner_rounds = 0;
   for (const Region& r : result->regions) {
+    EXPECT_NE(r.type, SurfaceType::kSphere) << "region " << r.id;
     if (const auto* c = std::get_if<Cylinder>(&r.surface);
         c != nullptr && std::abs(c->axis_direction.z()) > 1.0 - 1e-6) {
       if (std::abs(c->radius - 3.3782) < 0.01) ++holes;
       if (std::abs(c->radius - 5.5563) < 0.01) ++counterbores;
+      if (std::abs(c->radius - 25.4) < 0.01) ++corner_rounds;
       EXPECT_LT(r.rms_distance, 1e-4) << "region " << r.id;
     }
     if (const auto* c = std::get_if<Cone>(&r.surface)) {
@@ -185,6 +190,7 @@ TEST(SegmentReal, PlateHolesAreCylindersUnderConesAndACounterbore) {
   EXPECT_EQ(holes, 5);
   EXPECT_EQ(counterbores, 1);
   EXPECT_EQ(countersinks, 4);
+  EXPECT_EQ(corner_rounds, 4);
 }
 
 // abc_00016513_gt.ply has no per-face truth, but its CAD vertices lie on its
