@@ -83,9 +83,11 @@ constexpr double kRadiusTolerance = 0.01;  // relative, issue 3
 // A coarse exact CAD export (l_avg 1.39 against radii 0.5-2; 37 % of the
 // vertices sharp) goes through the exact-facet path (exact_facets.h): 25
 // regions for the 24 patches, cylinder radii exact to 1e-6.
-// Patch 22 is left out: a r 0.5 cylinder tessellated with two facets (three
-// rulings, 38 degrees apart, sharp edges on both sides), which no geometry
-// tells from two planes meeting at a crease; it comes out as two planes.
+// Patch 22 is left out: a groove of r 0.5 (283 degrees of arc) tessellated
+// with two facets. Its three rulings are 142 degrees apart around the axis,
+// so the facets meet in a V of 38 degrees, at 58 and 71 degrees to the
+// planes beside them; three parallel lines lie on a cylinder whatever they
+// are, and nothing else tells it from a V-groove. It comes out as two planes.
 constexpr std::size_t kTwoFacetPatch = 22;
 
 TEST(SegmentReal, AbcPartPatchesGetRegionsOfTheirType) {
