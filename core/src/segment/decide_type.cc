@@ -47,7 +47,20 @@ bool WinsOnDistance(const SegmentContext& c, const TypedFit& t, const TypedFit& 
 double SmallestRadius(const Surface& surface, const Eigen::Vector3d& at) {
   if (const auto* c = std::get_if<Cylinder>(&surface)) return c->radius;
   if (const auto* s = std::get_if<Sphere>(&surface)) return s->radius;
-  if (const auto* t = std::get_if<Torus>(&surface)) return t->minor_radius;
+  if (const auto* t = std::get_if<Torus>(&surface)) {
+    // The tube's radius, or the radius around the axis, rho / cos(theta) at
+    // the tube angle theta of the point nearest `at`: R - r at the inner
+    // equator of a torus fitted to a cylinder band (test_piece's r 6 round
+    // at 0.15 h, seed 88: R 1253, r 1247).
+    const Eigen::Vector3d d = at - t->center;
+    const double along = d.dot(t->axis_direction);
+    const Eigen::Vector2d from_tube((d - along * t->axis_direction).norm() - t->major_radius,
+                                    along);
+    if (!(from_tube.norm() > 0.0)) return t->minor_radius;
+    const double cos_theta = from_tube.x() / from_tube.norm();
+    const double rho = t->major_radius + t->minor_radius * cos_theta;
+    return std::min(t->minor_radius, std::abs(rho) / std::max(std::abs(cos_theta), 1e-9));
+  }
   if (const auto* k = std::get_if<Cone>(&surface)) {
     const Eigen::Vector3d d = at - k->apex;
     const double rho = (d - d.dot(k->axis_direction) * k->axis_direction).norm();

@@ -1,0 +1,66 @@
+// NearlyFlat, the test behind FlattenNearlyFlatRegions: a curved fit that
+// bends less than the tolerances over its region is a plane.
+#include "segment/decide_type.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "sheet_context.h"
+
+namespace meshseg::segment_internal {
+namespace {
+
+using testing::AllVertices;
+using testing::BuildSheet;
+using testing::Sheet;
+
+// A quarter of a cylinder of radius 6 around the z axis, 20 long: the size
+// of test_piece's rounds at h 1. th_dis 0.45 (3 sigma at 0.15 h), th_nm 10.
+void BuildQuarterRound(Sheet* s) {
+  BuildSheet(
+      [](double phi, double z) {
+        const Eigen::Vector3d radial(std::cos(phi), std::sin(phi), 0.0);
+        return std::pair{Eigen::Vector3d(6.0 * radial + z * Eigen::Vector3d::UnitZ()), radial};
+      },
+      0.0, std::numbers::pi / 2, 10, -10.0, 10.0, 21, /*distance=*/0.45, /*angle_deg=*/10.0, s);
+}
+
+TEST(NearlyFlatTest, TorusAlongARoundAtItsInnerEquatorIsNot) {
+  // The torus a fit gave test_piece's round at 0.15 h (seed 88): a tube far
+  // larger than the round, whose inner equator, R - r = 6 from the axis,
+  // bends like the round. Its tube radius alone said "flat", and the round
+  // became a plane missing it by 3.8 sigma.
+  Sheet s;
+  BuildQuarterRound(&s);
+  const Torus torus{.center = Eigen::Vector3d::Zero(),
+                    .axis_direction = Eigen::Vector3d::UnitZ(),
+                    .major_radius = 1253.0,
+                    .minor_radius = 1247.0};
+  EXPECT_FALSE(NearlyFlat(s.c, torus, /*rms=*/0.05, AllVertices(s), s.c.tolerance));
+  const Cylinder cylinder{.axis_origin = Eigen::Vector3d::Zero(),
+                          .axis_direction = Eigen::Vector3d::UnitZ(),
+                          .radius = 6.0};
+  EXPECT_FALSE(NearlyFlat(s.c, cylinder, /*rms=*/0.0, AllVertices(s), s.c.tolerance));
+}
+
+TEST(NearlyFlatTest, TorusLargeBothWaysIsFlat) {
+  // The same patch size on the outer equator of a torus of radii 2000 and
+  // 1000: both principal radii are over 1000.
+  Sheet s;
+  BuildSheet(
+      [](double y, double z) {
+        const double x = std::sqrt(3000.0 * 3000.0 - y * y);
+        return std::pair{Eigen::Vector3d(x, y, z), Eigen::Vector3d(x, y, 0.0).normalized()};
+      },
+      -4.0, 4.0, 10, -10.0, 10.0, 21, /*distance=*/0.45, /*angle_deg=*/10.0, &s);
+  const Torus torus{.center = Eigen::Vector3d::Zero(),
+                    .axis_direction = Eigen::Vector3d::UnitZ(),
+                    .major_radius = 2000.0,
+                    .minor_radius = 1000.0};
+  EXPECT_TRUE(NearlyFlat(s.c, torus, /*rms=*/0.0, AllVertices(s), s.c.tolerance));
+}
+
+}  // namespace
+}  // namespace meshseg::segment_internal
