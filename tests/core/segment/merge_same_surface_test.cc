@@ -187,22 +187,32 @@ TEST(MergeSameSurfaceTest, PlanesAtACreaseStayApart) {
 }
 
 // A 60-degree round of radius 4 (axis z, 24 rows 0.25 apart, 49 columns)
-// with noise of sigma 0.01 along its normals (mt19937 draw 9); label 1 on
-// the first `strip_columns` columns, 0 on the rest.
-void NoisyRoundWithStrip(int strip_columns, Sheet* s, std::vector<int>* labels) {
+// with noise of sigma 0.01 along its normals (mt19937 draw 9) and a radius
+// that ripples by `ripple` along the axis (period 2); label 1 on the first
+// `strip_columns` columns, 0 on the rest.
+void NoisyRoundWithStrip(int strip_columns, Sheet* s, std::vector<int>* labels,
+                         double ripple = 0.0) {
   std::mt19937 random(9);
   std::normal_distribution<double> noise(0.0, kSigma);
   BuildSheet(
       [&](double z, double phi) {
         const Eigen::Vector3d radial(std::cos(phi), std::sin(phi), 0.0);
-        return std::pair{
-            Eigen::Vector3d((4.0 + noise(random)) * radial + z * Eigen::Vector3d::UnitZ()), radial};
+        const double r = 4.0 + ripple * std::sin(kPi * z) + noise(random);
+        return std::pair{Eigen::Vector3d(r * radial + z * Eigen::Vector3d::UnitZ()), radial};
       },
       0.0, 5.75, 24, 0.0, kPi / 3.0, 49, /*distance=*/5.0 * kSigma, /*angle_deg=*/10.0, s);
   s->c.noise_sigma = kSigma;
   labels->resize(s->u.size());
   const double edge = strip_columns * (kPi / 3.0) / 48.0;
   for (std::size_t v = 0; v < labels->size(); ++v) (*labels)[v] = s->v[v] < edge - 1e-9 ? 1 : 0;
+}
+
+// Gives the vertices of `s` the principal curvatures of the round.
+void SetRoundCurvature(Sheet* s) {
+  for (std::size_t v = 0; v < s->u.size(); ++v) {
+    s->field.kappa_max[v] = -0.25;
+    s->field.dir_max[v] = Eigen::Vector3d(-std::sin(s->v[v]), std::cos(s->v[v]), 0.0);
+  }
 }
 
 TEST(MergeSameSurfaceTest, PlaneStripWithARoundsCurvatureJoinsIt) {
@@ -218,16 +228,56 @@ TEST(MergeSameSurfaceTest, PlaneStripWithARoundsCurvatureJoinsIt) {
       RegionsFromLabels(s.c, labels, {SurfaceType::kCylinder, SurfaceType::kPlane});
   ASSERT_EQ(MergeSameSurface(s.c, &labels, &regions).value(), 0);
 
-  for (std::size_t v = 0; v < s.u.size(); ++v) {
-    s.field.kappa_max[v] = -0.25;
-    s.field.dir_max[v] = Eigen::Vector3d(-std::sin(s.v[v]), std::cos(s.v[v]), 0.0);
-  }
+  SetRoundCurvature(&s);
   labels = before;
   regions = RegionsFromLabels(s.c, labels, {SurfaceType::kCylinder, SurfaceType::kPlane});
   EXPECT_EQ(MergeSameSurface(s.c, &labels, &regions).value(), 1);
   const int kept = regions[0].alive ? 0 : 1;
   ASSERT_EQ(regions[kept].type, SurfaceType::kCylinder);
   EXPECT_EQ(regions[kept].vertices.size(), s.u.size());
+}
+
+// The model errors, in sigmas, of the round's cylinder on all of `s` and of
+// a plane on the strip (label 1).
+std::pair<double, double> RoundAndStripErrors(const Sheet& s, const std::vector<RegionState>& r) {
+  std::vector<int> all = r[0].vertices;
+  all.insert(all.end(), r[1].vertices.begin(), r[1].vertices.end());
+  return {ModelError(s.c, FitType(s.c, SurfaceType::kCylinder, all)) / kSigma,
+          ModelError(s.c, FitType(s.c, SurfaceType::kPlane, r[1].vertices)) / kSigma};
+}
+
+TEST(MergeSameSurfaceTest, StripItsPlaneMissesMoreThanTheRoundMissesAllJoinsIt) {
+  // The round ripples (a stand-in for a CT part's meshing error), so its
+  // cylinder misses it beyond the noise; a 10-degree strip is flatter than
+  // the round by its sagitta, so the plane misses the strip by more
+  // (test_piece's round at 0.15 h, seed 117: 0.44 and 0.58 sigma).
+  Sheet s;
+  std::vector<int> labels;
+  NoisyRoundWithStrip(8, &s, &labels, /*ripple=*/0.006);
+  SetRoundCurvature(&s);
+  std::vector<RegionState> regions =
+      RegionsFromLabels(s.c, labels, {SurfaceType::kCylinder, SurfaceType::kPlane});
+  const auto [round, strip] = RoundAndStripErrors(s, regions);
+  ASSERT_GT(round, kMinModelError);
+  ASSERT_LT(round, strip);
+  EXPECT_EQ(MergeSameSurface(s.c, &labels, &regions).value(), 1);
+  const int kept = regions[0].alive ? 0 : 1;
+  ASSERT_EQ(regions[kept].type, SurfaceType::kCylinder);
+  EXPECT_EQ(regions[kept].vertices.size(), s.u.size());
+}
+
+TEST(MergeSameSurfaceTest, StripItsPlaneMeetsBetterThanTheRippledRoundStays) {
+  // A 3.75-degree strip of the same round: the plane meets it closer than
+  // the cylinder meets the whole, and the scores prefer two surfaces.
+  Sheet s;
+  std::vector<int> labels;
+  NoisyRoundWithStrip(3, &s, &labels, /*ripple=*/0.006);
+  SetRoundCurvature(&s);
+  std::vector<RegionState> regions =
+      RegionsFromLabels(s.c, labels, {SurfaceType::kCylinder, SurfaceType::kPlane});
+  const auto [round, strip] = RoundAndStripErrors(s, regions);
+  ASSERT_GT(round, strip);
+  EXPECT_EQ(MergeSameSurface(s.c, &labels, &regions).value(), 0);
 }
 
 TEST(MergeSameSurfaceTest, CylinderAndItsTangentFilletStayApart) {
