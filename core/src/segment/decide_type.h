@@ -94,8 +94,9 @@ TypedFit DecideCurvedType(const SegmentContext& c, std::span<const int> vertices
 
 // True if `surface` (a cylinder, sphere, cone or torus fitted to `vertices`
 // with residual `rms`) bends less than the tolerances over the region: its
-// sagitta D^2 / 2R across the region's radius D is under th_dis (or twice
-// the fit's own rms scatter) and its normal turns by less than th_nm (D / R).
+// sagitta D^2 / 2R across the region's radius D (measured across the
+// rulings of a cylinder or cone) is under th_dis (or twice the fit's own rms
+// scatter) and its normal turns by less than th_nm (D / R).
 // Such a fit passes the alpha test only by fitting noise a plane leaves just
 // outside th_dis (a reconstructed flat face came out as a cylinder of radius
 // 914 mm). False for planes and quadrics.

@@ -45,6 +45,23 @@ TEST(NearlyFlatTest, TorusAlongARoundAtItsInnerEquatorIsNot) {
   EXPECT_FALSE(NearlyFlat(s.c, cylinder, /*rms=*/0.0, AllVertices(s), s.c.tolerance));
 }
 
+TEST(NearlyFlatTest, HugeCylinderAlongAFlatSideIsFlat) {
+  // plate_boss's side at 0.15 h (seed 92): 60 long, 10 high, grown as a
+  // cylinder of r 572 whose axis runs along it. Across the axis it bends by
+  // 5^2 / 1144 = 0.02; along it, not at all (30^2 / 1144 = 0.79 would say
+  // curved).
+  Sheet s;
+  BuildSheet(
+      [](double x, double z) {
+        return std::pair{Eigen::Vector3d(x, 0.0, z), Eigen::Vector3d::UnitY()};
+      },
+      -30.0, 30.0, 61, -5.0, 5.0, 11, /*distance=*/0.225, /*angle_deg=*/10.0, &s);
+  const Cylinder cylinder{.axis_origin = Eigen::Vector3d(0.0, 572.0, 0.0),
+                          .axis_direction = Eigen::Vector3d::UnitX(),
+                          .radius = 572.0};
+  EXPECT_TRUE(NearlyFlat(s.c, cylinder, /*rms=*/0.075, AllVertices(s), s.c.tolerance));
+}
+
 TEST(NearlyFlatTest, TorusLargeBothWaysIsFlat) {
   // The same patch size on the outer equator of a torus of radii 2000 and
   // 1000: both principal radii are over 1000.
