@@ -17,6 +17,7 @@ constexpr std::array<SurfaceType, 5> kAnalyticTypes = {SurfaceType::kPlane, Surf
                                                        SurfaceType::kSphere, SurfaceType::kCone,
                                                        SurfaceType::kTorus};
 
+// A merge TestUnion accepts.
 struct UnionTest {
   double gain = 0.0;  // score of two surfaces minus score of one
   SurfaceType type = SurfaceType::kQuadric;
@@ -31,13 +32,14 @@ double SumOfSquares(const SegmentContext& c, const RegionState& r, const std::ve
   return SquaredDistances(c, r.surface, part);
 }
 
-UnionTest TestUnion(const SegmentContext& c, const std::vector<int>& labels, int a, int b,
-                    const std::vector<RegionState>& regions) {
+std::optional<UnionTest> TestUnion(const SegmentContext& c, const std::vector<int>& labels,
+                                   int a, int b, const std::vector<RegionState>& regions) {
   const int ids[] = {a, b};
   const std::vector<int> part_a = InteriorVertices(c, labels, ids, regions[a].vertices);
   const std::vector<int> part_b = InteriorVertices(c, labels, ids, regions[b].vertices);
-  UnionTest out;
-  if (part_a.size() < kMinInteriorVertices || part_b.size() < kMinInteriorVertices) return out;
+  if (part_a.size() < kMinInteriorVertices || part_b.size() < kMinInteriorVertices) {
+    return std::nullopt;
+  }
   std::vector<int> both = part_a;
   both.insert(both.end(), part_b.begin(), part_b.end());
   std::sort(both.begin(), both.end());
@@ -79,12 +81,18 @@ UnionTest TestUnion(const SegmentContext& c, const std::vector<int>& labels, int
   const double error_limit = std::max(kMinModelError * c.noise_sigma, part_error);
   const double two = InformationScore(c, squares / both.size(), both.size(),
                                       ParameterCount(type_a) + ParameterCount(type_b));
+  std::optional<UnionTest> out;
   for (const SurfaceType type : kAnalyticTypes) {
     const FitResult fit = FitType(c, type, both);
     if (!fit.ok() || !(ModelError(c, fit) <= error_limit)) continue;
     const double gain = two - InformationScore(c, fit.rms_distance * fit.rms_distance, both.size(),
                                                ParameterCount(type));
-    if (gain > out.gain) out = UnionTest{.gain = gain, .type = type};
+    // One surface at the noise is the simpler account of both parts: they
+    // stay apart only if two surfaces score kScoreMargin better (test_piece's
+    // countersink at 0.15 h, seed 98, in a sphere piece and a cone piece,
+    // each at the noise, the cone 0.08 sigma off the union and 7.0 worse).
+    const double needed = FitsAtNoise(c, fit) ? -kScoreMargin : kScoreMargin;
+    if (gain > needed && (!out || gain > out->gain)) out = UnionTest{.gain = gain, .type = type};
   }
   return out;
 }
@@ -107,9 +115,9 @@ absl::StatusOr<int> MergeSameSurface(const SegmentContext& c, std::vector<int>* 
         return arc.smooth && a_ok && b_ok && (IsAnalytic(type_a) || IsAnalytic(type_b));
       },
       [&](int a, int b) -> std::optional<PairMerge> {
-        const UnionTest t = TestUnion(c, *labels, a, b, *regions);
-        if (!(t.gain > kScoreMargin)) return std::nullopt;
-        return PairMerge{.score = t.gain, .type = t.type, .surface = std::nullopt};
+        const std::optional<UnionTest> t = TestUnion(c, *labels, a, b, *regions);
+        if (!t) return std::nullopt;
+        return PairMerge{.score = t->gain, .type = t->type, .surface = std::nullopt};
       });
 }
 

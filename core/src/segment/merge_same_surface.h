@@ -17,12 +17,16 @@ namespace meshseg::segment_internal {
 
 // Repeatedly merges the pair of regions across a smooth arc, both analytic
 // or one a general quadric (not two quadrics: the refit merge takes those),
-// that one surface explains clearly better than two. On the union's
+// that one surface explains as well as two, at the noise, or clearly
+// better. First, a plane part whose principal curvatures are a curved
+// face's (CurvedField) joins its curved neighbour if that type meets the
+// union at the noise or as closely as the plane meets the part. On the union's
 // interior vertices, each member's part fitted with its own type (or, if
 // that fit fails, taken under its region's surface) is scored against one
 // fit of each analytic type to all of it (InformationScore, parameters
-// counted for both members); the pair merges if one type scores
-// kScoreMargin less and meets the union at the noise (FitsAtNoise) or at
+// counted for both members); else the pair merges if one type meets the union
+// at the noise (FitsAtNoise) and two surfaces do not score kScoreMargin
+// less, or if one type scores kScoreMargin less and meets the union at
 // least as closely as the closer part's own fit meets that part (model
 // errors), taking that type, largest gain first. The second clause joins
 // two plane strips along a round (rounded_prism at 0.15 h, seed 16: the

@@ -215,22 +215,17 @@ void SetRoundCurvature(Sheet* s) {
   }
 }
 
-TEST(MergeSameSurfaceTest, PlaneStripWithARoundsCurvatureJoinsIt) {
-  // A strip of 3 columns (3.75 degrees) passes as a plane; on this draw
-  // the information criterion prefers two surfaces (most draws of 12 do
-  // not). With the round's principal curvatures (kappa 1/4 across it, one
-  // sign, one direction) it is the round's.
+TEST(MergeSameSurfaceTest, PlaneStripOfARoundAtTheNoiseJoinsIt) {
+  // A strip of 3 columns (3.75 degrees) passes as a plane. On this draw
+  // the information criterion prefers two surfaces, by less than
+  // kScoreMargin (most draws of 12 do not); the cylinder meets the union at
+  // the noise, so one surface is the simpler account.
   Sheet s;
   std::vector<int> labels;
   NoisyRoundWithStrip(3, &s, &labels);
-  const std::vector<int> before = labels;
   std::vector<RegionState> regions =
       RegionsFromLabels(s.c, labels, {SurfaceType::kCylinder, SurfaceType::kPlane});
-  ASSERT_EQ(MergeSameSurface(s.c, &labels, &regions).value(), 0);
-
-  SetRoundCurvature(&s);
-  labels = before;
-  regions = RegionsFromLabels(s.c, labels, {SurfaceType::kCylinder, SurfaceType::kPlane});
+  ASSERT_TRUE(FitsAtNoise(s.c, FitType(s.c, SurfaceType::kCylinder, AllVertices(s))));
   EXPECT_EQ(MergeSameSurface(s.c, &labels, &regions).value(), 1);
   const int kept = regions[0].alive ? 0 : 1;
   ASSERT_EQ(regions[kept].type, SurfaceType::kCylinder);
