@@ -64,7 +64,8 @@ SurfaceType BestInteriorType(const SegmentContext& c, SurfaceType own,
   // `own` (seed 26's countersink at 0.15 h: torus 3.26 sigma, cone 0.28) or
   // scoring kScoreMargin below it (stepped_shaft's chamfer at 0.15 h, seed
   // 59: sphere 0.49 sigma, cone 0.26 sigma and 70 below), or a limit of
-  // `own` scoring no worse, within kScoredNearError: a round of a part
+  // `own` scoring less than kScoreMargin above it, within kScoredNearError
+  // (own's extra parameters must buy kScoreMargin): a round of a part
   // reconstructed from points, 0.85 sigma off its cylinder, would go to a
   // torus 0.71 off that follows the reconstruction's error.
   double limit = kMinModelError * c.noise_sigma;
@@ -80,7 +81,7 @@ SurfaceType BestInteriorType(const SegmentContext& c, SurfaceType own,
         const double e = ModelError(c, s.fit);
         return e <= limit || (e <= kScoredNearError * c.noise_sigma &&
                               (s.score + kScoreMargin < own_score ||
-                               (IsLimitOf(s.type, own) && s.score <= own_score)));
+                               (IsLimitOf(s.type, own) && s.score < own_score + kScoreMargin)));
       })) {
     return own;
   }
@@ -90,13 +91,15 @@ SurfaceType BestInteriorType(const SegmentContext& c, SurfaceType own,
   }
   const double at_noise = kMinModelError * c.noise_sigma;
   // The simplest special case of `own` that does as well; or, near the
-  // noise, that scores no worse than `own`: its extra parameters buy
-  // nothing (test_piece's countersink at 0.15 h, seed 75: torus 0.39 sigma,
-  // cone 0.40 and 2.6 lower).
+  // noise, that scores less than kScoreMargin above `own`: its extra
+  // parameters buy too little (test_piece's countersink at 0.15 h, seed 75:
+  // torus 0.39 sigma, cone 0.40 and 2.6 lower; seed 105: torus 0.38, cone
+  // 0.40 and 1.3 higher).
   const ScoredFit* simplest =
       SimplestLimit(c, scored, own, at_noise, best->score + kScoreMargin);
   if (simplest == nullptr) {
-    simplest = SimplestLimit(c, scored, own, kScoredNearError * c.noise_sigma, own_score);
+    simplest = SimplestLimit(c, scored, own, kScoredNearError * c.noise_sigma,
+                             own_score + kScoreMargin);
   }
   if (simplest != nullptr) {
     *interior_fit = simplest->fit;

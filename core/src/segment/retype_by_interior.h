@@ -38,15 +38,17 @@ bool TypeMissesInterior(const SegmentContext& c, const std::vector<int>& labels,
 // as well; or, before that, the simplest limit of its own type (a cone or
 // cylinder for a torus, a cylinder for a cone) that fits at the noise and
 // scores within kScoreMargin of the best, or that is within half a sigma of
-// the noise and scores no worse than its own type. Only if some type fits
-// the interior at the noise (FitsAtNoise), or near it (within a sigma) and
+// the noise and scores less than kScoreMargin above its own type (whose
+// extra parameters must buy that much). Only if some type fits the
+// interior at the noise (FitsAtNoise), or near it (within a sigma) and
 // either at half the own type's model error or less (a torus on a
 // countersink, 3.26 sigma off where the cone is 0.28) or, within half a
 // sigma, scoring kScoreMargin below it (a sphere on a chamfer, 0.49 sigma,
-// the cone 0.26) or, for a limit of its own type, no worse than it: on a
-// noise-free or remeshed CAD mesh the residuals are the meshing's, which a
-// type with more parameters follows better (plate_holes' countersinks would
-// become tori), and on a mixed region the scores of misfits say nothing.
+// the cone 0.26) or, for a limit of its own type, less than kScoreMargin
+// above it: on a noise-free or remeshed CAD mesh the residuals are the
+// meshing's, which a type with more parameters follows better (plate_holes'
+// countersinks would become tori), and on a mixed region the scores of
+// misfits say nothing.
 // On a mesh whose vertices lie on facets (SegmentParams::on_facets) no type
 // fits at the noise; there the type of lowest score over all of the
 // region's vertices takes over if it scores kScoreMargin below its own, or
