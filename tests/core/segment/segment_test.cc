@@ -193,7 +193,12 @@ TEST_P(SegmentPartHighNoise, KeepsTypesAtHighNoise) {
 // limit, from a sphere (seed 47), stepped_shaft's chamfer left a sphere
 // with the cone 70 below it, 0.26 sigma off (seed 59), and test_piece's
 // countersink left a torus with the cone, its limit, 2.6 below and both
-// 0.4 sigma off (seed 75).
+// 0.4 sigma off (seed 75); at stop 19, test_piece's r 6 round fitted by a
+// torus of huge tube and flattened to a plane (seed 88), its rounds keeping
+// plane strips the cylinder met nearly at the noise (seeds 101, 117), its
+// countersink in a sphere piece and a cone piece (seed 98) or left a torus
+// 1.3 below its cone (seed 105), and plate_boss's side grown as a cylinder
+// of r 572 along it (seed 92).
 class SegmentPartHighNoiseOtherSeed
     : public ::testing::TestWithParam<std::tuple<std::string, double, uint64_t>> {};
 
@@ -226,7 +231,13 @@ INSTANTIATE_TEST_SUITE_P(Draws, SegmentPartHighNoiseOtherSeed,
                                            std::tuple{std::string("stepped_shaft"), 0.0, uint64_t{38}},
                                            std::tuple{std::string("test_piece"), 1.0, uint64_t{47}},
                                            std::tuple{std::string("stepped_shaft"), 0.0, uint64_t{59}},
-                                           std::tuple{std::string("test_piece"), 1.0, uint64_t{75}}),
+                                           std::tuple{std::string("test_piece"), 1.0, uint64_t{75}},
+                                           std::tuple{std::string("test_piece"), 1.0, uint64_t{88}},
+                                           std::tuple{std::string("test_piece"), 1.0, uint64_t{98}},
+                                           std::tuple{std::string("test_piece"), 1.0, uint64_t{101}},
+                                           std::tuple{std::string("test_piece"), 1.0, uint64_t{105}},
+                                           std::tuple{std::string("test_piece"), 1.0, uint64_t{117}},
+                                           std::tuple{std::string("plate_boss"), 0.0, uint64_t{92}}),
                          [](const auto& info) {
                            return std::get<0>(info.param) + "_seed_" +
                                   std::to_string(std::get<2>(info.param));
