@@ -12,6 +12,7 @@
 
 #include "meshseg/curvature.h"
 #include "meshseg/generate.h"
+#include "segment/absorb_leftovers.h"
 #include "segment_eval.h"
 
 namespace meshseg {
@@ -198,7 +199,8 @@ TEST_P(SegmentPartHighNoise, KeepsTypesAtHighNoise) {
 // plane strips the cylinder met nearly at the noise (seeds 101, 117), its
 // countersink in a sphere piece and a cone piece (seed 98) or left a torus
 // 1.3 below its cone (seed 105), and plate_boss's side grown as a cylinder
-// of r 572 along it (seed 92).
+// of r 572 along it (seed 92), and a plane strip on its groove that later
+// steps shrank under the size floor (seed 124).
 class SegmentPartHighNoiseOtherSeed
     : public ::testing::TestWithParam<std::tuple<std::string, double, uint64_t>> {};
 
@@ -237,7 +239,8 @@ INSTANTIATE_TEST_SUITE_P(Draws, SegmentPartHighNoiseOtherSeed,
                                            std::tuple{std::string("test_piece"), 1.0, uint64_t{101}},
                                            std::tuple{std::string("test_piece"), 1.0, uint64_t{105}},
                                            std::tuple{std::string("test_piece"), 1.0, uint64_t{117}},
-                                           std::tuple{std::string("plate_boss"), 0.0, uint64_t{92}}),
+                                           std::tuple{std::string("plate_boss"), 0.0, uint64_t{92}},
+                                           std::tuple{std::string("test_piece"), 1.0, uint64_t{124}}),
                          [](const auto& info) {
                            return std::get<0>(info.param) + "_seed_" +
                                   std::to_string(std::get<2>(info.param));
@@ -297,6 +300,19 @@ INSTANTIATE_TEST_SUITE_P(Parts, NoiseEstimate,
                            return std::get<0>(info.param) +
                                   (std::get<1>(info.param) < 0.1 ? "_low" : "_high");
                          });
+
+// No region of the result is under the size floor the stage releases
+// regions at (kMinRegionVertices): steps after the last release used to
+// shrink a plane strip on test_piece's groove at 0.15 h (seed 124) from 62
+// vertices to 56, and it stayed, typed plane.
+TEST(SegmentSizeFloor, NoRegionEndsUnderIt) {
+  const PartRun run = Segmented("test_piece", 1.0, 0.15, /*seed=*/124);
+  ASSERT_FALSE(run.seg.regions.empty());
+  for (const Region& r : run.seg.regions) {
+    EXPECT_GE(r.vertex_count, static_cast<int64_t>(segment_internal::kMinRegionVertices))
+        << "region " << r.id << " " << SurfaceTypeName(r.type);
+  }
+}
 
 // The same labels, types and surfaces with one TBB thread as with many.
 TEST(SegmentDeterminism, OneThreadGivesTheSameResultAsMany) {
