@@ -29,6 +29,11 @@ TypedFit TryType(const SegmentContext& c, SurfaceType type, std::span<const int>
 // a fit at the noise.
 inline constexpr double kMinModelError = 0.25;
 
+// A model error at or under this many noise sigmas is near the noise: a
+// fit there may replace another if the scores say so (RetypeByInterior,
+// MergeSameSurface).
+inline constexpr double kScoredNearError = 0.5;
+
 // How far `fit` misses its vertices beyond the noise, sqrt(rms^2 - sigma^2).
 // At 0.15 h the rms of a sphere on a narrow 45-degree chamfer is only 10 %
 // above the cone's, which sits at the noise; their model errors are

@@ -27,8 +27,9 @@ namespace meshseg::segment_internal {
 // counted for both members); else the pair merges if one type meets the union
 // at the noise (FitsAtNoise) and two surfaces do not score kScoreMargin
 // less, or if one type scores kScoreMargin less and meets the union at
-// least as closely as the closer part's own fit meets that part (model
-// errors), taking that type, largest gain first. The second clause joins
+// least as closely as the closer part's own fit meets that part, or, within
+// kScoredNearError sigmas, as the farther part's does (model errors),
+// taking that type, largest gain first. The second clause joins
 // two plane strips along a round (rounded_prism at 0.15 h, seed 16: the
 // cylinder's model error on the union 0.28 sigma, the planes' 0.34 and
 // 0.47). Both parts need kMinInteriorVertices. Does nothing at noise 0

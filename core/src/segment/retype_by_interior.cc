@@ -18,8 +18,6 @@ namespace {
 // this share of its model error and at most this many sigmas.
 constexpr double kCloserError = 0.5;
 constexpr double kNearNoiseError = 1.0;
-// ... or within this many sigmas, scoring kScoreMargin below the own type.
-constexpr double kScoredNearError = 0.5;
 
 // True if `special` is a limit of `general` with fewer parameters, in the
 // family of surfaces around an axis: a cylinder is a cone of half-angle 0,

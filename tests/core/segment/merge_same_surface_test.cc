@@ -62,6 +62,61 @@ TEST(MergeSameSurfaceTest, ConeBandTypedApartIsMerged) {
   for (const int label : labels) EXPECT_EQ(label, kept);
 }
 
+// The split cone band with noise of sigma along its normals (mt19937 draw
+// 3) and, on piece 0, a ripple of `ripple` (8 waves around), both pieces
+// typed cone; the model errors, in sigmas, of each piece's own cone
+// (`own`) and of one cone on both (`union_error`).
+struct RippledPieces {
+  Sheet s;
+  std::vector<int> labels;
+  std::vector<RegionState> regions;
+  double own[2] = {0.0, 0.0};
+  double union_error = 0.0;
+};
+
+void BuildRippledPieces(double ripple, RippledPieces* p) {
+  SplitCone(0.75 * kPi, &p->s, &p->labels);
+  std::mt19937 random(3);
+  std::normal_distribution<double> noise(0.0, kSigma);
+  for (std::size_t v = 0; v < p->s.u.size(); ++v) {
+    const double wave = p->labels[v] == 0 ? ripple * std::sin(8.0 * p->s.v[v]) : 0.0;
+    p->s.c.graph.positions[v] += (noise(random) + wave) * p->s.field.normal[v];
+  }
+  p->regions = RegionsFromLabels(p->s.c, p->labels, {SurfaceType::kCone, SurfaceType::kCone});
+  for (int k = 0; k < 2; ++k) {
+    p->own[k] = ModelError(p->s.c, FitType(p->s.c, SurfaceType::kCone, p->regions[k].vertices)) /
+                kSigma;
+  }
+  p->union_error = ModelError(p->s.c, FitType(p->s.c, SurfaceType::kCone, AllVertices(p->s))) /
+                   kSigma;
+}
+
+TEST(MergeSameSurfaceTest, PiecesMergeNearTheNoiseIfNoWorseThanTheFartherPiece) {
+  // Ripple 0.7 sigma: the rippled piece 0.47 sigma off its cone, the other
+  // at the noise, one cone 0.34 off both (test_piece's countersink at
+  // 0.15 h, seed 145: 0.39, 0.22 and 0.34).
+  RippledPieces p;
+  BuildRippledPieces(0.7 * kSigma, &p);
+  ASSERT_LT(p.own[1], kMinModelError);
+  ASSERT_GT(p.union_error, kMinModelError);
+  ASSERT_LT(p.union_error, p.own[0]);
+  ASSERT_LT(p.own[0], kScoredNearError);
+  EXPECT_EQ(MergeSameSurface(p.s.c, &p.labels, &p.regions).value(), 1);
+  const int kept = p.regions[0].alive ? 0 : 1;
+  EXPECT_EQ(p.regions[kept].type, SurfaceType::kCone);
+  EXPECT_EQ(p.regions[kept].vertices.size(), p.s.u.size());
+}
+
+TEST(MergeSameSurfaceTest, PiecesStayApartIfTheUnionIsOverHalfASigmaOff) {
+  // Ripple 1.2 sigma: one cone 0.58 sigma off both, though the rippled
+  // piece is 0.81 off its own.
+  RippledPieces p;
+  BuildRippledPieces(1.2 * kSigma, &p);
+  ASSERT_GT(p.union_error, kScoredNearError);
+  ASSERT_LT(p.union_error, p.own[0]);
+  EXPECT_EQ(MergeSameSurface(p.s.c, &p.labels, &p.regions).value(), 0);
+}
+
 TEST(MergeSameSurfaceTest, PieceWhoseTypeCannotBeFittedIsMerged) {
   // A torus-typed piece of the band: a torus cannot be fitted to a cone
   // band (its minor radius runs off), so the piece's residuals are taken
