@@ -287,13 +287,25 @@ TEST(MergeSameSurfaceTest, PlaneStripOfARoundAtTheNoiseJoinsIt) {
   EXPECT_EQ(regions[kept].vertices.size(), s.u.size());
 }
 
-// The model errors, in sigmas, of the round's cylinder on all of `s` and of
-// a plane on the strip (label 1).
-std::pair<double, double> RoundAndStripErrors(const Sheet& s, const std::vector<RegionState>& r) {
-  std::vector<int> all = r[0].vertices;
-  all.insert(all.end(), r[1].vertices.begin(), r[1].vertices.end());
-  return {ModelError(s.c, FitType(s.c, SurfaceType::kCylinder, all)) / kSigma,
-          ModelError(s.c, FitType(s.c, SurfaceType::kPlane, r[1].vertices)) / kSigma};
+// NoisyRoundWithStrip with `strip_columns` and a ripple of 0.6 sigma, the
+// round's curvatures, regions typed cylinder (0) and plane (1), and the
+// model errors, in sigmas, of the cylinder on all of it (`round`) and of a
+// plane on the strip (`strip`).
+struct RippledStrip {
+  Sheet s;
+  std::vector<int> labels;
+  std::vector<RegionState> regions;
+  double round = 0.0;
+  double strip = 0.0;
+};
+
+void BuildRippledStrip(int strip_columns, RippledStrip* r) {
+  NoisyRoundWithStrip(strip_columns, &r->s, &r->labels, /*ripple=*/0.6 * kSigma);
+  SetRoundCurvature(&r->s);
+  r->regions = RegionsFromLabels(r->s.c, r->labels, {SurfaceType::kCylinder, SurfaceType::kPlane});
+  r->round = ModelError(r->s.c, FitType(r->s.c, SurfaceType::kCylinder, AllVertices(r->s))) / kSigma;
+  r->strip =
+      ModelError(r->s.c, FitType(r->s.c, SurfaceType::kPlane, r->regions[1].vertices)) / kSigma;
 }
 
 TEST(MergeSameSurfaceTest, StripItsPlaneMissesMoreThanTheRoundMissesAllJoinsIt) {
@@ -301,33 +313,23 @@ TEST(MergeSameSurfaceTest, StripItsPlaneMissesMoreThanTheRoundMissesAllJoinsIt) 
   // cylinder misses it beyond the noise; a 10-degree strip is flatter than
   // the round by its sagitta, so the plane misses the strip by more
   // (test_piece's round at 0.15 h, seed 117: 0.44 and 0.58 sigma).
-  Sheet s;
-  std::vector<int> labels;
-  NoisyRoundWithStrip(8, &s, &labels, /*ripple=*/0.006);
-  SetRoundCurvature(&s);
-  std::vector<RegionState> regions =
-      RegionsFromLabels(s.c, labels, {SurfaceType::kCylinder, SurfaceType::kPlane});
-  const auto [round, strip] = RoundAndStripErrors(s, regions);
-  ASSERT_GT(round, kMinModelError);
-  ASSERT_LT(round, strip);
-  EXPECT_EQ(MergeSameSurface(s.c, &labels, &regions).value(), 1);
-  const int kept = regions[0].alive ? 0 : 1;
-  ASSERT_EQ(regions[kept].type, SurfaceType::kCylinder);
-  EXPECT_EQ(regions[kept].vertices.size(), s.u.size());
+  RippledStrip r;
+  BuildRippledStrip(8, &r);
+  ASSERT_GT(r.round, kMinModelError);
+  ASSERT_LT(r.round, r.strip);
+  EXPECT_EQ(MergeSameSurface(r.s.c, &r.labels, &r.regions).value(), 1);
+  const int kept = r.regions[0].alive ? 0 : 1;
+  ASSERT_EQ(r.regions[kept].type, SurfaceType::kCylinder);
+  EXPECT_EQ(r.regions[kept].vertices.size(), r.s.u.size());
 }
 
 TEST(MergeSameSurfaceTest, StripItsPlaneMeetsBetterThanTheRippledRoundStays) {
   // A 3.75-degree strip of the same round: the plane meets it closer than
   // the cylinder meets the whole, and the scores prefer two surfaces.
-  Sheet s;
-  std::vector<int> labels;
-  NoisyRoundWithStrip(3, &s, &labels, /*ripple=*/0.006);
-  SetRoundCurvature(&s);
-  std::vector<RegionState> regions =
-      RegionsFromLabels(s.c, labels, {SurfaceType::kCylinder, SurfaceType::kPlane});
-  const auto [round, strip] = RoundAndStripErrors(s, regions);
-  ASSERT_GT(round, strip);
-  EXPECT_EQ(MergeSameSurface(s.c, &labels, &regions).value(), 0);
+  RippledStrip r;
+  BuildRippledStrip(3, &r);
+  ASSERT_GT(r.round, r.strip);
+  EXPECT_EQ(MergeSameSurface(r.s.c, &r.labels, &r.regions).value(), 0);
 }
 
 TEST(MergeSameSurfaceTest, CylinderAndItsTangentFilletStayApart) {
