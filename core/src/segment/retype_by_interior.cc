@@ -183,7 +183,8 @@ std::vector<int> RetypeByInterior(const SegmentContext& c, const std::vector<int
                                  ? BestTypeOnFacets(c, r.type, r.vertices, &interior_fit)
                                  : BestInteriorType(c, r.type, interior, &interior_fit);
     if (type == r.type) return;
-    const FitResult whole = FitType(c, type, r.vertices);
+    // On facets the fit was already made to all of the region's vertices.
+    const FitResult whole = c.on_facets ? interior_fit : FitType(c, type, r.vertices);
     r.type = type;
     r.surface = whole.ok() ? whole.surface : interior_fit.surface;
     retyped[id] = 1;
