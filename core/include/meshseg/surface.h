@@ -9,6 +9,7 @@
 #define MESHSEG_SURFACE_H_
 
 #include <array>
+#include <optional>
 #include <variant>
 
 #include <Eigen/Core>
@@ -61,6 +62,16 @@ using Surface = std::variant<Plane, Cylinder, Cone, Sphere, Torus, Quadric>;
 
 // The SurfaceType of the alternative `surface` holds.
 SurfaceType TypeOf(const Surface& surface);
+
+// A surface's axis of revolution: a point on it and its unit direction.
+struct AxisLine {
+  Eigen::Vector3d point = Eigen::Vector3d::Zero();
+  Eigen::Vector3d direction = Eigen::Vector3d::UnitZ();
+};
+
+// The axis of a cylinder (through axis_origin), cone (through the apex) or
+// torus (through the center); nullopt for the other surfaces.
+std::optional<AxisLine> AxisOf(const Surface& surface);
 
 }  // namespace meshseg
 

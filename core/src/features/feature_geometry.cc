@@ -7,17 +7,6 @@
 
 namespace meshseg::features_internal {
 
-std::optional<AxisLine> AxisOf(const Surface& s) {
-  if (const auto* c = std::get_if<Cylinder>(&s)) {
-    return AxisLine{c->axis_origin, c->axis_direction.normalized()};
-  }
-  if (const auto* c = std::get_if<Cone>(&s)) return AxisLine{c->apex, c->axis_direction.normalized()};
-  if (const auto* t = std::get_if<Torus>(&s)) {
-    return AxisLine{t->center, t->axis_direction.normalized()};
-  }
-  return std::nullopt;
-}
-
 bool Parallel(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Tolerances& tol) {
   return std::abs(a.normalized().dot(b.normalized())) >= std::cos(tol.angle_rad);
 }

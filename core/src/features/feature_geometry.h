@@ -1,5 +1,5 @@
 // Geometric predicates the feature rules share: parallel and perpendicular
-// directions, axes of cylinders/cones/tori, coincident axes, and the region
+// directions, coincident axes of cylinders/cones/tori, and the region
 // adjacency graph with its curves.
 #ifndef MESHSEG_SRC_FEATURES_FEATURE_GEOMETRY_H_
 #define MESHSEG_SRC_FEATURES_FEATURE_GEOMETRY_H_
@@ -22,13 +22,7 @@ struct Tolerances {
   double distance = 0.0;   // model units
 };
 
-struct AxisLine {
-  Eigen::Vector3d point = Eigen::Vector3d::Zero();
-  Eigen::Vector3d direction = Eigen::Vector3d::UnitZ();  // unit
-};
-
-// The axis of a cylinder, cone or torus; nullopt for other surfaces.
-std::optional<AxisLine> AxisOf(const Surface& s);
+// AxisLine and AxisOf are in meshseg/surface.h.
 
 bool Parallel(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Tolerances& tol);
 bool Perpendicular(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Tolerances& tol);

@@ -31,4 +31,17 @@ SurfaceType TypeOf(const Surface& surface) {
       surface);
 }
 
+std::optional<AxisLine> AxisOf(const Surface& surface) {
+  if (const auto* c = std::get_if<Cylinder>(&surface)) {
+    return AxisLine{c->axis_origin, c->axis_direction.normalized()};
+  }
+  if (const auto* c = std::get_if<Cone>(&surface)) {
+    return AxisLine{c->apex, c->axis_direction.normalized()};
+  }
+  if (const auto* t = std::get_if<Torus>(&surface)) {
+    return AxisLine{t->center, t->axis_direction.normalized()};
+  }
+  return std::nullopt;
+}
+
 }  // namespace meshseg

@@ -13,18 +13,6 @@ namespace {
 
 using Eigen::Vector3d;
 
-struct AxisLine {
-  Vector3d origin;
-  Vector3d direction;
-};
-
-std::optional<AxisLine> AxisOf(const Surface& s) {
-  if (const auto* c = std::get_if<Cylinder>(&s)) return AxisLine{c->axis_origin, c->axis_direction};
-  if (const auto* c = std::get_if<Cone>(&s)) return AxisLine{c->apex, c->axis_direction};
-  if (const auto* t = std::get_if<Torus>(&s)) return AxisLine{t->center, t->axis_direction};
-  return std::nullopt;
-}
-
 // Turns of the closed polyline around the axis (signed).
 double WindingAround(const AxisLine& axis, const std::vector<Vector3d>& points) {
   const Vector3d d = axis.direction.normalized();
@@ -32,8 +20,8 @@ double WindingAround(const AxisLine& axis, const std::vector<Vector3d>& points) 
   const Vector3d e2 = d.cross(e1);
   double total = 0.0;
   for (size_t i = 0; i + 1 < points.size(); ++i) {
-    const Vector3d a = points[i] - axis.origin;
-    const Vector3d b = points[i + 1] - axis.origin;
+    const Vector3d a = points[i] - axis.point;
+    const Vector3d b = points[i + 1] - axis.point;
     const double angle_a = std::atan2(a.dot(e2), a.dot(e1));
     const double angle_b = std::atan2(b.dot(e2), b.dot(e1));
     double step = angle_b - angle_a;
