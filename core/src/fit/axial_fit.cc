@@ -37,29 +37,11 @@ class AxialProblem : public LeastSquaresProblem {
  private:
   template <int P>
   double Accumulate(const Eigen::VectorXd& x, Eigen::MatrixXd* jtj, Eigen::VectorXd* jtr) const {
-    const Eigen::Vector3d o = x.head<3>();
-    const Eigen::Vector3d a = x.segment<3>(3);
-    const double radius = x(6);
-    const double cos_a = std::cos(x(7));
-    const double sin_a = std::sin(x(7));
-    Eigen::Vector3d b1, b2;
-    PerpendicularBasis(a, &b1, &b2);
+    const AxialFrame frame(x.head<3>(), x.segment<3>(3), x(6), x(7));
     return AccumulateNormalEquations<P>(
         input_,
         [&](std::size_t i, Eigen::Matrix<double, 1, P>* row) {
-          const Eigen::Vector3d v = input_.points[i] - o;
-          const double h = v.dot(a);
-          const Eigen::Vector3d q = v - h * a;
-          const double rho = q.norm();
-          const Eigen::Vector3d e = rho > 0.0 ? Eigen::Vector3d(q / rho) : Eigen::Vector3d::Zero();
-          const double eb1 = e.dot(b1), eb2 = e.dot(b2);
-          (*row)(0) = -cos_a * eb1;
-          (*row)(1) = -cos_a * eb2;
-          (*row)(2) = -h * cos_a * eb1 - sin_a * v.dot(b1);
-          (*row)(3) = -h * cos_a * eb2 - sin_a * v.dot(b2);
-          (*row)(4) = -cos_a;
-          if constexpr (P == 6) (*row)(5) = -(rho - radius) * sin_a - h * cos_a;
-          return (rho - radius) * cos_a - h * sin_a;
+          return AxialResidual<P>(frame, input_.points[i], row);
         },
         jtj, jtr);
   }
@@ -75,6 +57,16 @@ Eigen::VectorXd ToState(const AxialSurface& s) {
 }
 
 }  // namespace
+
+AxialFrame::AxialFrame(const Eigen::Vector3d& origin, const Eigen::Vector3d& axis, double radius,
+                       double angle)
+    : origin(origin),
+      axis(axis),
+      radius(radius),
+      cos_angle(std::cos(angle)),
+      sin_angle(std::sin(angle)) {
+  PerpendicularBasis(axis, &b1, &b2);
+}
 
 bool FitCrossSection(const FitInput& input, const Eigen::Vector3d& centroid,
                      const Eigen::Vector3d& axis, AxialSurface* out) {

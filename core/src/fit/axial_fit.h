@@ -22,6 +22,38 @@ struct AxialSurface {
   double angle = 0.0;                                // radians, signed
 };
 
+// An axial surface at one state, ready to evaluate residuals: (b1, b2) =
+// PerpendicularBasis(axis), the basis the tangent steps use.
+struct AxialFrame {
+  AxialFrame(const Eigen::Vector3d& origin, const Eigen::Vector3d& axis, double radius,
+             double angle);
+  Eigen::Vector3d origin, axis, b1, b2;
+  double radius, cos_angle, sin_angle;
+};
+
+// The residual of p (signed distance to the generator line) and, in `row`,
+// its derivatives by the tangent steps (s1, s2, t1, t2, radius[, angle]): the
+// origin moved by s1 b1 + s2 b2, the axis turned by RotateAxis(axis, t1, t2).
+// P = 5 leaves out the angle.
+template <int P>
+double AxialResidual(const AxialFrame& f, const Eigen::Vector3d& p,
+                     Eigen::Matrix<double, 1, P>* row) {
+  static_assert(P == 5 || P == 6);
+  const Eigen::Vector3d v = p - f.origin;
+  const double h = v.dot(f.axis);
+  const Eigen::Vector3d q = v - h * f.axis;
+  const double rho = q.norm();
+  const Eigen::Vector3d e = rho > 0.0 ? Eigen::Vector3d(q / rho) : Eigen::Vector3d::Zero();
+  const double eb1 = e.dot(f.b1), eb2 = e.dot(f.b2);
+  (*row)(0) = -f.cos_angle * eb1;
+  (*row)(1) = -f.cos_angle * eb2;
+  (*row)(2) = -h * f.cos_angle * eb1 - f.sin_angle * v.dot(f.b1);
+  (*row)(3) = -h * f.cos_angle * eb2 - f.sin_angle * v.dot(f.b2);
+  (*row)(4) = -f.cos_angle;
+  if constexpr (P == 6) (*row)(5) = -(rho - f.radius) * f.sin_angle - h * f.cos_angle;
+  return (rho - f.radius) * f.cos_angle - h * f.sin_angle;
+}
+
 // Axis point and radius from an algebraic circle fit of the points projected
 // along `axis` (seed 002); origin = the axis point nearest `centroid`.
 // Returns false if the projected points are too few or collinear.
