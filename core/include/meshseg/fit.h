@@ -23,6 +23,7 @@
 
 #include <array>
 #include <span>
+#include <vector>
 
 #include <Eigen/Core>
 
@@ -103,6 +104,25 @@ FitResult FitTorus(const FitInput& input, const FitParams& params = {});
 FitResult FitQuadric(const FitInput& input, const FitParams& params = {});
 // The fit of `type` above (kFreeform: the quadric).
 FitResult FitOfType(SurfaceType type, const FitInput& input, const FitParams& params = {});
+
+// Cylinders and cones around one axis (a countersink and its bore, a chamfer
+// and its shaft) fitted together by geometric distance: one axis line, each
+// member its own radius and, for a cone, half angle. Levenberg–Marquardt
+// from the line through `axis_origin` along `axis_direction`; each member
+// starts from the least-squares line rho = r + h tan(angle) of its points
+// about it (a cylinder: r = mean rho). Weights apply; normals are not used.
+// Returns one result per member, in order (cylinder axis_origin: the axis
+// point nearest the member's centroid); every result is invalid if a member
+// is of another type or has too few points (cylinder 3, cone 4), or a cone
+// comes out with a half angle of ~0.
+struct CoaxialMember {
+  SurfaceType type = SurfaceType::kCylinder;
+  FitInput input;
+};
+std::vector<FitResult> FitCoaxial(std::span<const CoaxialMember> members,
+                                  const Eigen::Vector3d& axis_origin,
+                                  const Eigen::Vector3d& axis_direction,
+                                  const FitParams& params = {});
 
 // The local quadratic height function of seed 000 §2:
 // h(u, w) = a0 u² + a1 w² + a2 u w + a3 u + a4 w + a5 in the frame
