@@ -6,6 +6,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include "segment/align_coaxial.h"
 #include "segment/face_labels.h"
 
 namespace meshseg::segment_internal {
@@ -115,6 +116,7 @@ Segmentation FinalizeRegions(const SegmentContext& c, const TriMesh& mesh,
     const FitResult fit = InlierFit(c, r);
     if (fit.ok()) r.surface = fit.surface;
   });
+  AlignCoaxialRegions(c, labels, &regions);
   return Assemble(c, mesh, FaceLabels(c, mesh, labels, regions), labels, regions);
 }
 

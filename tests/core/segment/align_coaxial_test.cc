@@ -1,0 +1,98 @@
+#include "segment/align_coaxial.h"
+
+#include <cmath>
+#include <random>
+#include <vector>
+
+#include <Eigen/Geometry>
+#include <gtest/gtest.h>
+
+#include "sheet_context.h"
+
+namespace meshseg::segment_internal {
+namespace {
+
+using testing::BuildSheet;
+using testing::RegionsFromLabels;
+using testing::Sheet;
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kBoreDepth = 10.0;
+constexpr double kSinkLength = 2.5 * 1.4142135623730951;  // radius 8 -> 10.5 at 45 degrees
+
+// The bore's axis: tilted so nothing runs along a coordinate axis.
+Eigen::Vector3d BoreAxis() { return Eigen::Vector3d(0.1, -0.2, 1.0).normalized(); }
+
+double AngleDeg(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+  return std::acos(std::min(1.0, std::abs(a.normalized().dot(b.normalized())))) * 180.0 / kPi;
+}
+
+// A bore of radius 8 and depth 10 with a 45-degree countersink opening from
+// its rim to radius 10.5, over 300 degrees around (u along the profile, v
+// the angle), 0.5 apart, with Gaussian noise of `sigma` along the normal
+// (mt19937 draw `seed`). The countersink's axis is the bore's turned by
+// `tilt_deg` about a line across it through the rim's centre. Labels: 0
+// bore, 1 countersink.
+void BuildCountersunkBore(double sigma, double tilt_deg, unsigned seed, Sheet* s,
+                          std::vector<int>* labels) {
+  const Eigen::Vector3d a = BoreAxis();
+  const Eigen::Vector3d b1 = a.unitOrthogonal(), b2 = a.cross(b1);
+  const Eigen::Vector3d rim_centre = kBoreDepth * a;
+  const Eigen::Matrix3d tilt = Eigen::AngleAxisd(tilt_deg * kPi / 180.0, b1).toRotationMatrix();
+  std::mt19937 random(seed);
+  std::normal_distribution<double> noise(0.0, sigma);
+  BuildSheet(
+      [&](double u, double v) {
+        const Eigen::Vector3d e = std::cos(v) * b1 + std::sin(v) * b2;
+        Eigen::Vector3d p, n;
+        if (u <= kBoreDepth) {
+          p = u * a + 8.0 * e;
+          n = e;
+        } else {
+          const double g = (u - kBoreDepth) / std::sqrt(2.0);
+          p = rim_centre + tilt * ((8.0 + g) * e + g * a);
+          n = tilt * (e - a).normalized();
+        }
+        return std::make_pair(Eigen::Vector3d(p + noise(random) * n), n);
+      },
+      0.0, kBoreDepth + kSinkLength, 28, 0.0, 300.0 * kPi / 180.0, 85, /*distance=*/0.5,
+      /*angle_deg=*/20.0, s);
+  s->c.noise_sigma = sigma;
+  labels->clear();
+  for (const double u : s->u) labels->push_back(u <= kBoreDepth ? 0 : 1);
+}
+
+Eigen::Vector3d AxisOfRegion(const RegionState& r) { return AxisOf(r.surface)->direction; }
+
+TEST(AlignCoaxialRegionsTest, NarrowCountersinkTakesTheBoresAxis) {
+  Sheet s;
+  std::vector<int> labels;
+  BuildCountersunkBore(/*sigma=*/0.1, /*tilt_deg=*/0.0, 3, &s, &labels);
+  std::vector<RegionState> regions =
+      RegionsFromLabels(s.c, labels, {SurfaceType::kCylinder, SurfaceType::kCone});
+  const double alone_deg = AngleDeg(AxisOfRegion(regions[1]), BoreAxis());
+  EXPECT_EQ(AlignCoaxialRegions(s.c, labels, &regions), 2);
+  const double aligned_deg = AngleDeg(AxisOfRegion(regions[1]), BoreAxis());
+  EXPECT_GT(alone_deg, 0.3);
+  EXPECT_LT(aligned_deg, 0.1);
+  EXPECT_LT(AngleDeg(AxisOfRegion(regions[0]), AxisOfRegion(regions[1])), 1e-9);
+  EXPECT_NEAR(std::get<Cylinder>(regions[0].surface).radius, 8.0, 0.02);
+  EXPECT_NEAR(std::get<Cone>(regions[1].surface).half_angle, kPi / 4, 0.5 * kPi / 180.0);
+}
+
+// A countersink drilled 3 degrees off the bore's axis: the joint fit would
+// miss it by far more than the noise, so each keeps its own axis.
+TEST(AlignCoaxialRegionsTest, TiltedCountersinkKeepsItsAxis) {
+  Sheet s;
+  std::vector<int> labels;
+  BuildCountersunkBore(/*sigma=*/0.1, /*tilt_deg=*/3.0, 3, &s, &labels);
+  std::vector<RegionState> regions =
+      RegionsFromLabels(s.c, labels, {SurfaceType::kCylinder, SurfaceType::kCone});
+  const std::vector<RegionState> before = regions;
+  EXPECT_EQ(AlignCoaxialRegions(s.c, labels, &regions), 0);
+  EXPECT_EQ(AxisOfRegion(regions[1]), AxisOfRegion(before[1]));
+  EXPECT_GT(AngleDeg(AxisOfRegion(regions[0]), AxisOfRegion(regions[1])), 2.0);
+}
+
+}  // namespace
+}  // namespace meshseg::segment_internal
