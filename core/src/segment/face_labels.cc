@@ -1,12 +1,99 @@
 #include "segment/face_labels.h"
 
+#include <algorithm>
 #include <cmath>
+#include <map>
 
 #include <Eigen/Geometry>
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
 namespace meshseg::segment_internal {
+namespace {
+
+constexpr int kMaxFragmentRounds = 4;
+
+// The edge-connected pieces of equally labelled faces (labels >= 0).
+struct Pieces {
+  std::vector<int> of_face;        // piece id per face, -1 if unlabelled
+  std::vector<int> label;          // per piece
+  std::vector<std::size_t> size;   // faces per piece
+};
+
+Pieces FindPieces(const TriMesh& mesh, const std::vector<int>& labels) {
+  Pieces p;
+  p.of_face.assign(labels.size(), -1);
+  std::vector<int> stack;
+  for (std::size_t seed = 0; seed < labels.size(); ++seed) {
+    if (labels[seed] < 0 || p.of_face[seed] >= 0) continue;
+    const int id = static_cast<int>(p.label.size());
+    p.label.push_back(labels[seed]);
+    p.size.push_back(0);
+    p.of_face[seed] = id;
+    stack.assign(1, static_cast<int>(seed));
+    while (!stack.empty()) {
+      const int f = stack.back();
+      stack.pop_back();
+      ++p.size[id];
+      for (auto it = mesh.cff_iter(TriMesh::FaceHandle(f)); it.is_valid(); ++it) {
+        const int g = it->idx();
+        if (p.of_face[g] < 0 && labels[g] == labels[seed]) {
+          p.of_face[g] = id;
+          stack.push_back(g);
+        }
+      }
+    }
+  }
+  return p;
+}
+
+// One round: the label each fragment piece takes (absent: not a fragment,
+// or no labelled neighbour).
+std::map<int, int> FragmentLabels(const TriMesh& mesh, const std::vector<int>& labels,
+                                  const Pieces& p) {
+  std::map<int, int> largest;  // label -> its largest piece
+  for (int id = 0; id < static_cast<int>(p.label.size()); ++id) {
+    auto [it, inserted] = largest.try_emplace(p.label[id], id);
+    if (!inserted && p.size[id] > p.size[it->second]) it->second = id;
+  }
+  std::vector<char> fragment(p.label.size(), 0);
+  for (std::size_t id = 0; id < fragment.size(); ++id) {
+    fragment[id] = p.size[id] < kMaxFragmentFaces && largest[p.label[id]] != static_cast<int>(id);
+  }
+  std::map<int, std::map<int, int>> shared;  // fragment piece -> label -> edges
+  for (std::size_t f = 0; f < labels.size(); ++f) {
+    const int id = p.of_face[f];
+    if (id < 0 || !fragment[id]) continue;
+    std::map<int, int>& counts = shared[id];
+    for (auto it = mesh.cff_iter(TriMesh::FaceHandle(static_cast<int>(f))); it.is_valid(); ++it) {
+      const int other = labels[it->idx()];
+      if (other >= 0 && other != labels[f]) ++counts[other];
+    }
+  }
+  std::map<int, int> out;
+  for (const auto& [id, counts] : shared) {
+    // The most shared edges; the map's order makes ties go to the lower label.
+    const auto best = std::max_element(counts.begin(), counts.end(), [](const auto& x, const auto& y) {
+      return x.second < y.second;
+    });
+    if (best != counts.end()) out[id] = best->first;
+  }
+  return out;
+}
+
+}  // namespace
+
+void MergeFaceFragments(const TriMesh& mesh, std::vector<int>* face_labels) {
+  for (int round = 0; round < kMaxFragmentRounds; ++round) {
+    const Pieces p = FindPieces(mesh, *face_labels);
+    const std::map<int, int> relabel = FragmentLabels(mesh, *face_labels, p);
+    if (relabel.empty()) return;
+    for (std::size_t f = 0; f < face_labels->size(); ++f) {
+      const auto it = relabel.find(p.of_face[f]);
+      if (it != relabel.end()) (*face_labels)[f] = it->second;
+    }
+  }
+}
 
 std::vector<int> FaceLabels(const SegmentContext& c, const TriMesh& mesh,
                             const std::vector<int>& labels,
@@ -45,6 +132,7 @@ std::vector<int> FaceLabels(const SegmentContext& c, const TriMesh& mesh,
       }
     }
   });
+  MergeFaceFragments(mesh, &out);
   return out;
 }
 

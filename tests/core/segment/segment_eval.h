@@ -7,6 +7,7 @@
 #include <map>
 #include <numbers>
 #include <ostream>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -32,7 +33,9 @@ struct PrimitiveScore {
 struct Evaluation {
   double area_fraction = 0.0;  // area labelled with the true primitive
   int true_count = 0;          // face-connected pieces of primitives (>= 10 faces)
+  int true_extra_pieces = 0;   // of those, beyond one per primitive
   int region_count = 0;
+  int region_extra_pieces = 0; // face-connected pieces of regions (any size) beyond one each
   std::vector<PrimitiveScore> primitives;
 };
 
@@ -53,14 +56,14 @@ inline double AngularSpan(const GeneratedPart& part, int primitive, const Cylind
   return std::count(bins.begin(), bins.end(), true) / 72.0;
 }
 
-// Face-connected pieces of equal primitive with at least kMinPiece faces.
-inline int PieceCount(const GeneratedPart& part) {
-  constexpr int kMinPiece = 10;
-  const TriMesh& tri = part.mesh.tri;
+// Face-connected pieces of equally labelled faces (labels >= 0) with at
+// least `min_faces` faces, per label.
+inline std::map<int, int> PiecesPerLabel(const TriMesh& tri, std::span<const int> labels,
+                                         int min_faces) {
   std::vector<int> seen(tri.n_faces(), 0);
-  int count = 0;
+  std::map<int, int> count;
   for (std::size_t s = 0; s < tri.n_faces(); ++s) {
-    if (seen[s] || part.face_primitive[s] < 0) continue;
+    if (seen[s] || labels[s] < 0) continue;
     std::vector<int> stack = {int(s)};
     seen[s] = 1;
     int size = 0;
@@ -70,14 +73,21 @@ inline int PieceCount(const GeneratedPart& part) {
       ++size;
       for (auto it = tri.cff_iter(TriMesh::FaceHandle(f)); it.is_valid(); ++it) {
         const int g = it->idx();
-        if (seen[g] || part.face_primitive[g] != part.face_primitive[s]) continue;
+        if (seen[g] || labels[g] != labels[s]) continue;
         seen[g] = 1;
         stack.push_back(g);
       }
     }
-    if (size >= kMinPiece) ++count;
+    if (size >= min_faces) ++count[labels[s]];
   }
   return count;
+}
+
+// Pieces beyond one per label.
+inline int ExtraPieces(const std::map<int, int>& pieces) {
+  int extra = 0;
+  for (const auto& [label, n] : pieces) extra += n - 1;
+  return extra;
 }
 
 inline Evaluation Evaluate(const GeneratedPart& part, const Segmentation& seg) {
@@ -108,7 +118,11 @@ inline Evaluation Evaluate(const GeneratedPart& part, const Segmentation& seg) {
   }
   Evaluation e;
   e.region_count = nr;
-  e.true_count = PieceCount(part);
+  const std::map<int, int> true_pieces =
+      PiecesPerLabel(tri, part.face_primitive, /*min_faces=*/10);
+  for (const auto& [p, n] : true_pieces) e.true_count += n;
+  e.true_extra_pieces = ExtraPieces(true_pieces);
+  e.region_extra_pieces = ExtraPieces(PiecesPerLabel(tri, seg.face_labels, /*min_faces=*/1));
   double correct = 0.0;
   for (int p = 0; p < np; ++p) {
     if (faces[p] == 0) continue;
@@ -139,7 +153,8 @@ inline Evaluation Evaluate(const GeneratedPart& part, const Segmentation& seg) {
 
 inline std::ostream& operator<<(std::ostream& os, const Evaluation& e) {
   os << "area_fraction " << e.area_fraction << ", regions " << e.region_count << " / true "
-     << e.true_count << "\n";
+     << e.true_count << ", extra pieces " << e.region_extra_pieces << " / true "
+     << e.true_extra_pieces << "\n";
   for (const auto& s : e.primitives) {
     os << "  " << s.name << " (" << SurfaceTypeName(s.true_type) << ", " << s.faces
        << " faces): region " << s.region << ", covered " << s.covered << " by";

@@ -103,6 +103,9 @@ void ExpectTypesAndParameters(const PartRun& run, const Bounds& b, bool check_pa
 void ExpectLabelsAndCount(const PartRun& run) {
   EXPECT_GE(run.eval.area_fraction, kMinAreaFraction);
   EXPECT_LE(run.eval.region_count, kMaxRegionRatio * run.eval.true_count);
+  // B-rep-ready: a region is one piece of faces unless its primitive is
+  // (test_piece's top, cut in two by the groove); no fragments.
+  EXPECT_LE(run.eval.region_extra_pieces, run.eval.true_extra_pieces);
 }
 
 class SegmentPart : public ::testing::TestWithParam<std::tuple<std::string, double>> {};
