@@ -153,8 +153,7 @@ std::vector<FitResult> AllInvalid(std::span<const CoaxialMember> members) {
 
 std::vector<FitResult> FitCoaxial(std::span<const CoaxialMember> members,
                                   const Eigen::Vector3d& axis_origin,
-                                  const Eigen::Vector3d& axis_direction,
-                                  const FitParams& params) {
+                                  const Eigen::Vector3d& axis_direction, const FitParams& params) {
   const Eigen::Vector3d a = axis_direction.normalized();
   if (members.empty() || !axis_origin.allFinite() || !a.allFinite()) return AllInvalid(members);
   for (const CoaxialMember& m : members) {
@@ -169,9 +168,8 @@ std::vector<FitResult> FitCoaxial(std::span<const CoaxialMember> members,
     StartMember(members[j], axis_origin, a, &x0(6 + 2 * j), &x0(7 + 2 * j));
   }
   const CoaxialProblem problem(members);
-  const fit_internal::LmOutcome lm = params.refine
-                                         ? MinimizeLevenbergMarquardt(problem, x0, params)
-                                         : fit_internal::LmOutcome{.x = x0};
+  const fit_internal::LmOutcome lm = params.refine ? MinimizeLevenbergMarquardt(problem, x0, params)
+                                                   : fit_internal::LmOutcome{.x = x0};
   const Eigen::Vector3d o = lm.x.head<3>();
   const Eigen::Vector3d axis = lm.x.segment<3>(3).normalized();
   std::vector<FitResult> out;

@@ -11,13 +11,11 @@
 namespace meshseg::segment_internal {
 namespace {
 
-constexpr int kMaxFragmentRounds = 4;
-
 // The edge-connected pieces of equally labelled faces (labels >= 0).
 struct Pieces {
-  std::vector<int> of_face;        // piece id per face, -1 if unlabelled
-  std::vector<int> label;          // per piece
-  std::vector<std::size_t> size;   // faces per piece
+  std::vector<int> of_face;       // piece id per face, -1 if unlabelled
+  std::vector<int> label;         // per piece
+  std::vector<std::size_t> size;  // faces per piece
 };
 
 Pieces FindPieces(const TriMesh& mesh, const std::vector<int>& labels) {
@@ -47,10 +45,10 @@ Pieces FindPieces(const TriMesh& mesh, const std::vector<int>& labels) {
   return p;
 }
 
-// One round: the label each fragment piece takes (absent: not a fragment,
-// or no labelled neighbour).
-std::map<int, int> FragmentLabels(const TriMesh& mesh, const std::vector<int>& labels,
-                                  const Pieces& p) {
+// One round: the label each piece takes, -1 where it keeps its own (not a
+// fragment, or no labelled neighbour).
+std::vector<int> FragmentLabels(const TriMesh& mesh, const std::vector<int>& labels,
+                                const Pieces& p) {
   std::map<int, int> largest;  // label -> its largest piece
   for (int id = 0; id < static_cast<int>(p.label.size()); ++id) {
     auto [it, inserted] = largest.try_emplace(p.label[id], id);
@@ -70,12 +68,12 @@ std::map<int, int> FragmentLabels(const TriMesh& mesh, const std::vector<int>& l
       if (other >= 0 && other != labels[f]) ++counts[other];
     }
   }
-  std::map<int, int> out;
+  std::vector<int> out(p.label.size(), -1);
   for (const auto& [id, counts] : shared) {
     // The most shared edges; the map's order makes ties go to the lower label.
-    const auto best = std::max_element(counts.begin(), counts.end(), [](const auto& x, const auto& y) {
-      return x.second < y.second;
-    });
+    const auto best = std::max_element(
+        counts.begin(), counts.end(),
+        [](const auto& x, const auto& y) { return x.second < y.second; });
     if (best != counts.end()) out[id] = best->first;
   }
   return out;
@@ -86,12 +84,15 @@ std::map<int, int> FragmentLabels(const TriMesh& mesh, const std::vector<int>& l
 void MergeFaceFragments(const TriMesh& mesh, std::vector<int>* face_labels) {
   for (int round = 0; round < kMaxFragmentRounds; ++round) {
     const Pieces p = FindPieces(mesh, *face_labels);
-    const std::map<int, int> relabel = FragmentLabels(mesh, *face_labels, p);
-    if (relabel.empty()) return;
+    const std::vector<int> relabel = FragmentLabels(mesh, *face_labels, p);
+    bool changed = false;
     for (std::size_t f = 0; f < face_labels->size(); ++f) {
-      const auto it = relabel.find(p.of_face[f]);
-      if (it != relabel.end()) (*face_labels)[f] = it->second;
+      const int id = p.of_face[f];
+      if (id < 0 || relabel[id] < 0) continue;
+      (*face_labels)[f] = relabel[id];
+      changed = true;
     }
+    if (!changed) return;
   }
 }
 

@@ -21,12 +21,15 @@ std::vector<int> FaceLabels(const SegmentContext& c, const TriMesh& mesh,
 // Where two surfaces meet tangentially (a fillet and its face) both fit the
 // faces along the junction, and the noise labels them: at 0.05 h
 // plate_boss's boundaries came out as 199 curves in 114 loops, most around
-// pieces of 1-6 faces cut off their regions (20 curves, 22 loops without). Every edge-connected piece of a label that is not
+// pieces of 1-6 faces cut off their regions (20 curves and 22 loops, as at
+// noise 0, without them). Every edge-connected piece of a label that is not
 // the label's largest and has fewer than kMaxFragmentFaces faces takes the
-// label it shares the most edges with (ties: the lower label); repeated
-// while pieces change. Faces labelled -1 are left alone and never given.
+// label it shares the most edges with (ties: the lower label); repeated, at
+// most kMaxFragmentRounds times, while pieces change. Faces labelled -1 are
+// left alone and never given.
 void MergeFaceFragments(const TriMesh& mesh, std::vector<int>* face_labels);
 inline constexpr std::size_t kMaxFragmentFaces = 60;  // kMinRegionVertices, in faces
+inline constexpr int kMaxFragmentRounds = 4;
 
 }  // namespace meshseg::segment_internal
 

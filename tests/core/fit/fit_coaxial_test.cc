@@ -23,8 +23,7 @@ test::Samples BoreSamples(double sigma) {
 // Generators from distance 8 sqrt(2) (radius 8) to 10.5 sqrt(2): 3 rows of
 // 60, a narrow band.
 test::Samples CountersinkSamples(double sigma) {
-  return test::SampleCone(Countersink(), 2 * M_PI, 8.0 * M_SQRT2, 10.5 * M_SQRT2, 60, 3, sigma,
-                          5);
+  return test::SampleCone(Countersink(), 2 * M_PI, 8.0 * M_SQRT2, 10.5 * M_SQRT2, 60, 3, sigma, 5);
 }
 
 double AxisErrorDeg(const Surface& s) {
@@ -69,7 +68,7 @@ TEST(FitCoaxial, NarrowConeTakesTheBoresAxis) {
   ASSERT_TRUE(fits[0].ok() && fits[1].ok());
   const double alone_deg = AxisErrorDeg(alone.surface);
   const double joint_deg = AxisErrorDeg(fits[1].surface);
-  EXPECT_GT(alone_deg, 1.0);  // 2.16 with these samples
+  EXPECT_GT(alone_deg, 1.0);   // 2.16 with these samples
   EXPECT_LT(joint_deg, 0.05);  // 0.015
   EXPECT_NEAR(std::get<Cone>(fits[1].surface).half_angle, M_PI / 4, 1.0 * M_PI / 180);  // 0.75
   // The joint fit misses the band by little more than its own fit does.
@@ -111,8 +110,8 @@ TEST(FitCoaxial, OtherTypesAndTooFewPointsAreInvalid) {
 // only as a cone: one whose points lie on a cylinder has no apex.
 TEST(FitCoaxial, ConeMemberOnACylinderIsInvalid) {
   const test::Samples bore = BoreSamples(0.0);
-  const test::Samples more = test::SampleCylinder({kOrigin + 20 * Axis(), Axis(), 5.0}, 2 * M_PI,
-                                                  5.0, 40, 5, 0.0);
+  const test::Samples more =
+      test::SampleCylinder({kOrigin + 20 * Axis(), Axis(), 5.0}, 2 * M_PI, 5.0, 40, 5, 0.0);
   const std::vector<CoaxialMember> members = {{SurfaceType::kCylinder, bore.PointsOnly()},
                                               {SurfaceType::kCone, more.PointsOnly()}};
   const std::vector<FitResult> fits = FitCoaxial(members, kOrigin, Axis());

@@ -44,9 +44,8 @@ TEST(MergeFaceFragmentsTest, PieceCutOffItsRegionJoinsTheRegionAroundIt) {
   const int n = 20;
   const TriMesh mesh = Grid(n);
   // Left half 0, right half 1, and one square of 0 inside the right half.
-  std::vector<int> labels = SquareLabels(n, [](int i, int j) {
-    return i < 10 || (i == 15 && j == 8) ? 0 : 1;
-  });
+  std::vector<int> labels =
+      SquareLabels(n, [](int i, int j) { return i < 10 || (i == 15 && j == 8) ? 0 : 1; });
   MergeFaceFragments(mesh, &labels);
   EXPECT_EQ(LabelOfSquare(labels, n, 15, 8), 1);
   EXPECT_EQ(LabelOfSquare(labels, n, 9, 8), 0);
