@@ -2,9 +2,10 @@
 // plane through the origin fitted to the normals on the Gauss sphere (the
 // smallest eigenvector of Σ w n nᵀ), an algebraic circle fit of the points
 // projected along it gives the axis point and radius, and Levenberg–Marquardt
-// refines the geometric distance (on a narrow arc the second eigenvector is
-// tried as the axis too). Without normals each principal axis of the
-// points is tried as the initial axis and the best refined fit is kept.
+// refines the geometric distance (on a narrow arc the second eigenvector and
+// the points' longest direction are tried as the axis too). Without normals
+// each principal axis of the points is tried as the initial axis and the
+// best refined fit is kept.
 #include <cmath>
 #include <vector>
 
@@ -44,8 +45,14 @@ FitResult FitCylinder(const FitInput& input, const FitParams& params) {
     // On a narrow arc the normals fan out little across it, and noisy or
     // smoothed normals can make the fan's own direction look flatter than
     // the axis (a 30-degree band of a radius-4 round at 0.15 h converged to
-    // r 2077 across the true axis); the fan direction is tried as well.
-    if (e.values(1) < kNarrowFanRatio * e.values(2)) axes.push_back(e.vectors.col(1));
+    // r 2077 across the true axis); the fan direction is tried as well, and
+    // the points' longest direction, for normals scattered aslant, where
+    // both of the Gauss sphere's are well off the axis (22 and 68 degrees on
+    // a band of rounded_prism at 0.15 h, which fitted r 469).
+    if (e.values(1) < kNarrowFanRatio * e.values(2)) {
+      axes.push_back(e.vectors.col(1));
+      axes.push_back(pca.vectors.col(2));
+    }
   } else {
     if (!(pca.values(0) > kCollinearRatio * pca.values(2))) return InvalidResult(Cylinder{});
     for (int k = 0; k < 3; ++k) axes.push_back(pca.vectors.col(k));
