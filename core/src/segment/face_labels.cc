@@ -46,7 +46,7 @@ Pieces FindPieces(const TriMesh& mesh, const std::vector<int>& labels) {
 }
 
 // One round: the label each piece takes, -1 where it keeps its own (not a
-// fragment, or no labelled neighbour).
+// fragment, or no neighbour that is not one).
 std::vector<int> FragmentLabels(const TriMesh& mesh, const std::vector<int>& labels,
                                 const Pieces& p) {
   std::map<int, int> largest;  // label -> its largest piece
@@ -64,8 +64,10 @@ std::vector<int> FragmentLabels(const TriMesh& mesh, const std::vector<int>& lab
     if (id < 0 || !fragment[id]) continue;
     std::map<int, int>& counts = shared[id];
     for (auto it = mesh.cff_iter(TriMesh::FaceHandle(static_cast<int>(f))); it.is_valid(); ++it) {
-      const int other = labels[it->idx()];
-      if (other >= 0 && other != labels[f]) ++counts[other];
+      // Only pieces that stay count: two fragments side by side would
+      // otherwise swap labels and stay fragments.
+      const int other = p.of_face[it->idx()];
+      if (other >= 0 && !fragment[other]) ++counts[p.label[other]];
     }
   }
   std::vector<int> out(p.label.size(), -1);

@@ -24,12 +24,13 @@ std::vector<int> FaceLabels(const SegmentContext& c, const TriMesh& mesh,
 // pieces of 1-6 faces cut off their regions (20 curves and 22 loops, as at
 // noise 0, without them). Every edge-connected piece of a label that is not
 // the label's largest and has fewer than kMaxFragmentFaces faces takes the
-// label it shares the most edges with (ties: the lower label); repeated, at
-// most kMaxFragmentRounds times, while pieces change. Faces labelled -1 are
-// left alone and never given.
+// label it shares the most edges with, counting only pieces that are not
+// fragments themselves (ties: the lower label); repeated, at most
+// kMaxFragmentRounds times, while pieces change. Faces labelled -1 are left
+// alone and never given.
 void MergeFaceFragments(const TriMesh& mesh, std::vector<int>* face_labels);
 inline constexpr std::size_t kMaxFragmentFaces = 60;  // kMinRegionVertices, in faces
-inline constexpr int kMaxFragmentRounds = 4;
+inline constexpr int kMaxFragmentRounds = 8;
 
 }  // namespace meshseg::segment_internal
 

@@ -1,5 +1,6 @@
 #include "segment/face_labels.h"
 
+#include <random>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -73,6 +74,71 @@ TEST(MergeFaceFragmentsTest, PieceOnAJunctionTakesTheLabelItSharesMostEdgesWith)
   });
   MergeFaceFragments(mesh, &labels);
   EXPECT_EQ(LabelOfSquare(labels, n, 12, 10), 2);
+}
+
+// Pieces of each label: the largest and those of kMaxFragmentFaces or more
+// are not fragments; returns the number of the others.
+int Fragments(const TriMesh& mesh, const std::vector<int>& labels) {
+  std::vector<int> piece(labels.size(), -1);
+  std::vector<std::size_t> size;
+  std::vector<int> label;
+  for (std::size_t s = 0; s < labels.size(); ++s) {
+    if (labels[s] < 0 || piece[s] >= 0) continue;
+    const int id = static_cast<int>(size.size());
+    size.push_back(0);
+    label.push_back(labels[s]);
+    std::vector<int> stack = {static_cast<int>(s)};
+    piece[s] = id;
+    while (!stack.empty()) {
+      const int f = stack.back();
+      stack.pop_back();
+      ++size[id];
+      for (auto it = mesh.cff_iter(TriMesh::FaceHandle(f)); it.is_valid(); ++it) {
+        if (piece[it->idx()] < 0 && labels[it->idx()] == labels[s]) {
+          piece[it->idx()] = id;
+          stack.push_back(it->idx());
+        }
+      }
+    }
+  }
+  int fragments = 0;
+  for (std::size_t id = 0; id < size.size(); ++id) {
+    bool largest = true;
+    for (std::size_t other = 0; other < size.size(); ++other) {
+      if (label[other] == label[id] && size[other] > size[id]) largest = false;
+    }
+    fragments += !largest && size[id] < kMaxFragmentFaces;
+  }
+  return fragments;
+}
+
+// A noisy junction: within 3 columns of the line between regions 0 and 1,
+// two fifths of the faces take a random one of 0, 1 and 2 (region 2 has its
+// own block elsewhere). Fragments of different labels lie side by side.
+TEST(MergeFaceFragmentsTest, NoisyJunctionEndsWithoutFragments) {
+  const int n = 40;
+  const TriMesh mesh = Grid(n);
+  std::vector<int> labels = SquareLabels(n, [](int i, int j) {
+    if (i >= 30 && j >= 30) return 2;
+    return i < 20 ? 0 : 1;
+  });
+  std::mt19937 random(9);
+  std::uniform_real_distribution<double> share(0.0, 1.0);
+  std::uniform_int_distribution<int> pick(0, 2);
+  for (int j = 0; j < n; ++j) {
+    for (int i = 17; i < 23; ++i) {
+      for (int k = 0; k < 2; ++k) {
+        if (share(random) < 0.4) labels[2 * (j * n + i) + k] = pick(random);
+      }
+    }
+  }
+  ASSERT_GT(Fragments(mesh, labels), 20);
+  MergeFaceFragments(mesh, &labels);
+  EXPECT_EQ(Fragments(mesh, labels), 0);
+  // The block of 2 and the two halves away from the junction are untouched.
+  EXPECT_EQ(LabelOfSquare(labels, n, 35, 35), 2);
+  EXPECT_EQ(LabelOfSquare(labels, n, 5, 5), 0);
+  EXPECT_EQ(LabelOfSquare(labels, n, 28, 5), 1);
 }
 
 TEST(MergeFaceFragmentsTest, LargePiecesAndWholeSmallRegionsStay) {
