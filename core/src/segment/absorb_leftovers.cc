@@ -113,8 +113,6 @@ int ReleaseSmallRegions(const SegmentContext& c, std::vector<int>* labels,
 
 absl::Status AbsorbLeftovers(const SegmentContext& c, std::vector<int>* labels,
                              std::vector<RegionState>* regions) {
-  std::vector<std::size_t> size_before(regions->size());
-  for (std::size_t r = 0; r < regions->size(); ++r) size_before[r] = (*regions)[r].vertices.size();
   for (int step = 0; step < kSteps; ++step) {
     MESHSEG_RETURN_IF_ERROR(c.run->CheckStop("segment"));
     const double scale = 2.0 + step;
@@ -128,11 +126,6 @@ absl::Status AbsorbLeftovers(const SegmentContext& c, std::vector<int>* labels,
   }
   TypeIslands(c, labels, regions);
   RebuildVertexLists(*labels, regions);
-  std::vector<uint8_t> grew(regions->size(), 0);
-  for (std::size_t r = 0; r < size_before.size(); ++r) {
-    grew[r] = (*regions)[r].vertices.size() > size_before[r];
-  }
-  RefitRegions(c, grew, regions);
   return absl::OkStatus();
 }
 

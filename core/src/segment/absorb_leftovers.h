@@ -33,11 +33,8 @@ inline constexpr double kMinRegionShare = 0.001;  // of all vertices
 int ReleaseSmallRegions(const SegmentContext& c, std::vector<int>* labels,
                         std::vector<RegionState>* regions);
 
-// Labels every vertex that has a face (labels[v] >= 0 afterwards), updates
-// the regions' vertex lists and refits the regions that grew (a round
-// merged from pieces kept a nearly flat cylinder fitted to part of it, r 469
-// for 4, through every later step: rounded_prism at 0.15 h, seed 77).
-// Errors: CANCELLED on stop.
+// Labels every vertex that has a face (labels[v] >= 0 afterwards) and
+// updates the regions' vertex lists. Errors: CANCELLED on stop.
 absl::Status AbsorbLeftovers(const SegmentContext& c, std::vector<int>* labels,
                              std::vector<RegionState>* regions);
 
