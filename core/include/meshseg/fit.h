@@ -113,8 +113,8 @@ FitResult FitOfType(SurfaceType type, const FitInput& input, const FitParams& pa
 // about it (a cylinder: r = mean rho). Weights apply; normals are not used.
 // Returns one result per member, in order (cylinder axis_origin: the axis
 // point nearest the member's centroid); every result is invalid if a member
-// is of another type or has too few points (cylinder 3, cone 4), or a cone
-// comes out with a half angle of ~0.
+// is of another type or has too few points (cylinder 5, cone 6, as alone),
+// or a cone comes out with a half angle of ~0.
 struct CoaxialMember {
   SurfaceType type = SurfaceType::kCylinder;
   FitInput input;
