@@ -36,13 +36,11 @@ std::optional<Member> MakeMember(const SegmentContext& c, const RegionState& r) 
   }
   const std::optional<AxisLine> axis = AxisOf(r.surface);
   if (!axis) return std::nullopt;
-  std::vector<int> inliers;
-  for (const int v : r.vertices) {
-    if (Fits(c, v, ProjectVertex(c, r.surface, v), c.tolerance)) inliers.push_back(v);
-  }
   Member m;
   m.type = r.type;
-  for (const int v : Sample(inliers)) m.points.push_back(c.position(v));
+  for (const int v : Sample(FittingVertices(c, r.surface, r.vertices))) {
+    m.points.push_back(c.position(v));
+  }
   if (m.points.size() < 6) return std::nullopt;
   for (const Eigen::Vector3d& p : m.points) {
     const Eigen::Vector3d d = p - axis->point;

@@ -90,10 +90,7 @@ FitResult InlierFit(const SegmentContext& c, const RegionState& r) {
   FitResult fit = FitType(c, r.type, r.vertices);
   std::vector<int> inliers;
   for (int round = 0; round < kInlierRounds && fit.ok(); ++round) {
-    inliers.clear();
-    for (const int v : r.vertices) {
-      if (Fits(c, v, ProjectVertex(c, fit.surface, v), c.tolerance)) inliers.push_back(v);
-    }
+    inliers = FittingVertices(c, fit.surface, r.vertices);
     if (inliers.size() == r.vertices.size() ||
         inliers.size() < kMinInlierShare * static_cast<double>(r.vertices.size())) {
       break;

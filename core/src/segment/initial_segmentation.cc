@@ -133,10 +133,7 @@ void GrowAndType(const SegmentContext& c, int id, std::vector<int>* labels,
       typed.type = type;
       typed.fit = FitType(c, type, start == 0 ? seed : quadric_vertices);
       for (int k = 0; start == 1 && typed.fit.ok() && k < kTrimRounds; ++k) {
-        from.clear();
-        for (const int v : quadric_vertices) {
-          if (Fits(c, v, ProjectVertex(c, typed.fit.surface, v), c.tolerance)) from.push_back(v);
-        }
+        from = FittingVertices(c, typed.fit.surface, quadric_vertices);
         if (from.size() < seed.size()) break;
         typed.fit = FitType(c, type, from);
       }

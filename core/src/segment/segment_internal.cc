@@ -94,6 +94,15 @@ double FitFraction(const SegmentContext& c, const Surface& surface, std::span<co
   return static_cast<double>(fit) / sample.size();
 }
 
+std::vector<int> FittingVertices(const SegmentContext& c, const Surface& surface,
+                                 std::span<const int> vertices) {
+  std::vector<int> out;
+  for (const int v : vertices) {
+    if (Fits(c, v, ProjectVertex(c, surface, v), c.tolerance)) out.push_back(v);
+  }
+  return out;
+}
+
 double SquaredDistances(const SegmentContext& c, const Surface& surface,
                         std::span<const int> vertices) {
   double sum = 0.0;

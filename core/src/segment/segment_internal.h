@@ -93,6 +93,11 @@ FitResult FitType(const SegmentContext& c, SurfaceType type, std::span<const int
 double FitFraction(const SegmentContext& c, const Surface& surface, std::span<const int> vertices,
                    const Tolerance& tol);
 
+// The `vertices` (all of them, in order) that meet (5) and (6) for
+// `surface` with the base tolerances.
+std::vector<int> FittingVertices(const SegmentContext& c, const Surface& surface,
+                                 std::span<const int> vertices);
+
 // Sum of the squared distances of `vertices` (all of them) to `surface`.
 double SquaredDistances(const SegmentContext& c, const Surface& surface,
                         std::span<const int> vertices);
