@@ -1,8 +1,12 @@
-// RetypeInaccurateCurved on sheets cut from a cone and from a sphere.
+// RetypeInaccurateCurved on sheets cut from a cone and from a sphere;
+// MergeRegions on a half cylinder in two regions.
 #include "segment/merge_regions.h"
 
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
+
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <variant>
@@ -90,6 +94,70 @@ TEST(RetypeInaccurateCurvedTest, TorusWithNoValidFitLeftBecomesAPlane) {
   ASSERT_EQ(regions[0].type, SurfaceType::kPlane);
   EXPECT_GT(std::abs(std::get<Plane>(regions[0].surface).normal.z()),
             std::cos(1.0 * std::numbers::pi / 180.0));
+}
+
+// Half a turn of a cylinder around the x axis, x from 0 to 10, whose
+// radius is 7 up to x = 5 and 7 + `step` beyond; every 7th vertex has its
+// n_i and n'_i turned 20 degrees about the axis (th_nm is 5), as the crease
+// rows and the noise in n'_i leave about one vertex in seven at 0.15 h.
+// Labels: 0 up to x = 5, 1 beyond.
+struct SplitHalfCylinder {
+  Sheet s;
+  std::vector<int> labels;
+};
+
+SplitHalfCylinder BuildSplitHalfCylinder(double step) {
+  SplitHalfCylinder out;
+  BuildSheet(
+      [step](double x, double phi) {
+        const Eigen::Vector3d n(0.0, std::cos(phi), std::sin(phi));
+        const double radius = x <= 5.0 ? 7.0 : 7.0 + step;
+        return std::pair{Eigen::Vector3d(x, 0.0, 0.0) + radius * n, n};
+      },
+      0.0, 10.0, 41, 0.0, std::numbers::pi, 41, /*distance=*/0.15, /*angle_deg=*/5.0, &out.s);
+  const Eigen::AngleAxisd turn(20.0 * std::numbers::pi / 180.0, Eigen::Vector3d::UnitX());
+  for (std::size_t v = 0; v < out.s.u.size(); v += 7) {
+    out.s.field.normal[v] = turn * out.s.field.normal[v];
+    out.s.field.smooth_normal[v] = turn * out.s.field.smooth_normal[v];
+  }
+  out.labels.resize(out.s.u.size());
+  for (std::size_t v = 0; v < out.labels.size(); ++v) out.labels[v] = out.s.u[v] <= 5.0 ? 0 : 1;
+  return out;
+}
+
+TEST(MergeRegionsTest, PiecesOfOneCylinderMergeThoughTheirOwnFitsMissBeta2) {
+  // Seed 000's beta2 asks one surface to fit 90 % of both regions; here
+  // each region's own cylinder fits only about 6 in 7 of its vertices, and
+  // the union's fits each as well.
+  SplitHalfCylinder h = BuildSplitHalfCylinder(/*step=*/0.0);
+  std::vector<RegionState> regions =
+      RegionsFromLabels(h.s.c, h.labels, {SurfaceType::kCylinder, SurfaceType::kCylinder});
+  for (const RegionState& r : regions) {
+    ASSERT_LT(FitFraction(h.s.c, r.surface, r.vertices, h.s.c.tolerance), kBeta2);
+  }
+  ASSERT_TRUE(MergeRegions(h.s.c, &h.labels, &regions).ok());
+  EXPECT_EQ(std::count_if(regions.begin(), regions.end(),
+                          [](const RegionState& r) { return r.alive; }),
+            1);
+  for (const RegionState& r : regions) {
+    if (!r.alive) continue;
+    EXPECT_EQ(r.vertices.size(), h.labels.size());
+    ASSERT_EQ(r.type, SurfaceType::kCylinder);
+    EXPECT_NEAR(std::get<Cylinder>(r.surface).radius, 7.0, 1e-6);
+  }
+}
+
+TEST(MergeRegionsTest, CylindersOfDifferentRadiiStayApart) {
+  // The same sheet with the second half 0.5 wider (over th_dis): one
+  // cylinder misses half of each region, its own fits 6 in 7.
+  SplitHalfCylinder h = BuildSplitHalfCylinder(/*step=*/0.5);
+  std::vector<RegionState> regions =
+      RegionsFromLabels(h.s.c, h.labels, {SurfaceType::kCylinder, SurfaceType::kCylinder});
+  const std::vector<int> before = h.labels;
+  ASSERT_TRUE(MergeRegions(h.s.c, &h.labels, &regions).ok());
+  EXPECT_TRUE(regions[0].alive);
+  EXPECT_TRUE(regions[1].alive);
+  EXPECT_EQ(h.labels, before);
 }
 
 }  // namespace
