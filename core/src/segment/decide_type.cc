@@ -134,6 +134,13 @@ int ParameterCount(SurfaceType type) {
   return 0;
 }
 
+bool IsLimitOf(SurfaceType special, SurfaceType general) {
+  if (general == SurfaceType::kTorus) {
+    return special == SurfaceType::kCone || special == SurfaceType::kCylinder;
+  }
+  return general == SurfaceType::kCone && special == SurfaceType::kCylinder;
+}
+
 double InformationScore(const SegmentContext& c, double mean_square, std::size_t count,
                         int parameters) {
   const double m = static_cast<double>(std::min(count, kMaxSample));

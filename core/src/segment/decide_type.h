@@ -51,6 +51,13 @@ bool FitsAtNoise(const SegmentContext& c, const FitResult& fit);
 // freeform.
 int ParameterCount(SurfaceType type);
 
+// True if `special` is a limit of `general` with fewer parameters, in the
+// family of surfaces around an axis: a cylinder is a cone of half-angle 0,
+// and both are tori of infinite minor radius. (A sphere is a torus of major
+// radius 0, but a narrow band of cone fits a sphere about as well as a
+// torus does: that is no sign of a sphere.)
+bool IsLimitOf(SurfaceType special, SurfaceType general);
+
 // The Bayesian information criterion, for normal residuals of unknown
 // variance, of a model with `parameters` free parameters whose `count`
 // residuals have mean square `mean_square`: m ln(mean_square) +

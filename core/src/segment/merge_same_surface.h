@@ -29,7 +29,8 @@ namespace meshseg::segment_internal {
 // less, or if one type scores kScoreMargin less and meets the union at
 // least as closely as the closer part's own fit meets that part, or, within
 // kScoredNearError sigmas, as the farther part's does (model errors),
-// taking that type, largest gain first. The second clause joins
+// taking that type (or its simplest limit, IsLimitOf, if that gains within
+// kScoreMargin as much), largest gain first. The second clause joins
 // two plane strips along a round (rounded_prism at 0.15 h, seed 16: the
 // cylinder's model error on the union 0.28 sigma, the planes' 0.34 and
 // 0.47). Both parts need kMinInteriorVertices. Does nothing at noise 0

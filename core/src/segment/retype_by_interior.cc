@@ -19,18 +19,6 @@ namespace {
 constexpr double kCloserError = 0.5;
 constexpr double kNearNoiseError = 1.0;
 
-// True if `special` is a limit of `general` with fewer parameters, in the
-// family of surfaces around an axis: a cylinder is a cone of half-angle 0,
-// and both are tori of infinite minor radius. (A sphere is a torus of major
-// radius 0, but a narrow band of cone fits a sphere about as well as a
-// torus does: that is no sign of a sphere.)
-bool IsLimitOf(SurfaceType special, SurfaceType general) {
-  if (general == SurfaceType::kTorus) {
-    return special == SurfaceType::kCone || special == SurfaceType::kCylinder;
-  }
-  return general == SurfaceType::kCone && special == SurfaceType::kCylinder;
-}
-
 // Of `scored`, the limit of `general` (IsLimitOf) with the fewest parameters
 // whose model error is at most `max_error` and score at most `max_score`.
 const ScoredFit* SimplestLimit(const SegmentContext& c, std::span<const ScoredFit> scored,

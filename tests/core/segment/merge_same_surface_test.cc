@@ -287,6 +287,41 @@ TEST(MergeSameSurfaceTest, PlaneStripOfARoundAtTheNoiseJoinsIt) {
   EXPECT_EQ(regions[kept].vertices.size(), s.u.size());
 }
 
+TEST(MergeSameSurfaceTest, UnionTakesTheCylinderWhenTheConeGainsLessThanTheMargin) {
+  // A 60-degree round of radius 4 (axis z, 24 rows 0.25 apart, 49
+  // columns) with noise of sigma along its normals, widening by 3 sigma over
+  // its length (a cone of half angle 0.3 degrees), in two halves typed
+  // cylinder and cone. The cone, one parameter more, scores under the
+  // cylinder on the union by less than kScoreMargin: the union is a
+  // cylinder, as RetypeByInterior would decide (test_piece's groove at
+  // 0.15 h, seed 197, became a cone of half angle 0.15 degrees).
+  Sheet s;
+  std::mt19937 random(9);
+  std::normal_distribution<double> noise(0.0, kSigma);
+  BuildSheet(
+      [&](double z, double phi) {
+        const Eigen::Vector3d radial(std::cos(phi), std::sin(phi), 0.0);
+        const double r = 4.0 + 3.0 * kSigma * z / 5.75 + noise(random);
+        return std::pair{Eigen::Vector3d(r * radial + z * Eigen::Vector3d::UnitZ()), radial};
+      },
+      0.0, 5.75, 24, 0.0, kPi / 3.0, 49, /*distance=*/5.0 * kSigma, /*angle_deg=*/10.0, &s);
+  s.c.noise_sigma = kSigma;
+  std::vector<int> labels(s.u.size());
+  for (std::size_t v = 0; v < labels.size(); ++v) labels[v] = s.v[v] < kPi / 6.0 ? 0 : 1;
+  std::vector<RegionState> regions =
+      RegionsFromLabels(s.c, labels, {SurfaceType::kCylinder, SurfaceType::kCone});
+  const ScoredFit cylinder = ScoreType(s.c, SurfaceType::kCylinder, AllVertices(s));
+  const ScoredFit cone = ScoreType(s.c, SurfaceType::kCone, AllVertices(s));
+  ASSERT_LT(cone.score, cylinder.score);
+  ASSERT_LT(cylinder.score, cone.score + kScoreMargin);
+
+  EXPECT_EQ(MergeSameSurface(s.c, &labels, &regions).value(), 1);
+  const int kept = regions[0].alive ? 0 : 1;
+  EXPECT_EQ(regions[kept].vertices.size(), s.u.size());
+  ASSERT_EQ(regions[kept].type, SurfaceType::kCylinder);
+  EXPECT_NEAR(std::get<Cylinder>(regions[kept].surface).radius, 4.0 + 1.5 * kSigma, kSigma);
+}
+
 // NoisyRoundWithStrip with `strip_columns` and a ripple of 0.6 sigma, the
 // round's curvatures, regions typed cylinder (0) and plane (1), and the
 // model errors, in sigmas, of the cylinder on all of it (`round`) and of a
