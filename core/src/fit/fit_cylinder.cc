@@ -35,11 +35,7 @@ FitResult FitCylinder(const FitInput& input, const FitParams& params) {
 
   std::vector<Eigen::Vector3d> axes;
   if (HasNormals(input)) {
-    Eigen::Matrix3d gauss = Eigen::Matrix3d::Zero();
-    for (std::size_t i = 0; i < input.normals.size(); ++i) {
-      gauss.noalias() += WeightAt(input, i) * input.normals[i] * input.normals[i].transpose();
-    }
-    const Eigen3 e = SymmetricEigen(gauss);
+    const Eigen3 e = SymmetricEigen(NormalMoment(input));
     if (!(e.values(1) > kParallelNormalsRatio * e.values(2))) return InvalidResult(Cylinder{});
     axes.push_back(e.vectors.col(0));
     // On a narrow arc the normals fan out little across it, and noisy or

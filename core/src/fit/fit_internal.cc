@@ -24,6 +24,14 @@ Moments PointMoments(const FitInput& input) {
   return m;
 }
 
+Eigen::Matrix3d NormalMoment(const FitInput& input) {
+  Eigen::Matrix3d gauss = Eigen::Matrix3d::Zero();
+  for (std::size_t i = 0; i < input.normals.size(); ++i) {
+    gauss.noalias() += WeightAt(input, i) * input.normals[i] * input.normals[i].transpose();
+  }
+  return gauss;
+}
+
 Eigen3 SymmetricEigen(const Eigen::Matrix3d& m) {
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(m);
   Eigen3 e;

@@ -29,6 +29,11 @@ struct Moments {
 };
 Moments PointMoments(const FitInput& input);
 
+// Σ w n n^T over the normals (the Gauss sphere's moment, not centred): its
+// smallest eigenvector is the axis a cylinder's normals are perpendicular
+// to (seed 002).
+Eigen::Matrix3d NormalMoment(const FitInput& input);
+
 // Eigenvalues (ascending) and eigenvectors of a symmetric 3x3 matrix.
 struct Eigen3 {
   Eigen::Vector3d values = Eigen::Vector3d::Zero();
