@@ -30,8 +30,8 @@ std::vector<RegionArc> BuildRegionGraph(const SegmentContext& c, const std::vect
 
 // A merge of an arc's two regions that a merge step accepts: its score
 // (the highest is merged first) and the merged region's type and surface
-// (unset: fitted to the merged vertices, keeping the larger region's
-// surface if that fit is invalid).
+// (unset: fitted to the merged vertices; if that fit is invalid, the
+// merged region keeps the larger region's type and surface).
 struct PairMerge {
   double score = 0.0;
   SurfaceType type = SurfaceType::kQuadric;

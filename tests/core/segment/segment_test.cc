@@ -106,6 +106,11 @@ void ExpectLabelsAndCount(const PartRun& run) {
   // B-rep-ready: a region is one piece of faces unless its primitive is
   // (test_piece's top, cut in two by the groove); no fragments.
   EXPECT_LE(run.eval.region_extra_pieces, run.eval.true_extra_pieces);
+  // Every region's surface is of its type (a merge once kept a cone's
+  // surface under the type torus).
+  for (const Region& r : run.seg.regions) {
+    EXPECT_EQ(TypeOf(r.surface), r.type) << "region " << r.id << " is " << SurfaceTypeName(r.type);
+  }
 }
 
 class SegmentPart : public ::testing::TestWithParam<std::tuple<std::string, double>> {};
