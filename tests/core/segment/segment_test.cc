@@ -216,7 +216,10 @@ TEST_P(SegmentPartHighNoise, KeepsTypesAtHighNoise) {
 // stop 20, a rounded_prism round fitted flat (r 469) from a narrow band
 // whose normals scatter aslant and left to its faces (seed 77); at stop 21,
 // test_piece's groove grown from two seeds and left as two cylinders, whose
-// own fits met beta2 no more than any union could (seed 107).
+// own fits met beta2 no more than any union could (seed 107), the groove
+// merged with a strip of it as a cone the cone fit took to 87 degrees
+// (seed 197), and its countersink typed torus with a cone's surface after
+// a merge whose torus fit failed (seed 74).
 class SegmentPartHighNoiseOtherSeed
     : public ::testing::TestWithParam<std::tuple<std::string, double, uint64_t>> {};
 
@@ -259,7 +262,9 @@ INSTANTIATE_TEST_SUITE_P(Draws, SegmentPartHighNoiseOtherSeed,
                                            std::tuple{std::string("test_piece"), 1.0, uint64_t{124}},
                                            std::tuple{std::string("test_piece"), 1.0, uint64_t{145}},
                                            std::tuple{std::string("rounded_prism"), 0.0, uint64_t{77}},
-                                           std::tuple{std::string("test_piece"), 1.0, uint64_t{107}}),
+                                           std::tuple{std::string("test_piece"), 1.0, uint64_t{107}},
+                                           std::tuple{std::string("test_piece"), 1.0, uint64_t{197}},
+                                           std::tuple{std::string("test_piece"), 1.0, uint64_t{74}}),
                          [](const auto& info) {
                            return std::get<0>(info.param) + "_seed_" +
                                   std::to_string(std::get<2>(info.param));
