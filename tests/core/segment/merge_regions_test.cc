@@ -112,7 +112,7 @@ SplitHalfCylinder BuildSplitHalfCylinder(double step) {
       [step](double x, double phi) {
         const Eigen::Vector3d n(0.0, std::cos(phi), std::sin(phi));
         const double radius = x <= 5.0 ? 7.0 : 7.0 + step;
-        return std::pair{Eigen::Vector3d(x, 0.0, 0.0) + radius * n, n};
+        return std::pair{Eigen::Vector3d(Eigen::Vector3d(x, 0.0, 0.0) + radius * n), n};
       },
       0.0, 10.0, 41, 0.0, std::numbers::pi, 41, /*distance=*/0.15, /*angle_deg=*/5.0, &out.s);
   const Eigen::AngleAxisd turn(20.0 * std::numbers::pi / 180.0, Eigen::Vector3d::UnitX());
