@@ -101,8 +101,8 @@ constexpr double kStaleTypeFraction = 0.75;
 constexpr double kMinUnionFraction = 0.5;
 
 struct PairFit {
-  double fraction = 0.0;  // the smaller of the two regions' fitting fractions
-  double fraction_x = 0.0, fraction_y = 0.0;
+  double fraction_x = 0.0, fraction_y = 0.0;  // of each region's vertices meeting (5), (6)
+  double fraction() const { return std::min(fraction_x, fraction_y); }
   SurfaceType type = SurfaceType::kQuadric;
   Surface surface;
 };
@@ -139,12 +139,8 @@ PairFit FitUnion(const SegmentContext& c, const RegionState& x, const RegionStat
     if (!fit.ok()) continue;
     const double fx = FitFraction(c, fit.surface, x.vertices, c.tolerance);
     const double fy = FitFraction(c, fit.surface, y.vertices, c.tolerance);
-    if (std::min(fx, fy) > best.fraction + kFractionTie) {
-      best = PairFit{.fraction = std::min(fx, fy),
-                     .fraction_x = fx,
-                     .fraction_y = fy,
-                     .type = type,
-                     .surface = fit.surface};
+    if (std::min(fx, fy) > best.fraction() + kFractionTie) {
+      best = PairFit{.fraction_x = fx, .fraction_y = fy, .type = type, .surface = fit.surface};
     }
   }
   return best;
@@ -180,11 +176,11 @@ absl::Status MergeByRefitting(const SegmentContext& c, std::vector<int>* labels,
                const RegionState& x = (*regions)[a];
                const RegionState& y = (*regions)[b];
                const PairFit fit = FitUnion(c, x, y);
-               if (fit.fraction < kBeta2 && !(FitsAsWellAsOwn(c, x, fit, fit.fraction_x) &&
+               if (fit.fraction() < kBeta2 && !(FitsAsWellAsOwn(c, x, fit, fit.fraction_x) &&
                                               FitsAsWellAsOwn(c, y, fit, fit.fraction_y))) {
                  return std::nullopt;
                }
-               return PairMerge{.score = fit.fraction, .type = fit.type, .surface = fit.surface};
+               return PairMerge{.score = fit.fraction(), .type = fit.type, .surface = fit.surface};
              })
       .status();
 }
