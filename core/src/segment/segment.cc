@@ -21,6 +21,7 @@
 #include "segment/refine_boundaries.h"
 #include "segment/retype_by_interior.h"
 #include "segment/segment_internal.h"
+#include "segment/snap_fillets.h"
 #include "segment/split_off_planes.h"
 
 namespace meshseg {
@@ -112,6 +113,10 @@ absl::StatusOr<Segmentation> Segment(const Mesh& mesh, const CurvatureField& cur
     MESHSEG_RETURN_IF_ERROR(RefineBoundaries(c, &labels, &regions));
   }
   if (DissolveCreaseBands(c, &labels, &regions) > 0) {
+    MESHSEG_RETURN_IF_ERROR(RefineBoundaries(c, &labels, &regions));
+  }
+  // A round bent into the faces it joins takes the fillet between them.
+  if (!SnapFillets(c, &labels, &regions).empty()) {
     MESHSEG_RETURN_IF_ERROR(RefineBoundaries(c, &labels, &regions));
   }
   // Rows of a neighbour's face a curved region bent over go back to it.

@@ -219,7 +219,10 @@ TEST_P(SegmentPartHighNoise, KeepsTypesAtHighNoise) {
 // own fits met beta2 no more than any union could (seed 107), the groove
 // merged with a strip of it as a cone the cone fit took to 87 degrees
 // (seed 197), and its countersink typed torus with a cone's surface after
-// a merge whose torus fit failed (seed 74).
+// a merge whose torus fit failed (seed 74); at stop 22, plate_boss's edge
+// round grown over the boss top into a torus bent through the top and the
+// side, cut to a band typed cone (seed 51) or left bent over all the top
+// with no plane region there (seed 120).
 class SegmentPartHighNoiseOtherSeed
     : public ::testing::TestWithParam<std::tuple<std::string, double, uint64_t>> {};
 
@@ -264,7 +267,9 @@ INSTANTIATE_TEST_SUITE_P(Draws, SegmentPartHighNoiseOtherSeed,
                                            std::tuple{std::string("rounded_prism"), 0.0, uint64_t{77}},
                                            std::tuple{std::string("test_piece"), 1.0, uint64_t{107}},
                                            std::tuple{std::string("test_piece"), 1.0, uint64_t{197}},
-                                           std::tuple{std::string("test_piece"), 1.0, uint64_t{74}}),
+                                           std::tuple{std::string("test_piece"), 1.0, uint64_t{74}},
+                                           std::tuple{std::string("plate_boss"), 0.0, uint64_t{51}},
+                                           std::tuple{std::string("plate_boss"), 0.0, uint64_t{120}}),
                          [](const auto& info) {
                            return std::get<0>(info.param) + "_seed_" +
                                   std::to_string(std::get<2>(info.param));
