@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <initializer_list>
 #include <numbers>
 #include <vector>
 
@@ -71,6 +72,15 @@ int TrueFace(double s, double margin) {
   return -1;
 }
 
+// Labels by profile length: 0 before cuts[0], 1 up to cuts[1], and so on.
+std::vector<int> LabelsCutAt(const Sheet& s, std::initializer_list<double> cuts) {
+  std::vector<int> labels(s.u.size(), 0);
+  for (std::size_t v = 0; v < labels.size(); ++v) {
+    for (const double cut : cuts) labels[v] += s.u[v] >= cut ? 1 : 0;
+  }
+  return labels;
+}
+
 // The round's region as it grows at 0.15 h: 1.5 of the top and of the side
 // beside it.
 constexpr double kTaken = 1.5;
@@ -98,10 +108,7 @@ TEST(FilletTorusTest, TouchesThePlaneAndTheCylinder) {
 TEST(SnapFilletsTest, RoundBentIntoTopAndSideGivesTheirRowsBack) {
   Sheet s;
   BuildBoss(&s);
-  std::vector<int> labels(s.u.size());
-  for (std::size_t v = 0; v < labels.size(); ++v) {
-    labels[v] = s.u[v] < kTop - kTaken ? 0 : s.u[v] < kTop + kArc + kTaken ? 1 : 2;
-  }
+  std::vector<int> labels = LabelsCutAt(s, {kTop - kTaken, kTop + kArc + kTaken});
   std::vector<RegionState> regions = RegionsFromLabels(
       s.c, labels, {SurfaceType::kPlane, SurfaceType::kTorus, SurfaceType::kCylinder});
   // The torus fitted to that region bends through the top and the side.
@@ -127,10 +134,7 @@ TEST(SnapFilletsTest, TopTheRoundGrewOverBecomesAPlane) {
   // No region holds the top: the round's region has all of it.
   Sheet s;
   BuildBoss(&s);
-  std::vector<int> labels(s.u.size());
-  for (std::size_t v = 0; v < labels.size(); ++v) {
-    labels[v] = s.u[v] < kTop + kArc + kTaken ? 0 : 1;
-  }
+  std::vector<int> labels = LabelsCutAt(s, {kTop + kArc + kTaken});
   std::vector<RegionState> regions =
       RegionsFromLabels(s.c, labels, {SurfaceType::kTorus, SurfaceType::kCylinder});
 
@@ -154,10 +158,7 @@ TEST(SnapFilletsTest, TopTheRoundGrewOverBecomesAPlane) {
 TEST(SnapFilletsTest, RoundThatFitsItsInteriorIsLeftAlone) {
   Sheet s;
   BuildBoss(&s);
-  std::vector<int> labels(s.u.size());
-  for (std::size_t v = 0; v < labels.size(); ++v) {
-    labels[v] = s.u[v] < kTop ? 0 : s.u[v] < kTop + kArc ? 1 : 2;
-  }
+  std::vector<int> labels = LabelsCutAt(s, {kTop, kTop + kArc});
   const std::vector<int> before = labels;
   std::vector<RegionState> regions = RegionsFromLabels(
       s.c, labels, {SurfaceType::kPlane, SurfaceType::kTorus, SurfaceType::kCylinder});
@@ -191,10 +192,7 @@ TEST(SnapFilletsTest, TorusOnAChamferIsNoFillet) {
       0.0, 4.0 + 2.0 * std::numbers::sqrt2 + 4.0, kRows, 0.0,
       2.0 * std::numbers::pi * (kAround - 1) / kAround, kAround, 5.0 * kSigma, 10.0, &s);
   s.c.noise_sigma = kSigma;
-  std::vector<int> labels(s.u.size());
-  for (std::size_t v = 0; v < labels.size(); ++v) {
-    labels[v] = s.u[v] < 3.0 ? 0 : s.u[v] < 4.0 + 2.0 * std::numbers::sqrt2 + 1.0 ? 1 : 2;
-  }
+  std::vector<int> labels = LabelsCutAt(s, {3.0, 4.0 + 2.0 * std::numbers::sqrt2 + 1.0});
   const std::vector<int> before = labels;
   std::vector<RegionState> regions = RegionsFromLabels(
       s.c, labels, {SurfaceType::kPlane, SurfaceType::kTorus, SurfaceType::kCylinder});
