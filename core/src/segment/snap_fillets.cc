@@ -16,28 +16,16 @@
 namespace meshseg::segment_internal {
 namespace {
 
-// Signed distance from p to `t` (closed form, outward from the tube centre).
-double TorusDistance(const Torus& t, const Eigen::Vector3d& p) {
-  const Eigen::Vector3d q = p - t.center;
-  const double z = q.dot(t.axis_direction);
-  const double rho = (q - z * t.axis_direction).norm();
-  return std::hypot(rho - t.major_radius, z) - t.minor_radius;
-}
-
-double PlaneDistance(const Plane& plane, const Eigen::Vector3d& p) {
-  return (p - plane.point).dot(plane.normal);
-}
-
 // The region's vertices (sub-sampled), each with its squared distance to
 // the nearest surface of the analytic regions around it.
-struct Band {
-  std::vector<Eigen::Vector3d> points;
+struct RegionPoints {
+  std::vector<Eigen::Vector3d> positions;
   std::vector<double> neighbor_sq;
 };
 
-Band MakeBand(const SegmentContext& c, const std::vector<RegionState>& regions, int id,
-              const std::vector<int>& neighbors) {
-  Band band;
+RegionPoints MakeRegionPoints(const SegmentContext& c, const std::vector<RegionState>& regions,
+                              int id, const std::vector<int>& neighbors) {
+  RegionPoints points;
   for (const int v : Sample(regions[id].vertices)) {
     const Eigen::Vector3d& p = c.position(v);
     double nearest = std::numeric_limits<double>::infinity();
@@ -46,25 +34,23 @@ Band MakeBand(const SegmentContext& c, const std::vector<RegionState>& regions, 
       const double d = SignedDistance(regions[n].surface, p);
       nearest = std::min(nearest, d * d);
     }
-    band.points.push_back(p);
-    band.neighbor_sq.push_back(nearest);
+    points.positions.push_back(p);
+    points.neighbor_sq.push_back(nearest);
   }
-  return band;
+  return points;
 }
 
-// Mean over the band of each vertex's squared distance to the nearest of
-// the surfaces around the region, `extra` (if set) and `torus`.
-double MeanSquare(const Band& band, const Plane* extra, const Torus& torus) {
+// Mean over `points` of each one's squared distance to the nearest of the
+// surfaces around the region, `extra` (if set) and `torus`.
+double MeanSquare(const RegionPoints& points, const Surface* extra, const Surface& torus) {
   double sum = 0.0;
-  for (std::size_t k = 0; k < band.points.size(); ++k) {
-    const Eigen::Vector3d& p = band.points[k];
-    const double d = TorusDistance(torus, p);
-    double nearest = std::min(d * d, band.neighbor_sq[k]);
-    if (extra != nullptr)
-      nearest = std::min(nearest, std::pow((p - extra->point).dot(extra->normal), 2));
+  for (std::size_t k = 0; k < points.positions.size(); ++k) {
+    const Eigen::Vector3d& p = points.positions[k];
+    double nearest = std::min(std::pow(SignedDistance(torus, p), 2), points.neighbor_sq[k]);
+    if (extra != nullptr) nearest = std::min(nearest, std::pow(SignedDistance(*extra, p), 2));
     sum += nearest;
   }
-  return sum / static_cast<double>(band.points.size());
+  return sum / static_cast<double>(points.positions.size());
 }
 
 // The minimum of `cost` over [low, high]: the best of kGrid geometric
@@ -103,13 +89,14 @@ struct FilletFit {
   double mean_square = std::numeric_limits<double>::infinity();
 };
 
-// The fillet between `plane` and `cylinder` that meets the band best (with
-// `plane` among the band's surfaces if it is `swallowed`): on each side of
+// The fillet between `plane` and `cylinder` that meets `points` best (with
+// `plane` among the surfaces around if it is `swallowed`): on each side of
 // each, r from kMinRadiusShare to kMaxRadiusShare of the region's own
 // minor radius.
-FilletFit FitFillet(const Band& band, const Plane& plane, bool swallowed, const Cylinder& cylinder,
-                    double own_minor) {
+FilletFit FitFillet(const RegionPoints& points, const Plane& plane, bool swallowed,
+                    const Cylinder& cylinder, double own_minor) {
   constexpr double kMinRadiusShare = 0.25, kMaxRadiusShare = 2.0;
+  const Surface plane_surface = plane;
   FilletFit best;
   for (const int axial : {-1, 1}) {
     for (const int radial : {-1, 1}) {
@@ -120,7 +107,7 @@ FilletFit FitFillet(const Band& band, const Plane& plane, bool swallowed, const 
       if (!(high > low)) continue;
       const auto [r, mean_square] = MinimizeOnGrid(
           [&](double r) {
-            return MeanSquare(band, swallowed ? &plane : nullptr,
+            return MeanSquare(points, swallowed ? &plane_surface : nullptr,
                               FilletTorus(plane, cylinder, r, axial, radial));
           },
           low, high);
@@ -174,7 +161,7 @@ std::optional<Plane> SwallowedPlane(const SegmentContext& c, const std::vector<i
 // tried and returned in `swallowed`.
 std::optional<FilletFit> BestFillet(const SegmentContext& c,
                                     const std::vector<RegionState>& regions, int id,
-                                    const std::vector<int>& neighbors, const Band& band,
+                                    const std::vector<int>& neighbors, const RegionPoints& points,
                                     std::optional<Plane>* swallowed) {
   const Torus& own = std::get<Torus>(regions[id].surface);
   const double cos_max = std::cos(kCoaxialMaxAngleDeg * std::numbers::pi / 180.0);
@@ -201,7 +188,8 @@ std::optional<FilletFit> BestFillet(const SegmentContext& c,
   FilletFit best;
   for (const Plane& plane : planes) {
     for (const Cylinder* cylinder : cylinders) {
-      const FilletFit fit = FitFillet(band, plane, hidden.has_value(), *cylinder, own.minor_radius);
+      const FilletFit fit =
+          FitFillet(points, plane, hidden.has_value(), *cylinder, own.minor_radius);
       if (fit.mean_square < best.mean_square) best = fit;
     }
   }
@@ -217,10 +205,12 @@ void HandOver(const SegmentContext& c, int id, const Torus& fillet,
               const std::vector<int>& neighbors, const std::optional<Plane>& swallowed,
               std::vector<int>* labels, std::vector<RegionState>* regions,
               std::vector<uint8_t>* refit) {
+  const Surface fillet_surface = fillet;
+  const Surface plane_surface = swallowed ? Surface(*swallowed) : Surface();
   std::vector<int> on_plane;
   for (const int v : (*regions)[id].vertices) {
     const Eigen::Vector3d& p = c.position(v);
-    double nearest = std::abs(TorusDistance(fillet, p));
+    double nearest = std::abs(SignedDistance(fillet_surface, p));
     int to = id;
     for (const int n : neighbors) {
       if (!IsAnalytic((*regions)[n].type)) continue;
@@ -228,7 +218,7 @@ void HandOver(const SegmentContext& c, int id, const Torus& fillet,
       if (d < nearest && d < c.tolerance.distance) nearest = d, to = n;
     }
     if (swallowed &&
-        std::abs(PlaneDistance(*swallowed, p)) < std::min(nearest, c.tolerance.distance)) {
+        std::abs(SignedDistance(plane_surface, p)) < std::min(nearest, c.tolerance.distance)) {
       on_plane.push_back(v);
       continue;
     }
@@ -270,17 +260,16 @@ std::vector<int> SnapFillets(const SegmentContext& c, std::vector<int>* labels,
       continue;
     }
     const std::vector<int> neighbors = NeighborRegions(c, *labels, *regions, id);
-    const Band band = MakeBand(c, *regions, id, neighbors);
+    const RegionPoints points = MakeRegionPoints(c, *regions, id, neighbors);
     std::optional<Plane> swallowed;
     const std::optional<FilletFit> fillet =
-        BestFillet(c, *regions, id, neighbors, band, &swallowed);
+        BestFillet(c, *regions, id, neighbors, points, &swallowed);
     if (!fillet) continue;
     // r, and the swallowed plane's offset along the axis.
     const int parameters = swallowed ? 2 : 1;
-    const std::size_t m = band.points.size();
+    const std::size_t m = points.positions.size();
     if (!(InformationScore(c, fillet->mean_square, m, parameters) + kScoreMargin <
-          InformationScore(c, MeanSquare(band, nullptr, std::get<Torus>(r.surface)), m,
-                           ParameterCount(r.type)))) {
+          InformationScore(c, MeanSquare(points, nullptr, r.surface), m, ParameterCount(r.type)))) {
       continue;
     }
     HandOver(c, id, fillet->torus, neighbors, swallowed, labels, regions, &refit);
