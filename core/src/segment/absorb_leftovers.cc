@@ -88,27 +88,19 @@ void ReleaseSmallQuadrics(const SegmentContext& c, std::vector<int>* labels,
                           std::vector<RegionState>* regions) {
   const std::size_t min_size =
       std::max(kMinQuadricVertices, static_cast<std::size_t>(kMinQuadricShare * c.vertex_count()));
-  for (RegionState& r : *regions) {
-    if (r.type != SurfaceType::kQuadric || r.vertices.size() >= min_size) continue;
-    for (const int v : r.vertices) (*labels)[v] = -1;
-    r.vertices.clear();
-    r.alive = false;
-  }
+  ReleaseRegions(
+      [&](int, const RegionState& r) {
+        return r.type == SurfaceType::kQuadric && r.vertices.size() < min_size;
+      },
+      labels, regions);
 }
 
 int ReleaseSmallRegions(const SegmentContext& c, std::vector<int>* labels,
                         std::vector<RegionState>* regions) {
   const std::size_t min_size =
       std::max(kMinRegionVertices, static_cast<std::size_t>(kMinRegionShare * c.vertex_count()));
-  int released = 0;
-  for (RegionState& r : *regions) {
-    if (!r.alive || r.vertices.size() >= min_size) continue;
-    for (const int v : r.vertices) (*labels)[v] = -1;
-    r.vertices.clear();
-    r.alive = false;
-    ++released;
-  }
-  return released;
+  return ReleaseRegions([&](int, const RegionState& r) { return r.vertices.size() < min_size; },
+                        labels, regions);
 }
 
 absl::Status AbsorbLeftovers(const SegmentContext& c, std::vector<int>* labels,

@@ -146,6 +146,21 @@ void RefitRegions(const SegmentContext& c, const std::vector<uint8_t>& refit,
   }
 }
 
+int ReleaseRegions(const std::function<bool(int id, const RegionState& r)>& release,
+                   std::vector<int>* labels, std::vector<RegionState>* regions) {
+  std::vector<int> ids;
+  for (int id = 0; id < static_cast<int>(regions->size()); ++id) {
+    if ((*regions)[id].alive && release(id, (*regions)[id])) ids.push_back(id);
+  }
+  for (const int id : ids) {
+    RegionState& r = (*regions)[id];
+    for (const int v : r.vertices) (*labels)[v] = -1;
+    r.vertices.clear();
+    r.alive = false;
+  }
+  return static_cast<int>(ids.size());
+}
+
 void MergeInto(int into, int from, std::vector<int>* labels, std::vector<RegionState>* regions) {
   RegionState& a = (*regions)[into];
   RegionState& b = (*regions)[from];

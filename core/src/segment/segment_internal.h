@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -120,6 +121,12 @@ void RebuildVertexLists(const std::vector<int>& labels, std::vector<RegionState>
 // refit[r] set; a region whose fit is invalid keeps its surface.
 void RefitRegions(const SegmentContext& c, const std::vector<uint8_t>& refit,
                   std::vector<RegionState>* regions);
+
+// Releases (labels -1, vertices cleared, alive = false) every alive region
+// r with id `id` for which release(id, r) holds, all decided on the labels
+// before any is released. Returns how many.
+int ReleaseRegions(const std::function<bool(int id, const RegionState& r)>& release,
+                   std::vector<int>* labels, std::vector<RegionState>* regions);
 
 // Moves every vertex of region `from` into region `into`.
 void MergeInto(int into, int from, std::vector<int>* labels, std::vector<RegionState>* regions);
