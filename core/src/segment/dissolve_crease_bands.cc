@@ -1,30 +1,11 @@
 #include "segment/dissolve_crease_bands.h"
 
-#include <algorithm>
 #include <cmath>
 #include <cstdint>
 
 #include "segment/decide_type.h"
 
 namespace meshseg::segment_internal {
-namespace {
-
-// The regions other than `id` that an edge from `id`'s vertices leads to,
-// sorted.
-std::vector<int> NeighbourRegions(const SegmentContext& c, int id, const std::vector<int>& labels,
-                                  const RegionState& region) {
-  std::vector<int> out;
-  for (const int v : region.vertices) {
-    for (const int u : c.graph.Neighbors(v)) {
-      if (labels[u] >= 0 && labels[u] != id) out.push_back(labels[u]);
-    }
-  }
-  std::sort(out.begin(), out.end());
-  out.erase(std::unique(out.begin(), out.end()), out.end());
-  return out;
-}
-
-}  // namespace
 
 int DissolveCreaseBands(const SegmentContext& c, std::vector<int>* labels,
                         std::vector<RegionState>* regions) {
@@ -33,7 +14,7 @@ int DissolveCreaseBands(const SegmentContext& c, std::vector<int>* labels,
   for (int id = 0; id < static_cast<int>(regions->size()); ++id) {
     RegionState& region = (*regions)[id];
     if (!region.alive || region.vertices.empty() || region.type == SurfaceType::kPlane) continue;
-    const std::vector<int> around = NeighbourRegions(c, id, *labels, region);
+    const std::vector<int> around = RegionsAround(c, *labels, *regions, id);
     if (around.empty()) continue;
     std::vector<int> nearest(region.vertices.size(), -1);
     std::size_t near = 0, own_near = 0;

@@ -146,6 +146,19 @@ void RefitRegions(const SegmentContext& c, const std::vector<uint8_t>& refit,
   }
 }
 
+std::vector<int> RegionsAround(const SegmentContext& c, const std::vector<int>& labels,
+                               const std::vector<RegionState>& regions, int id) {
+  std::vector<int> out;
+  for (const int v : regions[id].vertices) {
+    for (const int u : c.graph.Neighbors(v)) {
+      if (labels[u] >= 0 && labels[u] != id) out.push_back(labels[u]);
+    }
+  }
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
+}
+
 int ReleaseRegions(const std::function<bool(int id, const RegionState& r)>& release,
                    std::vector<int>* labels, std::vector<RegionState>* regions) {
   std::vector<int> ids;

@@ -122,6 +122,11 @@ void RebuildVertexLists(const std::vector<int>& labels, std::vector<RegionState>
 void RefitRegions(const SegmentContext& c, const std::vector<uint8_t>& refit,
                   std::vector<RegionState>* regions);
 
+// The regions other than `id` that a mesh edge from `id`'s vertices leads
+// to, sorted.
+std::vector<int> RegionsAround(const SegmentContext& c, const std::vector<int>& labels,
+                               const std::vector<RegionState>& regions, int id);
+
 // Releases (labels -1, vertices cleared, alive = false) every alive region
 // r with id `id` for which release(id, r) holds, all decided on the labels
 // before any is released. Returns how many.

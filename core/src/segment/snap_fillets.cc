@@ -119,21 +119,6 @@ FilletFit FitFillet(const RegionPoints& points, const Plane& plane, bool swallow
   return best;
 }
 
-// The alive regions that share a mesh edge with region `id`.
-std::vector<int> NeighborRegions(const SegmentContext& c, const std::vector<int>& labels,
-                                 const std::vector<RegionState>& regions, int id) {
-  std::vector<int> out;
-  for (const int v : regions[id].vertices) {
-    for (const int u : c.graph.Neighbors(v)) {
-      const int n = labels[u];
-      if (n >= 0 && n != id && regions[n].alive) out.push_back(n);
-    }
-  }
-  std::sort(out.begin(), out.end());
-  out.erase(std::unique(out.begin(), out.end()), out.end());
-  return out;
-}
-
 // The flat face a round grew over: the plane across `axis` through the
 // region's vertices whose n'_i is within th_nm of it (on the side most
 // are), if there are kMinRegionVertices of them.
@@ -259,7 +244,7 @@ std::vector<int> SnapFillets(const SegmentContext& c, std::vector<int>* labels,
         !TypeMissesInterior(c, *labels, id, r)) {
       continue;
     }
-    const std::vector<int> neighbors = NeighborRegions(c, *labels, *regions, id);
+    const std::vector<int> neighbors = RegionsAround(c, *labels, *regions, id);
     const RegionPoints points = MakeRegionPoints(c, *regions, id, neighbors);
     std::optional<Plane> swallowed;
     const std::optional<FilletFit> fillet =
