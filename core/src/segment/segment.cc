@@ -20,6 +20,7 @@
 #include "segment/merge_same_surface.h"
 #include "segment/refine_boundaries.h"
 #include "segment/retype_by_interior.h"
+#include "segment/retype_coaxial_bands.h"
 #include "segment/segment_internal.h"
 #include "segment/snap_fillets.h"
 #include "segment/split_off_planes.h"
@@ -130,6 +131,9 @@ absl::StatusOr<Segmentation> Segment(const Mesh& mesh, const CurvatureField& cur
   // The outer rows of a narrow band can decide its type (a chamfer between
   // rounded creases passes as a sphere); its interior tells.
   RetypeByInterior(c, labels, &regions);
+  if (!RetypeCoaxialBands(c, labels, &regions).empty()) {
+    MESHSEG_RETURN_IF_ERROR(RefineBoundaries(c, &labels, &regions));
+  }
   // Pieces of one surface typed apart (a countersink grown from two seeds
   // as a sphere and a cone) are joined by the same test.
   MESHSEG_ASSIGN_OR_RETURN(const int same_surface, MergeSameSurface(c, &labels, &regions));

@@ -20,39 +20,15 @@ using testing::BuildSheet;
 using testing::RegionsFromLabels;
 using testing::Sheet;
 
-// Profile rows: the cylinder up to row kConeStart, the cone band to row
-// kConeEnd, the top from there on (rows 0.25 apart on the cylinder and the
-// top, 0.236 on the band). Three quarters of a turn around the z axis.
-constexpr int kConeStart = 10;
-constexpr int kConeEnd = 19;
-constexpr int kRows = 32;
-constexpr int kAround = 48;
+// stepped_shaft's chamfer (sheet_context.h).
+constexpr int kConeStart = testing::kChamferConeStart;
+constexpr int kConeEnd = testing::kChamferConeEnd;
+constexpr int kRows = testing::kChamferRows;
+constexpr int kAround = testing::kChamferAround;
 constexpr double kSigma = 0.01;
 constexpr int kBand[] = {0};  // the band's label
 
-// `ripple`: the band's radius varies by that much around (8 waves), a
-// stand-in for the meshing error of a CT part.
-void BuildChamfer(Sheet* s, double ripple = 0.0) {
-  const double band_step = 1.5 * std::numbers::sqrt2 / (kConeEnd - kConeStart);
-  BuildSheet(
-      [&](double row, double phi) {
-        const Eigen::Vector3d radial(std::cos(phi), std::sin(phi), 0.0);
-        const Eigen::Vector3d z = Eigen::Vector3d::UnitZ();
-        if (row <= kConeStart) {
-          return std::pair{Eigen::Vector3d(5.0 * radial + (66.0 + 0.25 * row) * z), radial};
-        }
-        if (row <= kConeEnd) {
-          const double t = (row - kConeStart) * band_step / std::numbers::sqrt2;
-          const double wave = ripple * std::sin(8.0 * phi);
-          return std::pair{Eigen::Vector3d((5.0 - t + wave) * radial + (68.5 + t) * z),
-                           Eigen::Vector3d((radial + z).normalized())};
-        }
-        return std::pair{Eigen::Vector3d((3.5 - 0.25 * (row - kConeEnd)) * radial + 70.0 * z), z};
-      },
-      0.0, kRows - 1, kRows, 0.0, 1.5 * std::numbers::pi, kAround, /*distance=*/5.0 * kSigma,
-      /*angle_deg=*/10.0, s);
-  s->c.noise_sigma = kSigma;
-}
+void BuildChamfer(Sheet* s, double ripple = 0.0) { testing::BuildChamfer(kSigma, ripple, s); }
 
 // Label 1 below row `first`, 0 from `first` to `last`, 2 above.
 std::vector<int> BandLabels(const Sheet& s, int first, int last) {

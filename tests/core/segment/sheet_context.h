@@ -114,6 +114,43 @@ inline void BuildDiscWithRoundStart(double distance, Sheet* s) {
       2.0 * kPi * (kAround - 1) / kAround, kAround, distance, /*angle_deg=*/5.0, s);
 }
 
+// stepped_shaft's chamfer in profile: a cylinder of radius 5 up to row
+// kChamferConeStart, a 45-degree cone band up to radius 3.5 at row
+// kChamferConeEnd, and a flat top from there on (rows 0.25 apart on the
+// cylinder and the top, 0.236 on the band), three quarters of a turn around
+// the z axis, kChamferAround vertices around; noise sigma `sigma` (none
+// added), th_dis 5 sigma, th_nm 10 degrees. `ripple`: the band's radius
+// varies by that much around (8 waves), a stand-in for the meshing error of
+// a CT part.
+inline constexpr int kChamferConeStart = 10;
+inline constexpr int kChamferConeEnd = 19;
+inline constexpr int kChamferRows = 32;
+inline constexpr int kChamferAround = 48;
+
+inline void BuildChamfer(double sigma, double ripple, Sheet* s) {
+  constexpr double kPi = 3.14159265358979323846;
+  const double band_step = 1.5 * std::sqrt(2.0) / (kChamferConeEnd - kChamferConeStart);
+  BuildSheet(
+      [&](double row, double phi) {
+        const Eigen::Vector3d radial(std::cos(phi), std::sin(phi), 0.0);
+        const Eigen::Vector3d z = Eigen::Vector3d::UnitZ();
+        if (row <= kChamferConeStart) {
+          return std::pair{Eigen::Vector3d(5.0 * radial + (66.0 + 0.25 * row) * z), radial};
+        }
+        if (row <= kChamferConeEnd) {
+          const double t = (row - kChamferConeStart) * band_step / std::sqrt(2.0);
+          const double wave = ripple * std::sin(8.0 * phi);
+          return std::pair{Eigen::Vector3d((5.0 - t + wave) * radial + (68.5 + t) * z),
+                           Eigen::Vector3d((radial + z).normalized())};
+        }
+        return std::pair{
+            Eigen::Vector3d((3.5 - 0.25 * (row - kChamferConeEnd)) * radial + 70.0 * z), z};
+      },
+      0.0, kChamferRows - 1, kChamferRows, 0.0, 1.5 * kPi, kChamferAround, 5.0 * sigma,
+      /*angle_deg=*/10.0, s);
+  s->c.noise_sigma = sigma;
+}
+
 // Every vertex of `s`.
 inline std::vector<int> AllVertices(const Sheet& s) {
   std::vector<int> v(s.u.size());

@@ -1,0 +1,98 @@
+#include "segment/retype_coaxial_bands.h"
+
+#include <cmath>
+#include <numbers>
+#include <optional>
+
+#include "segment/align_coaxial.h"
+#include "segment/decide_type.h"
+#include "segment/retype_by_interior.h"
+
+namespace meshseg::segment_internal {
+namespace {
+
+// True if the axis of `face` (a cylinder or cone) is the axis of `band`: a
+// torus's within kCoaxialMaxAngleDeg and passing within kCoaxialMaxOffset
+// of its tube radius of its centre; through a sphere's centre within that
+// share of its radius.
+bool OnItsAxis(const Surface& band, const Surface& face) {
+  const std::optional<AxisLine> axis = AxisOf(face);
+  if (!axis) return false;
+  Eigen::Vector3d center;
+  double radius = 0.0;
+  if (const auto* s = std::get_if<Sphere>(&band)) {
+    center = s->center, radius = s->radius;
+  } else if (const auto* t = std::get_if<Torus>(&band)) {
+    if (std::abs(t->axis_direction.dot(axis->direction)) <
+        std::cos(kCoaxialMaxAngleDeg * std::numbers::pi / 180.0)) {
+      return false;
+    }
+    center = t->center, radius = t->minor_radius;
+  } else {
+    return false;
+  }
+  const Eigen::Vector3d d = center - axis->point;
+  return (d - d.dot(axis->direction) * axis->direction).norm() <= kCoaxialMaxOffset * radius;
+}
+
+// The cone fitted to `interior` on one axis with the vertices that meet
+// `face`'s surface (FitCoaxial from its axis); invalid if that fit is.
+FitResult CoaxialCone(const SegmentContext& c, const RegionState& face,
+                      const std::vector<int>& interior) {
+  std::vector<Eigen::Vector3d> face_points, band_points;
+  for (const int v : Sample(FittingVertices(c, face.surface, face.vertices))) {
+    face_points.push_back(c.position(v));
+  }
+  for (const int v : interior) band_points.push_back(c.position(v));
+  const AxisLine axis = *AxisOf(face.surface);
+  const CoaxialMember members[] = {
+      {face.type, {.points = face_points, .normals = {}, .weights = {}}},
+      {SurfaceType::kCone, {.points = band_points, .normals = {}, .weights = {}}}};
+  return FitCoaxial(members, axis.point, axis.direction)[1];
+}
+
+}  // namespace
+
+std::vector<int> RetypeCoaxialBands(const SegmentContext& c, const std::vector<int>& labels,
+                                    std::vector<RegionState>* regions) {
+  std::vector<int> retyped;
+  if (!(c.noise_sigma > 0.0)) return retyped;
+  for (int id = 0; id < static_cast<int>(regions->size()); ++id) {
+    RegionState& r = (*regions)[id];
+    if (!r.alive || (r.type != SurfaceType::kSphere && r.type != SurfaceType::kTorus)) continue;
+    const int ids[] = {id};
+    const std::vector<int> interior = Sample(InteriorVertices(c, labels, ids, r.vertices));
+    if (interior.size() < kMinInteriorVertices) continue;
+    // Infinite if the region's own type has no valid fit there.
+    const double own = ScoreType(c, r.type, interior).score;
+    std::optional<FitResult> best;
+    double best_score = 0.0;
+    for (const int n : RegionsAround(c, labels, *regions, id)) {
+      const RegionState& face = (*regions)[n];
+      if ((face.type != SurfaceType::kCylinder && face.type != SurfaceType::kCone) ||
+          !OnItsAxis(r.surface, face.surface)) {
+        continue;
+      }
+      const FitResult cone = CoaxialCone(c, face, interior);
+      if (!cone.ok()) continue;
+      const double mean_square = SquaredDistances(c, cone.surface, interior) / interior.size();
+      const double score =
+          InformationScore(c, mean_square, interior.size(), kCoaxialConeParameters);
+      // As RetypeByInterior weighs a type against its limit: near the
+      // noise, within kScoreMargin of the torus it is a limit of, or
+      // kScoreMargin below the sphere it is not.
+      const bool takes =
+          ModelErrorOfMeanSquare(c, mean_square) <= kScoredNearError * c.noise_sigma &&
+          (IsLimitOf(SurfaceType::kCone, r.type) ? score < own + kScoreMargin
+                                                 : score + kScoreMargin < own);
+      if (takes && (!best || score < best_score)) best = cone, best_score = score;
+    }
+    if (!best) continue;
+    r.type = SurfaceType::kCone;
+    r.surface = best->surface;
+    retyped.push_back(id);
+  }
+  return retyped;
+}
+
+}  // namespace meshseg::segment_internal

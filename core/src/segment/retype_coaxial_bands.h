@@ -1,0 +1,36 @@
+// A band on the axis of a turned face beside it (our addition to seeds 000
+// and 002). A countersink or a chamfer shares its bore's or shaft's axis by
+// design; fitted alone, a narrow band at 0.15 h can take a torus that beats
+// the cone it is by bending its axis and its profile into the noise
+// (test_piece's countersink, seed 172: the torus R 25.6, r 22.3, 19 below the
+// cone on the interior). On the axis of the face beside it the cone has 2
+// free parameters, not 6.
+#ifndef MESHSEG_SRC_SEGMENT_RETYPE_COAXIAL_BANDS_H_
+#define MESHSEG_SRC_SEGMENT_RETYPE_COAXIAL_BANDS_H_
+
+#include <vector>
+
+#include "segment/segment_internal.h"
+
+namespace meshseg::segment_internal {
+
+// For every sphere or torus region with kMinInteriorVertices interior
+// vertices and a cylinder or cone neighbour on its axis (a torus: axes
+// within kCoaxialMaxAngleDeg, and the neighbour's passing within
+// kCoaxialMaxOffset of the tube radius of its centre; a sphere: within that
+// share of its radius of its centre), fits a cone to the interior together
+// with the neighbour's vertices on one axis (FitCoaxial), and scores it on
+// the interior with kCoaxialConeParameters (InformationScore). The region
+// becomes the best such cone that meets the interior within
+// kScoredNearError sigmas and scores less than kScoreMargin above a torus
+// (the cone is its limit, IsLimitOf) or kScoreMargin below a sphere (or any
+// cone, if the region's own type has no valid fit there). Nothing happens
+// at noise 0. Returns the ids of the regions retyped.
+inline constexpr int kCoaxialConeParameters = 2;  // apex along the axis, half angle
+
+std::vector<int> RetypeCoaxialBands(const SegmentContext& c, const std::vector<int>& labels,
+                                    std::vector<RegionState>* regions);
+
+}  // namespace meshseg::segment_internal
+
+#endif  // MESHSEG_SRC_SEGMENT_RETYPE_COAXIAL_BANDS_H_

@@ -1,0 +1,126 @@
+// RetypeCoaxialBands on stepped_shaft's chamfer as a sheet (sheet_context.h)
+// with normal noise: the band beside its cylinder, typed torus or sphere.
+#include "segment/retype_coaxial_bands.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <random>
+#include <vector>
+
+#include "segment/decide_type.h"
+#include "segment/retype_by_interior.h"
+#include "sheet_context.h"
+
+namespace meshseg::segment_internal {
+namespace {
+
+using testing::BuildSheet;
+using testing::RegionsFromLabels;
+using testing::Sheet;
+
+constexpr double kSigma = 0.01;
+constexpr int kBand[] = {0};
+
+// Normal noise of kSigma along the normals (mt19937 draw `seed`).
+void AddNoise(unsigned seed, Sheet* s) {
+  std::mt19937 random(seed);
+  std::normal_distribution<double> noise(0.0, kSigma);
+  for (std::size_t v = 0; v < s->u.size(); ++v) {
+    s->c.graph.positions[v] += noise(random) * s->field.normal[v];
+  }
+}
+
+// Label 0 on the rows from `first` to `last`, 1 below (the cylinder), 2
+// above (the top).
+std::vector<int> BandLabels(const Sheet& s, int first, int last) {
+  std::vector<int> labels(s.u.size());
+  for (std::size_t v = 0; v < labels.size(); ++v) {
+    labels[v] = s.u[v] < first ? 1 : (s.u[v] > last ? 2 : 0);
+  }
+  return labels;
+}
+
+TEST(RetypeCoaxialBandsTest, TorusOnAChamferBesideItsShaftBecomesACone) {
+  // A torus has no valid fit to a straight profile: its own type fails the
+  // interior, and the cone on the shaft's axis takes it.
+  Sheet s;
+  testing::BuildChamfer(kSigma, 0.0, &s);
+  AddNoise(7, &s);
+  const std::vector<int> labels =
+      BandLabels(s, testing::kChamferConeStart, testing::kChamferConeEnd);
+  std::vector<RegionState> regions = RegionsFromLabels(
+      s.c, labels, {SurfaceType::kTorus, SurfaceType::kCylinder, SurfaceType::kPlane});
+  ASSERT_FALSE(FitType(s.c, SurfaceType::kTorus, regions[0].vertices).ok());
+
+  EXPECT_EQ(RetypeCoaxialBands(s.c, labels, &regions), std::vector<int>{0});
+  ASSERT_EQ(regions[0].type, SurfaceType::kCone);
+  const Cone& cone = std::get<Cone>(regions[0].surface);
+  EXPECT_NEAR(cone.half_angle, std::numbers::pi / 4, 0.2 * std::numbers::pi / 180);
+  // On the cylinder's axis, the z axis.
+  EXPECT_GT(std::abs(cone.axis_direction.z()), std::cos(0.1 * std::numbers::pi / 180));
+  EXPECT_NEAR(cone.apex.x(), 0.0, 0.01);
+  EXPECT_NEAR(cone.apex.y(), 0.0, 0.01);
+  EXPECT_EQ(regions[1].type, SurfaceType::kCylinder);
+}
+
+TEST(RetypeCoaxialBandsTest, SphereOnAChamferBecomesACone) {
+  Sheet s;
+  testing::BuildChamfer(kSigma, 0.0, &s);
+  AddNoise(8, &s);
+  const std::vector<int> labels =
+      BandLabels(s, testing::kChamferConeStart, testing::kChamferConeEnd);
+  std::vector<RegionState> regions = RegionsFromLabels(
+      s.c, labels, {SurfaceType::kSphere, SurfaceType::kCylinder, SurfaceType::kPlane});
+  EXPECT_EQ(RetypeCoaxialBands(s.c, labels, &regions), std::vector<int>{0});
+  EXPECT_EQ(regions[0].type, SurfaceType::kCone);
+}
+
+TEST(RetypeCoaxialBandsTest, FilletBesideItsShaftStaysATorus) {
+  // A quarter round of radius 1.5 from the cylinder to the top in place of
+  // the chamfer: no cone on the shaft's axis comes near it.
+  constexpr int kCylinderRows = 10, kRoundRows = 10, kTopRows = 10;
+  Sheet s;
+  BuildSheet(
+      [](double row, double phi) {
+        const Eigen::Vector3d radial(std::cos(phi), std::sin(phi), 0.0);
+        const Eigen::Vector3d z = Eigen::Vector3d::UnitZ();
+        if (row <= kCylinderRows) {
+          return std::pair{Eigen::Vector3d(5.0 * radial + (66.0 + 0.25 * row) * z), radial};
+        }
+        if (row <= kCylinderRows + kRoundRows) {
+          const double t = (row - kCylinderRows) / kRoundRows * std::numbers::pi / 2;
+          const Eigen::Vector3d n = std::cos(t) * radial + std::sin(t) * z;
+          return std::pair{Eigen::Vector3d(3.5 * radial + 68.5 * z + 1.5 * n), n};
+        }
+        return std::pair{
+            Eigen::Vector3d((3.5 - 0.25 * (row - kCylinderRows - kRoundRows)) * radial + 70.0 * z),
+            z};
+      },
+      0.0, kCylinderRows + kRoundRows + kTopRows, kCylinderRows + kRoundRows + kTopRows + 1, 0.0,
+      1.5 * std::numbers::pi, 48, /*distance=*/5.0 * kSigma, /*angle_deg=*/10.0, &s);
+  s.c.noise_sigma = kSigma;
+  AddNoise(7, &s);
+  const std::vector<int> labels = BandLabels(s, kCylinderRows + 1, kCylinderRows + kRoundRows - 1);
+  std::vector<RegionState> regions = RegionsFromLabels(
+      s.c, labels, {SurfaceType::kTorus, SurfaceType::kCylinder, SurfaceType::kPlane});
+  EXPECT_TRUE(RetypeCoaxialBands(s.c, labels, &regions).empty());
+  EXPECT_EQ(regions[0].type, SurfaceType::kTorus);
+}
+
+TEST(RetypeCoaxialBandsTest, BandWithoutAnAxialNeighbourStays) {
+  // The chamfer's band with a plane below it in place of the cylinder.
+  Sheet s;
+  testing::BuildChamfer(kSigma, 0.0, &s);
+  AddNoise(7, &s);
+  const std::vector<int> labels =
+      BandLabels(s, testing::kChamferConeStart, testing::kChamferConeEnd);
+  std::vector<RegionState> regions = RegionsFromLabels(
+      s.c, labels, {SurfaceType::kTorus, SurfaceType::kPlane, SurfaceType::kPlane});
+  EXPECT_TRUE(RetypeCoaxialBands(s.c, labels, &regions).empty());
+  EXPECT_EQ(regions[0].type, SurfaceType::kTorus);
+}
+
+}  // namespace
+}  // namespace meshseg::segment_internal
