@@ -131,6 +131,8 @@ absl::StatusOr<Segmentation> Segment(const Mesh& mesh, const CurvatureField& cur
   // The outer rows of a narrow band can decide its type (a chamfer between
   // rounded creases passes as a sphere); its interior tells.
   RetypeByInterior(c, labels, &regions);
+  // A band beside a turned face may be a cone on that face's axis (a
+  // countersink on its bore's) with 4 parameters fewer.
   if (!RetypeCoaxialBands(c, labels, &regions).empty()) {
     MESHSEG_RETURN_IF_ERROR(RefineBoundaries(c, &labels, &regions));
   }
@@ -141,8 +143,10 @@ absl::StatusOr<Segmentation> Segment(const Mesh& mesh, const CurvatureField& cur
   // The steps since the last release can shrink a region below the size
   // floor again (a plane strip on test_piece's groove at 0.15 h, seed 124:
   // 62 vertices at the release, 56 at the end); a plane strip too narrow
-  // for an interior was never typed by one.
-  if (ReleaseSmallRegions(c, &labels, &regions) + ReleaseNarrowPlanes(c, &labels, &regions) > 0) {
+  // for an interior was never typed by one. (Two statements: both change
+  // the labels the other reads.)
+  const int small = ReleaseSmallRegions(c, &labels, &regions);
+  if (small + ReleaseNarrowPlanes(c, &labels, &regions) > 0) {
     MESHSEG_RETURN_IF_ERROR(AbsorbLeftovers(c, &labels, &regions));
     MESHSEG_RETURN_IF_ERROR(RefineBoundaries(c, &labels, &regions));
   }
