@@ -42,16 +42,23 @@ std::vector<int> BandLabels(const Sheet& s, int first, int last) {
   return labels;
 }
 
+// The chamfer with noise (draw `seed`): its band labelled 0 of type `band`,
+// what lies below it 1 of type `below`, the top 2, a plane.
+std::vector<RegionState> NoisyChamfer(unsigned seed, SurfaceType band, SurfaceType below, Sheet* s,
+                                      std::vector<int>* labels) {
+  testing::BuildChamfer(kSigma, 0.0, s);
+  AddNoise(seed, s);
+  *labels = BandLabels(*s, testing::kChamferConeStart, testing::kChamferConeEnd);
+  return RegionsFromLabels(s->c, *labels, {band, below, SurfaceType::kPlane});
+}
+
 TEST(RetypeCoaxialBandsTest, TorusOnAChamferBesideItsShaftBecomesACone) {
   // A torus has no valid fit to a straight profile: its own type fails the
   // interior, and the cone on the shaft's axis takes it.
   Sheet s;
-  testing::BuildChamfer(kSigma, 0.0, &s);
-  AddNoise(7, &s);
-  const std::vector<int> labels =
-      BandLabels(s, testing::kChamferConeStart, testing::kChamferConeEnd);
-  std::vector<RegionState> regions = RegionsFromLabels(
-      s.c, labels, {SurfaceType::kTorus, SurfaceType::kCylinder, SurfaceType::kPlane});
+  std::vector<int> labels;
+  std::vector<RegionState> regions =
+      NoisyChamfer(7, SurfaceType::kTorus, SurfaceType::kCylinder, &s, &labels);
   ASSERT_FALSE(FitType(s.c, SurfaceType::kTorus, regions[0].vertices).ok());
 
   EXPECT_EQ(RetypeCoaxialBands(s.c, labels, &regions), std::vector<int>{0});
@@ -67,12 +74,9 @@ TEST(RetypeCoaxialBandsTest, TorusOnAChamferBesideItsShaftBecomesACone) {
 
 TEST(RetypeCoaxialBandsTest, SphereOnAChamferBecomesACone) {
   Sheet s;
-  testing::BuildChamfer(kSigma, 0.0, &s);
-  AddNoise(8, &s);
-  const std::vector<int> labels =
-      BandLabels(s, testing::kChamferConeStart, testing::kChamferConeEnd);
-  std::vector<RegionState> regions = RegionsFromLabels(
-      s.c, labels, {SurfaceType::kSphere, SurfaceType::kCylinder, SurfaceType::kPlane});
+  std::vector<int> labels;
+  std::vector<RegionState> regions =
+      NoisyChamfer(8, SurfaceType::kSphere, SurfaceType::kCylinder, &s, &labels);
   EXPECT_EQ(RetypeCoaxialBands(s.c, labels, &regions), std::vector<int>{0});
   EXPECT_EQ(regions[0].type, SurfaceType::kCone);
 }
@@ -112,12 +116,9 @@ TEST(RetypeCoaxialBandsTest, FilletBesideItsShaftStaysATorus) {
 TEST(RetypeCoaxialBandsTest, BandWithoutAnAxialNeighbourStays) {
   // The chamfer's band with a plane below it in place of the cylinder.
   Sheet s;
-  testing::BuildChamfer(kSigma, 0.0, &s);
-  AddNoise(7, &s);
-  const std::vector<int> labels =
-      BandLabels(s, testing::kChamferConeStart, testing::kChamferConeEnd);
-  std::vector<RegionState> regions = RegionsFromLabels(
-      s.c, labels, {SurfaceType::kTorus, SurfaceType::kPlane, SurfaceType::kPlane});
+  std::vector<int> labels;
+  std::vector<RegionState> regions =
+      NoisyChamfer(7, SurfaceType::kTorus, SurfaceType::kPlane, &s, &labels);
   EXPECT_TRUE(RetypeCoaxialBands(s.c, labels, &regions).empty());
   EXPECT_EQ(regions[0].type, SurfaceType::kTorus);
 }
