@@ -64,20 +64,6 @@ std::optional<GroupFit> FitGroup(const std::vector<const Member*>& members, cons
   return g;
 }
 
-// True if the axes of a and b are within kCoaxialMaxAngleDeg and, at the
-// middle of their points, within kCoaxialMaxOffset of the smaller radius.
-bool NearlyCoaxial(const Surface& a, const Surface& b, const Eigen::Vector3d& middle,
-                   double radius) {
-  const AxisLine la = *AxisOf(a);
-  const AxisLine lb = *AxisOf(b);
-  if (std::abs(la.direction.dot(lb.direction)) < std::cos(kCoaxialMaxAngleDeg * M_PI / 180.0)) {
-    return false;
-  }
-  const Eigen::Vector3d pa = la.point + (middle - la.point).dot(la.direction) * la.direction;
-  const Eigen::Vector3d d = pa - lb.point;
-  return (d - d.dot(lb.direction) * lb.direction).norm() <= kCoaxialMaxOffset * radius;
-}
-
 Eigen::Vector3d Centroid(const std::vector<Eigen::Vector3d>& points) {
   Eigen::Vector3d sum = Eigen::Vector3d::Zero();
   for (const Eigen::Vector3d& p : points) sum += p;
@@ -130,6 +116,19 @@ std::vector<Pair> CandidatePairs(const SegmentContext& c, const std::vector<int>
 }
 
 }  // namespace
+
+bool NearlyCoaxial(const Surface& a, const Surface& b, const Eigen::Vector3d& middle,
+                   double radius) {
+  const AxisLine la = *AxisOf(a);
+  const AxisLine lb = *AxisOf(b);
+  if (std::abs(la.direction.dot(lb.direction)) < std::cos(kCoaxialMaxAngleDeg * M_PI / 180.0)) {
+    return false;
+  }
+  const Eigen::Vector3d pa = la.point + (middle - la.point).dot(la.direction) * la.direction;
+  const Eigen::Vector3d d = pa - lb.point;
+  return (d - d.dot(lb.direction) * lb.direction).norm() <= kCoaxialMaxOffset * radius;
+}
+
 
 int AlignCoaxialRegions(const SegmentContext& c, const std::vector<int>& labels,
                         std::vector<RegionState>* regions) {

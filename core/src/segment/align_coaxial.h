@@ -28,6 +28,12 @@ namespace meshseg::segment_internal {
 int AlignCoaxialRegions(const SegmentContext& c, const std::vector<int>& labels,
                         std::vector<RegionState>* regions);
 
+// True if the axes of `a` and `b` (surfaces with an axis, AxisOf) are
+// within kCoaxialMaxAngleDeg and, at the point of a's axis nearest
+// `middle`, within kCoaxialMaxOffset times `radius` of each other.
+bool NearlyCoaxial(const Surface& a, const Surface& b, const Eigen::Vector3d& middle,
+                   double radius);
+
 inline constexpr double kCoaxialMaxAngleDeg = 5.0;
 inline constexpr double kCoaxialMaxOffset = 0.2;
 inline constexpr double kCoaxialChiSquare = 18.47;  // chi-square, 4 degrees of freedom, 99.9 %

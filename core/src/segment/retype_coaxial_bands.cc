@@ -1,7 +1,6 @@
 #include "segment/retype_coaxial_bands.h"
 
 #include <cmath>
-#include <numbers>
 #include <optional>
 
 #include "segment/align_coaxial.h"
@@ -11,28 +10,18 @@
 namespace meshseg::segment_internal {
 namespace {
 
-// True if the axis of `face` (a cylinder or cone) is the axis of `band`: a
-// torus's within kCoaxialMaxAngleDeg and passing within kCoaxialMaxOffset
-// of its tube radius of its centre; through a sphere's centre within that
-// share of its radius.
+// True if the axis of `face` (a cylinder or cone) is the axis of `band`:
+// NearlyCoaxial with a torus at its centre for its tube radius; through a
+// sphere's centre within kCoaxialMaxOffset of its radius.
 bool OnItsAxis(const Surface& band, const Surface& face) {
-  const std::optional<AxisLine> axis = AxisOf(face);
-  if (!axis) return false;
-  Eigen::Vector3d center;
-  double radius = 0.0;
-  if (const auto* s = std::get_if<Sphere>(&band)) {
-    center = s->center, radius = s->radius;
-  } else if (const auto* t = std::get_if<Torus>(&band)) {
-    if (std::abs(t->axis_direction.dot(axis->direction)) <
-        std::cos(kCoaxialMaxAngleDeg * std::numbers::pi / 180.0)) {
-      return false;
-    }
-    center = t->center, radius = t->minor_radius;
-  } else {
-    return false;
+  if (const auto* t = std::get_if<Torus>(&band)) {
+    return NearlyCoaxial(band, face, t->center, t->minor_radius);
   }
-  const Eigen::Vector3d d = center - axis->point;
-  return (d - d.dot(axis->direction) * axis->direction).norm() <= kCoaxialMaxOffset * radius;
+  const auto* s = std::get_if<Sphere>(&band);
+  const std::optional<AxisLine> axis = AxisOf(face);
+  if (s == nullptr || !axis) return false;
+  const Eigen::Vector3d d = s->center - axis->point;
+  return (d - d.dot(axis->direction) * axis->direction).norm() <= kCoaxialMaxOffset * s->radius;
 }
 
 // The cone fitted to `interior` on one axis with the vertices that meet
