@@ -9,6 +9,7 @@
 
 #include "meshseg/status_macros.h"
 #include "segment/decide_type.h"
+#include "segment/retype_by_interior.h"
 
 namespace meshseg::segment_internal {
 namespace {
@@ -101,6 +102,17 @@ int ReleaseSmallRegions(const SegmentContext& c, std::vector<int>* labels,
       std::max(kMinRegionVertices, static_cast<std::size_t>(kMinRegionShare * c.vertex_count()));
   return ReleaseRegions([&](int, const RegionState& r) { return r.vertices.size() < min_size; },
                         labels, regions);
+}
+
+int ReleaseNarrowPlanes(const SegmentContext& c, std::vector<int>* labels,
+                        std::vector<RegionState>* regions) {
+  return ReleaseRegions(
+      [&](int id, const RegionState& r) {
+        const int ids[] = {id};
+        return r.type == SurfaceType::kPlane &&
+               InteriorVertices(c, *labels, ids, r.vertices).size() < kMinInteriorVertices;
+      },
+      labels, regions);
 }
 
 absl::Status AbsorbLeftovers(const SegmentContext& c, std::vector<int>* labels,

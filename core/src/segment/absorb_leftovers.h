@@ -33,6 +33,19 @@ inline constexpr double kMinRegionShare = 0.001;  // of all vertices
 int ReleaseSmallRegions(const SegmentContext& c, std::vector<int>* labels,
                         std::vector<RegionState>* regions);
 
+// Releases (labels -1, alive = false) every plane region with fewer than
+// kMinInteriorVertices (retype_by_interior.h) interior vertices, like the
+// small regions above.
+// A plane fits any strip of a curved face that narrow within the noise, and
+// no step can tell: RetypeByInterior and MergeSameSurface both need that
+// interior (test_piece at 0.15 h, seed 185: a plane strip of 63 vertices, 27
+// of them interior, along the r 6 round, typed plane to the end). Curved
+// regions that narrow stay: their type carries their curvature (fandisk's
+// small corner blend, a sphere of 103 vertices at noise 0.1, is one).
+// Returns how many.
+int ReleaseNarrowPlanes(const SegmentContext& c, std::vector<int>* labels,
+                        std::vector<RegionState>* regions);
+
 // Labels every vertex that has a face (labels[v] >= 0 afterwards) and
 // updates the regions' vertex lists. Errors: CANCELLED on stop.
 absl::Status AbsorbLeftovers(const SegmentContext& c, std::vector<int>* labels,

@@ -147,17 +147,6 @@ std::vector<int> InteriorVertices(const SegmentContext& c, const std::vector<int
   return interior;
 }
 
-int ReleaseNarrowPlanes(const SegmentContext& c, std::vector<int>* labels,
-                        std::vector<RegionState>* regions) {
-  return ReleaseRegions(
-      [&](int id, const RegionState& r) {
-        const int ids[] = {id};
-        return r.type == SurfaceType::kPlane &&
-               InteriorVertices(c, *labels, ids, r.vertices).size() < kMinInteriorVertices;
-      },
-      labels, regions);
-}
-
 bool TypeMissesInterior(const SegmentContext& c, const std::vector<int>& labels, int id,
                         const RegionState& r) {
   const int ids[] = {id};

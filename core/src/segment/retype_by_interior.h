@@ -26,18 +26,6 @@ inline constexpr std::size_t kMinInteriorVertices = 30;
 std::vector<int> InteriorVertices(const SegmentContext& c, const std::vector<int>& labels,
                                   std::span<const int> ids, std::span<const int> vertices);
 
-// Releases (labels -1, alive = false) every plane region with fewer than
-// kMinInteriorVertices interior vertices, for AbsorbLeftovers to hand out.
-// A plane fits any strip of a curved face that narrow within the noise, and
-// no step can tell: RetypeByInterior and MergeSameSurface both need that
-// interior (test_piece at 0.15 h, seed 185: a plane strip of 63 vertices, 27
-// of them interior, along the r 6 round, typed plane to the end). Curved
-// regions that narrow stay: their type carries their curvature (fandisk's
-// small corner blend, a sphere of 103 vertices at noise 0.1, is one).
-// Returns how many.
-int ReleaseNarrowPlanes(const SegmentContext& c, std::vector<int>* labels,
-                        std::vector<RegionState>* regions);
-
 // True if region `id` (`r`) has kMinInteriorVertices interior vertices
 // and its type does not fit them at the noise (FitsAtNoise): the gate of
 // the steps that take a region apart (GiveBackRows, SplitOffPlanes).

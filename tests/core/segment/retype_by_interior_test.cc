@@ -402,47 +402,5 @@ TEST(RetypeByInteriorTest, CylinderOnAFacetedRoundStays) {
   EXPECT_EQ(regions[0].type, SurfaceType::kCylinder);
 }
 
-// Two rows of the band labelled 3, of type `strip`, between its halves.
-std::vector<RegionState> BandWithStrip(const Sheet& s, SurfaceType strip,
-                                       std::vector<int>* labels) {
-  *labels = BandLabels(s, kConeStart, kConeEnd);
-  for (std::size_t v = 0; v < labels->size(); ++v) {
-    if (s.u[v] == 14.0 || s.u[v] == 15.0) (*labels)[v] = 3;
-  }
-  std::vector<SurfaceType> types = kTypes;
-  types[0] = SurfaceType::kCone;
-  types.push_back(strip);
-  return RegionsFromLabels(s.c, *labels, types);
-}
-
-TEST(ReleaseNarrowPlanesTest, PlaneStripWithoutInteriorIsReleased) {
-  Sheet s;
-  BuildChamfer(&s);
-  std::vector<int> labels;
-  std::vector<RegionState> regions = BandWithStrip(s, SurfaceType::kPlane, &labels);
-  ASSERT_EQ(regions[3].vertices.size(), 2u * kAround);
-  const std::vector<int> before = labels;
-  EXPECT_EQ(ReleaseNarrowPlanes(s.c, &labels, &regions), 1);
-  EXPECT_FALSE(regions[3].alive);
-  EXPECT_TRUE(regions[3].vertices.empty());
-  // The strip's vertices are free; the top (a plane with an interior) and
-  // the rest keep theirs.
-  EXPECT_TRUE(regions[2].alive);
-  for (std::size_t v = 0; v < labels.size(); ++v) {
-    EXPECT_EQ(labels[v], before[v] == 3 ? -1 : before[v]) << "row " << s.u[v];
-  }
-}
-
-TEST(ReleaseNarrowPlanesTest, CurvedStripStays) {
-  Sheet s;
-  BuildChamfer(&s);
-  std::vector<int> labels;
-  std::vector<RegionState> regions = BandWithStrip(s, SurfaceType::kCone, &labels);
-  const std::vector<int> before = labels;
-  EXPECT_EQ(ReleaseNarrowPlanes(s.c, &labels, &regions), 0);
-  EXPECT_TRUE(regions[3].alive);
-  EXPECT_EQ(labels, before);
-}
-
 }  // namespace
 }  // namespace meshseg::segment_internal

@@ -1,0 +1,65 @@
+// ReleaseNarrowPlanes on stepped_shaft's chamfer as a sheet
+// (sheet_context.h): a strip of its band labelled apart.
+#include "segment/absorb_leftovers.h"
+
+#include <gtest/gtest.h>
+
+#include <vector>
+
+#include "sheet_context.h"
+
+namespace meshseg::segment_internal {
+namespace {
+
+using testing::RegionsFromLabels;
+using testing::Sheet;
+
+constexpr double kSigma = 0.01;
+
+// The chamfer labelled band 0 (a cone), cylinder 1, top 2, and two rows of
+// the band 3, of type `strip`, between its halves.
+std::vector<RegionState> BandWithStrip(const Sheet& s, SurfaceType strip,
+                                       std::vector<int>* labels) {
+  labels->resize(s.u.size());
+  for (std::size_t v = 0; v < labels->size(); ++v) {
+    const double row = s.u[v];
+    (*labels)[v] = row == 14.0 || row == 15.0         ? 3
+                   : row < testing::kChamferConeStart ? 1
+                   : row > testing::kChamferConeEnd   ? 2
+                                                      : 0;
+  }
+  return RegionsFromLabels(
+      s.c, *labels, {SurfaceType::kCone, SurfaceType::kCylinder, SurfaceType::kPlane, strip});
+}
+
+TEST(ReleaseNarrowPlanesTest, PlaneStripWithoutInteriorIsReleased) {
+  Sheet s;
+  testing::BuildChamfer(kSigma, 0.0, &s);
+  std::vector<int> labels;
+  std::vector<RegionState> regions = BandWithStrip(s, SurfaceType::kPlane, &labels);
+  ASSERT_EQ(regions[3].vertices.size(), 2u * testing::kChamferAround);
+  const std::vector<int> before = labels;
+  EXPECT_EQ(ReleaseNarrowPlanes(s.c, &labels, &regions), 1);
+  EXPECT_FALSE(regions[3].alive);
+  EXPECT_TRUE(regions[3].vertices.empty());
+  // The strip's vertices are free; the top (a plane with an interior) and
+  // the rest keep theirs.
+  EXPECT_TRUE(regions[2].alive);
+  for (std::size_t v = 0; v < labels.size(); ++v) {
+    EXPECT_EQ(labels[v], before[v] == 3 ? -1 : before[v]) << "row " << s.u[v];
+  }
+}
+
+TEST(ReleaseNarrowPlanesTest, CurvedStripStays) {
+  Sheet s;
+  testing::BuildChamfer(kSigma, 0.0, &s);
+  std::vector<int> labels;
+  std::vector<RegionState> regions = BandWithStrip(s, SurfaceType::kCone, &labels);
+  const std::vector<int> before = labels;
+  EXPECT_EQ(ReleaseNarrowPlanes(s.c, &labels, &regions), 0);
+  EXPECT_TRUE(regions[3].alive);
+  EXPECT_EQ(labels, before);
+}
+
+}  // namespace
+}  // namespace meshseg::segment_internal
