@@ -25,8 +25,10 @@ namespace meshseg::segment_internal {
 // that fit fails, taken under its region's surface) is scored against one
 // fit of each analytic type to all of it (InformationScore, parameters
 // counted for both members); else the pair merges if one type meets the union
-// at the noise (FitsAtNoise) and two surfaces do not score kScoreMargin
-// less, or if one type scores kScoreMargin less and meets the union at
+// at the noise (FitsAtNoise) and either two surfaces do not score
+// kScoreMargin less or its rms exceeds theirs by at most kScoredNearError
+// sigmas (in quadrature: the scores, which grow with the vertex count, then
+// count the meshing's bias), or if one type scores kScoreMargin less and meets the union at
 // least as closely as the closer part's own fit meets that part, or, within
 // kScoredNearError sigmas, as the farther part's does (model errors),
 // taking that type (or its simplest limit, IsLimitOf, if that gains within
