@@ -1,5 +1,6 @@
-// GiveBackRows on a sheet: a countersink (a 45-degree cone band) whose
-// region took rows of the flat face around it.
+// GiveBackRows on sheets: a countersink (a 45-degree cone band) whose
+// region took rows of the flat face around it, and a boss top whose region
+// took rows of the boss side.
 #include "segment/give_back_rows.h"
 
 #include <gtest/gtest.h>
@@ -78,6 +79,35 @@ TEST(GiveBackRowsTest, ARegionItsTypeFitsKeepsItsVertices) {
       RegionsFromLabels(s.c, labels, {SurfaceType::kPlane, SurfaceType::kCone});
   EXPECT_TRUE(GiveBackRows(s.c, &labels, &regions).empty());
   EXPECT_EQ(labels, before);
+}
+
+// test_piece's boss (sheet_context.h): the top from radius 2 out to 5 and
+// the boss side below its rim.
+constexpr int kTopRows = 13;
+constexpr int kSideRows = 12;
+constexpr int kSideRowsTaken = 2;  // side rows the top's region took
+
+TEST(GiveBackRowsTest, TopBentOverTheRimGivesTheRowsBackAndTurnsPlane) {
+  // The top's region, typed sphere, took two rows of the side, and its
+  // sphere bends to meet them; a flatter sphere meets the top's interior,
+  // so only the surface, not the type, tells that the rows bent it.
+  Sheet s;
+  testing::BuildBoss(kTopRows, kSideRows, kSigma, &s);
+  std::vector<int> labels(s.u.size());
+  for (std::size_t v = 0; v < labels.size(); ++v) {
+    labels[v] = s.u[v] < kTopRows + kSideRowsTaken - 0.5 ? 0 : 1;
+  }
+  std::vector<RegionState> regions =
+      RegionsFromLabels(s.c, labels, {SurfaceType::kSphere, SurfaceType::kCone});
+
+  EXPECT_EQ(GiveBackRows(s.c, &labels, &regions), std::vector<int>{0});
+  EXPECT_EQ(regions[0].type, SurfaceType::kPlane);
+  // The side's rows are the side's again, the top's stay (the rim row lies
+  // on both).
+  for (std::size_t v = 0; v < labels.size(); ++v) {
+    if (std::abs(s.u[v] - (kTopRows - 1)) < 0.5) continue;
+    EXPECT_EQ(labels[v], s.u[v] < kTopRows - 0.5 ? 0 : 1) << "row " << s.u[v];
+  }
 }
 
 TEST(GiveBackRowsTest, NothingHappensWithoutANoiseScale) {

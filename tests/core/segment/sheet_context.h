@@ -151,6 +151,32 @@ inline void BuildChamfer(double sigma, double ripple, Sheet* s) {
   s->c.noise_sigma = sigma;
 }
 
+// test_piece's boss in profile: an annular top (z = 0) out to radius 5 with
+// `top_rows` rows 0.25 apart, and, below its rim, `side_rows` rows (0.25
+// apart) of the boss cone widening at 20.6 degrees from the axis (atan
+// 3/8), 69.4 degrees from the top; 64 vertices around (one short of a full
+// turn). Noise sigma `sigma` (none added), th_dis 5 sigma, th_nm 10 degrees.
+inline void BuildBoss(int top_rows, int side_rows, double sigma, Sheet* s) {
+  constexpr double kPi = 3.14159265358979323846;
+  constexpr double kStep = 0.25;
+  constexpr int kAround = 64;
+  const double half_angle = std::atan(3.0 / 8.0);
+  const double inner = 5.0 - kStep * (top_rows - 1);
+  BuildSheet(
+      [&](double row, double phi) {
+        const Eigen::Vector3d radial(std::cos(phi), std::sin(phi), 0.0);
+        const Eigen::Vector3d z = Eigen::Vector3d::UnitZ();
+        if (row < top_rows) return std::pair{Eigen::Vector3d((inner + kStep * row) * radial), z};
+        const double t = kStep * (row - (top_rows - 1));
+        return std::pair{Eigen::Vector3d((5.0 + t * std::sin(half_angle)) * radial -
+                                         t * std::cos(half_angle) * z),
+                         Eigen::Vector3d(std::cos(half_angle) * radial + std::sin(half_angle) * z)};
+      },
+      0.0, top_rows + side_rows - 1, top_rows + side_rows, 0.0, 2.0 * kPi * (kAround - 1) / kAround,
+      kAround, /*distance=*/5.0 * sigma, /*angle_deg=*/10.0, s);
+  s->c.noise_sigma = sigma;
+}
+
 // Every vertex of `s`.
 inline std::vector<int> AllVertices(const Sheet& s) {
   std::vector<int> v(s.u.size());

@@ -18,31 +18,10 @@ using testing::RegionsFromLabels;
 using testing::Sheet;
 
 constexpr double kSigma = 0.01;
-constexpr double kStep = 0.25;  // between rows
-constexpr int kAround = 64;
 constexpr int kTopRows = 17;   // the top: radius 1 to 5
 constexpr int kConeRows = 34;  // the cone: 8.5 down its side
 
-// test_piece's boss: an annular top (z = 0, radius 1 to 5) and, below its
-// rim, the boss cone widening at 20.6 degrees from the axis (atan 3/8),
-// 69.4 degrees from the top.
-void BuildBoss(Sheet* s) {
-  const double half_angle = std::atan(3.0 / 8.0);
-  BuildSheet(
-      [half_angle](double row, double phi) {
-        const Eigen::Vector3d radial(std::cos(phi), std::sin(phi), 0.0);
-        const Eigen::Vector3d z = Eigen::Vector3d::UnitZ();
-        if (row < kTopRows) return std::pair{Eigen::Vector3d((1.0 + kStep * row) * radial), z};
-        const double t = kStep * (row - (kTopRows - 1));
-        return std::pair{Eigen::Vector3d((5.0 + t * std::sin(half_angle)) * radial -
-                                         t * std::cos(half_angle) * z),
-                         Eigen::Vector3d(std::cos(half_angle) * radial + std::sin(half_angle) * z)};
-      },
-      0.0, kTopRows + kConeRows - 1, kTopRows + kConeRows, 0.0,
-      2.0 * std::numbers::pi * (kAround - 1) / kAround, kAround, /*distance=*/5.0 * kSigma,
-      /*angle_deg=*/10.0, s);
-  s->c.noise_sigma = kSigma;
-}
+void BuildBoss(Sheet* s) { testing::BuildBoss(kTopRows, kConeRows, kSigma, s); }
 
 TEST(SplitOffPlanesTest, TopAbsorbedByItsConeIsSplitOff) {
   Sheet s;
