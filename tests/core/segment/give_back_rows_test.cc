@@ -9,6 +9,7 @@
 #include <numbers>
 #include <vector>
 
+#include "segment/absorb_leftovers.h"
 #include "sheet_context.h"
 
 namespace meshseg::segment_internal {
@@ -64,6 +65,31 @@ TEST(GiveBackRowsTest, CountersinkGivesTheFaceItsRowsBack) {
   // The face's rows are the face's again, the band's stay.
   for (std::size_t v = 0; v < labels.size(); ++v) {
     EXPECT_EQ(labels[v], s.u[v] < kFlatRows - 0.5 ? 0 : 1) << "row " << s.u[v];
+  }
+}
+
+TEST(GiveBackRowsTest, AFragmentOfTheRegionsSurfaceTakesNothing) {
+  // A fragment of 32 vertices (under kMinRegionVertices) inside the band,
+  // typed cone, meets the whole band; were it asked, it would take all of
+  // the region's band rows and leave no rest (test_piece at 0.15 h, seed
+  // 171: a sphere piece of the countersink).
+  Sheet s;
+  BuildCountersink(&s);
+  std::vector<int> labels = LabelsFrom(s, kFlatRows - kTakenRows);
+  const auto in_fragment = [&](std::size_t v) {
+    return s.u[v] > kFlatRows + 3.5 && s.v[v] < 3.5 * 2.0 * std::numbers::pi / kAround;
+  };
+  for (std::size_t v = 0; v < labels.size(); ++v) {
+    if (in_fragment(v)) labels[v] = 2;
+  }
+  std::vector<RegionState> regions = RegionsFromLabels(
+      s.c, labels, {SurfaceType::kPlane, SurfaceType::kTorus, SurfaceType::kCone});
+  ASSERT_LT(regions[2].vertices.size(), kMinRegionVertices);
+
+  EXPECT_EQ(GiveBackRows(s.c, &labels, &regions), std::vector<int>{1});
+  EXPECT_EQ(regions[1].type, SurfaceType::kCone);
+  for (std::size_t v = 0; v < labels.size(); ++v) {
+    EXPECT_EQ(labels[v], in_fragment(v) ? 2 : s.u[v] < kFlatRows - 0.5 ? 0 : 1) << "row " << s.u[v];
   }
 }
 
