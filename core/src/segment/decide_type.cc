@@ -149,6 +149,12 @@ double InformationScore(const SegmentContext& c, double mean_square, std::size_t
          parameters * std::log(m);
 }
 
+bool TakesOverNearTheNoise(const SegmentContext& c, SurfaceType type, double model_error,
+                           double score, SurfaceType own, double own_score) {
+  if (!(model_error <= kScoredNearError * c.noise_sigma)) return false;
+  return IsLimitOf(type, own) ? score < own_score + kScoreMargin : score + kScoreMargin < own_score;
+}
+
 ScoredFit ScoreType(const SegmentContext& c, SurfaceType type, std::span<const int> vertices) {
   ScoredFit out{.type = type, .fit = FitType(c, type, vertices)};
   if (out.fit.ok()) {

@@ -76,6 +76,15 @@ double InformationScore(const SegmentContext& c, double mean_square, std::size_t
                         int parameters);
 inline constexpr double kScoreMargin = 10.0;
 
+// True if a fit of `type`, `model_error` (ModelError) off its vertices and
+// scoring `score` there, may take over from the type `own` scoring
+// `own_score` on the same vertices as a fit near the noise: within
+// kScoredNearError sigmas, and kScoreMargin below `own`, or, if it is a
+// limit of `own` (IsLimitOf), less than kScoreMargin above it (own's extra
+// parameters must buy that much).
+bool TakesOverNearTheNoise(const SegmentContext& c, SurfaceType type, double model_error,
+                           double score, SurfaceType own, double own_score);
+
 // A fit of one type to a vertex set with its InformationScore there
 // (infinite if the fit is invalid).
 struct ScoredFit {

@@ -65,9 +65,7 @@ SurfaceType BestInteriorType(const SegmentContext& c, SurfaceType own,
   if (std::none_of(scored.begin(), scored.end(), [&](const ScoredFit& s) {
         if (!s.fit.ok()) return false;
         const double e = ModelError(c, s.fit);
-        return e <= limit || (e <= kScoredNearError * c.noise_sigma &&
-                              (s.score + kScoreMargin < own_score ||
-                               (IsLimitOf(s.type, own) && s.score < own_score + kScoreMargin)));
+        return e <= limit || TakesOverNearTheNoise(c, s.type, e, s.score, own, own_score);
       })) {
     return own;
   }

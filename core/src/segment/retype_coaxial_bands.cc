@@ -67,13 +67,11 @@ std::vector<int> RetypeCoaxialBands(const SegmentContext& c, const std::vector<i
       const double mean_square = SquaredDistances(c, cone.surface, interior) / interior.size();
       const double score =
           InformationScore(c, mean_square, interior.size(), kCoaxialConeParameters);
-      // As RetypeByInterior weighs a type against its limit: near the
-      // noise, within kScoreMargin of the torus it is a limit of, or
-      // kScoreMargin below the sphere it is not.
-      const bool takes =
-          ModelErrorOfMeanSquare(c, mean_square) <= kScoredNearError * c.noise_sigma &&
-          (IsLimitOf(SurfaceType::kCone, r.type) ? score < own + kScoreMargin
-                                                 : score + kScoreMargin < own);
+      // As RetypeByInterior weighs a type against the region's: within
+      // kScoreMargin of the torus it is a limit of, or kScoreMargin below
+      // the sphere it is not.
+      const bool takes = TakesOverNearTheNoise(
+          c, SurfaceType::kCone, ModelErrorOfMeanSquare(c, mean_square), score, r.type, own);
       if (takes && (!best || score < best_score)) best = cone, best_score = score;
     }
     if (!best) continue;

@@ -1,10 +1,13 @@
 // NearlyFlat, the test behind FlattenNearlyFlatRegions: a curved fit that
-// bends less than the tolerances over its region is a plane.
+// bends less than the tolerances over its region is a plane. And
+// TakesOverNearTheNoise, the rule by which RetypeByInterior and
+// RetypeCoaxialBands weigh a type against a region's own.
 #include "segment/decide_type.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include "sheet_context.h"
@@ -77,6 +80,25 @@ TEST(NearlyFlatTest, TorusLargeBothWaysIsFlat) {
                     .major_radius = 2000.0,
                     .minor_radius = 1000.0};
   EXPECT_TRUE(NearlyFlat(s.c, torus, /*rms=*/0.0, AllVertices(s), s.c.tolerance));
+}
+
+TEST(TakesOverNearTheNoiseTest, ALimitNeedsOnlyToScoreWithinTheMarginAbove) {
+  SegmentContext c;
+  c.noise_sigma = 0.1;
+  const double near = kScoredNearError * c.noise_sigma;
+  // A cone (a limit of the torus) 9 above it; a sphere (not one) 9 below.
+  EXPECT_TRUE(
+      TakesOverNearTheNoise(c, SurfaceType::kCone, near, -91.0, SurfaceType::kTorus, -100.0));
+  EXPECT_FALSE(
+      TakesOverNearTheNoise(c, SurfaceType::kSphere, near, -109.0, SurfaceType::kTorus, -100.0));
+  EXPECT_TRUE(
+      TakesOverNearTheNoise(c, SurfaceType::kSphere, near, -111.0, SurfaceType::kTorus, -100.0));
+  // Past kScoredNearError sigmas nothing takes over, however it scores.
+  EXPECT_FALSE(TakesOverNearTheNoise(c, SurfaceType::kCone, 1.01 * near, -200.0,
+                                     SurfaceType::kTorus, -100.0));
+  // A region whose own type has no valid fit (score infinite) gives way.
+  EXPECT_TRUE(TakesOverNearTheNoise(c, SurfaceType::kSphere, near, -50.0, SurfaceType::kTorus,
+                                    std::numeric_limits<double>::infinity()));
 }
 
 }  // namespace
