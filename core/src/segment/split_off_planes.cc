@@ -82,6 +82,31 @@ double JunctionAngleDeg(const SegmentContext& c, const Split& s) {
   return count > 0 ? sum / count : 0.0;
 }
 
+constexpr int8_t kOutside = -1;
+constexpr int8_t kOnPlane = 0;
+constexpr int8_t kOnRest = 1;
+
+// Puts every vertex of `vertices` whose neighbours are all of `vertices`
+// and all on the other side on that side (decided on the sides as they
+// were). Where the curved fit passes close to the flat face, the noise
+// leaves single vertices of the face nearer to it: test_piece's boss top at
+// 0.15 h (seed 56) kept 100 of its 115 vertices with the plane, but the
+// holes left it 21 interior vertices, and the last release took it for a
+// strip (ReleaseNarrowPlanes).
+void FillOneVertexHoles(const SegmentContext& c, const std::vector<int>& vertices,
+                        std::vector<int8_t>* side) {
+  std::vector<int> flip;
+  for (const int v : vertices) {
+    const auto around = c.graph.Neighbors(v);
+    if (!around.empty() && std::all_of(around.begin(), around.end(), [&](int u) {
+          return (*side)[u] != kOutside && (*side)[u] != (*side)[v];
+        })) {
+      flip.push_back(v);
+    }
+  }
+  for (const int v : flip) (*side)[v] = (*side)[v] == kOnPlane ? kOnRest : kOnPlane;
+}
+
 // Steps 1 and 2 of SplitOffPlanes on region `r`.
 std::optional<Split> FindSplit(const SegmentContext& c, const RegionState& r) {
   const std::vector<int> flat = DominantNormalVertices(c, r.vertices);
@@ -109,13 +134,17 @@ std::optional<Split> FindSplit(const SegmentContext& c, const RegionState& r) {
     s.curved = FitType(c, r.type, s.rest);
     if (!s.plane.ok() || !s.curved.ok()) return std::nullopt;
     if (round == kSplitRounds) break;
+    std::vector<int8_t> side(c.vertex_count(), kOutside);
+    for (const int v : r.vertices) {
+      side[v] = std::abs(ProjectVertex(c, s.plane.surface, v).distance) <
+                        std::abs(ProjectVertex(c, s.curved.surface, v).distance)
+                    ? kOnPlane
+                    : kOnRest;
+    }
+    FillOneVertexHoles(c, r.vertices, &side);
     s.on_plane.clear();
     s.rest.clear();
-    for (const int v : r.vertices) {
-      const bool nearer_plane = std::abs(ProjectVertex(c, s.plane.surface, v).distance) <
-                                std::abs(ProjectVertex(c, s.curved.surface, v).distance);
-      (nearer_plane ? s.on_plane : s.rest).push_back(v);
-    }
+    for (const int v : r.vertices) (side[v] == kOnPlane ? s.on_plane : s.rest).push_back(v);
   }
   if (s.on_plane.size() < kMinRegionVertices) return std::nullopt;
   return s;
