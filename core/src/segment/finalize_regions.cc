@@ -112,6 +112,22 @@ Segmentation FinalizeRegions(const SegmentContext& c, const TriMesh& mesh,
     RegionState& r = regions[id];
     if (!r.alive || r.vertices.empty()) return;
     FitResult fit = InlierFit(c, r.type, r.vertices);
+    if (!fit.ok()) {
+      // The surface the region grew with may no longer fit what it holds
+      // (test_piece's boss top at 0.15 h, seed 171: a torus grown on the
+      // rim that then took most of the top, where no torus fit is valid;
+      // its old surface missed its vertices by 0.77, 5 sigma). The type
+      // that explains them best (InformationScore) takes over.
+      ScoredFit best = ScoreType(c, SurfaceType::kPlane, r.vertices);
+      for (const SurfaceType type : kCurvedTypes) {
+        ScoredFit s = ScoreType(c, type, r.vertices);
+        if (s.score < best.score) best = std::move(s);
+      }
+      if (best.fit.ok()) {
+        r.type = best.type;
+        fit = InlierFit(c, r.type, r.vertices);
+      }
+    }
     // The inliers can leave a curved fit flat where the fit to all of the
     // region (FlattenNearlyFlatRegions) was not: test_piece's boss top at
     // 0.15 h (seed 137), a sphere of radius 28.7 over it and its rim rows,

@@ -1,6 +1,7 @@
 // FinalizeRegions: the reported surface is fitted to the region's own
-// surface, not to vertices of a small face absorbed with it, and a curved
-// type flat over the region without them is a plane.
+// surface, not to vertices of a small face absorbed with it; a curved
+// type flat over the region without them is a plane, and a type with no
+// valid fit there gives way to the one that fits.
 #include "segment/finalize_regions.h"
 
 #include <gtest/gtest.h>
@@ -71,6 +72,29 @@ TEST(FinalizeRegionsTest, CurvedRegionFlatWithoutItsFlapIsAPlane) {
   ASSERT_EQ(seg.regions[0].type, SurfaceType::kPlane);
   const Plane& plane = std::get<Plane>(seg.regions[0].surface);
   EXPECT_GT(std::abs(plane.normal.z()), std::cos(0.05 * std::numbers::pi / 180.0));
+}
+
+TEST(FinalizeRegionsTest, RegionItsTypeCannotFitTakesTheTypeThatDoes) {
+  // A flat sheet (the fold beyond its edge) in a region typed torus, with
+  // the surface of a torus grown elsewhere: no torus fit to the sheet is
+  // valid, and that old surface must not be reported (test_piece's boss
+  // top at 0.15 h, seed 171).
+  Sheet s;
+  BuildSheet(Fold45(9.0), 0.0, 8.0, 41, 0.0, 8.0, 41, /*distance=*/0.3, /*angle_deg=*/5.0, &s);
+  std::vector<int> labels(s.u.size(), 0);
+  std::vector<RegionState> regions(1);
+  regions[0].type = SurfaceType::kTorus;
+  regions[0].surface = Torus{.center = Eigen::Vector3d(4.0, 4.0, -3.0),
+                             .axis_direction = Eigen::Vector3d::UnitZ(),
+                             .major_radius = 8.0,
+                             .minor_radius = 3.0};
+  RebuildVertexLists(labels, &regions);
+  ASSERT_FALSE(FitType(s.c, SurfaceType::kTorus, regions[0].vertices).ok());
+
+  const Segmentation seg = FinalizeRegions(s.c, s.mesh, labels, regions);
+  ASSERT_EQ(seg.regions.size(), 1u);
+  EXPECT_EQ(seg.regions[0].type, SurfaceType::kPlane) << SurfaceTypeName(seg.regions[0].type);
+  EXPECT_LT(seg.regions[0].max_distance, 1e-6);
 }
 
 }  // namespace
