@@ -164,6 +164,14 @@ ScoredFit ScoreType(const SegmentContext& c, SurfaceType type, std::span<const i
   return out;
 }
 
+ScoredFit BestScoredType(const SegmentContext& c, std::span<const int> vertices) {
+  ScoredFit best = ScoreType(c, SurfaceType::kPlane, vertices);
+  for (ScoredFit& s : ScoreCurvedTypes(c, vertices)) {
+    if (s.score < best.score) best = std::move(s);
+  }
+  return best;
+}
+
 std::array<ScoredFit, kCurvedTypes.size()> ScoreCurvedTypes(const SegmentContext& c,
                                                             std::span<const int> vertices) {
   std::array<ScoredFit, kCurvedTypes.size()> out;

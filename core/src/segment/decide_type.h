@@ -98,6 +98,10 @@ ScoredFit ScoreType(const SegmentContext& c, SurfaceType type, std::span<const i
 inline constexpr std::array<SurfaceType, 4> kCurvedTypes = {
     SurfaceType::kCylinder, SurfaceType::kSphere, SurfaceType::kCone, SurfaceType::kTorus};
 
+// The ScoreType of lowest score on `vertices` of a plane and each of
+// kCurvedTypes (its fit invalid if none is valid).
+ScoredFit BestScoredType(const SegmentContext& c, std::span<const int> vertices);
+
 // ScoreType of each of kCurvedTypes on `vertices`.
 std::array<ScoredFit, kCurvedTypes.size()> ScoreCurvedTypes(const SegmentContext& c,
                                                             std::span<const int> vertices);

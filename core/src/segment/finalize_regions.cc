@@ -118,11 +118,7 @@ Segmentation FinalizeRegions(const SegmentContext& c, const TriMesh& mesh,
       // rim that then took most of the top, where no torus fit is valid;
       // its old surface missed its vertices by 0.77, 5 sigma). The type
       // that explains them best (InformationScore) takes over.
-      ScoredFit best = ScoreType(c, SurfaceType::kPlane, r.vertices);
-      for (const SurfaceType type : kCurvedTypes) {
-        ScoredFit s = ScoreType(c, type, r.vertices);
-        if (s.score < best.score) best = std::move(s);
-      }
+      const ScoredFit best = BestScoredType(c, r.vertices);
       if (best.fit.ok()) {
         r.type = best.type;
         fit = InlierFit(c, r.type, r.vertices);

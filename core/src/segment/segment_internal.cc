@@ -5,6 +5,8 @@
 
 #include <Eigen/Eigenvalues>
 
+#include "segment/decide_type.h"
+
 namespace meshseg::segment_internal {
 namespace {
 
@@ -142,7 +144,18 @@ void RefitRegions(const SegmentContext& c, const std::vector<uint8_t>& refit,
     RegionState& region = (*regions)[r];
     if (!refit[r] || !region.alive || region.vertices.empty()) continue;
     const FitResult fit = FitType(c, region.type, region.vertices);
-    if (fit.ok()) region.surface = fit.surface;
+    if (fit.ok()) {
+      region.surface = fit.surface;
+      continue;
+    }
+    // No valid fit of its type to what it holds now (a torus grown on
+    // test_piece's boss rim at 0.15 h, seed 171, that took most of the flat
+    // top from the leftovers): the type that fits takes over, rather than a
+    // surface the region no longer has.
+    ScoredFit best = BestScoredType(c, region.vertices);
+    if (!best.fit.ok()) continue;
+    region.type = best.type;
+    region.surface = best.fit.surface;
   }
 }
 

@@ -1,12 +1,14 @@
 // The shared pieces of the segment stage: FitType's per-type fit over a
-// region's vertices.
+// region's vertices, and RefitRegions when that fit is invalid.
 #include "segment/segment_internal.h"
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <numbers>
 #include <variant>
 
+#include "segment/decide_type.h"
 #include "sheet_context.h"
 
 namespace meshseg::segment_internal {
@@ -59,6 +61,33 @@ TEST(FitTypeTest, SpindleTorusAwayFromItsAxisIsATorus) {
   const auto& t = std::get<Torus>(fit.surface);
   EXPECT_NEAR(t.major_radius, 2.0, 1e-3);
   EXPECT_NEAR(t.minor_radius, 10.0, 1e-3);
+}
+
+TEST(RefitRegionsTest, RegionItsTypeCannotFitTakesTheTypeThatDoes) {
+  // The disc with the start of a round labelled torus, with the surface of
+  // a torus grown elsewhere (test_piece's boss rim at 0.15 h, seed 171): no
+  // torus fit is valid there, and the old surface misses the disc.
+  Sheet s;
+  testing::BuildDiscWithRoundStart(/*distance=*/0.15, &s);
+  std::vector<int> labels(s.u.size(), 0);
+  std::vector<RegionState> regions(1);
+  regions[0].type = SurfaceType::kTorus;
+  const Torus stale{.center = Eigen::Vector3d(0.0, 0.0, -3.0),
+                    .axis_direction = Eigen::Vector3d::UnitZ(),
+                    .major_radius = 8.0,
+                    .minor_radius = 3.0};
+  regions[0].surface = stale;
+  RebuildVertexLists(labels, &regions);
+  ASSERT_FALSE(FitType(s.c, SurfaceType::kTorus, regions[0].vertices).ok());
+
+  RefitRegions(s.c, {1}, &regions);
+  const ScoredFit best = BestScoredType(s.c, regions[0].vertices);
+  ASSERT_TRUE(best.fit.ok());
+  EXPECT_EQ(regions[0].type, best.type) << SurfaceTypeName(regions[0].type);
+  EXPECT_NE(regions[0].type, SurfaceType::kTorus);
+  const double n = static_cast<double>(regions[0].vertices.size());
+  EXPECT_LT(std::sqrt(SquaredDistances(s.c, regions[0].surface, regions[0].vertices) / n),
+            0.1 * std::sqrt(SquaredDistances(s.c, stale, regions[0].vertices) / n));
 }
 
 }  // namespace
