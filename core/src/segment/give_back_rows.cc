@@ -136,12 +136,12 @@ std::vector<int> GiveBackRows(const SegmentContext& c, std::vector<int>* labels,
       taker[v] = -1;
     }
     if (!g) continue;
-    region.vertices = g->rest;
     region.type = g->rest_fit.type;
     region.surface = g->rest_fit.fit.surface;
+    // The regions after this one are weighed on what they hold now.
+    RebuildVertexLists(*labels, regions);
     gave.push_back(id);
   }
-  if (!gave.empty()) RebuildVertexLists(*labels, regions);
   return gave;
 }
 
