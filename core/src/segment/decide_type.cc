@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <variant>
 
 namespace meshseg::segment_internal {
@@ -169,6 +170,16 @@ ScoredFit BestScoredType(const SegmentContext& c, std::span<const int> vertices)
   for (ScoredFit& s : ScoreCurvedTypes(c, vertices)) {
     if (s.score < best.score) best = std::move(s);
   }
+  return best;
+}
+
+std::optional<ScoredFit> TypeThatFitsInstead(const SegmentContext& c, const RegionState& r) {
+  ScoredFit best = BestScoredType(c, r.vertices);
+  if (!best.fit.ok()) return std::nullopt;
+  const double n = static_cast<double>(r.vertices.size());
+  const double own = InformationScore(c, SquaredDistances(c, r.surface, r.vertices) / n,
+                                      r.vertices.size(), ParameterCount(r.type));
+  if (!(best.score + kScoreMargin < own)) return std::nullopt;
   return best;
 }
 

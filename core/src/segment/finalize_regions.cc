@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -113,14 +114,8 @@ Segmentation FinalizeRegions(const SegmentContext& c, const TriMesh& mesh,
     if (!r.alive || r.vertices.empty()) return;
     FitResult fit = InlierFit(c, r.type, r.vertices);
     if (!fit.ok()) {
-      // The surface the region grew with may no longer fit what it holds
-      // (test_piece's boss top at 0.15 h, seed 171: a torus grown on the
-      // rim that then took most of the top, where no torus fit is valid;
-      // its old surface missed its vertices by 0.77, 5 sigma). The type
-      // that explains them best (InformationScore) takes over.
-      const ScoredFit best = BestScoredType(c, r.vertices);
-      if (best.fit.ok()) {
-        r.type = best.type;
+      if (const std::optional<ScoredFit> other = TypeThatFitsInstead(c, r)) {
+        r.type = other->type;
         fit = InlierFit(c, r.type, r.vertices);
       }
     }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include <Eigen/Eigenvalues>
 
@@ -146,16 +147,10 @@ void RefitRegions(const SegmentContext& c, const std::vector<uint8_t>& refit,
     const FitResult fit = FitType(c, region.type, region.vertices);
     if (fit.ok()) {
       region.surface = fit.surface;
-      continue;
+    } else if (const std::optional<ScoredFit> other = TypeThatFitsInstead(c, region)) {
+      region.type = other->type;
+      region.surface = other->fit.surface;
     }
-    // No valid fit of its type to what it holds now (a torus grown on
-    // test_piece's boss rim at 0.15 h, seed 171, that took most of the flat
-    // top from the leftovers): the type that fits takes over, rather than a
-    // surface the region no longer has.
-    ScoredFit best = BestScoredType(c, region.vertices);
-    if (!best.fit.ok()) continue;
-    region.type = best.type;
-    region.surface = best.fit.surface;
   }
 }
 

@@ -118,8 +118,8 @@ inline constexpr double kCurvedDirection = 0.85;
 void RebuildVertexLists(const std::vector<int>& labels, std::vector<RegionState>* regions);
 
 // Refits, with its own type, every alive region r with vertices and
-// refit[r] set; a region whose type has no valid fit there takes the type
-// of BestScoredType (decide_type.h), or keeps its surface if none fits.
+// refit[r] set; a region whose type has no valid fit there takes the
+// TypeThatFitsInstead (decide_type.h), if any, or keeps its surface.
 void RefitRegions(const SegmentContext& c, const std::vector<uint8_t>& refit,
                   std::vector<RegionState>* regions);
 

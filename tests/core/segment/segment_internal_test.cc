@@ -90,5 +90,26 @@ TEST(RefitRegionsTest, RegionItsTypeCannotFitTakesTheTypeThatDoes) {
             0.1 * std::sqrt(SquaredDistances(s.c, stale, regions[0].vertices) / n));
 }
 
+TEST(RefitRegionsTest, RegionWhoseSurfaceStillMeetsItBestKeepsIt) {
+  // The same region with the spindle torus FitType finds there, and
+  // rejects, as its surface: it meets the disc and the round's start
+  // better than any valid type does, so the region keeps it (a torus band
+  // on fandisk_noisy whose torus fit failed for a while).
+  Sheet s;
+  testing::BuildDiscWithRoundStart(/*distance=*/0.15, &s);
+  std::vector<int> labels(s.u.size(), 0);
+  std::vector<RegionState> regions(1);
+  regions[0].type = SurfaceType::kTorus;
+  RebuildVertexLists(labels, &regions);
+  const FitResult spindle = FitType(s.c, SurfaceType::kTorus, regions[0].vertices);
+  ASSERT_FALSE(spindle.ok());
+  regions[0].surface = spindle.surface;
+
+  RefitRegions(s.c, {1}, &regions);
+  EXPECT_EQ(regions[0].type, SurfaceType::kTorus);
+  EXPECT_EQ(std::get<Torus>(regions[0].surface).minor_radius,
+            std::get<Torus>(spindle.surface).minor_radius);
+}
+
 }  // namespace
 }  // namespace meshseg::segment_internal
