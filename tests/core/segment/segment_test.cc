@@ -225,7 +225,11 @@ TEST_P(SegmentPartHighNoise, KeepsTypesAtHighNoise) {
 // with no plane region there (seed 120), and a plane strip 2 rows wide
 // along test_piece's r 6 round, too narrow for any interior test (seed 185),
 // and its countersink left a torus of r 22 that beat the cone by 19 on the
-// interior (seed 172).
+// interior (seed 172); at stop 23, test_piece's countersink in two cone
+// pieces one cone met at the noise, 0.33 sigma above them yet 10.6 worse
+// (seed 198), its r 6 round in two narrow cylinders of r 5.0 and 7.7 (seed
+// 69), and its countersink a torus over rows of the top and the bore that a
+// sphere fragment of it would have taken whole (seed 171).
 class SegmentPartHighNoiseOtherSeed
     : public ::testing::TestWithParam<std::tuple<std::string, double, uint64_t>> {};
 
@@ -274,11 +278,61 @@ INSTANTIATE_TEST_SUITE_P(Draws, SegmentPartHighNoiseOtherSeed,
                                            std::tuple{std::string("plate_boss"), 0.0, uint64_t{51}},
                                            std::tuple{std::string("plate_boss"), 0.0, uint64_t{120}},
                                            std::tuple{std::string("test_piece"), 1.0, uint64_t{185}},
-                                           std::tuple{std::string("test_piece"), 1.0, uint64_t{172}}),
+                                           std::tuple{std::string("test_piece"), 1.0, uint64_t{172}},
+                                           std::tuple{std::string("test_piece"), 1.0, uint64_t{198}},
+                                           std::tuple{std::string("test_piece"), 1.0, uint64_t{69}},
+                                           std::tuple{std::string("test_piece"), 1.0, uint64_t{171}}),
                          [](const auto& info) {
                            return std::get<0>(info.param) + "_seed_" +
                                   std::to_string(std::get<2>(info.param));
                          });
+
+// test_piece's boss top (a disc of radius 5 h, 183 faces) is under the 200
+// faces the checks above ask for, but a flat top reported curved is wrong
+// all the same: the region holding most of it must be a plane covering 90 %
+// of it within 2 sigma. At 0.15 h (stop 23) it ended a sphere of radius
+// 12.4 bent over rows of the boss cone (seed 7: GiveBackRows asked the type,
+// not the surface), inside the boss cone after the last release took it
+// for a strip for the holes its split left in it (seed 56), a sphere of
+// radius 15 with rms 2.2 sigma (seed 69), a sphere of radius 128 fitted to
+// the top alone (seed 137), and a torus grown on the rim whose surface,
+// never refitted after it took most of the top, missed it by 5 sigma (seed
+// 171).
+void ExpectBossTopIsAPlane(const PartRun& run) {
+  SCOPED_TRACE(::testing::Message() << run.eval);
+  const auto top =
+      std::find_if(run.eval.primitives.begin(), run.eval.primitives.end(),
+                   [](const testing::PrimitiveScore& p) { return p.name == "boss_top"; });
+  ASSERT_NE(top, run.eval.primitives.end());
+  ASSERT_GE(top->region, 0);
+  const Region& region = run.seg.regions[top->region];
+  EXPECT_EQ(region.type, SurfaceType::kPlane) << SurfaceTypeName(region.type);
+  EXPECT_GE(top->covered, kMinCovered);
+  EXPECT_LE(region.rms_distance, 2.0 * run.seg.estimates.noise_sigma);
+}
+
+// At the noise seed (7, or $MESHSEG_NOISE_SEED: the seed matrix reports it
+// as test_piece@0.15h-small).
+class SegmentPartSmallFaces : public SegmentPart {};
+
+TEST_P(SegmentPartSmallFaces, BossTopIsAPlaneAtHighNoise) {
+  const auto& [name, voxel] = GetParam();
+  ExpectBossTopIsAPlane(Segmented(name, voxel, 0.15));
+}
+
+INSTANTIATE_TEST_SUITE_P(Parts, SegmentPartSmallFaces,
+                         ::testing::Values(std::tuple{std::string("test_piece"), 1.0}),
+                         [](const auto& info) { return std::get<0>(info.param); });
+
+class BossTopAtHighNoise : public ::testing::TestWithParam<uint64_t> {};
+
+TEST_P(BossTopAtHighNoise, IsAPlaneRegion) {
+  ExpectBossTopIsAPlane(Segmented("test_piece", 1.0, 0.15, GetParam()));
+}
+
+INSTANTIATE_TEST_SUITE_P(Draws, BossTopAtHighNoise,
+                         ::testing::Values(uint64_t{56}, uint64_t{69}, uint64_t{137}, uint64_t{171}),
+                         [](const auto& info) { return "seed_" + std::to_string(info.param); });
 
 INSTANTIATE_TEST_SUITE_P(Parts, SegmentPart,
                          ::testing::Values(std::tuple{std::string("test_piece"), 1.0},
