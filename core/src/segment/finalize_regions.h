@@ -11,14 +11,15 @@
 
 namespace meshseg::segment_internal {
 
-// Returns the segmentation (estimates left empty) of `mesh` labelled
-// `labels` with `regions`. Regions without faces are dropped; their
-// vertices take the label of an incident face. Each region's surface is
-// refitted on the vertices that meet (5) and (6) for it, while they are at
-// least half of it, and a curved region whose surface is then NearlyFlat
-// over it becomes a plane (refitted the same way); then the regions of one turned feature are fitted to
-// one axis (align_coaxial.h). A region's errors are measured over all its
-// vertices.
+// Returns the segmentation (estimates left empty) of `mesh` labelled `labels`
+// with `regions`. Regions without faces are dropped; their vertices take the
+// label of an incident face. Each region's surface is refitted on the vertices
+// that meet (5) and (6) for it, while they are at least half of it (a region
+// whose type has no valid fit there first takes the TypeThatFitsInstead,
+// decide_type.h, if any), and a curved region whose surface is then NearlyFlat
+// over it becomes a plane (refitted the same way); then the regions of one
+// turned feature are fitted to one axis (align_coaxial.h). A region's errors
+// are measured over all its vertices.
 Segmentation FinalizeRegions(const SegmentContext& c, const TriMesh& mesh,
                              const std::vector<int>& labels, std::vector<RegionState> regions);
 

@@ -17,16 +17,15 @@
 namespace meshseg::segment_internal {
 
 // For every curved or quadric region whose surface, or whose type refitted
-// there, does not fit its interior at the noise (FitsAtNoise), each
-// analytic neighbour grows back into it from their common boundary over the
-// vertices within th_dis of the neighbour's surface (5). The region gives
-// those vertices back if the rest, under the best of a plane and the curved
-// types with no more parameters than its own (or its quadric), and the
-// rows, under their neighbours' surfaces,
-// explain the region's vertices kScoreMargin better than its type alone
-// (InformationScore), and the rest keeps kMinRegionVertices; the rest takes
-// that type. (A more general type for the rest let a boss cone piece turn
-// torus and keep the boss top, seed 6.) Nothing happens at noise 0.
+// there, does not fit its interior at the noise (FitsAtNoise), each analytic
+// neighbour grows back into it from their common boundary over the vertices
+// within th_dis of the neighbour's surface (5). The region gives those vertices
+// back if the rest, under the best of a plane and the curved types with no more
+// parameters than its own (or its quadric), and the rows, under their
+// neighbours' surfaces, explain the region's vertices kScoreMargin better than
+// its type alone (InformationScore), and the rest keeps kMinRegionVertices; the
+// rest takes that type. (A more general type for the rest let a boss cone piece
+// turn torus and keep the boss top, seed 6.) Nothing happens at noise 0.
 // Returns the ids of the regions that gave rows back.
 std::vector<int> GiveBackRows(const SegmentContext& c, std::vector<int>* labels,
                               std::vector<RegionState>* regions);
