@@ -63,21 +63,27 @@ TEST(FitTypeTest, SpindleTorusAwayFromItsAxisIsATorus) {
   EXPECT_NEAR(t.minor_radius, 10.0, 1e-3);
 }
 
+// The disc with the start of a round (testing::BuildDiscWithRoundStart) as
+// one region typed torus, no surface set: no torus fit to it is valid.
+std::vector<RegionState> DiscLabelledTorus(Sheet* s) {
+  testing::BuildDiscWithRoundStart(/*distance=*/0.15, s);
+  std::vector<RegionState> regions(1);
+  regions[0].type = SurfaceType::kTorus;
+  RebuildVertexLists(std::vector<int>(s->u.size(), 0), &regions);
+  return regions;
+}
+
 TEST(RefitRegionsTest, RegionItsTypeCannotFitTakesTheTypeThatDoes) {
   // The disc with the start of a round labelled torus, with the surface of
   // a torus grown elsewhere (test_piece's boss rim at 0.15 h, seed 171): no
   // torus fit is valid there, and the old surface misses the disc.
   Sheet s;
-  testing::BuildDiscWithRoundStart(/*distance=*/0.15, &s);
-  std::vector<int> labels(s.u.size(), 0);
-  std::vector<RegionState> regions(1);
-  regions[0].type = SurfaceType::kTorus;
+  std::vector<RegionState> regions = DiscLabelledTorus(&s);
   const Torus stale{.center = Eigen::Vector3d(0.0, 0.0, -3.0),
                     .axis_direction = Eigen::Vector3d::UnitZ(),
                     .major_radius = 8.0,
                     .minor_radius = 3.0};
   regions[0].surface = stale;
-  RebuildVertexLists(labels, &regions);
   ASSERT_FALSE(FitType(s.c, SurfaceType::kTorus, regions[0].vertices).ok());
 
   RefitRegions(s.c, {1}, &regions);
@@ -96,11 +102,7 @@ TEST(RefitRegionsTest, RegionWhoseSurfaceStillMeetsItBestKeepsIt) {
   // better than any valid type does, so the region keeps it (a torus band
   // on fandisk_noisy whose torus fit failed for a while).
   Sheet s;
-  testing::BuildDiscWithRoundStart(/*distance=*/0.15, &s);
-  std::vector<int> labels(s.u.size(), 0);
-  std::vector<RegionState> regions(1);
-  regions[0].type = SurfaceType::kTorus;
-  RebuildVertexLists(labels, &regions);
+  std::vector<RegionState> regions = DiscLabelledTorus(&s);
   const FitResult spindle = FitType(s.c, SurfaceType::kTorus, regions[0].vertices);
   ASSERT_FALSE(spindle.ok());
   regions[0].surface = spindle.surface;
