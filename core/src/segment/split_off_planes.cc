@@ -126,6 +126,8 @@ std::optional<Split> FindSplit(const SegmentContext& c, const RegionState& r) {
   }
   // Fit both, give each vertex to the nearer, kSplitRounds times; then fit
   // both to their final sets.
+  // Only the region's entries change; the rest stay kOutside.
+  std::vector<int8_t> side(c.vertex_count(), kOutside);
   for (int round = 0;; ++round) {
     if (s.on_plane.size() < kMinInteriorVertices || s.rest.size() < kMinRegionVertices) {
       return std::nullopt;
@@ -134,7 +136,6 @@ std::optional<Split> FindSplit(const SegmentContext& c, const RegionState& r) {
     s.curved = FitType(c, r.type, s.rest);
     if (!s.plane.ok() || !s.curved.ok()) return std::nullopt;
     if (round == kSplitRounds) break;
-    std::vector<int8_t> side(c.vertex_count(), kOutside);
     for (const int v : r.vertices) {
       side[v] = std::abs(ProjectVertex(c, s.plane.surface, v).distance) <
                         std::abs(ProjectVertex(c, s.curved.surface, v).distance)

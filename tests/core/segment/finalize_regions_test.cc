@@ -29,10 +29,8 @@ TEST(FinalizeRegionsTest, SurfaceFitsTheRegionNotAnAbsorbedFlap) {
   // against a flap 1 high.
   Sheet s;
   BuildSheet(Fold45(7.0), 0.0, 8.0, 41, 0.0, 8.0, 41, /*distance=*/0.3, /*angle_deg=*/5.0, &s);
-  std::vector<int> labels(s.u.size(), 0);
-  std::vector<RegionState> regions(1);
-  regions[0].type = SurfaceType::kPlane;
-  RebuildVertexLists(labels, &regions);
+  std::vector<int> labels;
+  std::vector<RegionState> regions = testing::OneRegion(s, SurfaceType::kPlane, &labels);
   const Plane all = std::get<Plane>(FitType(s.c, SurfaceType::kPlane, regions[0].vertices).surface);
   ASSERT_LT(std::abs(all.normal.z()), std::cos(1.0 * std::numbers::pi / 180.0))
       << "the flap must tilt a fit to all vertices by more than 1 degree";
@@ -58,10 +56,8 @@ TEST(FinalizeRegionsTest, CurvedRegionFlatWithoutItsFlapIsAPlane) {
   for (std::size_t v = 0; v < s.u.size(); ++v) {
     s.c.graph.positions[v] += noise(random) * s.field.normal[v];
   }
-  std::vector<int> labels(s.u.size(), 0);
-  std::vector<RegionState> regions(1);
-  regions[0].type = SurfaceType::kSphere;
-  RebuildVertexLists(labels, &regions);
+  std::vector<int> labels;
+  std::vector<RegionState> regions = testing::OneRegion(s, SurfaceType::kSphere, &labels);
   const FitResult all = FitType(s.c, SurfaceType::kSphere, regions[0].vertices);
   ASSERT_TRUE(all.ok());
   ASSERT_FALSE(NearlyFlat(s.c, all.surface, all.rms_distance, regions[0].vertices, s.c.tolerance));
@@ -81,14 +77,12 @@ TEST(FinalizeRegionsTest, RegionItsTypeCannotFitTakesTheTypeThatDoes) {
   // top at 0.15 h, seed 171).
   Sheet s;
   BuildSheet(Fold45(9.0), 0.0, 8.0, 41, 0.0, 8.0, 41, /*distance=*/0.3, /*angle_deg=*/5.0, &s);
-  std::vector<int> labels(s.u.size(), 0);
-  std::vector<RegionState> regions(1);
-  regions[0].type = SurfaceType::kTorus;
+  std::vector<int> labels;
+  std::vector<RegionState> regions = testing::OneRegion(s, SurfaceType::kTorus, &labels);
   regions[0].surface = Torus{.center = Eigen::Vector3d(4.0, 4.0, -3.0),
                              .axis_direction = Eigen::Vector3d::UnitZ(),
                              .major_radius = 8.0,
                              .minor_radius = 3.0};
-  RebuildVertexLists(labels, &regions);
   ASSERT_FALSE(FitType(s.c, SurfaceType::kTorus, regions[0].vertices).ok());
 
   const Segmentation seg = FinalizeRegions(s.c, s.mesh, labels, regions);

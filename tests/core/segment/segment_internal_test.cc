@@ -67,10 +67,8 @@ TEST(FitTypeTest, SpindleTorusAwayFromItsAxisIsATorus) {
 // one region typed torus, no surface set: no torus fit to it is valid.
 std::vector<RegionState> DiscLabelledTorus(Sheet* s) {
   testing::BuildDiscWithRoundStart(/*distance=*/0.15, s);
-  std::vector<RegionState> regions(1);
-  regions[0].type = SurfaceType::kTorus;
-  RebuildVertexLists(std::vector<int>(s->u.size(), 0), &regions);
-  return regions;
+  std::vector<int> labels;
+  return testing::OneRegion(*s, SurfaceType::kTorus, &labels);
 }
 
 TEST(RefitRegionsTest, RegionItsTypeCannotFitTakesTheTypeThatDoes) {

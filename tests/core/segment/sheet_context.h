@@ -195,6 +195,17 @@ inline std::vector<RegionState> RegionsFromLabels(const SegmentContext& c,
   return regions;
 }
 
+// One region of type `type`, no surface set, holding every vertex of `s`;
+// `labels` (all 0) to match.
+inline std::vector<RegionState> OneRegion(const Sheet& s, SurfaceType type,
+                                          std::vector<int>* labels) {
+  labels->assign(s.u.size(), 0);
+  std::vector<RegionState> regions(1);
+  regions[0].type = type;
+  RebuildVertexLists(*labels, &regions);
+  return regions;
+}
+
 }  // namespace meshseg::segment_internal::testing
 
 #endif  // MESHSEG_TESTS_CORE_SEGMENT_SHEET_CONTEXT_H_
