@@ -83,11 +83,14 @@ constexpr double kRadiusTolerance = 0.01;  // relative, issue 3
 // A coarse exact CAD export (l_avg 1.39 against radii 0.5-2; 37 % of the
 // vertices sharp) goes through the exact-facet path (exact_facets.h): 25
 // regions for the 24 patches, cylinder radii exact to 1e-6.
-// Patch 22 is left out: a groove of r 0.5 (283 degrees of arc) tessellated
-// with two facets. Its three rulings are 142 degrees apart around the axis,
-// so the facets meet in a V of 38 degrees, at 58 and 71 degrees to the
-// planes beside them; three parallel lines lie on a cylinder whatever they
-// are, and nothing else tells it from a V-groove. It comes out as two planes.
+// Patch 22 is left out: a channel of r 0.5 (283 degrees of arc) whose mouth
+// two flat faces (a key) close, tessellated with two facets. Its three rulings
+// are 141.6 degrees apart around the axis, so the facets meet in a V of 38.4
+// degrees, and the key's faces at 19.2 and 32.4 degrees. Three parallel lines
+// lie on a cylinder whatever they are; a plane beside them tangent to that
+// circle would say "round", but the key's faces cross it at 90 degrees (one
+// contains the axis) and 77. Nothing tells it from a V-groove, and it comes
+// out as two planes.
 constexpr std::size_t kTwoFacetPatch = 22;
 
 TEST(SegmentReal, AbcPartPatchesGetRegionsOfTheirType) {
