@@ -9,6 +9,8 @@
 #   default: build 1 2 3 4 5 6 7 8 9 10 11
 #   SEGMENT_TEST_BINARY=path runs that binary instead of BUILD_DIR/bin/segment_test.
 #   JOBS=n runs n seeds at a time (default: the number of cores).
+#   MESHSEG_VOXEL_SCALE=x runs every part at x times its voxel size (finer
+#   below 1; the parameter bounds are in voxels, so they scale with it).
 # The binary is copied first, so rebuilding while it runs does not change
 # what is measured. About 17 s per seed per job on a 2-core VM.
 # Output: one line per seed in the order given ("seed 3: stepped_shaft@0.15h

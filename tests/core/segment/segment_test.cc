@@ -39,10 +39,25 @@ uint64_t NoiseSeed() {
   return seed != nullptr ? std::strtoull(seed, nullptr, 10) : 7;
 }
 
+// The voxel size of part `name` asked for (`voxel`, 0 for the part's own),
+// times $MESHSEG_VOXEL_SCALE if set, so that the seed matrix can also run
+// the parts at other resolutions (scripts/segment_seed_matrix.sh, VOXEL_SCALE).
+double VoxelSize(const std::string& name, double voxel) {
+  const char* scale = std::getenv("MESHSEG_VOXEL_SCALE");
+  if (scale == nullptr) return voxel;
+  if (voxel == 0.0) {
+    const absl::StatusOr<GeneratedPart> part = GeneratePart(name);
+    EXPECT_TRUE(part.ok()) << part.status();
+    if (part.ok()) voxel = part->voxel_size;
+  }
+  return voxel * std::strtod(scale, nullptr);
+}
+
 PartRun Segmented(const std::string& name, double voxel, double noise,
                   uint64_t seed = NoiseSeed()) {
   PartRun run;
-  auto part = GeneratePart(name, {.voxel_size = voxel, .noise = noise, .seed = seed});
+  auto part =
+      GeneratePart(name, {.voxel_size = VoxelSize(name, voxel), .noise = noise, .seed = seed});
   EXPECT_TRUE(part.ok()) << part.status();
   if (!part.ok()) return run;
   run.part = std::move(*part);
