@@ -212,14 +212,18 @@ TEST(MergeSameSurfaceTest, NothingMergesWithoutANoiseScale) {
   EXPECT_TRUE(regions[1].alive);
 }
 
-// A 30-degree strip of a round of radius 4 (axis z, 31 columns by 24 rows
-// 0.25 apart), whose radius ripples by `ripple` along the axis with a
-// period of 2 (a stand-in for the meshing error of a CT part), bent at
-// `crease_deg` about its middle column; label 0 for the first half of the
-// columns, 1 for the rest.
-void PlaneStrips(double ripple, double crease_deg, Sheet* s, std::vector<int>* labels) {
-  constexpr double kRadius = 4.0, kHalfDeg = 20.0;
+// A strip of a round of radius 4 from -`half_deg` to `half_deg` (axis z, 31
+// columns by 24 rows 0.25 apart), whose radius ripples by `ripple` along the
+// axis with a period of 2 (a stand-in for the meshing error of a CT part),
+// bent at `crease_deg` about its middle column; label 0 for the first half
+// of the columns, 1 for the rest. With `noise_draw` >= 0, the round has
+// noise of sigma along its normals (that mt19937 draw).
+void PlaneStrips(double ripple, double crease_deg, Sheet* s, std::vector<int>* labels,
+                 double half_deg = 20.0, int noise_draw = -1) {
+  constexpr double kRadius = 4.0;
   const double bend = crease_deg * kPi / 180.0;
+  std::mt19937 random(noise_draw);
+  std::normal_distribution<double> noise(0.0, noise_draw >= 0 ? kSigma : 0.0);
   BuildSheet(
       [&](double z, double phi) {
         if (bend > 0.0) {
@@ -234,10 +238,10 @@ void PlaneStrips(double ripple, double crease_deg, Sheet* s, std::vector<int>* l
                            normal};
         }
         const Eigen::Vector3d radial(std::cos(phi), std::sin(phi), 0.0);
-        const double r = kRadius + ripple * std::sin(kPi * z);
+        const double r = kRadius + ripple * std::sin(kPi * z) + noise(random);
         return std::pair{Eigen::Vector3d(r * radial + z * Eigen::Vector3d::UnitZ()), radial};
       },
-      0.0, 5.75, 24, -kHalfDeg * kPi / 180.0, kHalfDeg * kPi / 180.0, 31,
+      0.0, 5.75, 24, -half_deg * kPi / 180.0, half_deg * kPi / 180.0, 31,
       /*distance=*/5.0 * kSigma, /*angle_deg=*/10.0, s);
   s->c.noise_sigma = kSigma;
   labels->resize(s->u.size());
@@ -265,6 +269,44 @@ TEST(MergeSameSurfaceTest, RoundInTwoPlaneStripsIsMerged) {
   ASSERT_EQ(regions[kept].type, SurfaceType::kCylinder);
   EXPECT_EQ(regions[kept].vertices.size(), s.u.size());
   EXPECT_NEAR(std::get<Cylinder>(regions[kept].surface).radius, 4.0, 0.01);
+}
+
+TEST(MergeSameSurfaceTest, RoundInTwoPlaneStripsNearTheNoiseIsMerged) {
+  // An 8-degree strip of the round with noise and a ripple of half a sigma:
+  // each half passes as a plane near the noise (0.37 and 0.36 sigma), one
+  // cylinder meets both as closely (0.36) and scores better, by less than
+  // kScoreMargin. One surface near the noise is the simpler account, as a
+  // limit type takes over near it (rounded_prism at 0.15 h, seed 288: planes
+  // 0.17 and 0.35 sigma, the cylinder 0.27 and 8.0 better).
+  Sheet s;
+  std::vector<int> labels;
+  PlaneStrips(/*ripple=*/0.5 * kSigma, /*crease_deg=*/0.0, &s, &labels, /*half_deg=*/4.0,
+              /*noise_draw=*/1);
+  std::vector<RegionState> regions =
+      RegionsFromLabels(s.c, labels, {SurfaceType::kPlane, SurfaceType::kPlane});
+  const int ids[] = {0, 1};
+  std::vector<int> both;
+  double squares = 0.0;
+  for (const RegionState& r : regions) {
+    const std::vector<int> part = InteriorVertices(s.c, labels, ids, r.vertices);
+    const FitResult plane = FitType(s.c, SurfaceType::kPlane, part);
+    ASSERT_LT(ModelError(s.c, plane), kScoredNearError * kSigma);
+    squares += part.size() * plane.rms_distance * plane.rms_distance;
+    both.insert(both.end(), part.begin(), part.end());
+  }
+  const FitResult cylinder = FitType(s.c, SurfaceType::kCylinder, both);
+  ASSERT_FALSE(FitsAtNoise(s.c, cylinder));
+  ASSERT_LT(ModelError(s.c, cylinder), kScoredNearError * kSigma);
+  const double gain =
+      InformationScore(s.c, squares / both.size(), both.size(), 6) -
+      InformationScore(s.c, cylinder.rms_distance * cylinder.rms_distance, both.size(), 5);
+  ASSERT_GT(gain, 0.0);
+  ASSERT_LT(gain, kScoreMargin);
+
+  EXPECT_EQ(MergeSameSurface(s.c, &labels, &regions).value(), 1);
+  const int kept = regions[0].alive ? 0 : 1;
+  EXPECT_EQ(regions[kept].type, SurfaceType::kCylinder);  // radius 3.6: 8 degrees of arc
+  EXPECT_EQ(regions[kept].vertices.size(), s.u.size());
 }
 
 TEST(MergeSameSurfaceTest, PlanesAtACreaseStayApart) {
