@@ -21,7 +21,8 @@ namespace meshseg::segment_internal {
 //  1. takes the vertices whose n_i lie within th_nm of the direction that
 //     the most n_i of the region do, fits a plane to them and then to all
 //     of the region's vertices that meet (5) and (6) for it, which it must
-//     fit at the noise;
+//     fit near the noise (kScoredNearError: the rows along the crease are
+//     rounded);
 //  2. gives each vertex of the region to the nearer of that plane and the
 //     region's type refitted to the rest, a few rounds;
 //  3. splits the plane's vertices off as a new plane region if both sides
