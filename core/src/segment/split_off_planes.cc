@@ -121,8 +121,8 @@ std::optional<Split> FindSplit(const SegmentContext& c, const RegionState& r) {
   // The face itself must be flat, near the noise: the rows the tests add
   // along the crease are rounded by the meshing (test_piece's boss top at
   // 0.15 h, seeds 261 and 385: its plane 0.41 and 0.36 sigma off the 58 and
-  // 52 vertices the tests give it; the rounds below leave 78 and 73 at the
-  // noise). The crease and the scores of step 3 decide.
+  // 52 vertices the tests give it; on 261 the rounds below end with 78). The
+  // crease and the scores of step 3 decide.
   if (s.on_plane.size() < kMinInteriorVertices ||
       !(ModelError(c, FitType(c, SurfaceType::kPlane, s.on_plane)) <=
         kScoredNearError * c.noise_sigma)) {
