@@ -122,6 +122,10 @@ bool FitsAtNoise(const SegmentContext& c, const FitResult& fit) {
   return fit.ok() && ModelError(c, fit) <= kMinModelError * c.noise_sigma;
 }
 
+bool FitsNearNoise(const SegmentContext& c, const FitResult& fit) {
+  return fit.ok() && ModelError(c, fit) <= kScoredNearError * c.noise_sigma;
+}
+
 int ParameterCount(SurfaceType type) {
   switch (type) {
     case SurfaceType::kPlane: return 3;     // unit normal 2, offset

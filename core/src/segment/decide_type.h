@@ -45,6 +45,9 @@ double ModelErrorOfMeanSquare(const SegmentContext& c, double mean_square);
 // True if `fit` is valid and meets its vertices at the noise: model error
 // at or under kMinModelError sigmas.
 bool FitsAtNoise(const SegmentContext& c, const FitResult& fit);
+// True if `fit` is valid and meets its vertices near the noise: model error
+// at or under kScoredNearError sigmas.
+bool FitsNearNoise(const SegmentContext& c, const FitResult& fit);
 
 // Free parameters of a type's surface: plane 3, sphere 4, cylinder 5,
 // cone 6, torus 7, general quadric 9 (10 coefficients up to scale); 0 for

@@ -109,8 +109,7 @@ std::optional<UnionTest> TestUnion(const SegmentContext& c, const std::vector<in
     // each at the noise, the cone 0.08 sigma off the union and 7.0 worse;
     // rounded_prism's round at 0.15 h, seed 288, in two plane strips, 0.17
     // and 0.35 sigma off theirs, one cylinder 0.27 sigma off and 8.0 better).
-    const bool near_noise = ModelError(c, fit) <= kScoredNearError * c.noise_sigma;
-    const double needed = near_noise ? -kScoreMargin : kScoreMargin;
+    const double needed = FitsNearNoise(c, fit) ? -kScoreMargin : kScoreMargin;
     const double excess_square = fit.rms_distance * fit.rms_distance - squares / both.size();
     if (gain > needed || (FitsAtNoise(c, fit) && excess_square <= max_excess * max_excess)) {
       passing.push_back(UnionTest{.gain = gain, .type = type});

@@ -124,8 +124,7 @@ std::optional<Split> FindSplit(const SegmentContext& c, const RegionState& r) {
   // 52 vertices the tests give it; on 261 the rounds below end with 78). The
   // crease and the scores of step 3 decide.
   if (s.on_plane.size() < kMinInteriorVertices ||
-      !(ModelError(c, FitType(c, SurfaceType::kPlane, s.on_plane)) <=
-        kScoredNearError * c.noise_sigma)) {
+      !FitsNearNoise(c, FitType(c, SurfaceType::kPlane, s.on_plane))) {
     return std::nullopt;
   }
   // Fit both, give each vertex to the nearer, kSplitRounds times; then fit

@@ -5,12 +5,14 @@
 #include <cstdint>
 #include <cstdlib>
 #include <numbers>
+#include <optional>
 #include <string>
 
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
 
 #include "meshseg/curvature.h"
+#include "generate/parts.h"
 #include "meshseg/generate.h"
 #include "segment/absorb_leftovers.h"
 #include "segment_eval.h"
@@ -46,9 +48,9 @@ double VoxelSize(const std::string& name, double voxel) {
   const char* scale = std::getenv("MESHSEG_VOXEL_SCALE");
   if (scale == nullptr) return voxel;
   if (voxel == 0.0) {
-    const absl::StatusOr<GeneratedPart> part = GeneratePart(name);
-    EXPECT_TRUE(part.ok()) << part.status();
-    if (part.ok()) voxel = part->voxel_size;
+    const std::optional<generate_internal::PartSpec> spec = generate_internal::FindPart(name);
+    EXPECT_TRUE(spec.has_value()) << name;
+    if (spec) voxel = spec->default_voxel_size;
   }
   return voxel * std::strtod(scale, nullptr);
 }
