@@ -7,4 +7,4 @@ cd "$(dirname "$0")/.."
 bash scripts/setup.sh
 cmake --preset default
 cmake --build --preset default
-ctest --preset default -j "$(nproc)"
+ctest --preset default -j "$(nproc)" --output-on-failure

@@ -114,7 +114,8 @@ void Server::Shutdown() {
   std::call_once(parts_->shutdown_once, [this] {
     Parts& p = *parts_;
     Log("shutdown_started", {{"grace", absl::FormatDuration(p.options.shutdown_grace)}});
-    p.grpc_server->GetHealthCheckService()->SetServingStatus(false);
+    // Health says NOT_SERVING last, so a client that sees it finds uploads
+    // refused and the queue cancelled (the shutdown tests wait on it).
     p.service->StopAccepting();
     for (const std::string& id : p.queue->Close()) {
       if (p.store->Cancel(id, "server shutting down").ok()) {
@@ -122,6 +123,7 @@ void Server::Shutdown() {
         Log("job_cancelled", {{"job", id}, {"reason", "server shutting down"}});
       }
     }
+    p.grpc_server->GetHealthCheckService()->SetServingStatus(false);
     if (!p.store->AwaitIdle(absl::Now() + p.options.shutdown_grace)) {
       Log("shutdown_cancelling_running_jobs");
       p.store->StopAll();

@@ -32,8 +32,9 @@ class Server {
   // Number of files in the spool (for tests and logs).
   int64_t SpoolFileCount() const;
 
-  // Graceful shutdown: health NOT_SERVING, new uploads refused (UNAVAILABLE),
-  // queued jobs cancelled, running jobs given options.shutdown_grace to
+  // Graceful shutdown: new uploads refused (UNAVAILABLE), queued jobs
+  // cancelled, then health NOT_SERVING (a client that sees NOT_SERVING sees
+  // the first two done); running jobs are given options.shutdown_grace to
   // finish and then cancelled; then open calls end and the server stops.
   void Shutdown();
 

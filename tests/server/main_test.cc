@@ -30,6 +30,7 @@ namespace {
 using ::testing::HasSubstr;
 using ::testing::MatchesRegex;
 using ::testing::Not;
+using testing_server::Eventually;
 using testing_server::FreshDir;
 using testing_server::HealthStatus;
 using testing_server::ServerProcess;
@@ -172,11 +173,13 @@ TEST_F(ServerMainJobs, SigtermLetsTheRunningJobFinishRefusesUploadsAndExitsZero)
   const absl::Time sigterm = absl::Now();
   server.Signal(SIGTERM);
   ASSERT_TRUE(server.AwaitLog("event=shutdown_started", kTimeout)) << server.Log();
+  // The log line comes first; health turns NOT_SERVING once uploads are refused.
+  ASSERT_TRUE(Eventually([&] { return HealthStatus(server.address()) == 2; }))
+      << "NOT_SERVING while the job finishes";
   const absl::StatusOr<v1::UploadResponse> refused =
       MeshsegClient::Connect(server.address()).Upload(small_path_);
   EXPECT_EQ(refused.status().code(), absl::StatusCode::kUnavailable) << refused.status();
   EXPECT_THAT(refused.status().message(), HasSubstr("shutting down"));
-  EXPECT_EQ(HealthStatus(server.address()), 2) << "NOT_SERVING while the job finishes";
 
   const absl::StatusOr<v1::Job> job_b = watch_b.Job();
   ASSERT_TRUE(job_b.ok()) << job_b.status();
