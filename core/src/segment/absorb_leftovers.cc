@@ -21,6 +21,14 @@ constexpr double kMaxAngleDeg = 80.0;
 constexpr double kPi = 3.14159265358979323846;
 constexpr int kNoPick = -1;
 
+// The thresholds of step `step` (0 to kSteps - 1).
+Tolerance Stepped(const SegmentContext& c, int step) {
+  const double scale = 2.0 + step;
+  const double angle_deg = std::min(kMaxAngleDeg, c.angle_tolerance_deg * scale);
+  return Tolerance{.distance = c.tolerance.distance * scale,
+                   .cos_angle = std::cos(angle_deg * kPi / 180.0)};
+}
+
 // For every free vertex next to a region, the best neighbouring region it
 // meets `tol` for (smallest distance), or any labelled neighbour if `tol`
 // is null. Synchronous sweep: decisions use the labels before the sweep.
@@ -83,6 +91,31 @@ void TypeIslands(const SegmentContext& c, std::vector<int>* labels,
   }
 }
 
+// True if at least half of region `id`'s vertices meet the surface of a
+// region beside it within the first step's thresholds (twice the base).
+bool LiesOnANeighbour(const SegmentContext& c, const std::vector<int>& labels,
+                      const std::vector<RegionState>& regions, int id) {
+  const RegionState& r = regions[id];
+  std::vector<int> beside;
+  for (const int v : r.vertices) {
+    for (const int u : c.graph.Neighbors(v)) {
+      const int other = labels[u];
+      if (other >= 0 && other != id && regions[other].alive &&
+          std::find(beside.begin(), beside.end(), other) == beside.end()) {
+        beside.push_back(other);
+      }
+    }
+  }
+  const Tolerance tol = Stepped(c, 0);
+  std::size_t on = 0;
+  for (const int v : r.vertices) {
+    on += std::any_of(beside.begin(), beside.end(), [&](int other) {
+      return Fits(c, v, ProjectVertex(c, regions[other].surface, v), tol);
+    });
+  }
+  return 2 * on >= r.vertices.size();
+}
+
 }  // namespace
 
 void ReleaseSmallQuadrics(const SegmentContext& c, std::vector<int>* labels,
@@ -110,7 +143,8 @@ int ReleaseNarrowPlanes(const SegmentContext& c, std::vector<int>* labels,
       [&](int id, const RegionState& r) {
         const int ids[] = {id};
         return r.type == SurfaceType::kPlane &&
-               InteriorVertices(c, *labels, ids, r.vertices).size() < kMinInteriorVertices;
+               InteriorVertices(c, *labels, ids, r.vertices).size() < kMinInteriorVertices &&
+               LiesOnANeighbour(c, *labels, *regions, id);
       },
       labels, regions);
 }
@@ -119,10 +153,7 @@ absl::Status AbsorbLeftovers(const SegmentContext& c, std::vector<int>* labels,
                              std::vector<RegionState>* regions) {
   for (int step = 0; step < kSteps; ++step) {
     MESHSEG_RETURN_IF_ERROR(c.run->CheckStop("segment"));
-    const double scale = 2.0 + step;
-    const double angle_deg = std::min(kMaxAngleDeg, c.angle_tolerance_deg * scale);
-    const Tolerance tol{.distance = c.tolerance.distance * scale,
-                        .cos_angle = std::cos(angle_deg * kPi / 180.0)};
+    const Tolerance tol = Stepped(c, step);
     while (Sweep(c, *regions, &tol, labels) > 0) {
     }
   }

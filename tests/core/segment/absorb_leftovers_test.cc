@@ -1,16 +1,20 @@
 // ReleaseNarrowPlanes on stepped_shaft's chamfer as a sheet
-// (sheet_context.h): a strip of its band labelled apart.
+// (sheet_context.h): a strip of its band labelled apart; and on a fold: a
+// narrow face of its own across the crease.
 #include "segment/absorb_leftovers.h"
 
 #include <gtest/gtest.h>
 
 #include <vector>
 
+#include "segment/retype_by_interior.h"
 #include "sheet_context.h"
 
 namespace meshseg::segment_internal {
 namespace {
 
+using testing::BuildSheet;
+using testing::Fold45;
 using testing::RegionsFromLabels;
 using testing::Sheet;
 
@@ -58,6 +62,25 @@ TEST(ReleaseNarrowPlanesTest, CurvedStripStays) {
   const std::vector<int> before = labels;
   EXPECT_EQ(ReleaseNarrowPlanes(s.c, &labels, &regions), 0);
   EXPECT_TRUE(regions[3].alive);
+  EXPECT_EQ(labels, before);
+}
+
+// A plane too narrow for an interior that lies on no neighbour's surface is
+// a face of its own (test_piece's boss top at 1.25 h: 64 vertices, under 30
+// of them interior, released and absorbed by the boss cone, which it bent
+// from 20.6 to 31.2 degrees). Here: the two rows past a 45-degree crease.
+TEST(ReleaseNarrowPlanesTest, NarrowFaceAcrossACreaseStays) {
+  Sheet s;
+  BuildSheet(Fold45(10.0), 0.0, 12.0, 13, 0.0, 20.0, 21, /*distance=*/0.05, /*angle_deg=*/8.0, &s);
+  std::vector<int> labels(s.u.size());
+  for (std::size_t v = 0; v < labels.size(); ++v) labels[v] = s.u[v] > 10.0 ? 1 : 0;
+  std::vector<RegionState> regions =
+      RegionsFromLabels(s.c, labels, {SurfaceType::kPlane, SurfaceType::kPlane});
+  const int ids[] = {1};
+  ASSERT_LT(InteriorVertices(s.c, labels, ids, regions[1].vertices).size(), kMinInteriorVertices);
+  const std::vector<int> before = labels;
+  EXPECT_EQ(ReleaseNarrowPlanes(s.c, &labels, &regions), 0);
+  EXPECT_TRUE(regions[1].alive);
   EXPECT_EQ(labels, before);
 }
 
