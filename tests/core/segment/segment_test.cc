@@ -334,7 +334,10 @@ void ExpectBossTopIsAPlane(const PartRun& run) {
   const Region& region = run.seg.regions[top->region];
   EXPECT_EQ(region.type, SurfaceType::kPlane) << SurfaceTypeName(region.type);
   EXPECT_GE(top->covered, kMinCovered);
-  EXPECT_LE(region.rms_distance, 2.0 * run.seg.estimates.noise_sigma);
+  // Without noise both are rounding error (1e-15).
+  if (run.part.noise > 0.0) {
+    EXPECT_LE(region.rms_distance, 2.0 * run.seg.estimates.noise_sigma);
+  }
 }
 
 // At the noise seed (7, or $MESHSEG_NOISE_SEED: the seed matrix reports it
@@ -360,6 +363,34 @@ INSTANTIATE_TEST_SUITE_P(Draws, BossTopAtHighNoise,
                          ::testing::Values(uint64_t{56}, uint64_t{69}, uint64_t{137}, uint64_t{171},
                                            uint64_t{385}),
                          [](const auto& info) { return "seed_" + std::to_string(info.param); });
+
+// Coarser than the part's voxel size (MESHSEG_VOXEL_SCALE runs the matrix
+// so): the boss top falls under the size floor and, freed, bent the boss
+// cone that took it, until stop 25. At 1.25 h and 0.15 h (seeds 1, 2, 4 of
+// 1-4) the top was split off the cone and released as a narrow plane; the
+// cone came out at 31.2 and 30.2 degrees (true 20.6) in seeds 2 and 4, and
+// seed 1 lost the top. At 1.5 h and noise 0 it was released by size (41
+// vertices), and the cone with it became a sphere. absorb_leftovers.h says
+// what keeps it now.
+class CoarserTestPiece : public ::testing::TestWithParam<uint64_t> {};
+
+TEST_P(CoarserTestPiece, KeepsTypesAndTheBossTopAtHighNoiseAQuarterCoarser) {
+  const PartRun run = Segmented("test_piece", 1.25, 0.15, GetParam());
+  ExpectTypesAtHighNoise(run);
+  ExpectBossTopIsAPlane(run);
+}
+
+INSTANTIATE_TEST_SUITE_P(Draws, CoarserTestPiece,
+                         ::testing::Values(uint64_t{1}, uint64_t{2}, uint64_t{4}),
+                         [](const auto& info) { return "seed_" + std::to_string(info.param); });
+
+TEST(CoarserTestPieceNoNoise, FindsEveryPrimitiveHalfAgainAsCoarse) {
+  const PartRun run = Segmented("test_piece", 1.5, 0.0);
+  SCOPED_TRACE(::testing::Message() << run.eval);
+  ExpectTypesAndParameters(run, Bounds{}, /*check_parameters=*/true);
+  ExpectLabelsAndCount(run);
+  ExpectBossTopIsAPlane(run);
+}
 
 INSTANTIATE_TEST_SUITE_P(Parts, SegmentPart,
                          ::testing::Values(std::tuple{std::string("test_piece"), 1.0},
