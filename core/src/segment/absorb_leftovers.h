@@ -27,13 +27,14 @@ void ReleaseSmallQuadrics(const SegmentContext& c, std::vector<int>* labels,
 // below the 200-face primitives the segmentation must find. (30 let a
 // 47-vertex cone on sphere_cap's bottom rim at 0.15 h survive, and the
 // boundary refinement then grew it to 148 on the rim's bent normals.)
-// A plane of kMinInteriorVertices (retype_by_interior.h) that lies on no
-// neighbour (fewer than a third of its vertices meet the surface of a
-// region beside it within twice the base thresholds, the first leftover
-// step) stays: it is a small face across a crease, and the region that
-// absorbed it would bend (test_piece's boss top at 1.5 times its voxel size
-// and noise 0: 41 vertices, none on the boss cone, which took them and
-// became a sphere).
+// A small face stays: a plane of kMinInteriorVertices (retype_by_interior.h)
+// vertices, flat (their rms distance to it at most twice the noise, or
+// exact), that lies on no neighbour (fewer than a third of its vertices
+// meet the surface of a region beside it within twice the base thresholds,
+// the first leftover step). It is a face across a crease, and the region
+// that absorbed it would bend (test_piece's boss top at 1.5 times its voxel
+// size and noise 0: 41 vertices, none on the boss cone, which took them and
+// became a sphere). A fragment on a rounded rim is not flat.
 inline constexpr std::size_t kMinRegionVertices = kMinQuadricVertices;
 inline constexpr double kMinRegionShare = 0.001;  // of all vertices
 // Returns the number of regions released.
@@ -42,14 +43,13 @@ int ReleaseSmallRegions(const SegmentContext& c, std::vector<int>* labels,
 
 // Releases (labels -1, alive = false), like the small regions above, every
 // plane region with fewer than kMinInteriorVertices (retype_by_interior.h)
-// interior vertices that lies on a neighbour (as above: a third of its
-// vertices on a neighbour's surface).
+// interior vertices that is not a small face (above).
 // A plane fits any strip of a curved face that narrow within the noise, and
 // no step can tell: RetypeByInterior and MergeSameSurface both need that
 // interior (test_piece at 0.15 h, seed 185: a plane strip of 63 vertices, 27
 // of them interior, along the r 6 round, typed plane to the end; 60 of the
-// 63 meet a neighbour's surface). A narrow face across a crease lies on no
-// neighbour's surface and stays: released, it went to a neighbour it does
+// 63 meet a neighbour's surface). A narrow face across a crease is flat and
+// lies on no neighbour's surface: released, it went to a neighbour it does
 // not fit (test_piece's boss top at 1.25 h and 0.15 h, seeds 1, 2, 4: 64 to
 // 71 vertices, 11 to 19 of them meeting the boss cone, which took them all
 // and in seeds 2 and 4 bent to 31 and 30 degrees against 20.6). Curved

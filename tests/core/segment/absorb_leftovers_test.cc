@@ -104,6 +104,27 @@ TEST(ReleaseSmallRegionsTest, SmallPlaneOnItsNeighboursSurfaceIsReleased) {
   }
 }
 
+// Past the crease the sheet bends (z = (u - 9)^2 / 2): three rows of it
+// (45 vertices) typed plane miss their plane by far more than the noise.
+// Such a region is a fragment on a rounded rim, not a face: released.
+TEST(ReleaseSmallRegionsTest, BentSmallPlaneIsReleased) {
+  Sheet s;
+  const auto bend = [](double u, double v) {
+    if (u <= 9.0) return std::pair{Eigen::Vector3d(u, v, 0.0), Eigen::Vector3d(0, 0, 1)};
+    const double t = u - 9.0;
+    return std::pair{Eigen::Vector3d(u, v, t * t / 2), Eigen::Vector3d(-t, 0, 1).normalized()};
+  };
+  BuildSheet(bend, 0.0, 12.0, 13, 0.0, 14.0, 15, /*distance=*/0.05, /*angle_deg=*/8.0, &s);
+  s.c.noise_sigma = 0.01;
+  std::vector<int> labels(s.u.size());
+  for (std::size_t v = 0; v < labels.size(); ++v) labels[v] = s.u[v] > 9.0 ? 1 : 0;
+  std::vector<RegionState> regions =
+      RegionsFromLabels(s.c, labels, {SurfaceType::kPlane, SurfaceType::kPlane});
+  ASSERT_EQ(regions[1].vertices.size(), 45u);
+  EXPECT_EQ(ReleaseSmallRegions(s.c, &labels, &regions), 1);
+  EXPECT_FALSE(regions[1].alive);
+}
+
 // A plane too narrow for an interior that lies on no neighbour's surface is
 // a face of its own (test_piece's boss top at 1.25 h: 64 vertices, under 30
 // of them interior, released and absorbed by the boss cone, which it bent

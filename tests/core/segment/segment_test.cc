@@ -150,7 +150,9 @@ TEST_P(SegmentPart, FindsEveryPrimitiveWithItsTypeAndParameters) {
 // grown first from flat-looking seeds on torus_ring, splitting its torus in
 // two, before GrowPlanesFirst checked them against curved types (seed 10).
 // At stop 20: test_piece's countersink axis 0.51 degrees off, fitted alone
-// on its narrow band (seed 54; align_coaxial.h).
+// on its narrow band (seed 54; align_coaxial.h). At stop 25: a fragment on
+// sphere_cap's rim kept as a small face before small faces had to be flat
+// (seed 26; absorb_leftovers.h).
 class SegmentPartOtherSeed
     : public ::testing::TestWithParam<std::tuple<std::string, double, uint64_t>> {};
 
@@ -166,7 +168,8 @@ INSTANTIATE_TEST_SUITE_P(Draws, SegmentPartOtherSeed,
                          ::testing::Values(std::tuple{std::string("plate_boss"), 0.0, uint64_t{2}},
                                            std::tuple{std::string("test_piece"), 1.0, uint64_t{9}},
                                            std::tuple{std::string("torus_ring"), 0.0, uint64_t{10}},
-                                           std::tuple{std::string("test_piece"), 1.0, uint64_t{54}}),
+                                           std::tuple{std::string("test_piece"), 1.0, uint64_t{54}},
+                                           std::tuple{std::string("sphere_cap"), 0.0, uint64_t{26}}),
                          [](const auto& info) {
                            return std::get<0>(info.param) + "_seed_" +
                                   std::to_string(std::get<2>(info.param));
