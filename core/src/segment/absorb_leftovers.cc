@@ -24,14 +24,14 @@ constexpr int kNoPick = -1;
 // Share of a region's vertices on a neighbour's surface that makes it a
 // piece of that neighbour (LiesOnANeighbour). Measured at the releases:
 // fragments of every type on the generated parts at 0.15 h (seeds 1-3) 0.44
-// to 1, strips of a round 0.95; test_piece's boss top 0 at noise 0, 0.15 to
-// 0.30 at 0.15 h (1.25 and 1.5 times its voxel size).
+// to 1, strips of a round 0.95; test_piece's boss top 0 at 1.5 times its
+// voxel size and noise 0, 0.15 to 0.30 at 1.25 times and 0.15 h.
 constexpr double kOnNeighbourShare = 1.0 / 3.0;
 // A small face is flat: its plane meets its vertices within this many
 // sigmas (rms). test_piece's boss top at 1.25 h and 0.15 h: 0.99 to 1.29
-// sigma; rim fragments that pass the share above (sphere_cap at 0.05 h,
-// seed 26: 37 vertices, 11 on a neighbour, at the cylinder's top rim): 2.9
-// and 4.2 sigma.
+// sigma; the rim fragments that pass the share above (sphere_cap at 0.05 h,
+// seed 26, on the cylinder's top rim: 30 and 37 vertices, 4 and 11 of them
+// on a neighbour): 4.2 and 2.9 sigma.
 constexpr double kFaceSigmas = 2.0;
 
 // The thresholds of step `step` (0 to kSteps - 1).
