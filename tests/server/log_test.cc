@@ -26,11 +26,14 @@ using ::testing::MatchesRegex;
 
 constexpr char kTime[] = "ts=[0-9]{4}-[0-9]{2}-[0-9]{2}T[0-9]{2}:[0-9]{2}:[0-9]{2}\\.[0-9]{3}Z";
 
-// Returns what `write` puts on stderr (file descriptor 2).
+// Returns what `write` puts on stderr (file descriptor 2). The file is the
+// process's own: ctest runs these tests in parallel processes, and a shared
+// name let one truncate another's capture (a CI run saw 0 lines).
 template <typename Write>
 std::string CaptureStderr(Write write) {
-  const std::string path =
-      (std::filesystem::path(::testing::TempDir()) / "server_log_test.stderr").string();
+  const std::string path = (std::filesystem::path(::testing::TempDir()) /
+                            absl::StrCat("server_log_test.", getpid(), ".stderr"))
+                               .string();
   std::fflush(stderr);
   const int saved = dup(STDERR_FILENO);
   FILE* file = std::fopen(path.c_str(), "w");
@@ -41,8 +44,13 @@ std::string CaptureStderr(Write write) {
   dup2(saved, STDERR_FILENO);
   close(saved);
   std::fclose(file);
-  std::ifstream in(path);
-  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  std::string text;
+  {
+    std::ifstream in(path);
+    text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  }
+  std::filesystem::remove(path);
+  return text;
 }
 
 std::vector<std::string> Lines(const std::string& text) {

@@ -4,6 +4,7 @@
 // the grace period (or is cancelled after it), exit code 0. Its stderr holds
 // one structured line per job state change.
 #include <signal.h>
+#include <unistd.h>
 
 #include <cstdio>
 #include <filesystem>
@@ -91,7 +92,8 @@ class Watcher {
 class ServerMainJobs : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    const std::string dir = std::string(::testing::TempDir()) + "/server_main_jobs";
+    // The process's own: ctest runs this suite's tests in parallel processes.
+    const std::string dir = absl::StrCat(::testing::TempDir(), "/server_main_jobs_", getpid());
     std::filesystem::create_directories(dir);
     part_path_ = new std::string(dir + "/test_piece.ply");
     const absl::StatusOr<GeneratedPart> part = GeneratePart("test_piece", {.voxel_size = 0.5});
@@ -100,6 +102,7 @@ class ServerMainJobs : public ::testing::Test {
     ASSERT_TRUE(WriteMesh(part->mesh.tri, *part_path_).ok());
   }
   static void TearDownTestSuite() {
+    std::filesystem::remove_all(std::filesystem::path(*part_path_).parent_path());
     delete part_path_;
     part_path_ = nullptr;
   }
