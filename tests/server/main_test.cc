@@ -102,7 +102,9 @@ class ServerMainJobs : public ::testing::Test {
     ASSERT_TRUE(WriteMesh(part->mesh.tri, *part_path_).ok());
   }
   static void TearDownTestSuite() {
-    std::filesystem::remove_all(std::filesystem::path(*part_path_).parent_path());
+    if (part_path_ != nullptr) {
+      std::filesystem::remove_all(std::filesystem::path(*part_path_).parent_path());
+    }
     delete part_path_;
     part_path_ = nullptr;
   }

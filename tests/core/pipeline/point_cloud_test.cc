@@ -89,6 +89,7 @@ TEST(RunPipelineOnPoints, FindsTheShaftCylindersAndPlanesAndLabelsEveryPoint) {
   const Cloud cloud = WriteShaftCloud(*part);
 
   const absl::StatusOr<PipelineResult> r = RunPipeline(cloud.path);
+  std::filesystem::remove(cloud.path);  // read once; the files are a few MB
   ASSERT_TRUE(r.ok()) << r.status();
   EXPECT_TRUE(r->from_point_cloud);
   ASSERT_EQ(r->point_count, cloud.surface_points + kOutliers);
@@ -213,6 +214,7 @@ TEST(RunPipelineOnPoints, FindsTheTestPieceBoreAndGrooveAsCylinders) {
   ASSERT_TRUE(part.ok()) << part.status();
   const PartCloud cloud = WriteHardCloud(*part, 1);
   const absl::StatusOr<PipelineResult> r = RunPipeline(cloud.path);
+  std::filesystem::remove(cloud.path);  // read once; the files are a few MB
   ASSERT_TRUE(r.ok()) << r.status();
   ASSERT_EQ(r->point_count, cloud.point_count);
   EXPECT_EQ(r->mesh.boundary_edge_count, 0);
@@ -247,6 +249,7 @@ TEST(RunPipelineOnPoints, FindsTheTestPieceCylindersAndPlanesWithTheRightTypes) 
     SCOPED_TRACE("cloud seed " + std::to_string(seed));
     const PartCloud cloud = WriteHardCloud(*part, seed);
     const absl::StatusOr<PipelineResult> r = RunPipeline(cloud.path);
+    std::filesystem::remove(cloud.path);  // read once; the files are a few MB
     ASSERT_TRUE(r.ok()) << r.status();
     const std::vector<Found> found = MajorityRegions(*part, cloud, *r);
     for (const PrimitiveTruth& t : part->primitives) {
