@@ -21,6 +21,7 @@
 #include <google/protobuf/util/json_util.h>
 #include <gtest/gtest.h>
 
+#include "scratch_dir.h"
 #include "tests/server/test_files.h"
 
 namespace meshseg::testing_cli {
@@ -92,10 +93,8 @@ inline std::string ReadAll(int fd, const OnOutput& on_output) {
 // a terminal), stdin /dev/null and $MESHSEG_SERVER unset.
 inline CliRun RunCli(std::vector<std::string> args, const OnOutput& on_output = {}) {
   const ::testing::TestInfo* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  const std::string err_path = (std::filesystem::path(::testing::TempDir()) /
-                                (std::string(info->test_suite_name()) + "_" + info->name() +
-                                 ".stderr"))
-                                   .string();
+  const std::string err_path = testing_files::ScratchPath(std::string(info->test_suite_name()) +
+                                                          "_" + info->name() + ".stderr");
   std::vector<char*> argv = internal::Argv(args);
   std::vector<char*> env = internal::Environment();
   int out[2];

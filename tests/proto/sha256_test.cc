@@ -1,9 +1,10 @@
 #include "meshseg/proto/sha256.h"
 
-#include <filesystem>
 #include <fstream>
 
 #include <gtest/gtest.h>
+
+#include "scratch_dir.h"
 
 namespace meshseg {
 namespace {
@@ -19,7 +20,7 @@ TEST(Sha256, MatchesKnownDigests) {
 }
 
 TEST(FileSha256, HashesTheFileAndReportsMissingOnes) {
-  const std::string path = (std::filesystem::path(::testing::TempDir()) / "abc.txt").string();
+  const std::string path = testing_files::ScratchPath("abc.txt");
   std::ofstream(path) << "abc";
   EXPECT_EQ(*FileSha256(path),
             "ba7816bf8f01cfea414140de5dae2223b00361a396177a9cb410ff61f20015ad");

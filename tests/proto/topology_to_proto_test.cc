@@ -15,6 +15,7 @@
 #include "meshseg/pipeline.h"
 #include "meshseg/proto/convert.h"
 #include "meshseg/proto/result_json.h"
+#include "scratch_dir.h"
 
 namespace meshseg {
 namespace {
@@ -131,8 +132,7 @@ TEST(TopologyToProto, JsonHasTheDesignKeys) {
 TEST(TopologyToProto, PlateBossFilletSurvivesTheJsonRoundTrip) {
   const absl::StatusOr<GeneratedPart> part = GeneratePart("plate_boss", {.voxel_size = 1.0});
   ASSERT_TRUE(part.ok()) << part.status();
-  const std::string path =
-      (std::filesystem::temp_directory_path() / "topology_to_proto_plate_boss.ply").string();
+  const std::string path = testing_files::ScratchPath("plate_boss.ply");
   ASSERT_TRUE(WriteMesh(part->mesh.tri, path).ok());
   const absl::StatusOr<PipelineResult> result = RunPipeline(path);
   std::filesystem::remove(path);

@@ -17,6 +17,7 @@
 
 #include "absl/strings/str_cat.h"
 #include "absl/strings/str_split.h"
+#include "scratch_dir.h"
 
 namespace meshseg::server {
 namespace {
@@ -26,14 +27,11 @@ using ::testing::MatchesRegex;
 
 constexpr char kTime[] = "ts=[0-9]{4}-[0-9]{2}-[0-9]{2}T[0-9]{2}:[0-9]{2}:[0-9]{2}\\.[0-9]{3}Z";
 
-// Returns what `write` puts on stderr (file descriptor 2). The file is the
-// process's own: ctest runs these tests in parallel processes, and a shared
-// name let one truncate another's capture (a CI run saw 0 lines).
+// Returns what `write` puts on stderr (file descriptor 2), captured in the
+// process's own scratch folder (scratch_dir.h).
 template <typename Write>
 std::string CaptureStderr(Write write) {
-  const std::string path = (std::filesystem::path(::testing::TempDir()) /
-                            absl::StrCat("server_log_test.", getpid(), ".stderr"))
-                               .string();
+  const std::string path = testing_files::ScratchPath("captured.stderr");
   std::fflush(stderr);
   const int saved = dup(STDERR_FILENO);
   FILE* file = std::fopen(path.c_str(), "w");

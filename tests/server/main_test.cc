@@ -21,6 +21,7 @@
 #include "client/meshseg_client.h"
 #include "meshseg/generate.h"
 #include "meshseg/mesh.h"
+#include "scratch_dir.h"
 #include "tests/server/server_process.h"
 #include "tests/server/test_files.h"
 #include "tests/server/test_server.h"
@@ -92,19 +93,13 @@ class Watcher {
 class ServerMainJobs : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    // The process's own: ctest runs this suite's tests in parallel processes.
-    const std::string dir = absl::StrCat(::testing::TempDir(), "/server_main_jobs_", getpid());
-    std::filesystem::create_directories(dir);
-    part_path_ = new std::string(dir + "/test_piece.ply");
+    part_path_ = new std::string(testing_files::ScratchPath("test_piece.ply"));
     const absl::StatusOr<GeneratedPart> part = GeneratePart("test_piece", {.voxel_size = 0.5});
     ASSERT_TRUE(part.ok()) << part.status();
     part_faces_ = static_cast<int64_t>(part->mesh.tri.n_faces());
     ASSERT_TRUE(WriteMesh(part->mesh.tri, *part_path_).ok());
   }
   static void TearDownTestSuite() {
-    if (part_path_ != nullptr) {
-      std::filesystem::remove_all(std::filesystem::path(*part_path_).parent_path());
-    }
     delete part_path_;
     part_path_ = nullptr;
   }

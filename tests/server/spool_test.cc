@@ -5,14 +5,16 @@
 
 #include <gtest/gtest.h>
 
+#include "scratch_dir.h"
+
 namespace meshseg::server {
 namespace {
 
 namespace fs = std::filesystem;
 
 std::string Dir() {
-  const fs::path dir = fs::path(::testing::TempDir()) /
-                       ::testing::UnitTest::GetInstance()->current_test_info()->name();
+  const fs::path dir =
+      testing_files::ScratchPath(::testing::UnitTest::GetInstance()->current_test_info()->name());
   fs::remove_all(dir);
   return dir.string();
 }

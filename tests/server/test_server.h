@@ -15,16 +15,16 @@
 
 #include "absl/synchronization/notification.h"
 #include "client/meshseg_client.h"
+#include "scratch_dir.h"
 #include "server/server.h"
 
 namespace meshseg::testing_server {
 
-// Returns a fresh empty folder under the test temp dir.
+// Returns a fresh empty folder in the process's scratch folder.
 inline std::string FreshDir(const std::string& name) {
   const ::testing::TestInfo* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  const std::filesystem::path dir =
-      std::filesystem::path(::testing::TempDir()) /
-      (std::string(info->test_suite_name()) + "_" + info->name() + "_" + name);
+  const std::filesystem::path dir = testing_files::ScratchPath(
+      std::string(info->test_suite_name()) + "_" + info->name() + "_" + name);
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   return dir.string();

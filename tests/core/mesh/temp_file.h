@@ -14,6 +14,7 @@
 #include <gtest/gtest.h>
 
 #include "absl/status/status.h"
+#include "scratch_dir.h"
 
 namespace meshseg::testing_files {
 
@@ -25,12 +26,11 @@ inline std::string Message(const absl::Status& status) { return std::string(stat
 // after writing `content` to it.
 inline std::string WriteTemp(const std::string& name, std::string_view content) {
   const ::testing::TestInfo* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  std::string leaf =
-      std::string("meshseg_mesh_") + info->test_suite_name() + "_" + info->name();
+  std::string leaf = std::string(info->test_suite_name()) + "_" + info->name();
   for (char& c : leaf) {
     if (c == '/') c = '_';
   }
-  const std::string dir = ::testing::TempDir() + leaf;
+  const std::string dir = testing_files::ScratchPath(leaf);
   std::filesystem::create_directories(dir);
   const std::string path = dir + "/" + name;
   FILE* file = std::fopen(path.c_str(), "wb");

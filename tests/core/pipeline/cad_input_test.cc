@@ -15,6 +15,7 @@
 
 #include "cad_shapes.h"
 #include "meshseg/pipeline.h"
+#include "scratch_dir.h"
 
 namespace meshseg {
 namespace {
@@ -23,7 +24,7 @@ namespace {
 absl::StatusOr<PipelineResult> RunOnShape(const testing::CadShape& shape, const std::string& name,
                                           const PipelineParams& params = {}) {
   const Mesh mesh = testing::MeshOf(shape, name);
-  const std::string path = (std::filesystem::temp_directory_path() / name).string();
+  const std::string path = testing_files::ScratchPath(name);
   EXPECT_TRUE(WriteMesh(mesh.tri, path).ok());
   absl::StatusOr<PipelineResult> result = RunPipeline(path, params);
   std::filesystem::remove(path);

@@ -6,7 +6,6 @@
 #include "meshseg/point_cloud.h"
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
@@ -23,6 +22,7 @@
 #include "meshseg/generate.h"
 #include "meshseg/pipeline.h"
 #include "part_clouds.h"
+#include "scratch_dir.h"
 
 namespace meshseg {
 namespace {
@@ -72,9 +72,7 @@ Cloud WriteShaftCloud(const GeneratedPart& part) {
     for (int64_t i = 0; i < n; ++i) nearest = std::min(nearest, (cloud.points[i] - p).norm());
     if (nearest > kOutlierClearance * kVoxel) cloud.points.push_back(p);
   }
-  out.path = (std::filesystem::path(::testing::TempDir()) /
-              ("stepped_shaft_points_" + std::to_string(getpid()) + ".xyz"))
-                 .string();
+  out.path = testing_files::ScratchPath("stepped_shaft_points.xyz");
   EXPECT_TRUE(WritePointCloud(cloud, out.path).ok());
   for (const PrimitiveTruth& t : part.primitives) {
     if (const auto* c = std::get_if<Cylinder>(&t.surface)) out.axis = c->axis_direction;
@@ -162,9 +160,7 @@ PartCloud WriteHardCloud(const GeneratedPart& part, unsigned seed) {
   out.point_count = static_cast<int64_t>(cloud.points.size());
   const auto surface_end = cloud.points.end() - static_cast<int>(spec.outliers * spec.points);
   out.primitive = test::NearestPrimitive(part, {cloud.points.begin(), surface_end});
-  out.path = (std::filesystem::path(::testing::TempDir()) /
-              ("test_piece_hard_" + std::to_string(seed) + "_" + std::to_string(getpid()) + ".xyz"))
-                 .string();
+  out.path = testing_files::ScratchPath("test_piece_hard_" + std::to_string(seed) + ".xyz");
   EXPECT_TRUE(WritePointCloud(cloud, out.path).ok());
   return out;
 }

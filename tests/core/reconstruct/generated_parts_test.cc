@@ -13,6 +13,7 @@
 #include "meshseg/mesh.h"
 #include "meshseg/reconstruct.h"
 #include "part_clouds.h"
+#include "scratch_dir.h"
 
 namespace meshseg {
 namespace {
@@ -66,7 +67,7 @@ void ExpectClosedManifoldSingle(const TriMesh& m, const std::string& name) {
   EXPECT_EQ(test::BoundaryEdgeCount(m), 0);
   EXPECT_EQ(test::NonManifoldVertexCount(m), 0);
   EXPECT_EQ(test::ComponentCount(m), 1);
-  const std::string path = ::testing::TempDir() + "/" + name + ".ply";
+  const std::string path = testing_files::ScratchPath(name + ".ply");
   ASSERT_TRUE(WriteMesh(m, path).ok());
   const absl::StatusOr<Mesh> back = ReadMesh(path);
   ASSERT_TRUE(back.ok()) << back.status();
