@@ -8,6 +8,7 @@
 #include <optional>
 #include <string>
 
+#include <Eigen/Geometry>
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
 
@@ -481,6 +482,69 @@ TEST(SegmentDeterminism, OneThreadGivesTheSameResultAsMany) {
     EXPECT_EQ(one.seg.regions[r].rms_distance, many.seg.regions[r].rms_distance) << r;
   }
 }
+
+// A part where its CAD frame leaves it (tens of metres from the origin),
+// turned, or in other units (micrometres, metres) gets the same regions with
+// its surfaces moved and scaled alike: no threshold is absolute, and the
+// fits keep their precision far from the origin.
+struct Frame {
+  std::string name;
+  double scale = 1.0;
+  Eigen::AngleAxisd turn{0.0, Eigen::Vector3d::UnitZ()};
+  Eigen::Vector3d shift = Eigen::Vector3d::Zero();
+};
+
+void PrintTo(const Frame& frame, std::ostream* os) { *os << frame.name; }
+
+class SegmentFrame : public ::testing::TestWithParam<Frame> {};
+
+TEST_P(SegmentFrame, MovedTurnedOrScaledPartGetsTheSameRegions) {
+  const Frame& frame = GetParam();
+  const PartRun base = Segmented("plate_boss", 0.0, 0.05);
+  ASSERT_FALSE(base.seg.regions.empty());
+  const Eigen::Affine3d to = Eigen::Translation3d(frame.shift) * frame.turn *
+                             Eigen::Scaling(frame.scale);
+  Mesh moved = base.part.mesh;
+  for (const auto v : moved.tri.vertices()) {
+    const auto& p = moved.tri.point(v);
+    const Eigen::Vector3d q = to * Eigen::Vector3d(p[0], p[1], p[2]);
+    moved.tri.set_point(v, TriMesh::Point(q.x(), q.y(), q.z()));
+  }
+  moved.tri.update_normals();
+  const absl::StatusOr<CurvatureField> field = EstimateCurvature(moved);
+  ASSERT_TRUE(field.ok()) << field.status();
+  const absl::StatusOr<Segmentation> seg = Segment(moved, *field);
+  ASSERT_TRUE(seg.ok()) << seg.status();
+
+  // The fits differ in the last bits once turned; 1e-3 leaves them room.
+  constexpr double kRelative = 1e-3;
+  EXPECT_NEAR(seg->estimates.noise_sigma, frame.scale * base.seg.estimates.noise_sigma,
+              kRelative * frame.scale * base.seg.estimates.noise_sigma);
+  ASSERT_EQ(seg->regions.size(), base.seg.regions.size());
+  std::size_t same = 0;
+  for (std::size_t f = 0; f < seg->face_labels.size(); ++f) {
+    same += seg->face_labels[f] == base.seg.face_labels[f];
+  }
+  EXPECT_EQ(same, base.seg.face_labels.size()) << "faces labelled alike";
+  for (std::size_t r = 0; r < seg->regions.size(); ++r) {
+    const Region& a = base.seg.regions[r];
+    const Region& b = seg->regions[r];
+    EXPECT_EQ(b.type, a.type) << r;
+    EXPECT_NEAR(b.rms_distance, frame.scale * a.rms_distance,
+                kRelative * frame.scale * a.rms_distance)
+        << r;
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Frames, SegmentFrame,
+    ::testing::Values(
+        Frame{.name = "far", .shift = Eigen::Vector3d(20000.0, -15000.0, 30000.0)},
+        Frame{.name = "turned",
+              .turn = Eigen::AngleAxisd(0.7, Eigen::Vector3d(2, -1, 3).normalized())},
+        Frame{.name = "micrometres", .scale = 1000.0},
+        Frame{.name = "metres", .scale = 0.001}),
+    [](const auto& info) { return info.param.name; });
 
 }  // namespace
 }  // namespace meshseg
