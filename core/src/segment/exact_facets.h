@@ -58,6 +58,10 @@ inline constexpr double kMaxSagitta = 0.01;
 // on a cylinder whatever they are, four do not. (A curved face tessellated
 // with two facets is two planes to us: nothing tells it from a crease.)
 inline constexpr int kMinFacets = 3;
+// A tessellator steps an arc evenly: seeds whose facets span angles around
+// the axis within this ratio of each other are tried first (measured: 1.000
+// to 1.001 on tray_bottom_1002.stl; single-triangle CAD fans 1.5 to 6).
+inline constexpr double kMaxEvenStepRatio = 1.2;
 // Seed sets with more vertices than this hold a large plane and are not fitted.
 inline constexpr std::size_t kMaxSeedVertices = 200;
 // A curved region is grown and refitted at most this many times.

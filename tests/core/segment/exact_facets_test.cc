@@ -19,21 +19,17 @@ namespace {
 
 constexpr double kLength = 20.0;
 
-// A prism along x, length kLength, over the polygon of `count` points on a
-// circle of `radius` from angle 0 to `arc_deg` (closed by the chord when
-// arc_deg < 360), with fan caps: every vertex exact, the side triangles
-// long and thin like a CAD export's. With `chord_facet` >= 0, that side
-// facet has a vertex in the middle of its edge on the x = 0 cap, on the
-// chord under the arc, in three triangles: a CAD tessellator adds such a
-// vertex to meet the cap's triangulation.
-Mesh ArcPrism(double radius, int count, double arc_deg, int chord_facet = -1) {
-  const bool closed = arc_deg >= 360.0;
-  const double step = arc_deg / (closed ? count : count - 1) * std::numbers::pi / 180.0;
+// A prism along x, length kLength, over the closed convex polygon `profile`
+// (y, z), with fan caps: every vertex exact, the side triangles long and
+// thin like a CAD export's; side facet i runs from profile[i] to the next.
+// With `chord_facet` >= 0, that side facet has a vertex in the middle of its
+// edge on the x = 0 cap, on the chord under the arc, in three triangles: a
+// CAD tessellator adds such a vertex to meet the cap's triangulation.
+Mesh ProfilePrism(const std::vector<Eigen::Vector2d>& profile, int chord_facet = -1) {
+  const int count = static_cast<int>(profile.size());
   std::vector<Eigen::Vector3d> v;
   for (const double x : {0.0, kLength}) {
-    for (int i = 0; i < count; ++i) {
-      v.emplace_back(x, radius * std::cos(i * step), radius * std::sin(i * step));
-    }
+    for (const Eigen::Vector2d& p : profile) v.emplace_back(x, p.x(), p.y());
   }
   Eigen::Vector3d centre = Eigen::Vector3d::Zero();
   for (int i = 0; i < count; ++i) centre += v[i] / count;
@@ -62,6 +58,34 @@ Mesh ArcPrism(double radius, int count, double arc_deg, int chord_facet = -1) {
   absl::StatusOr<Mesh> mesh = BuildMesh(std::move(v), f, "prism");
   EXPECT_TRUE(mesh.ok()) << mesh.status();
   return *std::move(mesh);
+}
+
+// The prism over `count` points on a circle of `radius` from angle 0 to
+// `arc_deg`, closed by the chord when arc_deg < 360.
+Mesh ArcPrism(double radius, int count, double arc_deg, int chord_facet = -1) {
+  const bool closed = arc_deg >= 360.0;
+  const double step = arc_deg / (closed ? count : count - 1) * std::numbers::pi / 180.0;
+  std::vector<Eigen::Vector2d> profile;
+  for (int i = 0; i < count; ++i) {
+    profile.emplace_back(radius * std::cos(i * step), radius * std::sin(i * step));
+  }
+  return ProfilePrism(profile, chord_facet);
+}
+
+// A square of side `side` with its corners rounded by `radius` in `steps`
+// facets each; the first side facet is the flat bottom side.
+std::vector<Eigen::Vector2d> RoundedSquare(double side, double radius, int steps) {
+  const double inner = side / 2 - radius;
+  std::vector<Eigen::Vector2d> profile = {{-inner, -side / 2}};
+  const Eigen::Vector2d centres[] = {{inner, -inner}, {inner, inner}, {-inner, inner}, {-inner, -inner}};
+  for (int k = 0; k < 4; ++k) {
+    for (int j = 0; j <= steps; ++j) {
+      if (k == 3 && j == steps) break;  // the first point
+      const double a = (k - 1 + static_cast<double>(j) / steps) * std::numbers::pi / 2;
+      profile.push_back(centres[k] + radius * Eigen::Vector2d(std::cos(a), std::sin(a)));
+    }
+  }
+  return profile;
 }
 
 struct ExactRun {
@@ -128,6 +152,53 @@ TEST(SegmentExactFacets, AFacetWithAVertexOnItsChordStaysOnTheCylinder) {
   EXPECT_EQ(cylinders, 1);
   EXPECT_EQ(run.regions.regions.size(), 4u);  // the cylinder, two caps, the flat bottom
 }
+
+// A flat side between the last facets of two equal rounds is an isosceles
+// trapezoid in section, and so lies on a circle exactly: tray_bottom_1002.stl
+// read in micrometres got a slot side as a cylinder of radius 46 mm with its
+// rounds' end facets, when the fit through them happened to converge. Each
+// round keeps its facets, and the sides are planes. (Side, round radius,
+// facets per round: all four gave such a cylinder before seeds stepping
+// evenly around their axis went first.)
+struct RoundedSquareCase {
+  const char* name;
+  double side;
+  double radius;
+  int steps;
+};
+
+void PrintTo(const RoundedSquareCase& square, std::ostream* os) { *os << square.name; }
+
+class SegmentExactRoundedSquare : public ::testing::TestWithParam<RoundedSquareCase> {};
+
+TEST_P(SegmentExactRoundedSquare, FlatSidesBetweenRoundsStayPlanes) {
+  const RoundedSquareCase& square = GetParam();
+  const Mesh mesh = ProfilePrism(RoundedSquare(square.side, square.radius, square.steps));
+  const ExactRun run = SegmentExact(mesh);
+  int cylinders = 0, planes = 0;
+  for (std::size_t r = 0; r < run.regions.regions.size(); ++r) {
+    const RegionState& region = run.regions.regions[r];
+    const auto faces = std::count(run.regions.face_labels.begin(), run.regions.face_labels.end(),
+                                  static_cast<int>(r));
+    if (region.type == SurfaceType::kCylinder) {
+      ++cylinders;
+      EXPECT_NEAR(std::get<Cylinder>(region.surface).radius, square.radius, 1e-6);
+      EXPECT_EQ(faces, 2 * square.steps);
+    } else {
+      ++planes;
+      EXPECT_EQ(region.type, SurfaceType::kPlane);
+    }
+  }
+  EXPECT_EQ(cylinders, 4);
+  EXPECT_EQ(planes, 6);  // four sides, two caps
+}
+
+INSTANTIATE_TEST_SUITE_P(Squares, SegmentExactRoundedSquare,
+                         ::testing::Values(RoundedSquareCase{"slot_like", 7.5, 2.54, 9},
+                                           RoundedSquareCase{"fine_rounds", 5.0, 2.0, 18},
+                                           RoundedSquareCase{"coarse_rounds", 20.0, 2.0, 3},
+                                           RoundedSquareCase{"small_rounds", 12.0, 1.0, 9}),
+                         [](const auto& info) { return std::string(info.param.name); });
 
 // A pentagonal prism's sides meet at 72 degrees: seven planes, no cylinder.
 TEST(SegmentExactFacets, KeepsThePlanesOfAPentagonalPrism) {
