@@ -280,8 +280,8 @@ double SpanAroundAxis(const SegmentContext& c, const Facets& facets, int m,
   double widest = 0.0;
   for (std::size_t i = 0; i < across.size(); ++i) {
     for (std::size_t j = i + 1; j < across.size(); ++j) {
-      widest = std::max(widest, std::atan2(across[i].cross(across[j]).norm(),
-                                           across[i].dot(across[j])));
+      widest =
+          std::max(widest, std::atan2(across[i].cross(across[j]).norm(), across[i].dot(across[j])));
     }
   }
   return widest;

@@ -77,7 +77,8 @@ Mesh ArcPrism(double radius, int count, double arc_deg, int chord_facet = -1) {
 std::vector<Eigen::Vector2d> RoundedSquare(double side, double radius, int steps) {
   const double inner = side / 2 - radius;
   std::vector<Eigen::Vector2d> profile = {{-inner, -side / 2}};
-  const Eigen::Vector2d centres[] = {{inner, -inner}, {inner, inner}, {-inner, inner}, {-inner, -inner}};
+  const Eigen::Vector2d centres[] = {
+      {inner, -inner}, {inner, inner}, {-inner, inner}, {-inner, -inner}};
   for (int k = 0; k < 4; ++k) {
     for (int j = 0; j <= steps; ++j) {
       if (k == 3 && j == steps) break;  // the first point

@@ -502,8 +502,8 @@ TEST_P(SegmentFrame, MovedTurnedOrScaledPartGetsTheSameRegions) {
   const Frame& frame = GetParam();
   const PartRun base = Segmented("plate_boss", 0.0, 0.05);
   ASSERT_FALSE(base.seg.regions.empty());
-  const Eigen::Affine3d to = Eigen::Translation3d(frame.shift) * frame.turn *
-                             Eigen::Scaling(frame.scale);
+  const Eigen::Affine3d to =
+      Eigen::Translation3d(frame.shift) * frame.turn * Eigen::Scaling(frame.scale);
   Mesh moved = base.part.mesh;
   for (const auto v : moved.tri.vertices()) {
     const auto& p = moved.tri.point(v);
@@ -538,12 +538,11 @@ TEST_P(SegmentFrame, MovedTurnedOrScaledPartGetsTheSameRegions) {
 
 INSTANTIATE_TEST_SUITE_P(
     Frames, SegmentFrame,
-    ::testing::Values(
-        Frame{.name = "far", .shift = Eigen::Vector3d(20000.0, -15000.0, 30000.0)},
-        Frame{.name = "turned",
-              .turn = Eigen::AngleAxisd(0.7, Eigen::Vector3d(2, -1, 3).normalized())},
-        Frame{.name = "micrometres", .scale = 1000.0},
-        Frame{.name = "metres", .scale = 0.001}),
+    ::testing::Values(Frame{.name = "far", .shift = Eigen::Vector3d(20000.0, -15000.0, 30000.0)},
+                      Frame{.name = "turned",
+                            .turn = Eigen::AngleAxisd(0.7, Eigen::Vector3d(2, -1, 3).normalized())},
+                      Frame{.name = "micrometres", .scale = 1000.0},
+                      Frame{.name = "metres", .scale = 0.001}),
     [](const auto& info) { return info.param.name; });
 
 }  // namespace
