@@ -219,6 +219,40 @@ int FlattenNearlyFlatRegions(const SegmentContext& c, std::vector<RegionState>* 
   return flattened;
 }
 
+bool NearlyCylindrical(const SegmentContext& c, const Cone& cone, double rms,
+                       std::span<const int> vertices, const Tolerance& tol) {
+  if (vertices.empty()) return false;
+  const Eigen::Vector3d axis = cone.axis_direction.normalized();
+  double lo = std::numeric_limits<double>::infinity();
+  double hi = -lo;
+  for (const int v : vertices) {
+    const double t = (c.position(v) - cone.apex).dot(axis);
+    lo = std::min(lo, t);
+    hi = std::max(hi, t);
+  }
+  const double widening = (hi - lo) * std::tan(cone.half_angle);
+  return widening < std::max(tol.distance, 2.0 * rms);
+}
+
+int StraightenNearlyCylindricalCones(const SegmentContext& c, std::vector<RegionState>* regions) {
+  int straightened = 0;
+  for (RegionState& r : *regions) {
+    if (!r.alive || r.type != SurfaceType::kCone) continue;
+    const FitResult fit = FitType(c, SurfaceType::kCone, r.vertices);
+    const auto* cone = std::get_if<Cone>(&fit.surface);
+    if (!fit.ok() || cone == nullptr ||
+        !NearlyCylindrical(c, *cone, fit.rms_distance, r.vertices, c.tolerance)) {
+      continue;
+    }
+    const FitResult cylinder = FitType(c, SurfaceType::kCylinder, r.vertices);
+    if (!cylinder.ok()) continue;
+    r.type = SurfaceType::kCylinder;
+    r.surface = cylinder.surface;
+    ++straightened;
+  }
+  return straightened;
+}
+
 std::optional<TypedFit> PlaneIfFits(const SegmentContext& c, std::span<const int> vertices,
                                     const Tolerance& tol) {
   TypedFit plane = TryType(c, SurfaceType::kPlane, vertices, tol);

@@ -151,6 +151,7 @@ absl::StatusOr<Segmentation> Segment(const Mesh& mesh, const CurvatureField& cur
     MESHSEG_RETURN_IF_ERROR(RefineBoundaries(c, &labels, &regions));
   }
   FlattenNearlyFlatRegions(c, &regions);
+  StraightenNearlyCylindricalCones(c, &regions);
   ctx.Progress("segment", 0.9);
   MESHSEG_RETURN_IF_ERROR(ctx.CheckStop("segment"));
   Segmentation seg = FinalizeRegions(c, mesh.tri, labels, std::move(regions));
