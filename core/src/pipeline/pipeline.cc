@@ -17,6 +17,11 @@
 namespace meshseg {
 namespace {
 
+// A CAD export's vertices lie on their surfaces to rounding: a face whose
+// corners miss its region's refitted surface by more than this, in l_avg of
+// the input (the exact-facet path's kExactTolerance), may belong next door.
+constexpr double kExactCorner = 1e-4;
+
 absl::Status ValidateParams(const PipelineParams& params) {
   if (params.max_elements <= 0) {
     return absl::InvalidArgumentError(
@@ -79,6 +84,13 @@ absl::StatusOr<std::vector<int>> SegmentRemeshed(const Mesh& mesh, double edge_l
   result->regions = std::move(segmentation.regions);
   pipeline_internal::CompactRegions(&labels, &result->vertex_labels, &result->regions);
   pipeline_internal::RefitOnInputVertices(mesh.tri, labels, &result->regions);
+  if (pipeline_internal::RelabelFacesOffTheirSurface(mesh.tri, result->regions,
+                                                     kExactCorner * MeanEdgeLength(mesh.tri),
+                                                     &labels) > 0) {
+    result->vertex_labels = pipeline_internal::VertexLabelsFromFaces(mesh.tri, labels);
+    pipeline_internal::CompactRegions(&labels, &result->vertex_labels, &result->regions);
+    pipeline_internal::RefitOnInputVertices(mesh.tri, labels, &result->regions);
+  }
   MESHSEG_RETURN_IF_ERROR(DescribeRegions(mesh, labels, result->regions, params, ctx, result));
   result->mesh = MeshStatistics(mesh);
   result->estimates = segmentation.estimates;

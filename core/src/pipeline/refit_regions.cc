@@ -68,4 +68,38 @@ void RefitOnInputVertices(const TriMesh& mesh, std::span<const int> face_labels,
   }
 }
 
+int RelabelFacesOffTheirSurface(const TriMesh& mesh, std::span<const Region> regions, double exact,
+                                std::vector<int>* face_labels) {
+  // The farthest corner of face f from region r's surface.
+  auto farthest_corner = [&](TriMesh::FaceHandle f, int r) {
+    double farthest = 0.0;
+    for (const auto v : mesh.fv_range(f)) {
+      farthest = std::max(farthest,
+                          std::abs(SignedDistance(regions[r].surface, ToEigen(mesh.point(v)))));
+    }
+    return farthest;
+  };
+  const std::vector<int> before = *face_labels;
+  int moved = 0;
+  for (const auto f : mesh.faces()) {
+    const int own = before[f.idx()];
+    if (own < 0) continue;
+    const double own_distance = farthest_corner(f, own);
+    if (!(own_distance > exact)) continue;
+    int best = own;
+    double best_distance = 0.5 * own_distance;
+    for (const auto g : mesh.ff_range(f)) {
+      const int other = before[g.idx()];
+      if (other < 0 || other == own) continue;
+      const double distance = farthest_corner(f, other);
+      if (distance < best_distance) best = other, best_distance = distance;
+    }
+    if (best != own) {
+      (*face_labels)[f.idx()] = best;
+      ++moved;
+    }
+  }
+  return moved;
+}
+
 }  // namespace meshseg::pipeline_internal

@@ -21,6 +21,18 @@ namespace meshseg::pipeline_internal {
 void RefitOnInputVertices(const TriMesh& mesh, std::span<const int> face_labels,
                           std::vector<Region>* regions);
 
+// A face of a CAD export has its corners on its own surface; its label,
+// carried over from the remesh by four samples, can still be the next
+// region's when the face is long and thin (plate_holes.stl with its
+// coordinates moved by 1e-12: a torus face in the corner cylinder beside it,
+// rms 0.04). Gives a face on a region boundary to a neighbouring face's
+// region when its corners lie on that region's surface, farthest corner
+// within half its distance to its own surface and its own farther than
+// `exact`. Run after RefitOnInputVertices (surfaces fitted to the input's
+// vertices); returns how many faces moved.
+int RelabelFacesOffTheirSurface(const TriMesh& mesh, std::span<const Region> regions, double exact,
+                                std::vector<int>* face_labels);
+
 }  // namespace meshseg::pipeline_internal
 
 #endif  // MESHSEG_PIPELINE_REFIT_REGIONS_H_

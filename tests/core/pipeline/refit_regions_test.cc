@@ -74,5 +74,41 @@ TEST(RefitOnInputVertices, RegionWithoutFacesKeepsItsSurface) {
   EXPECT_EQ(regions[1].rms_distance, 0.0);
 }
 
+// The tube as one cylinder region (0) and a plane (1) tangent to it along
+// the line at angle 0: x = 5.
+std::vector<Region> CylinderAndTangentPlane() {
+  std::vector<Region> regions(2);
+  regions[0].type = SurfaceType::kCylinder;
+  regions[0].surface = Cylinder{.axis_origin = {0, 0, 0}, .axis_direction = {0, 0, 1}, .radius = 5.0};
+  regions[1].id = 1;
+  regions[1].type = SurfaceType::kPlane;
+  regions[1].surface = Plane{.point = {5, 0, 0}, .normal = {1, 0, 0}};
+  return regions;
+}
+
+TEST(RelabelFacesOffTheirSurface, AFaceOnItsNeighboursSurfaceGoesThere) {
+  // Face 0 spans angles 0 to 15 degrees: one edge on the tangent line, the
+  // other 5 (1 - cos 15) = 0.17 inside the plane; its corners are on the
+  // cylinder. Labelled with the plane, it goes to the cylinder.
+  const TriMesh tube = Tube();
+  std::vector<int> labels(tube.n_faces(), 0);
+  labels[0] = 1;
+  EXPECT_EQ(RelabelFacesOffTheirSurface(tube, CylinderAndTangentPlane(), 1e-6, &labels), 1);
+  EXPECT_EQ(labels, std::vector<int>(tube.n_faces(), 0));
+}
+
+TEST(RelabelFacesOffTheirSurface, AFaceOnItsOwnSurfaceStays) {
+  // Face 0 labelled with the plane through its own corners: exact, it stays,
+  // though the cylinder beside it holds its corners too.
+  const TriMesh tube = Tube();
+  std::vector<Region> regions = CylinderAndTangentPlane();
+  const double t = std::numbers::pi / 12;  // 15 degrees
+  regions[1].surface = Plane{.point = {5, 0, 0}, .normal = {std::cos(t / 2), std::sin(t / 2), 0}};
+  std::vector<int> labels(tube.n_faces(), 0);
+  labels[0] = 1;
+  EXPECT_EQ(RelabelFacesOffTheirSurface(tube, regions, 1e-6, &labels), 0);
+  EXPECT_EQ(labels[0], 1);
+}
+
 }  // namespace
 }  // namespace meshseg::pipeline_internal
