@@ -84,9 +84,8 @@ absl::StatusOr<std::vector<int>> SegmentRemeshed(const Mesh& mesh, double edge_l
   result->regions = std::move(segmentation.regions);
   pipeline_internal::CompactRegions(&labels, &result->vertex_labels, &result->regions);
   pipeline_internal::RefitOnInputVertices(mesh.tri, labels, &result->regions);
-  if (pipeline_internal::RelabelFacesOffTheirSurface(mesh.tri, result->regions,
-                                                     kExactCorner * MeanEdgeLength(mesh.tri),
-                                                     &labels) > 0) {
+  if (pipeline_internal::RelabelFacesOffTheirSurface(
+          mesh.tri, result->regions, kExactCorner * MeanEdgeLength(mesh.tri), &labels) > 0) {
     result->vertex_labels = pipeline_internal::VertexLabelsFromFaces(mesh.tri, labels);
     pipeline_internal::CompactRegions(&labels, &result->vertex_labels, &result->regions);
     pipeline_internal::RefitOnInputVertices(mesh.tri, labels, &result->regions);

@@ -74,8 +74,8 @@ int RelabelFacesOffTheirSurface(const TriMesh& mesh, std::span<const Region> reg
   auto farthest_corner = [&](TriMesh::FaceHandle f, int r) {
     double farthest = 0.0;
     for (const auto v : mesh.fv_range(f)) {
-      farthest = std::max(farthest,
-                          std::abs(SignedDistance(regions[r].surface, ToEigen(mesh.point(v)))));
+      farthest =
+          std::max(farthest, std::abs(SignedDistance(regions[r].surface, ToEigen(mesh.point(v)))));
     }
     return farthest;
   };

@@ -30,6 +30,18 @@ constexpr int kTrimRounds = 4;
 // A typed growth that stays near the seed's size found no surface.
 constexpr std::size_t kMinSeedGrowth = 3;
 
+// Keeps the piece of `vertices` holding the most of `seed` (a trim to the
+// vertices a fit explains can cut a region in pieces) and frees the rest.
+void KeepPieceHoldingSeed(const SegmentContext& c, std::span<const int> seed,
+                          std::vector<int>* labels, std::vector<int>* vertices) {
+  std::vector<int> piece = PieceHoldingSeed(c, *vertices, seed);
+  if (piece.size() == vertices->size()) return;
+  const int id = (*labels)[piece.front()];
+  for (const int v : *vertices) (*labels)[v] = -1;
+  for (const int v : piece) (*labels)[v] = id;
+  *vertices = std::move(piece);
+}
+
 // Grows `region` with the surface of `typed.type` and stores the result.
 void GrowTyped(const SegmentContext& c, const TypedFit& typed, int id, std::vector<int>* labels,
                RegionState* region) {
@@ -104,6 +116,7 @@ void GrowAndType(const SegmentContext& c, int id, std::vector<int>* labels,
       (*labels)[v] = -1;
       return true;
     });
+    KeepPieceHoldingSeed(c, seed, labels, &region.vertices);
     // The type is decided again on what is left: it may be a plane the
     // curved fit bent over to reach a tangent fillet's first rows, or a
     // narrow chamfer that the cone fits better once its rims are gone.
@@ -133,7 +146,7 @@ void GrowAndType(const SegmentContext& c, int id, std::vector<int>* labels,
       typed.type = type;
       typed.fit = FitType(c, type, start == 0 ? seed : quadric_vertices);
       for (int k = 0; start == 1 && typed.fit.ok() && k < kTrimRounds; ++k) {
-        from = FittingVertices(c, typed.fit.surface, quadric_vertices);
+        from = PieceHoldingSeed(c, FittingVertices(c, typed.fit.surface, quadric_vertices), seed);
         if (from.size() < seed.size()) break;
         typed.fit = FitType(c, type, from);
       }
@@ -149,6 +162,7 @@ void GrowAndType(const SegmentContext& c, int id, std::vector<int>* labels,
           (*labels)[v] = -1;
           return true;
         });
+        KeepPieceHoldingSeed(c, seed, labels, &trial.vertices);
         typed.fit.surface = trial.surface;
         GrowTyped(c, typed, id, labels, &trial);
       }

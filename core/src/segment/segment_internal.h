@@ -99,6 +99,18 @@ double FitFraction(const SegmentContext& c, const Surface& surface, std::span<co
 std::vector<int> FittingVertices(const SegmentContext& c, const Surface& surface,
                                  std::span<const int> vertices);
 
+// Vertices outside a set that a piece of it may step over (noise holes).
+inline constexpr int kPieceBridge = 2;
+
+// The piece of `vertices` that holds the most of `seed`, in the order of
+// `vertices`: connected over mesh edges within the set and across up to
+// kPieceBridge vertices outside it. A fit's vertices can lie in pieces: on
+// plate_holes.stl (jittered by 1e-12) a cone tangent to two sides along
+// lines through the corner fitted both sides' strips, and not the corner
+// round between them, 24 rows wide.
+std::vector<int> PieceHoldingSeed(const SegmentContext& c, std::span<const int> vertices,
+                                  std::span<const int> seed);
+
 // Sum of the squared distances of `vertices` (all of them) to `surface`.
 double SquaredDistances(const SegmentContext& c, const Surface& surface,
                         std::span<const int> vertices);

@@ -79,7 +79,8 @@ TEST(RefitOnInputVertices, RegionWithoutFacesKeepsItsSurface) {
 std::vector<Region> CylinderAndTangentPlane() {
   std::vector<Region> regions(2);
   regions[0].type = SurfaceType::kCylinder;
-  regions[0].surface = Cylinder{.axis_origin = {0, 0, 0}, .axis_direction = {0, 0, 1}, .radius = 5.0};
+  regions[0].surface =
+      Cylinder{.axis_origin = {0, 0, 0}, .axis_direction = {0, 0, 1}, .radius = 5.0};
   regions[1].id = 1;
   regions[1].type = SurfaceType::kPlane;
   regions[1].surface = Plane{.point = {5, 0, 0}, .normal = {1, 0, 0}};

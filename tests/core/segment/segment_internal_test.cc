@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <vector>
 #include <variant>
 
 #include "segment/decide_type.h"
@@ -109,6 +110,39 @@ TEST(RefitRegionsTest, RegionWhoseSurfaceStillMeetsItBestKeepsIt) {
   EXPECT_EQ(regions[0].type, SurfaceType::kTorus);
   EXPECT_EQ(std::get<Torus>(regions[0].surface).minor_radius,
             std::get<Torus>(spindle.surface).minor_radius);
+}
+
+// A flat strip of 20 columns by 5 rows; the set is every vertex whose
+// column is not in `gap`.
+std::vector<int> StripWithout(const Sheet& s, int gap_from, int gap_to) {
+  std::vector<int> out;
+  for (int v = 0; v < static_cast<int>(s.u.size()); ++v) {
+    const int column = static_cast<int>(std::lround(s.u[v]));
+    if (column < gap_from || column > gap_to) out.push_back(v);
+  }
+  return out;
+}
+
+TEST(PieceHoldingSeedTest, KeepsTheSeedsSideOfAWideGap) {
+  Sheet s;
+  BuildSheet(
+      [](double u, double v) {
+        return std::pair{Eigen::Vector3d(u, v, 0.0), Eigen::Vector3d::UnitZ()};
+      },
+      0.0, 19.0, 20, 0.0, 4.0, 5, /*distance=*/0.1, /*angle_deg=*/5.0, &s);
+  // Columns 7-10 missing (4 columns, wider than kPieceBridge): two pieces;
+  // the seed, in columns 12-14, is on the right one.
+  const std::vector<int> set = StripWithout(s, 7, 10);
+  std::vector<int> seed;
+  for (const int v : set) {
+    if (s.u[v] >= 12.0 && s.u[v] <= 14.0) seed.push_back(v);
+  }
+  const std::vector<int> piece = PieceHoldingSeed(s.c, set, seed);
+  EXPECT_EQ(piece.size(), 9u * 5u);
+  for (const int v : piece) EXPECT_GE(s.u[v], 11.0);
+  // A gap of kPieceBridge columns (noise) does not cut it.
+  const std::vector<int> holed = StripWithout(s, 8, 7 + kPieceBridge);
+  EXPECT_EQ(PieceHoldingSeed(s.c, holed, seed).size(), holed.size());
 }
 
 }  // namespace
