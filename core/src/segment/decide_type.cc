@@ -99,6 +99,26 @@ bool NearlyFlatImpl(const SegmentContext& c, const Surface& surface, double rms,
          std::sqrt(extent2) / radius < max_turn;
 }
 
+// Refits as type `to` every alive region of a type `from` accepts whose
+// own fit `simpler(region, fit)` accepts, if that fit is valid; returns how
+// many.
+template <typename From, typename Simpler>
+int RetypeToSimpler(const SegmentContext& c, From from, SurfaceType to,
+                    std::vector<RegionState>* regions, Simpler simpler) {
+  int retyped = 0;
+  for (RegionState& r : *regions) {
+    if (!r.alive || !from(r.type)) continue;
+    const FitResult own = FitType(c, r.type, r.vertices);
+    if (!own.ok() || !simpler(r, own)) continue;
+    const FitResult fit = FitType(c, to, r.vertices);
+    if (!fit.ok()) continue;
+    r.type = to;
+    r.surface = fit.surface;
+    ++retyped;
+  }
+  return retyped;
+}
+
 }  // namespace
 
 TypedFit TryType(const SegmentContext& c, SurfaceType type, std::span<const int> vertices,
@@ -202,21 +222,10 @@ bool NearlyFlat(const SegmentContext& c, const Surface& surface, double rms,
 }
 
 int FlattenNearlyFlatRegions(const SegmentContext& c, std::vector<RegionState>* regions) {
-  int flattened = 0;
-  for (RegionState& r : *regions) {
-    if (!r.alive || !IsCurved(r.type)) continue;
-    const FitResult curved = FitType(c, r.type, r.vertices);
-    if (!curved.ok() ||
-        !NearlyFlat(c, curved.surface, curved.rms_distance, r.vertices, c.tolerance)) {
-      continue;
-    }
-    const FitResult plane = FitType(c, SurfaceType::kPlane, r.vertices);
-    if (!plane.ok()) continue;
-    r.type = SurfaceType::kPlane;
-    r.surface = plane.surface;
-    ++flattened;
-  }
-  return flattened;
+  return RetypeToSimpler(
+      c, IsCurved, SurfaceType::kPlane, regions, [&](const RegionState& r, const FitResult& fit) {
+        return NearlyFlat(c, fit.surface, fit.rms_distance, r.vertices, c.tolerance);
+      });
 }
 
 bool NearlyCylindrical(const SegmentContext& c, const Cone& cone, double rms,
@@ -235,22 +244,14 @@ bool NearlyCylindrical(const SegmentContext& c, const Cone& cone, double rms,
 }
 
 int StraightenNearlyCylindricalCones(const SegmentContext& c, std::vector<RegionState>* regions) {
-  int straightened = 0;
-  for (RegionState& r : *regions) {
-    if (!r.alive || r.type != SurfaceType::kCone) continue;
-    const FitResult fit = FitType(c, SurfaceType::kCone, r.vertices);
-    const auto* cone = std::get_if<Cone>(&fit.surface);
-    if (!fit.ok() || cone == nullptr ||
-        !NearlyCylindrical(c, *cone, fit.rms_distance, r.vertices, c.tolerance)) {
-      continue;
-    }
-    const FitResult cylinder = FitType(c, SurfaceType::kCylinder, r.vertices);
-    if (!cylinder.ok()) continue;
-    r.type = SurfaceType::kCylinder;
-    r.surface = cylinder.surface;
-    ++straightened;
-  }
-  return straightened;
+  return RetypeToSimpler(
+      c, [](SurfaceType type) { return type == SurfaceType::kCone; }, SurfaceType::kCylinder,
+      regions,
+      [&](const RegionState& r, const FitResult& fit) {
+        const auto* cone = std::get_if<Cone>(&fit.surface);
+        return cone != nullptr &&
+               NearlyCylindrical(c, *cone, fit.rms_distance, r.vertices, c.tolerance);
+      });
 }
 
 std::optional<TypedFit> PlaneIfFits(const SegmentContext& c, std::span<const int> vertices,
