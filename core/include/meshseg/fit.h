@@ -95,6 +95,11 @@ FitResult FitSphere(const FitInput& input, const FitParams& params = {});
 // degenerates to a cylinder (half angle ~ 0, apex at infinity).
 FitResult FitCylinder(const FitInput& input, const FitParams& params = {});
 FitResult FitCone(const FitInput& input, const FitParams& params = {});
+
+// How much wider `cone` is at one end of `points` than at the other: their
+// extent along its axis times tan(half angle). A cone widening less than the
+// distance tolerance over its region is a cylinder within it.
+double ConeWidening(const Cone& cone, std::span<const Eigen::Vector3d> points);
 // Torus: >= 8 points, needs normals (Kós et al. initial axis, seed 002).
 FitResult FitTorus(const FitInput& input, const FitParams& params = {});
 // Seed 000 eq. (8): min Σ f(v_i)² + λ Σ |n_i − ∇f(v_i)|², λ = total area

@@ -8,6 +8,8 @@
 // distance to the generator line.
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <span>
 #include <vector>
 
 #include <Eigen/Cholesky>
@@ -123,6 +125,19 @@ FitResult FitCone(const FitInput& input, const FitParams& params) {
   r.valid = true;
   SetDistanceErrors(input, &r);
   return r;
+}
+
+double ConeWidening(const Cone& cone, std::span<const Eigen::Vector3d> points) {
+  if (points.empty()) return 0.0;
+  const Eigen::Vector3d axis = cone.axis_direction.normalized();
+  double lo = std::numeric_limits<double>::infinity();
+  double hi = -lo;
+  for (const Eigen::Vector3d& p : points) {
+    const double t = (p - cone.apex).dot(axis);
+    lo = std::min(lo, t);
+    hi = std::max(hi, t);
+  }
+  return (hi - lo) * std::tan(cone.half_angle);
 }
 
 }  // namespace meshseg

@@ -78,17 +78,18 @@ absl::StatusOr<std::vector<int>> SegmentRemeshed(const Mesh& mesh, double edge_l
   SegmentParams segment = params.segment;
   segment.on_facets = true;  // the remesh's vertices lie on the input's facets
   MESHSEG_ASSIGN_OR_RETURN(Segmentation segmentation, Segment(fine, curvature, segment, ctx));
+  const double tolerance = segmentation.estimates.distance_tolerance;
   std::vector<int> labels =
       pipeline_internal::TransferFaceLabels(fine.tri, segmentation.face_labels, mesh.tri);
   result->vertex_labels = pipeline_internal::VertexLabelsFromFaces(mesh.tri, labels);
   result->regions = std::move(segmentation.regions);
   pipeline_internal::CompactRegions(&labels, &result->vertex_labels, &result->regions);
-  pipeline_internal::RefitOnInputVertices(mesh.tri, labels, &result->regions);
+  pipeline_internal::RefitOnInputVertices(mesh.tri, labels, tolerance, &result->regions);
   if (pipeline_internal::RelabelFacesOffTheirSurface(
           mesh.tri, result->regions, kExactCorner * MeanEdgeLength(mesh.tri), &labels) > 0) {
     result->vertex_labels = pipeline_internal::VertexLabelsFromFaces(mesh.tri, labels);
     pipeline_internal::CompactRegions(&labels, &result->vertex_labels, &result->regions);
-    pipeline_internal::RefitOnInputVertices(mesh.tri, labels, &result->regions);
+    pipeline_internal::RefitOnInputVertices(mesh.tri, labels, tolerance, &result->regions);
   }
   MESHSEG_RETURN_IF_ERROR(DescribeRegions(mesh, labels, result->regions, params, ctx, result));
   result->mesh = MeshStatistics(mesh);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <variant>
 
 #include "meshseg/fit.h"
 
@@ -27,7 +28,7 @@ Distances DistancesTo(const Surface& surface, std::span<const Eigen::Vector3d> p
 }  // namespace
 
 void RefitOnInputVertices(const TriMesh& mesh, std::span<const int> face_labels,
-                          std::vector<Region>* regions) {
+                          double distance_tolerance, std::vector<Region>* regions) {
   // Vertex lists per region: the corners of its faces, each once.
   std::vector<std::vector<int>> members(regions->size());
   std::vector<int> last_region(mesh.n_vertices(), -1);
@@ -64,6 +65,20 @@ void RefitOnInputVertices(const TriMesh& mesh, std::span<const int> face_labels,
     } else {
       region.rms_distance = before.rms;
       region.max_distance = before.max;
+    }
+    // A cone fitted on the remesh's chords can be a cylinder on the input's
+    // own vertices (plate_holes.stl in micrometres: an edge round, 0.29
+    // degrees on the remesh, 0.009 on the input, 39 um wider over 250 mm).
+    const auto* cone = std::get_if<Cone>(&region.surface);
+    if (cone != nullptr && ConeWidening(*cone, points) < distance_tolerance) {
+      const FitResult cylinder =
+          FitOfType(SurfaceType::kCylinder, {.points = points, .normals = normals, .weights = {}});
+      if (cylinder.ok()) {
+        region.type = SurfaceType::kCylinder;
+        region.surface = cylinder.surface;
+        region.rms_distance = cylinder.rms_distance;
+        region.max_distance = cylinder.max_distance;
+      }
     }
   }
 }

@@ -17,9 +17,11 @@ namespace meshseg::pipeline_internal {
 // type, initial normals from the current surface) to the vertices of the
 // input faces labelled with it, and keeps the refit where it is closer to
 // those vertices than the current surface. rms/max distances are then those
-// of the input vertices. `face_labels` has one entry per face of `mesh`.
+// of the input vertices. A cone that widens less than `distance_tolerance`
+// (th_dis) over those vertices becomes a cylinder, as in the segment stage.
+// `face_labels` has one entry per face of `mesh`.
 void RefitOnInputVertices(const TriMesh& mesh, std::span<const int> face_labels,
-                          std::vector<Region>* regions);
+                          double distance_tolerance, std::vector<Region>* regions);
 
 // A face of a CAD export has its corners on its own surface; its label,
 // carried over from the remesh by four samples, can still be the next

@@ -231,16 +231,10 @@ int FlattenNearlyFlatRegions(const SegmentContext& c, std::vector<RegionState>* 
 bool NearlyCylindrical(const SegmentContext& c, const Cone& cone, double rms,
                        std::span<const int> vertices, const Tolerance& tol) {
   if (vertices.empty()) return false;
-  const Eigen::Vector3d axis = cone.axis_direction.normalized();
-  double lo = std::numeric_limits<double>::infinity();
-  double hi = -lo;
-  for (const int v : vertices) {
-    const double t = (c.position(v) - cone.apex).dot(axis);
-    lo = std::min(lo, t);
-    hi = std::max(hi, t);
-  }
-  const double widening = (hi - lo) * std::tan(cone.half_angle);
-  return widening < std::max(tol.distance, 2.0 * rms);
+  std::vector<Eigen::Vector3d> points;
+  points.reserve(vertices.size());
+  for (const int v : vertices) points.push_back(c.position(v));
+  return ConeWidening(cone, points) < std::max(tol.distance, 2.0 * rms);
 }
 
 int StraightenNearlyCylindricalCones(const SegmentContext& c, std::vector<RegionState>* regions) {

@@ -10,6 +10,8 @@
 namespace meshseg::pipeline_internal {
 namespace {
 
+constexpr double kTolerance = 0.1;  // th_dis
+
 // An open tube of radius 5 along z, its vertices exactly on the cylinder:
 // 24 segments, 4 rings 2 apart.
 TriMesh Tube() {
@@ -41,7 +43,7 @@ TEST(RefitOnInputVertices, ChordFitBecomesExactOnTheInputVertices) {
                             .axis_direction = Eigen::Vector3d(0.01, 0.0, 1.0).normalized(),
                             .radius = 4.95};
   std::vector<Region> regions = {region};
-  RefitOnInputVertices(tube, std::vector<int>(tube.n_faces(), 0), &regions);
+  RefitOnInputVertices(tube, std::vector<int>(tube.n_faces(), 0), kTolerance, &regions);
   const Cylinder& c = std::get<Cylinder>(regions[0].surface);
   EXPECT_NEAR(c.radius, 5.0, 1e-9);
   EXPECT_NEAR(std::abs(c.axis_direction.z()), 1.0, 1e-12);
@@ -56,9 +58,28 @@ TEST(RefitOnInputVertices, KeepsTheSurfaceWhenTheRefitIsNoCloser) {
   region.surface = Cylinder{.axis_origin = {0, 0, 0}, .axis_direction = {0, 0, 1}, .radius = 5.0};
   region.rms_distance = 123.0;  // stale value from the remesh
   std::vector<Region> regions = {region};
-  RefitOnInputVertices(tube, std::vector<int>(tube.n_faces(), 0), &regions);
+  RefitOnInputVertices(tube, std::vector<int>(tube.n_faces(), 0), kTolerance, &regions);
   // Already exact: whichever is kept, the distances are those of the input.
   EXPECT_NEAR(std::get<Cylinder>(regions[0].surface).radius, 5.0, 1e-9);
+  EXPECT_LT(regions[0].rms_distance, 1e-9);
+}
+
+TEST(RefitOnInputVertices, AConeThatDoesNotWidenOnTheInputIsACylinder) {
+  // As fitted on a remesh's chords: a cone of half angle 0.2 degrees, 0.02
+  // wider over the tube's 6 of length than at its start, under th_dis 0.1.
+  const TriMesh tube = Tube();
+  const double half_angle = 0.2 * std::numbers::pi / 180.0;
+  Region region;
+  region.type = SurfaceType::kCone;
+  region.surface = Cone{.apex = {0.0, 0.0, -5.0 / std::tan(half_angle)},
+                        .axis_direction = {0, 0, 1},
+                        .half_angle = half_angle};
+  std::vector<Region> regions = {region};
+  RefitOnInputVertices(tube, std::vector<int>(tube.n_faces(), 0), kTolerance, &regions);
+  EXPECT_EQ(regions[0].type, SurfaceType::kCylinder);
+  const auto* cylinder = std::get_if<Cylinder>(&regions[0].surface);
+  ASSERT_NE(cylinder, nullptr);
+  EXPECT_NEAR(cylinder->radius, 5.0, 1e-9);
   EXPECT_LT(regions[0].rms_distance, 1e-9);
 }
 
@@ -68,7 +89,7 @@ TEST(RefitOnInputVertices, RegionWithoutFacesKeepsItsSurface) {
   regions[1].id = 1;
   regions[1].type = SurfaceType::kPlane;
   regions[1].surface = Plane{.point = {0, 0, 7}, .normal = {0, 0, 1}};
-  RefitOnInputVertices(tube, std::vector<int>(tube.n_faces(), 0), &regions);
+  RefitOnInputVertices(tube, std::vector<int>(tube.n_faces(), 0), kTolerance, &regions);
   const Plane& p = std::get<Plane>(regions[1].surface);
   EXPECT_EQ(p.point.z(), 7.0);
   EXPECT_EQ(regions[1].rms_distance, 0.0);
