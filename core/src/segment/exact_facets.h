@@ -13,6 +13,8 @@
 //     neighbouring facets that meet it too, refitted as it grows. (Only the
 //     corners of a facet's outline must be exact: a tessellator adds vertices
 //     on a facet's edges to meet the next face, under the arc on a chord.)
+//     Cylinder and cone seeds whose facets step evenly around the axis are
+//     taken in a first pass (kMaxEvenStepRatio), all others in a second;
 //  3. the facets left are planes.
 // The pipeline also takes this path for CAD exports too fine to remesh
 // (remesh.h, SegmentParams::exact_facets), such as tray_bottom_1002.stl, a
