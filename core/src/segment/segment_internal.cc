@@ -109,44 +109,46 @@ std::vector<int> FittingVertices(const SegmentContext& c, const Surface& surface
 
 std::vector<int> PieceHoldingSeed(const SegmentContext& c, std::span<const int> vertices,
                                   std::span<const int> seed) {
-  // piece[v]: -1 in the set and not reached yet.
+  // piece[v]: -1 in the set (or the seed) and not reached yet. The seed is
+  // walked over too: the fit's vertices around it are one piece with it
+  // even where noise leaves them apart from each other.
   std::unordered_map<int, int> piece;
   for (const int v : vertices) piece[v] = -1;
+  for (const int v : seed) piece[v] = -1;
   // Walks from x over the set, and over up to kPieceBridge vertices outside
   // it: a vertex the fit misses by noise does not cut the piece.
   std::vector<std::pair<int, int>> stack;  // vertex, steps outside the set
   std::unordered_map<int, int> outside;    // vertex outside -> fewest steps
   int pieces = 0;
-  for (const int v : vertices) {
-    if (piece[v] != -1) continue;
-    piece[v] = pieces;
-    stack.assign(1, {v, 0});
-    outside.clear();
-    while (!stack.empty()) {
-      const auto [x, steps] = stack.back();
-      stack.pop_back();
-      for (const int y : c.graph.Neighbors(x)) {
-        const auto it = piece.find(y);
-        if (it != piece.end()) {
-          if (it->second != -1) continue;
-          it->second = pieces;
-          stack.push_back({y, 0});
-        } else if (steps < kPieceBridge) {
-          const auto [o, fresh] = outside.try_emplace(y, steps + 1);
-          if (!fresh && o->second <= steps + 1) continue;
-          o->second = steps + 1;
-          stack.push_back({y, steps + 1});
+  for (const std::span<const int> start : {vertices, seed}) {
+    for (const int v : start) {
+      if (piece[v] != -1) continue;
+      piece[v] = pieces;
+      stack.assign(1, {v, 0});
+      outside.clear();
+      while (!stack.empty()) {
+        const auto [x, steps] = stack.back();
+        stack.pop_back();
+        for (const int y : c.graph.Neighbors(x)) {
+          const auto it = piece.find(y);
+          if (it != piece.end()) {
+            if (it->second != -1) continue;
+            it->second = pieces;
+            stack.push_back({y, 0});
+          } else if (steps < kPieceBridge) {
+            const auto [o, fresh] = outside.try_emplace(y, steps + 1);
+            if (!fresh && o->second <= steps + 1) continue;
+            o->second = steps + 1;
+            stack.push_back({y, steps + 1});
+          }
         }
       }
+      ++pieces;
     }
-    ++pieces;
   }
   if (pieces <= 1) return {vertices.begin(), vertices.end()};
   std::vector<int> held(pieces, 0);
-  for (const int v : seed) {
-    const auto it = piece.find(v);
-    if (it != piece.end()) ++held[it->second];
-  }
+  for (const int v : seed) ++held[piece[v]];
   const int best = static_cast<int>(std::max_element(held.begin(), held.end()) - held.begin());
   std::vector<int> out;
   for (const int v : vertices) {

@@ -145,5 +145,29 @@ TEST(PieceHoldingSeedTest, KeepsTheSeedsSideOfAWideGap) {
   EXPECT_EQ(PieceHoldingSeed(s.c, holed, seed).size(), holed.size());
 }
 
+TEST(PieceHoldingSeedTest, TheSeedJoinsTheVerticesAroundIt) {
+  Sheet s;
+  BuildSheet(
+      [](double u, double v) {
+        return std::pair{Eigen::Vector3d(u, v, 0.0), Eigen::Vector3d::UnitZ()};
+      },
+      0.0, 19.0, 20, 0.0, 4.0, 5, /*distance=*/0.1, /*angle_deg=*/5.0, &s);
+  // The set: columns 0-3 (20 vertices) and columns 9 and 15 (10), which lie
+  // 5 columns apart; the seed, columns 10-14, is not in the set.
+  std::vector<int> set;
+  std::vector<int> seed;
+  for (int v = 0; v < static_cast<int>(s.u.size()); ++v) {
+    const long column = std::lround(s.u[v]);
+    if (column <= 3 || column == 9 || column == 15) set.push_back(v);
+    if (column >= 10 && column <= 14) seed.push_back(v);
+  }
+  const std::vector<int> piece = PieceHoldingSeed(s.c, set, seed);
+  ASSERT_EQ(piece.size(), 10u);
+  for (const int v : piece) EXPECT_GE(s.u[v], 9.0);
+  // None of the set at the seed: no piece holds it.
+  const std::vector<int> far = StripWithout(s, 4, 19);
+  EXPECT_TRUE(PieceHoldingSeed(s.c, far, seed).empty());
+}
+
 }  // namespace
 }  // namespace meshseg::segment_internal

@@ -327,7 +327,9 @@ INSTANTIATE_TEST_SUITE_P(Draws, SegmentPartHighNoiseOtherSeed,
 // never refitted after it took most of the top, missed it by 5 sigma (seed
 // 171); at stop 24, inside a sphere with a piece of the boss cone, as no
 // split started from a plane 0.36 sigma off the top's first vertices (seed
-// 385).
+// 385); at stop 26, inside a cylinder of radius 13.9 with rows of the cone,
+// as the plane trial cut its first vertices to the piece at the seed before
+// its fit had settled (seed 317).
 void ExpectBossTopIsAPlane(const PartRun& run) {
   SCOPED_TRACE(::testing::Message() << run.eval);
   const auto top =
@@ -365,7 +367,7 @@ TEST_P(BossTopAtHighNoise, IsAPlaneRegion) {
 
 INSTANTIATE_TEST_SUITE_P(Draws, BossTopAtHighNoise,
                          ::testing::Values(uint64_t{56}, uint64_t{69}, uint64_t{137}, uint64_t{171},
-                                           uint64_t{385}),
+                                           uint64_t{317}, uint64_t{385}),
                          [](const auto& info) { return "seed_" + std::to_string(info.param); });
 
 // Coarser than the part's voxel size (MESHSEG_VOXEL_SCALE runs the matrix
