@@ -362,8 +362,9 @@ INSTANTIATE_TEST_SUITE_P(Frames, RealFileFrame,
 // a different remesh. Every region stays exact on the input's vertices. (At
 // stop 26, before faces were relabelled by their corners and trimmed fits
 // kept to the seed's piece, draws 3 and 6 had a 45-degree cone over two
-// sides; of draws 1-12, 11 pass now: draw 8's corner cylinder at (25.4,
-// 279.4) never gets a seed region and goes to its torus.)
+// sides. At stop 27 draw 8's corner round at (25.4, 25.4) was a cone of 7.7
+// degrees, rms 0.14 on the input, until the input refit tried the cylinder
+// too; draws 1-12 pass, 1-8 run here.)
 class PlateHolesJittered : public ::testing::TestWithParam<uint64_t> {};
 
 TEST_P(PlateHolesJittered, EveryRegionIsExactOnTheInput) {
@@ -377,7 +378,7 @@ TEST_P(PlateHolesJittered, EveryRegionIsExactOnTheInput) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Draws, PlateHolesJittered, ::testing::Range<uint64_t>(1, 7));
+INSTANTIATE_TEST_SUITE_P(Draws, PlateHolesJittered, ::testing::Range<uint64_t>(1, 9));
 
 }  // namespace
 }  // namespace meshseg
