@@ -112,8 +112,16 @@ TEST(RefitRegionsTest, RegionWhoseSurfaceStillMeetsItBestKeepsIt) {
             std::get<Torus>(spindle.surface).minor_radius);
 }
 
-// A flat strip of 20 columns by 5 rows; the set is every vertex whose
-// column is not in `gap`.
+// A flat strip of 20 columns by 5 rows, 1 apart in the plane z = 0.
+void BuildStrip(Sheet* s) {
+  BuildSheet(
+      [](double u, double v) {
+        return std::pair{Eigen::Vector3d(u, v, 0.0), Eigen::Vector3d::UnitZ()};
+      },
+      0.0, 19.0, 20, 0.0, 4.0, 5, /*distance=*/0.1, /*angle_deg=*/5.0, s);
+}
+
+// The vertices of the strip whose column is not in `gap`.
 std::vector<int> StripWithout(const Sheet& s, int gap_from, int gap_to) {
   std::vector<int> out;
   for (int v = 0; v < static_cast<int>(s.u.size()); ++v) {
@@ -125,11 +133,7 @@ std::vector<int> StripWithout(const Sheet& s, int gap_from, int gap_to) {
 
 TEST(PieceHoldingSeedTest, KeepsTheSeedsSideOfAWideGap) {
   Sheet s;
-  BuildSheet(
-      [](double u, double v) {
-        return std::pair{Eigen::Vector3d(u, v, 0.0), Eigen::Vector3d::UnitZ()};
-      },
-      0.0, 19.0, 20, 0.0, 4.0, 5, /*distance=*/0.1, /*angle_deg=*/5.0, &s);
+  BuildStrip(&s);
   // Columns 7-10 missing (4 columns, wider than kPieceBridge): two pieces;
   // the seed, in columns 12-14, is on the right one.
   const std::vector<int> set = StripWithout(s, 7, 10);
@@ -147,11 +151,7 @@ TEST(PieceHoldingSeedTest, KeepsTheSeedsSideOfAWideGap) {
 
 TEST(PieceHoldingSeedTest, TheSeedJoinsTheVerticesAroundIt) {
   Sheet s;
-  BuildSheet(
-      [](double u, double v) {
-        return std::pair{Eigen::Vector3d(u, v, 0.0), Eigen::Vector3d::UnitZ()};
-      },
-      0.0, 19.0, 20, 0.0, 4.0, 5, /*distance=*/0.1, /*angle_deg=*/5.0, &s);
+  BuildStrip(&s);
   // The set: columns 0-3 (20 vertices) and columns 9 and 15 (10), which lie
   // 5 columns apart; the seed, columns 10-14, is not in the set.
   std::vector<int> set;
