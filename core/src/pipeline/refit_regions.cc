@@ -72,7 +72,7 @@ void RefitOnInputVertices(const TriMesh& mesh, std::span<const int> face_labels,
     // wider over 250 mm), or one the cylinder fits as closely (jittered by
     // 1e-12, draw 8: a corner round 4 remesh edges high went to a cone of
     // 7.7 degrees on an axis 8.5 degrees off, rms 0.14 on the input, where
-    // the cylinder fits to 1e-5).
+    // the cylinder fits to 2e-6).
     const auto* cone = std::get_if<Cone>(&region.surface);
     if (cone != nullptr) {
       const FitResult cylinder =

@@ -151,8 +151,8 @@ void GrowAndType(const SegmentContext& c, int id, std::vector<int>* labels,
         if (from.size() < seed.size()) break;
         typed.fit = FitType(c, type, from);
       }
-      // The trial starts from the piece of them at the seed. Cut so only
-      // once the fit has settled: an early fit is off where the quadric bent
+      // The trial starts from the piece of them at the seed, cut only once
+      // the fit has settled: an early fit is off where the quadric bent
       // away, and the piece of its vertices at the seed can be smaller than
       // the seed (test_piece's boss top at 0.15 h, seed 317: 10 of 14).
       if (start == 1 && typed.fit.ok() && from.size() >= seed.size()) {
