@@ -110,6 +110,18 @@ FitResult FitQuadric(const FitInput& input, const FitParams& params = {});
 // The fit of `type` above (kFreeform: the quadric).
 FitResult FitOfType(SurfaceType type, const FitInput& input, const FitParams& params = {});
 
+// The cylinder of a round between two flat faces: tangent to planes `a` and
+// `b`, its axis along their line of intersection, at distance r from each
+// on the side `sides` gives (+1: the side its normal points to, -1: the
+// other). r, the one value left, is fitted by geometric distance from
+// `initial_radius`; weights apply, normals are not used. axis_origin is the
+// axis point in the plane across it through the points' centroid. Invalid
+// for fewer than 2 points, planes within 0.06 degrees of parallel, an
+// initial radius <= 0 or a fit that leaves r <= 0.
+FitResult FitCylinderTangentToPlanes(const FitInput& input, const Plane& a, const Plane& b,
+                                     std::array<int, 2> sides, double initial_radius,
+                                     const FitParams& params = {});
+
 // Cylinders and cones around one axis (a countersink and its bore, a chamfer
 // and its shaft) fitted together by geometric distance: one axis line, each
 // member its own radius and, for a cone, half angle. Levenberg–Marquardt
