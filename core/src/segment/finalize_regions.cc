@@ -10,6 +10,7 @@
 #include "segment/align_coaxial.h"
 #include "segment/decide_type.h"
 #include "segment/face_labels.h"
+#include "segment/tangent_rounds.h"
 
 namespace meshseg::segment_internal {
 
@@ -133,6 +134,7 @@ Segmentation FinalizeRegions(const SegmentContext& c, const TriMesh& mesh,
     }
     if (fit.ok()) r.surface = fit.surface;
   });
+  FitRoundsTangentToPlanes(c, labels, &regions);
   AlignCoaxialRegions(c, labels, &regions);
   return Assemble(c, mesh, FaceLabels(c, mesh, labels, regions), labels, regions);
 }
