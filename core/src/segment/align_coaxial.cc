@@ -6,6 +6,7 @@
 #include <optional>
 #include <vector>
 
+#include "segment/decide_type.h"
 #include "segment/region_graph.h"
 
 namespace meshseg::segment_internal {
@@ -176,7 +177,9 @@ int AlignCoaxialRegions(const SegmentContext& c, const std::vector<int>& labels,
         std::max(alone_cost / std::max(1.0, static_cast<double>(points) - values),
                  std::pow(kVarianceFloor * c.mean_edge_length, 2));
     const double rise = fit->cost - group_cost[ga] - group_cost[gb];
-    if (!(rise <= kCoaxialChiSquare * variance)) continue;
+    const bool joint_at_noise = std::all_of(fit->fits.begin(), fit->fits.end(),
+                                            [&](const FitResult& f) { return FitsAtNoise(c, f); });
+    if (!(rise <= kCoaxialChiSquare * variance) && !joint_at_noise) continue;
     for (const int id : group_regions[gb]) group[id] = ga;
     group_regions[ga] = joined;
     group_regions[gb].clear();
