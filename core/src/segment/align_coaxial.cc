@@ -4,6 +4,8 @@
 #include <cmath>
 #include <numeric>
 #include <optional>
+#include <set>
+#include <utility>
 #include <vector>
 
 #include "segment/decide_type.h"
@@ -131,8 +133,9 @@ bool NearlyCoaxial(const Surface& a, const Surface& b, const Eigen::Vector3d& mi
 }
 
 
-int AlignCoaxialRegions(const SegmentContext& c, const std::vector<int>& labels,
-                        std::vector<RegionState>* regions) {
+std::vector<std::vector<int>> AlignCoaxialRegions(const SegmentContext& c,
+                                                  const std::vector<int>& labels,
+                                                  std::vector<RegionState>* regions) {
   const int n = static_cast<int>(regions->size());
   const std::vector<std::optional<Member>> members = MakeMembers(c, *regions);
   const std::vector<Pair> pairs = CandidatePairs(c, labels, *regions, members);
@@ -187,15 +190,59 @@ int AlignCoaxialRegions(const SegmentContext& c, const std::vector<int>& labels,
     group_fit[ga] = std::move(fit);
     group_fit[gb].reset();
   }
-  int changed = 0;
+  std::vector<std::vector<int>> groups;
   for (int g = 0; g < n; ++g) {
     if (!group_fit[g]) continue;
     for (std::size_t j = 0; j < group_regions[g].size(); ++j) {
       (*regions)[group_regions[g][j]].surface = group_fit[g]->fits[j].surface;
-      ++changed;
+    }
+    groups.push_back(group_regions[g]);
+  }
+  return groups;
+}
+
+int MergeCoaxialCylinders(const SegmentContext& c, const std::vector<std::vector<int>>& groups,
+                          std::vector<int>* labels, std::vector<RegionState>* regions) {
+  std::set<std::pair<int, int>> adjacent;
+  for (const RegionArc& arc : BuildRegionGraph(c, *labels, *regions)) adjacent.insert({arc.a, arc.b});
+  const auto cylinder = [&](int id) { return std::get_if<Cylinder>(&(*regions)[id].surface); };
+  int merges = 0;
+  for (const std::vector<int>& group : groups) {
+    // Largest first, so that each piece merges into the largest one it matches.
+    std::vector<int> order = group;
+    std::stable_sort(order.begin(), order.end(), [&](int x, int y) {
+      return (*regions)[x].vertices.size() > (*regions)[y].vertices.size();
+    });
+    for (std::size_t i = 0; i < order.size(); ++i) {
+      const int into = order[i];
+      if (!(*regions)[into].alive || (*regions)[into].type != SurfaceType::kCylinder) continue;
+      bool grew = false;
+      for (std::size_t j = i + 1; j < order.size(); ++j) {
+        const int from = order[j];
+        const RegionState& other = (*regions)[from];
+        if (!other.alive || other.type != SurfaceType::kCylinder ||
+            !adjacent.contains({std::min(into, from), std::max(into, from)}) ||
+            !(std::abs(cylinder(into)->radius - cylinder(from)->radius) < c.tolerance.distance)) {
+          continue;
+        }
+        MergeInto(into, from, labels, regions);
+        grew = true;
+        ++merges;
+      }
+      if (!grew) continue;
+      // The radius of least squares about the shared axis.
+      Cylinder& merged = std::get<Cylinder>((*regions)[into].surface);
+      const std::vector<int> fitting = FittingVertices(c, merged, (*regions)[into].vertices);
+      if (fitting.empty()) continue;
+      double sum = 0.0;
+      for (const int v : fitting) {
+        const Eigen::Vector3d d = c.position(v) - merged.axis_origin;
+        sum += (d - d.dot(merged.axis_direction) * merged.axis_direction).norm();
+      }
+      merged.radius = sum / static_cast<double>(fitting.size());
     }
   }
-  return changed;
+  return merges;
 }
 
 }  // namespace meshseg::segment_internal

@@ -32,10 +32,21 @@ namespace meshseg::segment_internal {
 // with 6 values: 22.5 at 99.9 %), came out 1.8 and 1.6 degrees off its
 // shaft's axis; the shared axis met its points at the noise (rms 0.0525,
 // sigma 0.0527).
-// Every region of a group of two or more takes the joint fit. Returns the
-// number of regions whose surface changed.
-int AlignCoaxialRegions(const SegmentContext& c, const std::vector<int>& labels,
-                        std::vector<RegionState>* regions);
+// Every region of a group of two or more takes the joint fit. Returns those
+// groups.
+std::vector<std::vector<int>> AlignCoaxialRegions(const SegmentContext& c,
+                                                  const std::vector<int>& labels,
+                                                  std::vector<RegionState>* regions);
+
+// Adjacent cylinders of one group of AlignCoaxialRegions whose radii differ
+// by less than th_dis are one face that growth left in pieces: each merges
+// into the largest it matches, whose radius is then the least-squares one
+// about the shared axis over the vertices that meet (5) and (6) for its
+// surface. test_piece's r 5 round at 0.15 h (seed 372) ended in pieces of
+// 126 and 423 vertices, r 5.35 and 5.14 on one axis, and the face labels cut
+// the boundary between them into 4 pieces. Returns the number of merges.
+int MergeCoaxialCylinders(const SegmentContext& c, const std::vector<std::vector<int>>& groups,
+                          std::vector<int>* labels, std::vector<RegionState>* regions);
 
 // True if the axes of `a` and `b` (surfaces with an axis, AxisOf) are
 // within kCoaxialMaxAngleDeg and, at the point of a's axis nearest

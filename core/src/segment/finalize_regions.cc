@@ -108,7 +108,7 @@ FitResult InlierFit(const SegmentContext& c, SurfaceType type, const std::vector
 }  // namespace
 
 Segmentation FinalizeRegions(const SegmentContext& c, const TriMesh& mesh,
-                             const std::vector<int>& labels, std::vector<RegionState> regions) {
+                             std::vector<int> labels, std::vector<RegionState> regions) {
   const int n_regions = static_cast<int>(regions.size());
   tbb::parallel_for(0, n_regions, [&](int id) {
     RegionState& r = regions[id];
@@ -135,7 +135,7 @@ Segmentation FinalizeRegions(const SegmentContext& c, const TriMesh& mesh,
     if (fit.ok()) r.surface = fit.surface;
   });
   FitRoundsTangentToPlanes(c, labels, &regions);
-  AlignCoaxialRegions(c, labels, &regions);
+  MergeCoaxialCylinders(c, AlignCoaxialRegions(c, labels, &regions), &labels, &regions);
   return Assemble(c, mesh, FaceLabels(c, mesh, labels, regions), labels, regions);
 }
 

@@ -17,11 +17,13 @@ namespace meshseg::segment_internal {
 // that meet (5) and (6) for it, while they are at least half of it (a region
 // whose type has no valid fit there first takes the TypeThatFitsInstead,
 // decide_type.h, if any), and a curved region whose surface is then NearlyFlat
-// over it becomes a plane (refitted the same way); then the regions of one
-// turned feature are fitted to one axis (align_coaxial.h). A region's errors
-// are measured over all its vertices.
+// over it becomes a plane (refitted the same way); then a cylinder between
+// two planes is fitted tangent to them (tangent_rounds.h), and the regions of
+// one turned feature are fitted to one axis, the pieces of one cylinder
+// among them merged (align_coaxial.h). A region's errors are measured over
+// all its vertices.
 Segmentation FinalizeRegions(const SegmentContext& c, const TriMesh& mesh,
-                             const std::vector<int>& labels, std::vector<RegionState> regions);
+                             std::vector<int> labels, std::vector<RegionState> regions);
 
 // The same for regions decided face by face (exact_facets.h): one label per
 // face, the regions' surfaces kept as they are, each vertex labelled with

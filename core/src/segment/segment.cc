@@ -154,7 +154,7 @@ absl::StatusOr<Segmentation> Segment(const Mesh& mesh, const CurvatureField& cur
   StraightenNearlyCylindricalCones(c, &regions);
   ctx.Progress("segment", 0.9);
   MESHSEG_RETURN_IF_ERROR(ctx.CheckStop("segment"));
-  Segmentation seg = FinalizeRegions(c, mesh.tri, labels, std::move(regions));
+  Segmentation seg = FinalizeRegions(c, mesh.tri, std::move(labels), std::move(regions));
   seg.estimates = estimates;
   ctx.Progress("segment", 1.0);
   return seg;

@@ -15,6 +15,7 @@ namespace {
 using testing::BuildSheet;
 using testing::RegionsFromLabels;
 using testing::Sheet;
+using Groups = std::vector<std::vector<int>>;
 
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kBoreDepth = 10.0;
@@ -71,7 +72,7 @@ TEST(AlignCoaxialRegionsTest, NarrowCountersinkTakesTheBoresAxis) {
   std::vector<RegionState> regions =
       RegionsFromLabels(s.c, labels, {SurfaceType::kCylinder, SurfaceType::kCone});
   const double alone_deg = AngleDeg(AxisOfRegion(regions[1]), BoreAxis());
-  EXPECT_EQ(AlignCoaxialRegions(s.c, labels, &regions), 2);
+  EXPECT_EQ(AlignCoaxialRegions(s.c, labels, &regions), (Groups{{0, 1}}));
   const double aligned_deg = AngleDeg(AxisOfRegion(regions[1]), BoreAxis());
   EXPECT_GT(alone_deg, 0.3);
   EXPECT_LT(aligned_deg, 0.1);
@@ -89,7 +90,7 @@ TEST(AlignCoaxialRegionsTest, TiltedCountersinkKeepsItsAxis) {
   std::vector<RegionState> regions =
       RegionsFromLabels(s.c, labels, {SurfaceType::kCylinder, SurfaceType::kCone});
   const std::vector<RegionState> before = regions;
-  EXPECT_EQ(AlignCoaxialRegions(s.c, labels, &regions), 0);
+  EXPECT_TRUE(AlignCoaxialRegions(s.c, labels, &regions).empty());
   EXPECT_EQ(AxisOfRegion(regions[1]), AxisOfRegion(before[1]));
   EXPECT_GT(AngleDeg(AxisOfRegion(regions[0]), AxisOfRegion(regions[1])), 2.0);
 }
@@ -109,7 +110,7 @@ TEST(AlignCoaxialRegionsTest, TiltWithinTheNoiseTakesTheSharedAxis) {
     std::vector<RegionState> regions =
         RegionsFromLabels(s.c, labels, {SurfaceType::kCylinder, SurfaceType::kCone});
     const bool shared = tilt_deg < 1.0;
-    EXPECT_EQ(AlignCoaxialRegions(s.c, labels, &regions), shared ? 2 : 0);
+    EXPECT_EQ(AlignCoaxialRegions(s.c, labels, &regions), (shared ? Groups{{0, 1}} : Groups{}));
     const double between = AngleDeg(AxisOfRegion(regions[0]), AxisOfRegion(regions[1]));
     if (shared) {
       EXPECT_LT(between, 1e-9);
@@ -118,6 +119,58 @@ TEST(AlignCoaxialRegionsTest, TiltWithinTheNoiseTakesTheSharedAxis) {
       EXPECT_GT(between, 1.0);
     }
   }
+}
+
+// The bore of the countersunk bore in two labels, split along a ruling (0:
+// the first 120 degrees, 2: the rest), as growth from two seeds leaves it.
+TEST(MergeCoaxialCylindersTest, PiecesOfOneBoreBecomeOneRegion) {
+  Sheet s;
+  std::vector<int> labels;
+  BuildCountersunkBore(/*sigma=*/0.1, /*tilt_deg=*/0.0, 3, &s, &labels);
+  for (std::size_t v = 0; v < labels.size(); ++v) {
+    if (labels[v] == 0 && s.v[v] > 120.0 * kPi / 180.0) labels[v] = 2;
+  }
+  std::vector<RegionState> regions = RegionsFromLabels(
+      s.c, labels, {SurfaceType::kCylinder, SurfaceType::kCone, SurfaceType::kCylinder});
+  const Groups groups = AlignCoaxialRegions(s.c, labels, &regions);
+  ASSERT_EQ(groups.size(), 1u);
+  ASSERT_EQ(groups[0].size(), 3u);
+  EXPECT_EQ(MergeCoaxialCylinders(s.c, groups, &labels, &regions), 1);
+  EXPECT_FALSE(regions[0].alive);
+  EXPECT_TRUE(regions[2].alive);  // the larger piece (180 of 300 degrees)
+  for (std::size_t v = 0; v < labels.size(); ++v) {
+    EXPECT_EQ(labels[v], s.u[v] <= kBoreDepth ? 2 : 1) << "vertex " << v;
+  }
+  EXPECT_NEAR(std::get<Cylinder>(regions[2].surface).radius, 8.0, 0.02);
+}
+
+// Two bores on one axis, radius 8 and 9 (th_dis 0.5), meeting in a step:
+// one axis, two faces.
+TEST(MergeCoaxialCylindersTest, CoaxialBoresOfOtherRadiiStayApart) {
+  Sheet s;
+  const Eigen::Vector3d a = BoreAxis();
+  const Eigen::Vector3d b1 = a.unitOrthogonal(), b2 = a.cross(b1);
+  std::mt19937 random(5);
+  std::normal_distribution<double> noise(0.0, 0.1);
+  BuildSheet(
+      [&](double u, double v) {
+        const Eigen::Vector3d e = std::cos(v) * b1 + std::sin(v) * b2;
+        const double radius = u <= 5.0 ? 8.0 : 9.0;
+        return std::make_pair(Eigen::Vector3d(u * a + (radius + noise(random)) * e), e);
+      },
+      0.0, 10.0, 41, 0.0, 300.0 * kPi / 180.0, 85, /*distance=*/0.5, /*angle_deg=*/20.0, &s);
+  s.c.noise_sigma = 0.1;
+  std::vector<int> labels;
+  for (const double u : s.u) labels.push_back(u <= 5.0 ? 0 : 1);
+  std::vector<RegionState> regions =
+      RegionsFromLabels(s.c, labels, {SurfaceType::kCylinder, SurfaceType::kCylinder});
+  const Groups groups = AlignCoaxialRegions(s.c, labels, &regions);
+  ASSERT_EQ(groups, (Groups{{0, 1}}));
+  const std::vector<int> before = labels;
+  EXPECT_EQ(MergeCoaxialCylinders(s.c, groups, &labels, &regions), 0);
+  EXPECT_EQ(labels, before);
+  EXPECT_NEAR(std::get<Cylinder>(regions[0].surface).radius, 8.0, 0.05);
+  EXPECT_NEAR(std::get<Cylinder>(regions[1].surface).radius, 9.0, 0.05);
 }
 
 }  // namespace
