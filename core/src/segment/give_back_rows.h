@@ -24,8 +24,10 @@ namespace meshseg::segment_internal {
 // parameters than its own (or its quadric), and the rows, under their
 // neighbours' surfaces, explain the region's vertices kScoreMargin better than
 // its type alone (InformationScore), and the rest keeps kMinRegionVertices; the
-// rest takes that type. (A more general type for the rest let a boss cone piece
-// turn torus and keep the boss top, seed 6.) Nothing happens at noise 0.
+// rest takes that type, or its simplest limit (IsLimitOf) that meets the rest
+// at the noise (FitsAtNoise). (A more general type for the rest let a boss
+// cone piece turn torus and keep the boss top, seed 6.) Nothing happens at
+// noise 0.
 // Returns the ids of the regions that gave rows back.
 std::vector<int> GiveBackRows(const SegmentContext& c, std::vector<int>* labels,
                               std::vector<RegionState>* regions);
