@@ -83,7 +83,8 @@ FitResult FitCylinderTangentToPlanes(const FitInput& input, const Plane& a, cons
   }
   // The axis point x(r) solves na.x = na.pa + sa r, nb.x = nb.pb + sb r and
   // lies in the plane across the axis through the points' centroid.
-  TangentAxis axis{.direction = cross.normalized(), .base = {}, .per_radius = {}, .unit_per_radius = {}};
+  TangentAxis axis{
+      .direction = cross.normalized(), .base = {}, .per_radius = {}, .unit_per_radius = {}};
   Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
   for (const Eigen::Vector3d& p : input.points) centroid += p;
   centroid /= static_cast<double>(input.points.size());
@@ -92,7 +93,8 @@ FitResult FitCylinderTangentToPlanes(const FitInput& input, const Plane& a, cons
   m.row(1) = nb.transpose();
   m.row(2) = axis.direction.transpose();
   const Eigen::PartialPivLU<Eigen::Matrix3d> lu(m);
-  axis.base = lu.solve(Eigen::Vector3d(na.dot(a.point), nb.dot(b.point), axis.direction.dot(centroid)));
+  axis.base =
+      lu.solve(Eigen::Vector3d(na.dot(a.point), nb.dot(b.point), axis.direction.dot(centroid)));
   axis.per_radius = lu.solve(Eigen::Vector3d(sides[0], sides[1], 0.0));
   axis.unit_per_radius = axis.per_radius.normalized();
 

@@ -132,7 +132,6 @@ bool NearlyCoaxial(const Surface& a, const Surface& b, const Eigen::Vector3d& mi
   return (d - d.dot(lb.direction) * lb.direction).norm() <= kCoaxialMaxOffset * radius;
 }
 
-
 std::vector<std::vector<int>> AlignCoaxialRegions(const SegmentContext& c,
                                                   const std::vector<int>& labels,
                                                   std::vector<RegionState>* regions) {
@@ -204,7 +203,9 @@ std::vector<std::vector<int>> AlignCoaxialRegions(const SegmentContext& c,
 int MergeCoaxialCylinders(const SegmentContext& c, const std::vector<std::vector<int>>& groups,
                           std::vector<int>* labels, std::vector<RegionState>* regions) {
   std::set<std::pair<int, int>> adjacent;
-  for (const RegionArc& arc : BuildRegionGraph(c, *labels, *regions)) adjacent.insert({arc.a, arc.b});
+  for (const RegionArc& arc : BuildRegionGraph(c, *labels, *regions)) {
+    adjacent.insert({arc.a, arc.b});
+  }
   const auto cylinder = [&](int id) { return std::get_if<Cylinder>(&(*regions)[id].surface); };
   int merges = 0;
   for (const std::vector<int>& group : groups) {

@@ -107,8 +107,8 @@ FitResult InlierFit(const SegmentContext& c, SurfaceType type, const std::vector
 
 }  // namespace
 
-Segmentation FinalizeRegions(const SegmentContext& c, const TriMesh& mesh,
-                             std::vector<int> labels, std::vector<RegionState> regions) {
+Segmentation FinalizeRegions(const SegmentContext& c, const TriMesh& mesh, std::vector<int> labels,
+                             std::vector<RegionState> regions) {
   const int n_regions = static_cast<int>(regions.size());
   tbb::parallel_for(0, n_regions, [&](int id) {
     RegionState& r = regions[id];

@@ -22,8 +22,8 @@ namespace meshseg::segment_internal {
 // one turned feature are fitted to one axis, the pieces of one cylinder
 // among them merged (align_coaxial.h). A region's errors are measured over
 // all its vertices.
-Segmentation FinalizeRegions(const SegmentContext& c, const TriMesh& mesh,
-                             std::vector<int> labels, std::vector<RegionState> regions);
+Segmentation FinalizeRegions(const SegmentContext& c, const TriMesh& mesh, std::vector<int> labels,
+                             std::vector<RegionState> regions);
 
 // The same for regions decided face by face (exact_facets.h): one label per
 // face, the regions' surfaces kept as they are, each vertex labelled with

@@ -88,7 +88,7 @@ std::vector<int> FitRoundsTangentToPlanes(const SegmentContext& c, const std::ve
     const double m = static_cast<double>(points.size());
     const double free_cost = std::pow(free.rms_distance, 2) * m;
     const double variance = std::max(free_cost / std::max(1.0, m - 5.0),
-                                      std::pow(kVarianceFloor * c.mean_edge_length, 2));
+                                     std::pow(kVarianceFloor * c.mean_edge_length, 2));
     const double rise = std::pow(tangent->rms_distance, 2) * m - free_cost;
     if (!(rise <= kCoaxialChiSquare * variance)) continue;
     r.surface = tangent->surface;

@@ -33,7 +33,8 @@ Corner MakeCorner(double between_deg) {
   // Solve na.x = -r, nb.x = -r (relative to the edge), x across the axis.
   Eigen::Matrix3d m;
   m << na.transpose(), nb.transpose(), axis.transpose();
-  const Eigen::Vector3d centre = kEdgePoint + m.inverse() * Eigen::Vector3d(-kRadius, -kRadius, 0.0);
+  const Eigen::Vector3d centre =
+      kEdgePoint + m.inverse() * Eigen::Vector3d(-kRadius, -kRadius, 0.0);
   return {Plane{kEdgePoint, na}, Plane{kEdgePoint, nb}, Cylinder{centre, axis, kRadius}};
 }
 
