@@ -14,10 +14,6 @@
 namespace meshseg::segment_internal {
 namespace {
 
-// Exact input (noise 0 on a CAD-like part) fits to rounding: its residual
-// variance is taken as at least this fraction of l_avg, squared.
-constexpr double kVarianceFloor = 1e-6;
-
 // A cylinder or cone region's vertices for the fit: those that meet (5)
 // and (6) for its surface, sub-sampled.
 struct Member {
@@ -120,6 +116,11 @@ std::vector<Pair> CandidatePairs(const SegmentContext& c, const std::vector<int>
 
 }  // namespace
 
+double ResidualVariance(const SegmentContext& c, double cost, double points, double values) {
+  return std::max(cost / std::max(1.0, points - values),
+                  std::pow(kVarianceFloor * c.mean_edge_length, 2));
+}
+
 bool NearlyCoaxial(const Surface& a, const Surface& b, const Eigen::Vector3d& middle,
                    double radius) {
   const AxisLine la = *AxisOf(a);
@@ -175,9 +176,7 @@ std::vector<std::vector<int>> AlignCoaxialRegions(const SegmentContext& c,
                               : *AxisOf((*regions)[start].surface);
     std::optional<GroupFit> fit = FitGroup(joined_members, axis);
     if (!fit) continue;
-    const double variance =
-        std::max(alone_cost / std::max(1.0, static_cast<double>(points) - values),
-                 std::pow(kVarianceFloor * c.mean_edge_length, 2));
+    const double variance = ResidualVariance(c, alone_cost, static_cast<double>(points), values);
     const double rise = fit->cost - group_cost[ga] - group_cost[gb];
     const bool joint_at_noise = std::all_of(fit->fits.begin(), fit->fits.end(),
                                             [&](const FitResult& f) { return FitsAtNoise(c, f); });

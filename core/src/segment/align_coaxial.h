@@ -58,6 +58,13 @@ inline constexpr double kCoaxialMaxAngleDeg = 5.0;
 inline constexpr double kCoaxialMaxOffset = 0.2;
 inline constexpr double kCoaxialChiSquare = 18.47;  // chi-square, 4 degrees of freedom, 99.9 %
 
+// The residual variance of fits with `values` free values that leave `cost`
+// (the sum of squared distances) over `points` points: cost / (points -
+// values), and at least (kVarianceFloor l_avg)^2, as exact input fits to
+// rounding. The scale of the kCoaxialChiSquare tests.
+double ResidualVariance(const SegmentContext& c, double cost, double points, double values);
+inline constexpr double kVarianceFloor = 1e-6;
+
 }  // namespace meshseg::segment_internal
 
 #endif  // MESHSEG_SRC_SEGMENT_ALIGN_COAXIAL_H_

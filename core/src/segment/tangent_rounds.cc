@@ -14,10 +14,6 @@
 namespace meshseg::segment_internal {
 namespace {
 
-// Exact input fits to rounding: its residual variance is taken as at least
-// this fraction of l_avg, squared (as in align_coaxial.cc).
-constexpr double kVarianceFloor = 1e-6;
-
 double Radians(double deg) { return deg * std::numbers::pi / 180.0; }
 
 // +1 if `p` lies on the side of `plane` its normal points to, else -1.
@@ -87,8 +83,7 @@ std::vector<int> FitRoundsTangentToPlanes(const SegmentContext& c, const std::ve
     if (!free.ok() || !tangent) continue;
     const double m = static_cast<double>(points.size());
     const double free_cost = std::pow(free.rms_distance, 2) * m;
-    const double variance = std::max(free_cost / std::max(1.0, m - 5.0),
-                                     std::pow(kVarianceFloor * c.mean_edge_length, 2));
+    const double variance = ResidualVariance(c, free_cost, m, 5.0);
     const double rise = std::pow(tangent->rms_distance, 2) * m - free_cost;
     if (!(rise <= kCoaxialChiSquare * variance)) continue;
     r.surface = tangent->surface;
