@@ -126,6 +126,11 @@ std::optional<Lease> RedisJobQueue::Pop() {
   while (!closed()) {
     absl::StatusOr<std::optional<Lease>> lease = TryPop();
     if (!lease.ok()) {
+      // A Redis that came back empty (no AOF) has no group: make it again.
+      if (absl::StrContains(lease.status().message(), "NOGROUP")) {
+        absl::MutexLock lock(&mu_);
+        group_ready_ = false;
+      }
       if (!down) Log("queue_unavailable", {{"error", std::string(lease.status().message())}});
       down = true;
       absl::SleepFor(backoff);

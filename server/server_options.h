@@ -45,9 +45,9 @@ struct ServerOptions {
   // "" = embedded (in-process queue, the spool is the store); or
   // "redis://HOST:PORT[/DB]": a Redis Stream queue and Redis job records,
   // shared by every replica, with blobs in `blob_dir`.
-  std::string queue;
+  std::string queue = {};
   // Redis mode: uploads and results, a folder every replica reaches.
-  std::string blob_dir;
+  std::string blob_dir = {};
   // A job whose worker died this many times ends FAILED.
   int max_attempts = 3;
   // Redis mode: a job whose worker has not heartbeaten for this long is
