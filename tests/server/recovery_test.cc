@@ -30,12 +30,12 @@ using testing_server::ServerProcess;
 using testing_server::TestPart;
 
 // Bound on every wait; the jobs here take 0.1 to 1 s.
-constexpr absl::Duration kTimeout = absl::Seconds(30);
+constexpr absl::Duration kTimeout = absl::Seconds(60);
 
 class Recovery : public ::testing::Test {
  protected:
   // Three small parts of different shapes (a mixed-up result shows) and one
-  // whose job runs for about a second (to be caught running).
+  // whose job runs for a second or more (to be caught running).
   static void SetUpTestSuite() {
     const std::string dir = testing_files::ScratchPath("recovery_parts");
     std::filesystem::create_directories(dir);
@@ -45,7 +45,7 @@ class Recovery : public ::testing::Test {
       parts_->push_back(testing_server::MakePart(dir, "small" + std::to_string(i) + ".ply",
                                                  names[i], kSmallVoxel));
     }
-    parts_->push_back(testing_server::MakePart(dir, "long.ply", "test_piece", 0.5));
+    parts_->push_back(testing_server::MakePart(dir, "long.ply", "test_piece", 0.8));
   }
   static void TearDownTestSuite() { delete parts_; }
 
@@ -72,7 +72,8 @@ class Recovery : public ::testing::Test {
     return *job;
   }
 
-  static constexpr double kSmallVoxel = 0.0;  // the parts' defaults
+  // Coarse voxels keep each small job a fraction of a second.
+  static constexpr double kSmallVoxel = 1.2;
   static std::vector<TestPart>* parts_;
   std::string spool_;
 };

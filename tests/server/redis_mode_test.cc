@@ -44,9 +44,9 @@ class RedisMode : public ::testing::Test {
     const std::vector<std::string> names = PartNames();
     for (int i = 0; i < 3; ++i) {
       parts_->push_back(testing_server::MakePart(dir, "small" + std::to_string(i) + ".ply",
-                                                 names[i], 0.0));
+                                                 names[i], 1.2));
     }
-    parts_->push_back(testing_server::MakePart(dir, "long.ply", "test_piece", 0.5));
+    parts_->push_back(testing_server::MakePart(dir, "long.ply", "test_piece", 0.8));
   }
   static void TearDownTestSuite() { delete parts_; }
 
@@ -213,8 +213,9 @@ TEST_F(RedisMode, CancelThroughEitherReplicaStopsTheRunningJob) {
   // The cancel returned OK, so the job was still running: it must end
   // CANCELLED, not finish.
   EXPECT_EQ(job->state(), v1::JOB_STATE_CANCELLED) << job->error_message();
-  EXPECT_THAT(workers_[worker]->Log(),
-              HasSubstr("event=job_finished job=" + up->job_id() + " state=CANCELLED"));
+  EXPECT_TRUE(workers_[worker]->AwaitLog(
+      "event=job_finished job=" + up->job_id() + " state=CANCELLED", absl::Seconds(10)))
+      << workers_[worker]->Log();
 }
 
 }  // namespace
