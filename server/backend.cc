@@ -48,11 +48,11 @@ absl::Status OpenRedis(const ServerOptions& options, Backend& b) {
   MESHSEG_ASSIGN_OR_RETURN(b.shared_blobs, DirBlobStore::Create(options.blob_dir));
   b.redis = std::make_unique<RedisPool>(address, kRedisTimeout);
   if (absl::StatusOr<RedisValue> pong = b.redis->Command({"PING"}); !pong.ok()) {
-    Log("redis_unavailable_at_start", {{"redis", address.text},
-                                       {"error", std::string(pong.status().message())}});
+    Log("redis_unavailable_at_start",
+        {{"redis", address.text}, {"error", std::string(pong.status().message())}});
   }
-  b.queue = std::make_unique<RedisJobQueue>(*b.redis, options.queue_capacity,
-                                            options.claim_after, NewConsumerName());
+  b.queue = std::make_unique<RedisJobQueue>(*b.redis, options.queue_capacity, options.claim_after,
+                                            NewConsumerName());
   b.store = std::make_unique<RedisJobStore>(*b.redis, *b.queue);
   b.blobs = b.shared_blobs.get();
   return absl::OkStatus();

@@ -89,8 +89,8 @@ CpuLimit ReadCpuLimit(const std::string& cgroup_root) {
   }
   limit.workers = limit.affinity_cores;
   if (limit.quota_cores) {
-    limit.workers = std::clamp(static_cast<int>(std::ceil(*limit.quota_cores - 1e-9)), 1,
-                               limit.affinity_cores);
+    limit.workers =
+        std::clamp(static_cast<int>(std::ceil(*limit.quota_cores - 1e-9)), 1, limit.affinity_cores);
   }
   return limit;
 }

@@ -91,8 +91,7 @@ class JobStore {
   // Cancels a QUEUED job at once (the caller removes it from the queue and
   // its upload) or asks a RUNNING one to stop, wherever it runs.
   // Errors: NOT_FOUND; FAILED_PRECONDITION for a finished job; UNAVAILABLE.
-  virtual absl::StatusOr<CancelOutcome> Cancel(const std::string& id,
-                                               std::string_view reason) = 0;
+  virtual absl::StatusOr<CancelOutcome> Cancel(const std::string& id, std::string_view reason) = 0;
 
   // Forgets jobs that finished before `cutoff`; returns their ids (the
   // caller removes their results).

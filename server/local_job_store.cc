@@ -80,8 +80,7 @@ void LocalJobStore::Remove(const std::string& id) {
 
 v1::Job LocalJobStore::View(const JobRecord& record) const {
   v1::Job job = record.job();
-  job.set_queue_position(job.state() == v1::JOB_STATE_QUEUED ? queue_.Position(job.job_id())
-                                                             : -1);
+  job.set_queue_position(job.state() == v1::JOB_STATE_QUEUED ? queue_.Position(job.job_id()) : -1);
   return job;
 }
 
@@ -145,15 +144,19 @@ void LocalJobStore::Progress(const std::string& id, std::string_view stage, doub
   Changed();
 }
 
+JobRecord* LocalJobStore::RunningRecord(const std::string& id) {
+  const auto it = jobs_.find(id);
+  if (it == jobs_.end() || it->second.job().state() != v1::JOB_STATE_RUNNING) return nullptr;
+  return &it->second;
+}
+
 absl::Status LocalJobStore::Finish(const std::string& id, const absl::Status& status,
                                    const JobOutput& output) {
   running_.Erase(id);
   absl::MutexLock lock(&mu_);
-  const auto it = jobs_.find(id);
-  if (it == jobs_.end() || it->second.job().state() != v1::JOB_STATE_RUNNING) {
-    return absl::OkStatus();
-  }
-  v1::Job& job = *it->second.mutable_job();
+  JobRecord* record = RunningRecord(id);
+  if (record == nullptr) return absl::OkStatus();
+  v1::Job& job = *record->mutable_job();
   job.set_state(TerminalState(status));
   job.set_finished_unix_ms(NowUnixMs());
   if (status.ok()) {
@@ -165,7 +168,7 @@ absl::Status LocalJobStore::Finish(const std::string& id, const absl::Status& st
     job.set_error_code(static_cast<int>(status.code()));
     job.set_error_message(std::string(status.message()));
   }
-  Persist(it->second);
+  Persist(*record);
   Changed();
   return absl::OkStatus();
 }
@@ -173,17 +176,15 @@ absl::Status LocalJobStore::Finish(const std::string& id, const absl::Status& st
 absl::Status LocalJobStore::Release(const std::string& id) {
   running_.Erase(id);
   absl::MutexLock lock(&mu_);
-  const auto it = jobs_.find(id);
-  if (it == jobs_.end() || it->second.job().state() != v1::JOB_STATE_RUNNING) {
-    return absl::OkStatus();
-  }
-  v1::Job& job = *it->second.mutable_job();
+  JobRecord* record = RunningRecord(id);
+  if (record == nullptr) return absl::OkStatus();
+  v1::Job& job = *record->mutable_job();
   job.set_state(v1::JOB_STATE_QUEUED);
   job.set_attempts(std::max(0, job.attempts() - 1));
   job.clear_stage();
   job.clear_fraction();
   job.clear_started_unix_ms();
-  Persist(it->second);
+  Persist(*record);
   Changed();
   return absl::OkStatus();
 }
@@ -195,8 +196,8 @@ absl::StatusOr<JobStore::CancelOutcome> LocalJobStore::Cancel(const std::string&
   if (it == jobs_.end()) return NotFound(id);
   v1::Job& job = *it->second.mutable_job();
   if (IsTerminal(job.state())) {
-    return absl::FailedPreconditionError(absl::StrCat(
-        "job \"", id, "\" already finished (", v1::JobState_Name(job.state()), ")"));
+    return absl::FailedPreconditionError(
+        absl::StrCat("job \"", id, "\" already finished (", v1::JobState_Name(job.state()), ")"));
   }
   if (job.state() == v1::JOB_STATE_RUNNING) {
     running_.Stop(id, StopReason::kCancelled);
@@ -229,17 +230,10 @@ std::vector<std::string> LocalJobStore::Expire(absl::Time cutoff) {
   return expired;
 }
 
-int64_t LocalJobStore::generation() const {
-  absl::ReaderMutexLock lock(&mu_);
-  return generation_;
-}
+int64_t LocalJobStore::generation() const { return changes_.value(); }
 
 void LocalJobStore::AwaitChange(int64_t seen, absl::Duration timeout) const {
-  absl::MutexLock lock(&mu_);
-  const auto changed = [this, seen]() ABSL_NO_THREAD_SAFETY_ANALYSIS {
-    return generation_ != seen;
-  };
-  mu_.AwaitWithTimeout(absl::Condition(&changed), timeout);
+  changes_.Await(seen, timeout);
 }
 
 }  // namespace meshseg::server

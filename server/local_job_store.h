@@ -9,6 +9,7 @@
 #include <map>
 
 #include "absl/synchronization/mutex.h"
+#include "server/change_counter.h"
 #include "server/job_queue.h"
 #include "server/job_store.h"
 #include "server/spool.h"
@@ -51,13 +52,15 @@ class LocalJobStore final : public JobStore {
   // Writes `record` to the spool; a failure is logged (the job goes on in
   // memory, and the next state change writes it again).
   void Persist(const JobRecord& record) const;
-  void Changed() ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_) { ++generation_; }
+  // The record of `id` if it is RUNNING, else nullptr.
+  JobRecord* RunningRecord(const std::string& id) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
+  void Changed() { changes_.Bump(); }
 
   const JobQueue& queue_;
   const Spool& spool_;
   mutable absl::Mutex mu_;
   std::map<std::string, JobRecord> jobs_ ABSL_GUARDED_BY(mu_);
-  int64_t generation_ ABSL_GUARDED_BY(mu_) = 0;
+  ChangeCounter changes_;
   int64_t next_sequence_ ABSL_GUARDED_BY(mu_) = 1;
 };
 

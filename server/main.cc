@@ -78,7 +78,8 @@ int main(int argc, char** argv) {
   pthread_sigmask(SIG_BLOCK, &signals, nullptr);
 
   meshseg::server::ServerOptions options;
-  absl::StatusOr<meshseg::server::Role> role = meshseg::server::ParseRole(absl::GetFlag(FLAGS_role));
+  absl::StatusOr<meshseg::server::Role> role =
+      meshseg::server::ParseRole(absl::GetFlag(FLAGS_role));
   if (!role.ok()) {
     std::fprintf(stderr, "meshseg-server: %s\n", std::string(role.status().message()).c_str());
     return 1;

@@ -10,7 +10,6 @@
 namespace meshseg::server {
 namespace {
 
-
 RedisValue Copy(const redisReply& reply) {
   RedisValue v;
   switch (reply.type) {
@@ -44,6 +43,19 @@ absl::StatusOr<RedisValue> Convert(void* raw, absl::string_view command) {
   }
   return Copy(*reply);
 }
+
+// hiredis' view of `args`: pointers and lengths (binary-safe).
+struct Argv {
+  explicit Argv(const std::vector<std::string>& args) {
+    for (const std::string& a : args) {
+      ptrs.push_back(a.data());
+      lens.push_back(a.size());
+    }
+  }
+  int argc() const { return static_cast<int>(ptrs.size()); }
+  std::vector<const char*> ptrs;
+  std::vector<size_t> lens;
+};
 
 }  // namespace
 
@@ -100,7 +112,8 @@ absl::Status RedisConnection::Broken(absl::string_view what) {
 absl::Status RedisConnection::Connect() {
   if (context_ != nullptr && context_->err == 0) return absl::OkStatus();
   Reset();
-  context_ = redisConnectWithTimeout(address_.host.c_str(), address_.port, absl::ToTimeval(timeout_));
+  context_ =
+      redisConnectWithTimeout(address_.host.c_str(), address_.port, absl::ToTimeval(timeout_));
   if (context_ == nullptr || context_->err != 0) return Broken("connect");
   redisSetTimeout(context_, absl::ToTimeval(timeout_));
   redisEnableKeepAlive(context_);
@@ -113,26 +126,16 @@ absl::Status RedisConnection::Connect() {
 
 absl::StatusOr<RedisValue> RedisConnection::Command(const std::vector<std::string>& args) {
   if (absl::Status s = Connect(); !s.ok()) return s;
-  std::vector<const char*> argv;
-  std::vector<size_t> lens;
-  for (const std::string& a : args) {
-    argv.push_back(a.data());
-    lens.push_back(a.size());
-  }
-  void* reply = redisCommandArgv(context_, static_cast<int>(argv.size()), argv.data(), lens.data());
+  Argv argv(args);
+  void* reply = redisCommandArgv(context_, argv.argc(), argv.ptrs.data(), argv.lens.data());
   if (reply == nullptr) return Broken(args.empty() ? "" : args[0]);
   return Convert(reply, args.empty() ? "" : args[0]);
 }
 
 absl::Status RedisConnection::Send(const std::vector<std::string>& args) {
   if (absl::Status s = Connect(); !s.ok()) return s;
-  std::vector<const char*> argv;
-  std::vector<size_t> lens;
-  for (const std::string& a : args) {
-    argv.push_back(a.data());
-    lens.push_back(a.size());
-  }
-  if (redisAppendCommandArgv(context_, static_cast<int>(argv.size()), argv.data(), lens.data()) !=
+  Argv argv(args);
+  if (redisAppendCommandArgv(context_, argv.argc(), argv.ptrs.data(), argv.lens.data()) !=
       REDIS_OK) {
     return Broken(args[0]);
   }

@@ -5,9 +5,9 @@
 #include <algorithm>
 #include <condition_variable>
 #include <cstdint>
-#include <utility>
 #include <mutex>
 #include <random>
+#include <utility>
 
 #include "absl/strings/match.h"
 #include "absl/strings/numbers.h"
@@ -94,14 +94,15 @@ absl::Status RedisJobQueue::Push(const std::string& job_id) {
 
 absl::StatusOr<std::optional<Lease>> RedisJobQueue::TryPop() {
   if (absl::Status s = EnsureGroup(); !s.ok()) return s;
-  absl::StatusOr<RedisValue> claimed = pool_.Command(
-      {"XAUTOCLAIM", kStream, kGroup, consumer_,
-       absl::StrCat(absl::ToInt64Milliseconds(claim_after_)), "0-0", "COUNT", "1"});
+  absl::StatusOr<RedisValue> claimed =
+      pool_.Command({"XAUTOCLAIM", kStream, kGroup, consumer_,
+                     absl::StrCat(absl::ToInt64Milliseconds(claim_after_)), "0-0", "COUNT", "1"});
   if (!claimed.ok()) return claimed.status();
   if (claimed->elements.size() >= 2) {
     for (const RedisValue& entry : claimed->elements[1].elements) {
       if (std::optional<Lease> lease = LeaseOf(entry)) {
-        Log("job_reclaimed", {{"job", lease->job_id}, {"entry", lease->entry},
+        Log("job_reclaimed", {{"job", lease->job_id},
+                              {"entry", lease->entry},
                               {"idle_over", absl::FormatDuration(claim_after_)}});
         return lease;
       }
@@ -190,9 +191,9 @@ int RedisJobQueue::Position(const std::string& job_id) const {
     }
   }
   if (EntryOrder(entry->str) <= EntryOrder(last)) return 0;  // handed to a worker
-  absl::StatusOr<RedisValue> ahead = pool_.Command(
-      {"XRANGE", kStream, absl::StrCat("(", last), absl::StrCat("(", entry->str), "COUNT",
-       absl::StrCat(4 * capacity_ + 64)});
+  absl::StatusOr<RedisValue> ahead =
+      pool_.Command({"XRANGE", kStream, absl::StrCat("(", last), absl::StrCat("(", entry->str),
+                     "COUNT", absl::StrCat(4 * capacity_ + 64)});
   return ahead.ok() ? static_cast<int>(ahead->elements.size()) : -1;
 }
 

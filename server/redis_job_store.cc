@@ -103,8 +103,8 @@ if s == 2 then
 end
 return 10 + s)";
 
-absl::StatusOr<RedisValue> Eval(RedisPool& pool, const char* script,
-                                std::vector<std::string> keys, std::vector<std::string> args) {
+absl::StatusOr<RedisValue> Eval(RedisPool& pool, const char* script, std::vector<std::string> keys,
+                                std::vector<std::string> args) {
   std::vector<std::string> command = {"EVAL", script, absl::StrCat(keys.size())};
   command.insert(command.end(), keys.begin(), keys.end());
   command.insert(command.end(), args.begin(), args.end());
@@ -124,8 +124,7 @@ int64_t ToInt(const std::string& text) {
 
 }  // namespace
 
-RedisJobStore::RedisJobStore(RedisPool& pool, const JobQueue& queue)
-    : pool_(pool), queue_(queue) {
+RedisJobStore::RedisJobStore(RedisPool& pool, const JobQueue& queue) : pool_(pool), queue_(queue) {
   subscriber_ = std::jthread([this](std::stop_token stop) { Subscribe(stop); });
 }
 
@@ -195,8 +194,8 @@ absl::StatusOr<std::vector<v1::Job>> RedisJobStore::List() const {
 }
 
 absl::StatusOr<JobStore::Started> RedisJobStore::Start(const std::string& id, int max_attempts) {
-  absl::StatusOr<RedisValue> reply = Eval(pool_, kStart, {Key(id), kFinished, kEvents},
-                                          {absl::StrCat(max_attempts), Now(), id});
+  absl::StatusOr<RedisValue> reply =
+      Eval(pool_, kStart, {Key(id), kFinished, kEvents}, {absl::StrCat(max_attempts), Now(), id});
   if (!reply.ok()) return reply.status();
   Started out;
   if (reply->elements.size() != 3 || reply->elements[0].integer == 0) return out;
@@ -220,12 +219,12 @@ void RedisJobStore::Progress(const std::string& id, std::string_view stage, doub
 
 absl::Status RedisJobStore::Finish(const std::string& id, const absl::Status& status,
                                    const JobOutput& output) {
-  const absl::StatusOr<RedisValue> reply = Eval(
-      pool_, kFinish, {Key(id), kFinished, kEvents},
-      {id, absl::StrCat(static_cast<int>(TerminalState(status))), Now(),
-       absl::StrCat(static_cast<int>(status.code())), std::string(status.message()),
-       absl::StrCat(output.result_size), absl::StrCat(output.face_count),
-       absl::StrCat(output.region_count)});
+  const absl::StatusOr<RedisValue> reply =
+      Eval(pool_, kFinish, {Key(id), kFinished, kEvents},
+           {id, absl::StrCat(static_cast<int>(TerminalState(status))), Now(),
+            absl::StrCat(static_cast<int>(status.code())), std::string(status.message()),
+            absl::StrCat(output.result_size), absl::StrCat(output.face_count),
+            absl::StrCat(output.region_count)});
   if (reply.ok()) running_.Erase(id);
   return reply.status();
 }
@@ -269,26 +268,14 @@ std::vector<std::string> RedisJobStore::Expire(absl::Time cutoff) {
     Remove(id.str);
     expired.push_back(id.str);
   }
-  if (!expired.empty()) Changed();
+  if (!expired.empty()) changes_.Bump();
   return expired;
 }
 
-void RedisJobStore::Changed() {
-  absl::MutexLock lock(&mu_);
-  ++generation_;
-}
-
-int64_t RedisJobStore::generation() const {
-  absl::MutexLock lock(&mu_);
-  return generation_;
-}
+int64_t RedisJobStore::generation() const { return changes_.value(); }
 
 void RedisJobStore::AwaitChange(int64_t seen, absl::Duration timeout) const {
-  absl::MutexLock lock(&mu_);
-  const auto changed = [this, seen]() ABSL_NO_THREAD_SAFETY_ANALYSIS {
-    return generation_ != seen;
-  };
-  mu_.AwaitWithTimeout(absl::Condition(&changed), timeout);
+  changes_.Await(seen, timeout);
 }
 
 void RedisJobStore::CheckCancel(const std::string& id) {
@@ -310,7 +297,7 @@ void RedisJobStore::Subscribe(std::stop_token stop) {
         continue;
       }
       backoff = absl::Milliseconds(100);
-      Changed();  // watchers re-read what changed while unsubscribed
+      changes_.Bump();  // watchers re-read what changed while unsubscribed
     }
     absl::StatusOr<std::optional<RedisValue>> message = connection.Receive(absl::Milliseconds(250));
     if (!message.ok()) {
@@ -321,7 +308,7 @@ void RedisJobStore::Subscribe(std::stop_token stop) {
     if (message->has_value()) {
       const RedisValue& m = **message;
       if (m.elements.size() == 3 && m.elements[0].str == "message") {
-        Changed();
+        changes_.Bump();
         const std::vector<std::string> here = running_.Ids();
         if (std::find(here.begin(), here.end(), m.elements[2].str) != here.end()) {
           CheckCancel(m.elements[2].str);

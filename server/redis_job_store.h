@@ -18,7 +18,7 @@
 #include <map>
 #include <thread>
 
-#include "absl/synchronization/mutex.h"
+#include "server/change_counter.h"
 #include "server/job_queue.h"
 #include "server/job_store.h"
 #include "server/redis_connection.h"
@@ -50,12 +50,10 @@ class RedisJobStore final : public JobStore {
   absl::StatusOr<JobRecord> Read(const std::string& id) const;
   void Subscribe(std::stop_token stop);
   void CheckCancel(const std::string& id);
-  void Changed();
 
   RedisPool& pool_;
   const JobQueue& queue_;
-  mutable absl::Mutex mu_;
-  int64_t generation_ ABSL_GUARDED_BY(mu_) = 0;
+  ChangeCounter changes_;
   std::jthread subscriber_;
 };
 

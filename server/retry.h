@@ -8,10 +8,10 @@
 #define MESHSEG_SERVER_RETRY_H_
 
 #include <algorithm>
-#include <string_view>
-#include <type_traits>
 #include <stop_token>
 #include <string>
+#include <string_view>
+#include <type_traits>
 #include <utility>
 
 #include "absl/status/status.h"
@@ -39,9 +39,8 @@ auto RetryWhileUnavailable(std::string_view what, const std::string& job_id, std
       return result;
     }
     if (!logged) {
-      Log("store_unavailable_retrying", {{"call", std::string(what)},
-                                         {"job", job_id},
-                                         {"error", std::string(status.message())}});
+      Log("store_unavailable_retrying",
+          {{"call", std::string(what)}, {"job", job_id}, {"error", std::string(status.message())}});
       logged = true;
     }
     absl::SleepFor(backoff);

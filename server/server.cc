@@ -1,14 +1,14 @@
 #include "server/server.h"
 
+#include <grpcpp/ext/proto_server_reflection_plugin.h>
+#include <grpcpp/grpcpp.h>
+#include <grpcpp/health_check_service_interface.h>
+
 #include <algorithm>
 #include <condition_variable>
 #include <mutex>
 #include <optional>
 #include <thread>
-
-#include <grpcpp/ext/proto_server_reflection_plugin.h>
-#include <grpcpp/grpcpp.h>
-#include <grpcpp/health_check_service_interface.h>
 
 #include "absl/strings/str_cat.h"
 #include "absl/synchronization/notification.h"
@@ -73,8 +73,8 @@ absl::StatusOr<std::unique_ptr<Server>> Server::Start(ServerOptions options) {
   MESHSEG_ASSIGN_OR_RETURN(parts->backend, OpenBackend(o));
   Backend& b = *parts->backend;
   if (o.role != Role::kWorker) {
-    parts->service = std::make_unique<SegmentationService>(*b.store, *b.queue, *b.blobs,
-                                                           *b.spool, o.max_upload_bytes);
+    parts->service = std::make_unique<SegmentationService>(*b.store, *b.queue, *b.blobs, *b.spool,
+                                                           o.max_upload_bytes);
   }
 
   grpc::EnableDefaultHealthCheckService(true);

@@ -57,8 +57,8 @@ absl::StatusOr<ServerOptions> ResolveOptions(ServerOptions options) {
         absl::StrCat("--max-attempts must be in [1, 100], got ", options.max_attempts));
   }
   if (options.claim_after < absl::Milliseconds(200)) {
-    return absl::InvalidArgumentError(absl::StrCat(
-        "--claim-after must be at least 200ms, got ", absl::FormatDuration(options.claim_after)));
+    return absl::InvalidArgumentError(absl::StrCat("--claim-after must be at least 200ms, got ",
+                                                   absl::FormatDuration(options.claim_after)));
   }
   if (!options.queue.empty()) {
     MESHSEG_RETURN_IF_ERROR(ParseRedisUrl(options.queue).status());

@@ -10,8 +10,8 @@
 #include <string>
 #include <string_view>
 
-#include "absl/strings/string_view.h"
 #include "absl/status/statusor.h"
+#include "absl/strings/string_view.h"
 #include "absl/time/time.h"
 #include "meshseg/pipeline.h"
 #include "meshseg/run_context.h"

@@ -35,9 +35,9 @@ absl::StatusOr<JobRecord> ReadRecord(const fs::path& folder) {
     return absl::DataLossError("corrupt job record");
   }
   if (record.format_version() > kRecordFormat) {
-    return absl::FailedPreconditionError(
-        absl::StrCat("job record format ", record.format_version(),
-                     " is newer than this server's (", kRecordFormat, ")"));
+    return absl::FailedPreconditionError(absl::StrCat("job record format ", record.format_version(),
+                                                      " is newer than this server's (",
+                                                      kRecordFormat, ")"));
   }
   if (record.job().job_id() != folder.filename().string()) {
     return absl::DataLossError(absl::StrCat("job record names another job (\"",
@@ -72,9 +72,9 @@ absl::StatusOr<std::unique_ptr<Spool>> Spool::Open(const std::string& dir) {
     const int err = errno;
     close(fd);
     if (err == EWOULDBLOCK) {
-      return absl::FailedPreconditionError(absl::StrCat(
-          "spool: \"", dir, "\" is in use by another meshseg-server (", lock_path,
-          " is locked); give each server its own --spool-dir"));
+      return absl::FailedPreconditionError(
+          absl::StrCat("spool: \"", dir, "\" is in use by another meshseg-server (", lock_path,
+                       " is locked); give each server its own --spool-dir"));
     }
     return absl::InternalError(
         absl::StrCat("spool: cannot lock \"", lock_path, "\": ", std::strerror(err)));
@@ -118,9 +118,8 @@ Spool::Recovered Spool::Recover() const {
       out.skipped.push_back({name, std::string(record.status().message())});
     }
   }
-  std::sort(out.records.begin(), out.records.end(), [](const JobRecord& a, const JobRecord& b) {
-    return a.sequence() < b.sequence();
-  });
+  std::sort(out.records.begin(), out.records.end(),
+            [](const JobRecord& a, const JobRecord& b) { return a.sequence() < b.sequence(); });
   return out;
 }
 

@@ -15,8 +15,8 @@
 #include <string_view>
 #include <vector>
 
-#include "absl/strings/string_view.h"
 #include "absl/status/statusor.h"
+#include "absl/strings/string_view.h"
 #include "server/dir_blob_store.h"
 #include "server/job_record.pb.h"
 

@@ -42,7 +42,7 @@ absl::StatusOr<PipelineResult> RunGuarded(const JobRunner& runner, const std::st
 }
 
 const char* StateName(const absl::Status& status) {
-  return status.ok()                                      ? "SUCCEEDED"
+  return status.ok()                                     ? "SUCCEEDED"
          : status.code() == absl::StatusCode::kCancelled ? "CANCELLED"
                                                          : "FAILED";
 }
@@ -145,9 +145,10 @@ void WorkerPool::Run(const Lease& lease) {
     return;
   }
   if (!status.ok()) (void)blobs_.Remove(ResultKey(job_id));  // no result: leave no file
-  const absl::Status finished = RetryWhileUnavailable(
-      "finish", job_id, give_up_.get_token(), [&] { return store_.Finish(job_id, status, output); });
-  if (!finished.ok()) return;  // not recorded: the queue hands it out again
+  const absl::Status finished = RetryWhileUnavailable("finish", job_id, give_up_.get_token(), [&] {
+    return store_.Finish(job_id, status, output);
+  });
+  if (!finished.ok()) return;                // not recorded: the queue hands it out again
   (void)blobs_.Remove(record.upload_key());  // the upload is not needed any more
   queue_.Done(lease);
   Log("job_finished",

@@ -105,11 +105,11 @@ int Run() {
     return latencies[std::min(latencies.size() - 1,
                               static_cast<std::size_t>(q * static_cast<double>(latencies.size())))];
   };
-  std::printf("%-28s jobs=%-4zu faces=%-7lld wall=%7.2f s  %7.2f jobs/s  mean=%7.1f ms  "
-              "p50=%7.1f ms  p95=%7.1f ms\n",
-              absl::GetFlag(FLAGS_label).c_str(), latencies.size(),
-              static_cast<long long>(faces), wall, latencies.size() / wall,
-              1e3 * sum / latencies.size(), 1e3 * at(0.5), 1e3 * at(0.95));
+  std::printf(
+      "%-28s jobs=%-4zu faces=%-7lld wall=%7.2f s  %7.2f jobs/s  mean=%7.1f ms  "
+      "p50=%7.1f ms  p95=%7.1f ms\n",
+      absl::GetFlag(FLAGS_label).c_str(), latencies.size(), static_cast<long long>(faces), wall,
+      latencies.size() / wall, 1e3 * sum / latencies.size(), 1e3 * at(0.5), 1e3 * at(0.95));
   return 0;
 }
 

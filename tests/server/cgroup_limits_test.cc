@@ -2,10 +2,10 @@
 // cfs quota and memory limit, and no limit at all.
 #include "server/cgroup_limits.h"
 
+#include <gtest/gtest.h>
+
 #include <filesystem>
 #include <fstream>
-
-#include <gtest/gtest.h>
 
 #include "scratch_dir.h"
 

@@ -1,10 +1,10 @@
 #include "server/dir_blob_store.h"
 
+#include <gtest/gtest.h>
+
 #include <filesystem>
 #include <fstream>
 #include <sstream>
-
-#include <gtest/gtest.h>
 
 #include "scratch_dir.h"
 

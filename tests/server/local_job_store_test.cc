@@ -2,9 +2,9 @@
 // change is on disk, so a new store over the same spool recovers it.
 #include "server/local_job_store.h"
 
-#include <filesystem>
-
 #include <gtest/gtest.h>
+
+#include <filesystem>
 
 #include "scratch_dir.h"
 #include "server/in_memory_job_queue.h"
@@ -70,9 +70,9 @@ TEST_F(LocalJobStoreTest, WalksQueuedRunningSucceeded) {
   store_->Progress(id, "read", 0.5);
   EXPECT_EQ(store_->Get(id)->stage(), "read");
   EXPECT_EQ(store_->Get(id)->queue_position(), -1);
-  ASSERT_TRUE(store_->Finish(id, absl::OkStatus(), {.result_size = 42, .face_count = 12,
-                                                     .region_count = 3})
-                  .ok());
+  ASSERT_TRUE(
+      store_->Finish(id, absl::OkStatus(), {.result_size = 42, .face_count = 12, .region_count = 3})
+          .ok());
   const v1::Job job = *store_->Get(id);
   EXPECT_EQ(job.state(), v1::JOB_STATE_SUCCEEDED);
   EXPECT_EQ(job.result_size(), 42);
@@ -179,7 +179,8 @@ TEST_F(LocalJobStoreTest, GivesUpAfterMaxAttempts) {
   const v1::Job job = *store_->Get(id);
   EXPECT_EQ(job.state(), v1::JOB_STATE_FAILED);
   EXPECT_EQ(job.error_code(), static_cast<int>(absl::StatusCode::kAborted));
-  EXPECT_EQ(job.error_message(), "worker died 2 times running this job (--max-attempts 2); not run again");
+  EXPECT_EQ(job.error_message(),
+            "worker died 2 times running this job (--max-attempts 2); not run again");
   Reopen();
   EXPECT_EQ(store_->Get(id)->state(), v1::JOB_STATE_FAILED) << "the verdict is on disk";
 }

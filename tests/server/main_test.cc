@@ -148,9 +148,9 @@ TEST(ServerMain, BadFlagValueExitsNonZero) {
 }
 
 // SIGTERM while a job runs and another waits: the waiting one stays queued
-// (recovery_test.cc runs it after a restart), new uploads get UNAVAILABLE, health is NOT_SERVING, the running job
-// finishes well within the 20 s grace and the process exits 0. The log has
-// each job's queued / started / finished lines, in order around the signal.
+// (recovery_test.cc runs it after a restart), new uploads get UNAVAILABLE, health is NOT_SERVING,
+// the running job finishes well within the 20 s grace and the process exits 0. The log has each
+// job's queued / started / finished lines, in order around the signal.
 TEST_F(ServerMainJobs, SigtermLetsTheRunningJobFinishRefusesUploadsAndExitsZero) {
   ServerProcess server({"--spool-dir", spool_, "--workers", "1", "--shutdown-grace", "20s"});
   ASSERT_FALSE(server.address().empty()) << server.first_line() << server.Log();

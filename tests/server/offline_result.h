@@ -4,14 +4,19 @@
 #ifndef MESHSEG_TESTS_SERVER_OFFLINE_RESULT_H_
 #define MESHSEG_TESTS_SERVER_OFFLINE_RESULT_H_
 
+#include <gtest/gtest.h>
+
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "absl/status/statusor.h"
 #include "absl/strings/str_cat.h"
+#include "absl/time/time.h"
 #include "client/meshseg_client.h"
 #include "meshseg/generate.h"
 #include "meshseg/mesh.h"
@@ -45,11 +50,41 @@ inline TestPart MakePart(const std::string& dir, const std::string& file, const 
   return part;
 }
 
+// The parts of the process tests, written to `dir`: three small ones of
+// different shapes (a mixed-up result shows; coarse voxels keep each job a
+// fraction of a second) and, last, one whose job runs a second or more (to
+// be caught running).
+inline std::vector<TestPart> MakeTestParts(const std::string& dir) {
+  std::filesystem::create_directories(dir);
+  std::vector<TestPart> parts;
+  const std::vector<std::string> names = PartNames();
+  for (int i = 0; i < 3; ++i) {
+    parts.push_back(MakePart(dir, "small" + std::to_string(i) + ".ply", names[i], 1.2));
+  }
+  parts.push_back(MakePart(dir, "long.ply", "test_piece", 0.8));
+  return parts;
+}
+
 // The result JSON of a finished job as the CLI writes it (`meshseg result`).
 inline absl::StatusOr<std::string> ServerJson(MeshsegClient& client, const std::string& job_id) {
   absl::StatusOr<v1::SegmentationResult> result = client.Result(job_id);
   if (!result.ok()) return result.status();
   return ResultJson(*result);
+}
+
+// Watches `id` to its end and checks it SUCCEEDED with `part`'s offline
+// result, byte for byte; returns the job.
+inline v1::Job ExpectOfflineResult(MeshsegClient& client, const std::string& id,
+                                   const TestPart& part, absl::Duration timeout) {
+  const absl::StatusOr<v1::Job> job = client.Watch(id, {}, timeout);
+  EXPECT_TRUE(job.ok()) << id << ": " << job.status();
+  if (!job.ok()) return {};
+  EXPECT_EQ(job->state(), v1::JOB_STATE_SUCCEEDED) << id << ": " << job->error_message();
+  const absl::StatusOr<std::string> json = ServerJson(client, id);
+  EXPECT_TRUE(json.ok()) << json.status();
+  EXPECT_TRUE(json.ok() && *json == part.offline_json)
+      << id << " differs from offline " << part.path;
+  return *job;
 }
 
 }  // namespace meshseg::testing_server

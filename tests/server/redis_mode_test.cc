@@ -4,6 +4,8 @@
 // other worker; a killed and restarted Redis loses no accepted job; a
 // killed api replica's jobs are watched and fetched through the other.
 // Results are compared byte for byte with an offline `meshseg segment`.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
 #include <signal.h>
 
 #include <filesystem>
@@ -11,9 +13,6 @@
 #include <string>
 #include <thread>
 #include <vector>
-
-#include <gmock/gmock.h>
-#include <gtest/gtest.h>
 
 #include "absl/strings/str_cat.h"
 #include "client/meshseg_client.h"
@@ -38,15 +37,8 @@ constexpr absl::Duration kTimeout = absl::Seconds(60);
 class RedisMode : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    const std::string dir = testing_files::ScratchPath("redis_mode_parts");
-    std::filesystem::create_directories(dir);
-    parts_ = new std::vector<TestPart>();
-    const std::vector<std::string> names = PartNames();
-    for (int i = 0; i < 3; ++i) {
-      parts_->push_back(testing_server::MakePart(dir, "small" + std::to_string(i) + ".ply",
-                                                 names[i], 1.2));
-    }
-    parts_->push_back(testing_server::MakePart(dir, "long.ply", "test_piece", 0.8));
+    parts_ = new std::vector<TestPart>(
+        testing_server::MakeTestParts(testing_files::ScratchPath("redis_mode_parts")));
   }
   static void TearDownTestSuite() { delete parts_; }
 
@@ -74,18 +66,9 @@ class RedisMode : public ::testing::Test {
   static const TestPart& Small(int i) { return (*parts_)[i]; }
   static const TestPart& Long() { return (*parts_)[3]; }
 
-  // Watches `id` through `client` and checks SUCCEEDED with `part`'s offline
-  // result; returns the job.
   static v1::Job ExpectOfflineResult(MeshsegClient client, const std::string& id,
                                      const TestPart& part) {
-    const absl::StatusOr<v1::Job> job = client.Watch(id, {}, kTimeout);
-    EXPECT_TRUE(job.ok()) << id << ": " << job.status();
-    if (!job.ok()) return {};
-    EXPECT_EQ(job->state(), v1::JOB_STATE_SUCCEEDED) << id << ": " << job->error_message();
-    const absl::StatusOr<std::string> json = ServerJson(client, id);
-    EXPECT_TRUE(json.ok()) << json.status();
-    EXPECT_TRUE(json.ok() && *json == part.offline_json) << id << " differs from offline";
-    return *job;
+    return testing_server::ExpectOfflineResult(client, id, part, kTimeout);
   }
 
   // Index of the worker whose log shows `id` started, or -1 after 30 s.
@@ -146,7 +129,7 @@ TEST_F(RedisMode, TwentyFourJobsFromEightClientsThroughBothApisAreByteIdenticalT
         << "replica " << a << " lists every job";
   }
   for (int w = 0; w < 2; ++w) {
-    EXPECT_THAT(workers_[w]->Log(), HasSubstr("event=job_finished")) << "worker " << w << " idle";
+    EXPECT_TRUE(workers_[w]->AwaitLog("event=job_finished", kTimeout)) << "worker " << w << " idle";
   }
 }
 
@@ -159,8 +142,10 @@ TEST_F(RedisMode, KillNineOfTheWorkerRunningAJobItCompletesOnTheOther) {
   const v1::Job job = ExpectOfflineResult(Api(1), up->job_id(), Long());
   EXPECT_EQ(job.attempts(), 2) << "the takeover is a new attempt";
   const ServerProcess& other = *workers_[1 - victim];
-  EXPECT_THAT(other.Log(), HasSubstr("event=job_reclaimed job=" + up->job_id()));
-  EXPECT_THAT(other.Log(), HasSubstr("event=job_finished job=" + up->job_id() + " state=SUCCEEDED"));
+  EXPECT_TRUE(other.AwaitLog("event=job_reclaimed job=" + up->job_id(), kTimeout)) << other.Log();
+  EXPECT_TRUE(
+      other.AwaitLog("event=job_finished job=" + up->job_id() + " state=SUCCEEDED", kTimeout))
+      << other.Log();
 }
 
 // Redis dies while jobs are queued and running: new uploads are refused

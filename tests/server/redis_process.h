@@ -76,10 +76,23 @@ class RedisProcess {
 
  private:
   bool Launch() {
-    std::vector<std::string> args = {"/usr/bin/redis-server", "--port", absl::StrCat(port_),
-                                     "--bind", "127.0.0.1", "--dir", dir_, "--appendonly", "yes",
-                                     "--save", "", "--daemonize", "no", "--logfile",
-                                     dir_ + "/redis.log", "--protected-mode", "yes"};
+    std::vector<std::string> args = {"/usr/bin/redis-server",
+                                     "--port",
+                                     absl::StrCat(port_),
+                                     "--bind",
+                                     "127.0.0.1",
+                                     "--dir",
+                                     dir_,
+                                     "--appendonly",
+                                     "yes",
+                                     "--save",
+                                     "",
+                                     "--daemonize",
+                                     "no",
+                                     "--logfile",
+                                     dir_ + "/redis.log",
+                                     "--protected-mode",
+                                     "yes"};
     std::vector<char*> argv;
     for (std::string& a : args) argv.push_back(a.data());
     argv.push_back(nullptr);

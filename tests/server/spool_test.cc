@@ -1,10 +1,10 @@
 #include "server/spool.h"
 
+#include <gtest/gtest.h>
+
 #include <filesystem>
 #include <fstream>
 #include <map>
-
-#include <gtest/gtest.h>
 
 #include "scratch_dir.h"
 
