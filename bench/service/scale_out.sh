@@ -9,6 +9,7 @@
 #      to its own core (taskset): jobs/s of 2 workers over 1 worker.
 # Usage (after building meshseg-server and service_load_bench):
 #   bash bench/service/scale_out.sh [SMALL_JOBS=40] [LONG_JOBS=6]
+#   SMALL_VOXEL=3 bash bench/service/scale_out.sh 100 0   # tiny jobs: overhead only
 # Prints the load average (uptime) before each run: other builds on the
 # machine distort the numbers, so compare runs made at similar load.
 set -euo pipefail
@@ -17,6 +18,7 @@ BIN=build/bin
 SMALL_JOBS="${1:-40}"
 LONG_JOBS="${2:-6}"
 SMALL_PART="${SMALL_PART:-small_block}"
+SMALL_VOXEL="${SMALL_VOXEL:-0}"
 LONG_PART="${LONG_PART:-test_piece}"
 LONG_VOXEL="${LONG_VOXEL:-0.5}"
 WORK=$(mktemp -d /tmp/meshseg-scale-out.XXXXXX)
@@ -100,20 +102,31 @@ redis_setup() {
 
 echo "== small jobs ($SMALL_PART, $SMALL_JOBS per run)"
 start_server embedded1 - --workers 1
-run "embedded w=1 c=1" "$ADDR" 1 "$SMALL_JOBS" "$SMALL_PART" 0
-run "embedded w=1 c=4" "$ADDR" 4 $((SMALL_JOBS / 4)) "$SMALL_PART" 0
+run "embedded w=1 c=1" "$ADDR" 1 "$SMALL_JOBS" "$SMALL_PART" "$SMALL_VOXEL"
+run "embedded w=1 c=4" "$ADDR" 4 $((SMALL_JOBS / 4)) "$SMALL_PART" "$SMALL_VOXEL"
 stop_all
 start_server embedded2 - --workers 2
-run "embedded w=2 c=4" "$ADDR" 4 $((SMALL_JOBS / 4)) "$SMALL_PART" 0
+run "embedded w=2 c=4" "$ADDR" 4 $((SMALL_JOBS / 4)) "$SMALL_PART" "$SMALL_VOXEL"
 stop_all
 redis_setup 1
-run "redis api+1 worker c=1" "$API" 1 "$SMALL_JOBS" "$SMALL_PART" 0
-run "redis api+1 worker c=4" "$API" 4 $((SMALL_JOBS / 4)) "$SMALL_PART" 0
+redis-cli -p "$REDIS_PORT" config resetstat >/dev/null
+run "redis api+1 worker c=1" "$API" 1 "$SMALL_JOBS" "$SMALL_PART" "$SMALL_VOXEL"
+# What Redis itself did for those jobs: commands per job and their time
+# inside Redis (idle XREADGROUP waits of 1 s excluded: they block, not work).
+redis-cli -p "$REDIS_PORT" info commandstats | tr -d '\r' | awk -F'[:,=]' -v jobs="$SMALL_JOBS" '
+  /^cmdstat_/ { name = substr($1, 9); calls[name] = $3; usec[name] = $5 }
+  END {
+    for (n in calls) { if (n != "xreadgroup") { c += calls[n]; u += usec[n] } }
+    printf "   redis per job: %.1f commands, %.3f ms inside redis (+%.1f XREADGROUP)\n",
+           c / jobs, u / jobs / 1000, calls["xreadgroup"] / jobs
+  }'
+run "redis api+1 worker c=4" "$API" 4 $((SMALL_JOBS / 4)) "$SMALL_PART" "$SMALL_VOXEL"
 stop_all
 redis_setup 2
-run "redis api+2 workers c=4" "$API" 4 $((SMALL_JOBS / 4)) "$SMALL_PART" 0
+run "redis api+2 workers c=4" "$API" 4 $((SMALL_JOBS / 4)) "$SMALL_PART" "$SMALL_VOXEL"
 stop_all
 
+[ "$LONG_JOBS" -gt 0 ] || exit 0
 echo "== long jobs ($LONG_PART h=$LONG_VOXEL, each worker pinned to one core)"
 redis_setup 1 0
 run "redis 1 worker@cpu0 c=2" "$API" 2 $((LONG_JOBS / 2)) "$LONG_PART" "$LONG_VOXEL"
