@@ -53,10 +53,13 @@ class RedisMode : public ::testing::Test {
     }
   }
 
-  std::unique_ptr<ServerProcess> Start(const std::string& role, const std::string& name) {
-    auto p = std::make_unique<ServerProcess>(std::vector<std::string>{
-        "--role", role, "--queue", redis_->url(), "--blob-dir", blobs_, "--spool-dir",
-        FreshDir(name), "--workers", "1", "--claim-after", "2s", "--shutdown-grace", "1s"});
+  std::unique_ptr<ServerProcess> Start(const std::string& role, const std::string& name,
+                                       std::vector<std::string> env = {}) {
+    auto p = std::make_unique<ServerProcess>(
+        std::vector<std::string>{"--role", role, "--queue", redis_->url(), "--blob-dir", blobs_,
+                                 "--spool-dir", FreshDir(name), "--workers", "1", "--claim-after",
+                                 "2s", "--shutdown-grace", "1s"},
+        std::move(env));
     EXPECT_FALSE(p->address().empty()) << p->first_line() << p->Log();
     return p;
   }
@@ -201,6 +204,45 @@ TEST_F(RedisMode, CancelThroughEitherReplicaStopsTheRunningJob) {
   EXPECT_TRUE(workers_[worker]->AwaitLog(
       "event=job_finished job=" + up->job_id() + " state=CANCELLED", absl::Seconds(10)))
       << workers_[worker]->Log();
+}
+
+// A test-only poison input (MESHSEG_TEST_ABORT_ON_FILE) aborts whichever
+// worker takes it. Dead workers are started again, as a Deployment would;
+// each takeover (XAUTOCLAIM after --claim-after) is an attempt, and after
+// --max-attempts 3 the job ends FAILED while the jobs behind it complete.
+TEST_F(RedisMode, PoisonJobEndsFailedAfterMaxAttemptsAndTheJobsBehindItComplete) {
+  const std::vector<std::string> env = {"MESHSEG_TEST_ABORT_ON_FILE=poison.ply"};
+  for (int w = 0; w < 2; ++w) workers_[w] = Start("worker", "poisoned" + std::to_string(w), env);
+  const std::string poison = FreshDir("poison") + "/poison.ply";
+  std::filesystem::copy_file(Small(0).path, poison);
+  const absl::StatusOr<v1::UploadResponse> bad = Api(0).Upload(poison);
+  ASSERT_TRUE(bad.ok()) << bad.status();
+  std::vector<std::pair<std::string, const TestPart*>> behind;
+  for (int k = 1; k < 3; ++k) {
+    const absl::StatusOr<v1::UploadResponse> up = Api(k % 2).Upload(Small(k).path);
+    ASSERT_TRUE(up.ok()) << up.status();
+    behind.emplace_back(up->job_id(), &Small(k));
+  }
+  int restarts = 0;
+  absl::StatusOr<v1::Job> verdict = absl::UnknownError("not read");
+  const absl::Time deadline = absl::Now() + kTimeout;
+  while (absl::Now() < deadline) {
+    verdict = Api(1).GetJob(bad->job_id());
+    if (verdict.ok() && verdict->state() == v1::JOB_STATE_FAILED) break;
+    for (int w = 0; w < 2; ++w) {
+      if (!workers_[w]->AwaitExit(absl::ZeroDuration()).has_value()) continue;
+      ++restarts;
+      workers_[w] =
+          Start("worker", "poisoned" + std::to_string(w) + "_" + std::to_string(restarts), env);
+    }
+    absl::SleepFor(absl::Milliseconds(50));
+  }
+  ASSERT_TRUE(verdict.ok()) << verdict.status();
+  EXPECT_EQ(verdict->state(), v1::JOB_STATE_FAILED);
+  EXPECT_EQ(verdict->attempts(), 3);
+  EXPECT_THAT(verdict->error_message(), HasSubstr("worker died 3 times"));
+  EXPECT_EQ(restarts, 3) << "one worker process died per attempt";
+  for (const auto& [id, part] : behind) ExpectOfflineResult(Api(0), id, *part);
 }
 
 }  // namespace
