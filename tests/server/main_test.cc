@@ -187,8 +187,10 @@ TEST_F(ServerMainJobs, SigtermLetsTheRunningJobFinishRefusesUploadsAndExitsZero)
   EXPECT_EQ(job_a->face_count(), part_faces_);
 
   EXPECT_EQ(server.AwaitExit(kTimeout), 0);
+  // Finishing within the grace is what job_a's SUCCEEDED shows (past the
+  // grace it would be released, not finished); the time is only recorded,
+  // never asserted: it depends on the machine's load.
   const absl::Duration stop_time = absl::Now() - sigterm;
-  EXPECT_LT(stop_time, absl::Seconds(15)) << "within the grace period";
   RecordProperty("sigterm_to_exit_ms", static_cast<int>(absl::ToInt64Milliseconds(stop_time)));
 
   const std::vector<std::string> log = LogLines(server.Log());
