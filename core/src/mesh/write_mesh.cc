@@ -43,6 +43,8 @@ void Append(std::string& out, T value) {
   out.append(raw, sizeof(T));
 }
 
+}  // namespace
+
 // Distinct colours for labels 0, 1, 2, ...: hues spaced by the golden angle,
 // three brightness levels; grey for -1.
 std::array<uint8_t, 3> LabelColor(int label) {
@@ -59,6 +61,8 @@ std::array<uint8_t, 3> LabelColor(int label) {
   }
   return color;
 }
+
+namespace {
 
 std::string PlyBytes(const TriMesh& mesh, const std::vector<int>* labels) {
   std::string out = absl::StrCat(
