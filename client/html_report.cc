@@ -10,7 +10,7 @@
 #include "absl/strings/str_cat.h"
 #include "absl/strings/str_replace.h"
 #include "client/embedded.h"
-#include "meshseg/mesh.h"
+#include "meshseg/label_color.h"
 #include "meshseg/proto/result_json.h"
 #include "meshseg/status_macros.h"
 

@@ -9,6 +9,8 @@
 // buffers are needed.
 "use strict";
 
+const FOV_Y = 0.6;  // vertical field of view, radians
+
 const Mat4 = {
   perspective(fovy, aspect, near, far) {
     const f = 1 / Math.tan(fovy / 2), nf = 1 / (near - far);
@@ -182,7 +184,9 @@ class Viewer {
     this.upload();
     this.resetView();
     this.attachInput();
-    new ResizeObserver(() => this.requestDraw()).observe(canvas);
+    // Redrawn at once, not on the next frame: resize callbacks run before the
+    // page is painted, so no frame shows the old image stretched.
+    new ResizeObserver(() => { this.pickValid = false; this.draw(); }).observe(canvas);
   }
 
   upload() {
@@ -244,7 +248,8 @@ class Viewer {
     // Looking from the first octant, z up.
     this.back = Vec3.normalize([1, -1.3, 0.9]);
     this.up = Vec3.normalize(Vec3.cross(Vec3.cross(this.back, [0, 0, 1]), this.back));
-    this.distance = 2.6 * this.radius;
+    // The bounding sphere fits the vertical field of view with a margin.
+    this.distance = 1.1 * this.radius / Math.sin(FOV_Y / 2);
     this.requestDraw();
   }
 
@@ -271,7 +276,7 @@ class Viewer {
     const near = Math.max(this.distance - 2 * this.radius, this.distance * 1e-3);
     const far = this.distance + 2 * this.radius;
     return {view: Mat4.view(eye, right, this.up, this.back),
-            projection: Mat4.perspective(0.6, w / h, near, far), w, h};
+            projection: Mat4.perspective(FOV_Y, w / h, near, far), w, h};
   }
 
   // Draws the model; with `pick`, element ids into the bound framebuffer.
@@ -380,7 +385,7 @@ class Viewer {
       drag.x = e.clientX;
       drag.y = e.clientY;
       if (drag.pan) {
-        const perPixel = 2 * this.distance * Math.tan(0.3) / Math.max(1, c.clientHeight);
+        const perPixel = 2 * this.distance * Math.tan(FOV_Y / 2) / Math.max(1, c.clientHeight);
         const right = Vec3.cross(this.up, this.back);
         this.target = Vec3.add(Vec3.add(this.target, right, -dx * perPixel), this.up, dy * perPixel);
       } else {

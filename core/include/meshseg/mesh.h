@@ -140,10 +140,6 @@ double MeanEdgeLength(const TriMesh& mesh);
 // the file cannot be written.
 absl::Status WriteMesh(const TriMesh& mesh, const std::string& path);
 
-// Returns the colour (RGB) of region label `label` in the coloured outputs:
-// hues spaced by the golden angle, three brightness levels; grey for -1.
-std::array<uint8_t, 3> LabelColor(int label);
-
 // Writes `mesh` as a binary PLY with one colour per face: faces with the same
 // label share a colour, label -1 is grey. `face_labels` has one entry per mesh
 // face. Errors: INVALID_ARGUMENT if the sizes differ; INTERNAL on write failure.

@@ -9,6 +9,7 @@
 #include <memory>
 
 #include "absl/strings/str_cat.h"
+#include "meshseg/label_color.h"
 #include "meshseg/mesh.h"
 #include "meshseg/point_cloud.h"
 #include "mesh/source.h"
