@@ -55,10 +55,9 @@ absl::StatusOr<Args> Args::Parse(const std::vector<std::string>& argv,
   }
   const std::size_t n = args.positional_.size();
   if (n < min_positionals || n > max_positionals) {
-    const std::string expected =
-        min_positionals == max_positionals
-            ? absl::StrCat(min_positionals)
-            : absl::StrCat(min_positionals, " to ", max_positionals);
+    const std::string expected = min_positionals == max_positionals
+                                     ? absl::StrCat(min_positionals)
+                                     : absl::StrCat(min_positionals, " to ", max_positionals);
     return absl::InvalidArgumentError(absl::StrCat("expected ", expected, " argument",
                                                    max_positionals == 1 ? "" : "s", ", got ", n));
   }

@@ -1,16 +1,17 @@
 // meshseg report RESULT.json [MESH] -o REPORT.html [--format FMT]
 // The HTML report of a saved result; MESH (the file that was segmented) adds
 // the 3D view.
+#include <google/protobuf/util/json_util.h>
+
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 
-#include <google/protobuf/util/json_util.h>
-
 #include "absl/strings/str_cat.h"
 #include "client/commands.h"
 #include "client/html_report.h"
+#include "meshseg/proto/convert.h"
 #include "meshseg/status_macros.h"
 
 namespace meshseg::cli {
@@ -57,8 +58,7 @@ absl::Status RunReport(const Argv& argv) {
   if (!out) return absl::InvalidArgumentError("-o REPORT.html is required");
   MESHSEG_ASSIGN_OR_RETURN(const std::optional<FileFormat> format,
                            FormatFromHint(args.Value("--format").value_or("")));
-  MESHSEG_ASSIGN_OR_RETURN(const v1::SegmentationResult result,
-                           ReadResultJson(args.positional(0)));
+  MESHSEG_ASSIGN_OR_RETURN(const v1::SegmentationResult result, ReadResultJson(args.positional(0)));
   std::optional<std::string> mesh;
   if (args.positional_count() == 2) mesh = args.positional(1);
   const std::string title =

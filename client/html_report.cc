@@ -92,23 +92,24 @@ absl::StatusOr<std::string> HtmlReport(const ReportInputs& inputs) {
     for (const uint8_t c : LabelColor(region.id())) colors.push_back(c);
   }
   const ReportGeometry& g = inputs.geometry;
-  std::string data = absl::StrCat(
-      "<script type=\"application/json\" id=\"meshseg-report\">", ScriptSafe(facts_json),
-      "</script>\n", Buffer("meshseg-colors", colors));
+  std::string data =
+      absl::StrCat("<script type=\"application/json\" id=\"meshseg-report\">",
+                   ScriptSafe(facts_json), "</script>\n", Buffer("meshseg-colors", colors));
   if (g.kind != ReportGeometry::Kind::kNone) {
     absl::StrAppend(&data, Buffer("meshseg-positions", g.positions),
                     Buffer("meshseg-labels", g.labels));
     if (!g.triangles.empty()) absl::StrAppend(&data, Buffer("meshseg-triangles", g.triangles));
-    if (!g.sharp_segments.empty()) absl::StrAppend(&data, Buffer("meshseg-sharp", g.sharp_segments));
+    if (!g.sharp_segments.empty())
+      absl::StrAppend(&data, Buffer("meshseg-sharp", g.sharp_segments));
     if (!g.smooth_segments.empty()) {
       absl::StrAppend(&data, Buffer("meshseg-smooth", g.smooth_segments));
     }
   }
-  return absl::StrReplaceAll(
-      embedded::kReportHtml,
-      {{"/*MESHSEG_STYLE*/", embedded::kReportCss},
-       {"/*MESHSEG_SCRIPT*/", absl::StrCat(embedded::kReportViewerJs, "\n", embedded::kReportPageJs)},
-       {"<!--MESHSEG_DATA-->", data}});
+  return absl::StrReplaceAll(embedded::kReportHtml,
+                             {{"/*MESHSEG_STYLE*/", embedded::kReportCss},
+                              {"/*MESHSEG_SCRIPT*/", absl::StrCat(embedded::kReportViewerJs, "\n",
+                                                                  embedded::kReportPageJs)},
+                              {"<!--MESHSEG_DATA-->", data}});
 }
 
 }  // namespace meshseg::cli

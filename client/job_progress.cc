@@ -23,9 +23,8 @@ absl::StatusOr<std::vector<StageWeight>> ParseStageWeights(std::string_view text
         absl::StrSplit(line, absl::ByAnyChar(" \t\r"), absl::SkipEmpty());
     if (words.empty()) continue;
     StageWeight stage{.name = std::string(words[0])};
-    if (words.size() != 3 || !absl::SimpleAtod(words[1], &stage.weight) ||
-        !(stage.weight >= 0.0) || !std::isfinite(stage.weight) ||
-        (words[2] != "always" && words[2] != "sometimes")) {
+    if (words.size() != 3 || !absl::SimpleAtod(words[1], &stage.weight) || !(stage.weight >= 0.0) ||
+        !std::isfinite(stage.weight) || (words[2] != "always" && words[2] != "sometimes")) {
       return absl::InvalidArgumentError(absl::StrCat(
           "progress stages: line ", line_number, " \"", absl::StripAsciiWhitespace(line),
           "\" is not \"name weight always|sometimes\" with a weight >= 0"));
@@ -46,8 +45,7 @@ JobProgress::JobProgress(std::vector<StageWeight> stages) : stages_(std::move(st
 
 void JobProgress::Update(std::string_view stage, double fraction, absl::Time now) {
   if (!start_) start_ = now;
-  const std::string_view name =
-      absl::StripAsciiWhitespace(stage.substr(0, stage.find(':')));
+  const std::string_view name = absl::StripAsciiWhitespace(stage.substr(0, stage.find(':')));
   const auto it = std::find_if(stages_.begin(), stages_.end(),
                                [&](const StageWeight& s) { return s.name == name; });
   if (it == stages_.end()) return;

@@ -79,12 +79,12 @@ std::vector<StageTime> ProgressPrinter::Timings() const {
   std::vector<StageTime> times = job_.StageTimes(now);
   const v1::Job& job = last_job_;
   if (job.started_unix_ms() > 0 && job.created_unix_ms() > 0) {
-    times.push_back({"queued", 1e-3 * static_cast<double>(job.started_unix_ms() -
-                                                          job.created_unix_ms())});
+    times.push_back(
+        {"queued", 1e-3 * static_cast<double>(job.started_unix_ms() - job.created_unix_ms())});
   }
   if (job.finished_unix_ms() > 0 && job.started_unix_ms() > 0) {
-    times.push_back({"total", 1e-3 * static_cast<double>(job.finished_unix_ms() -
-                                                         job.started_unix_ms())});
+    times.push_back(
+        {"total", 1e-3 * static_cast<double>(job.finished_unix_ms() - job.started_unix_ms())});
   } else if (!times.empty()) {
     times.push_back({"total", absl::ToDoubleSeconds(job_.Elapsed(now))});
   }

@@ -41,9 +41,9 @@ void SetPositions(const std::vector<Eigen::Vector3d>& points, ReportGeometry* g)
 
 absl::Status CountMismatch(const std::string& name, int64_t file_count, const char* what,
                            int64_t result_count, const char* result_what) {
-  return absl::InvalidArgumentError(absl::StrCat(
-      "report: \"", name, "\" has ", file_count, " ", what, ", the result ", result_count, " ",
-      result_what, " (give the file that was segmented)"));
+  return absl::InvalidArgumentError(
+      absl::StrCat("report: \"", name, "\" has ", file_count, " ", what, ", the result ",
+                   result_count, " ", result_what, " (give the file that was segmented)"));
 }
 
 absl::StatusOr<ReportGeometry> CloudGeometry(const std::string& path,
@@ -59,8 +59,9 @@ absl::StatusOr<ReportGeometry> CloudGeometry(const std::string& path,
   const std::map<int, int> index = IndexOfRegionId(result);
   g.labels.reserve(cloud.points.size());
   for (const int label : result.point_labels()) g.labels.push_back(IndexOf(index, label));
-  g.note = "the points of the input, coloured by region; the boundary curves lie on the "
-           "reconstructed mesh, which the result does not hold";
+  g.note =
+      "the points of the input, coloured by region; the boundary curves lie on the "
+      "reconstructed mesh, which the result does not hold";
   return g;
 }
 
@@ -89,8 +90,7 @@ absl::StatusOr<ReportGeometry> MeshGeometry(const std::string& path,
   MESHSEG_ASSIGN_OR_RETURN(const Mesh mesh, ReadMesh(path, {.format = format}));
   const int64_t input_faces = static_cast<int64_t>(mesh.face_of_input.size());
   if (result.face_labels_size() != input_faces) {
-    return CountMismatch(mesh.name, input_faces, "faces", result.face_labels_size(),
-                         "face labels");
+    return CountMismatch(mesh.name, input_faces, "faces", result.face_labels_size(), "face labels");
   }
   ReportGeometry g{.kind = ReportGeometry::Kind::kTriangles};
   std::vector<Eigen::Vector3d> vertices;
@@ -104,7 +104,8 @@ absl::StatusOr<ReportGeometry> MeshGeometry(const std::string& path,
   const std::map<int, int> index = IndexOfRegionId(result);
   g.labels.assign(mesh.tri.n_faces(), -1);
   for (int64_t i = 0; i < input_faces; ++i) {
-    if (mesh.face_of_input[i] >= 0) g.labels[mesh.face_of_input[i]] = IndexOf(index, result.face_labels(i));
+    if (mesh.face_of_input[i] >= 0)
+      g.labels[mesh.face_of_input[i]] = IndexOf(index, result.face_labels(i));
   }
   MESHSEG_RETURN_IF_ERROR(
       AddCurves(result, mesh.name, static_cast<int64_t>(mesh.tri.n_vertices()), &g));

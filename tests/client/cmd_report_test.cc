@@ -42,13 +42,13 @@ TEST(MeshsegReport, WritesThePageOfASavedResultWithItsMesh) {
 TEST(MeshsegReport, SegmentWritesTheReportWithTimings) {
   const std::string dir = FreshDir("files");
   testing_files::WriteOff(testing_files::SplitBox(3, {1, 1, 1}), dir + "/box.off");
-  const testing_cli::CliRun r = RunCli(
-      {"segment", dir + "/box.off", "-o", dir + "/box.json", "--report", dir + "/box.html"});
+  const testing_cli::CliRun r =
+      RunCli({"segment", dir + "/box.off", "-o", dir + "/box.json", "--report", dir + "/box.html"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_THAT(r.out, HasSubstr("wrote " + dir + "/box.html"));
   const std::string html = ReadText(dir + "/box.html");
-  EXPECT_THAT(html, HasSubstr("{\"stage\":\"segment\",\"seconds\":"));
-  EXPECT_THAT(html, HasSubstr("{\"stage\":\"total\",\"seconds\":"));
+  EXPECT_THAT(html, HasSubstr("\"stage\":\"segment\""));
+  EXPECT_THAT(html, HasSubstr("\"stage\":\"total\""));
   EXPECT_THAT(html, HasSubstr("id=\"meshseg-triangles\""));
 }
 

@@ -3,9 +3,9 @@
 // timings, and nothing that reaches the network.
 #include "client/html_report.h"
 
+#include <gmock/gmock.h>
 #include <google/protobuf/struct.pb.h>
 #include <google/protobuf/util/json_util.h>
-#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <cstring>
@@ -59,11 +59,11 @@ TEST(HtmlReport, CarriesTheResultBuffersAndTimings) {
   EXPECT_EQ(fields.at("title").string_value(), "part</script><b>.stl");
   const auto& page_result = fields.at("result").struct_value().fields();
   EXPECT_EQ(page_result.at("regions").list_value().values_size(), 1);
-  EXPECT_FALSE(page_result.contains("face_labels") &&
+  EXPECT_FALSE(page_result.count("face_labels") > 0 &&
                page_result.at("face_labels").list_value().values_size() > 0)
       << "labels travel as a buffer";
-  EXPECT_DOUBLE_EQ(page_result.at("estimates").struct_value().fields().at("noise_sigma")
-                       .number_value(), 0.125);
+  EXPECT_DOUBLE_EQ(
+      page_result.at("estimates").struct_value().fields().at("noise_sigma").number_value(), 0.125);
   EXPECT_EQ(fields.at("timings").list_value().values_size(), 2);
   EXPECT_EQ(fields.at("geometry").struct_value().fields().at("kind").string_value(), "triangles");
 

@@ -74,8 +74,8 @@ TEST(ParseStageWeights, ReadsTheEmbeddedFileInPipelineOrder) {
 }
 
 TEST(ParseStageWeights, BadLineNamesItsNumber) {
-  for (const char* text : {"read 1 always\nsegment x always\n", "read 1 often\n", "read -1 always\n",
-                           "read 1\n"}) {
+  for (const char* text :
+       {"read 1 always\nsegment x always\n", "read 1 often\n", "read -1 always\n", "read 1\n"}) {
     const absl::StatusOr<std::vector<StageWeight>> stages = ParseStageWeights(text);
     ASSERT_FALSE(stages.ok()) << text;
     EXPECT_EQ(stages.status().code(), absl::StatusCode::kInvalidArgument);

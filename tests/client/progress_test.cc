@@ -1,12 +1,12 @@
 // Progress as a person sees it: a bar redrawn in place on a terminal, plain
 // "progress:" lines on stdout otherwise (offline and through a server).
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
 #include <algorithm>
 #include <cstdlib>
 #include <string>
 #include <vector>
-
-#include <gmock/gmock.h>
-#include <gtest/gtest.h>
 
 #include "absl/synchronization/notification.h"
 #include "tests/client/run_cli.h"
@@ -26,8 +26,7 @@ using testing_server::TestServer;
 // The whole-job percentages after each `marker` in `out` ("(job 43%").
 std::vector<int> JobPercents(const std::string& out, const std::string& marker) {
   std::vector<int> percents;
-  for (std::size_t at = out.find(marker); at != std::string::npos;
-       at = out.find(marker, at + 1)) {
+  for (std::size_t at = out.find(marker); at != std::string::npos; at = out.find(marker, at + 1)) {
     percents.push_back(std::atoi(out.c_str() + at + marker.size()));
   }
   return percents;
