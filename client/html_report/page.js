@@ -4,7 +4,9 @@
 // <body data-state="ready" data-region-rows="N" data-webgl="yes|no"
 // data-canvas-rect="x,y,w,h">. The URL's hash can ask for a selection
 // (#select=REGION_ID, a link to a region) and a pick at canvas pixel X,Y
-// (#pick=X,Y, answered in data-pick-face and data-pick-region).
+// (#pick=X,Y, answered in data-pick-face and data-pick-region). #bench=N
+// times N orbit frames and N picks (data-frame-ms, data-pick-ms) and the
+// load (data-load-ms, from navigation to ready) for bench/report/.
 "use strict";
 
 function decodeBuffer(id, ArrayType) {
@@ -243,6 +245,7 @@ class Report {
       const index = this.indexOfId.get(Number(params.get("select")));
       if (index !== undefined) this.select(index);
     }
+    if (params.has("bench") && this.viewer) this.bench(Number(params.get("bench")));
     if (params.has("pick") && this.viewer) {
       const [x, y] = params.get("pick").split(",").map(Number);
       const element = this.viewer.pick(x, y);
@@ -250,6 +253,25 @@ class Report {
       document.body.dataset.pickFace = String(element);
       document.body.dataset.pickRegion = String(index >= 0 ? this.regions[index].id : -1);
     }
+  }
+
+  bench(n) {
+    const v = this.viewer, gl = v.gl, body = document.body.dataset;
+    body.loadMs = String(Math.round(performance.now()));
+    let t = performance.now();
+    for (let i = 0; i < n; ++i) {
+      v.back = Vec3.normalize(Vec3.rotate(v.back, v.up, 0.05));
+      v.draw();
+      gl.finish();
+    }
+    body.frameMs = (((performance.now() - t) / n)).toFixed(1);
+    t = performance.now();
+    for (let i = 0; i < n; ++i) {
+      v.back = Vec3.normalize(Vec3.rotate(v.back, v.up, 0.05));
+      v.pickValid = false;  // the worst case: the first pick after the view moved
+      v.pick(v.canvas.clientWidth / 2, v.canvas.clientHeight / 2);
+    }
+    body.pickMs = (((performance.now() - t) / n)).toFixed(1);
   }
 
   startViewer() {
