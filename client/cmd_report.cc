@@ -41,7 +41,10 @@ absl::Status WriteHtmlReport(const std::string& out, const std::string& title,
                              const std::optional<std::string>& mesh_path,
                              const std::optional<FileFormat>& format,
                              std::vector<StageTime> timings) {
-  ReportInputs inputs{.title = title, .result = &result, .timings = std::move(timings)};
+  ReportInputs inputs;
+  inputs.title = title;
+  inputs.result = &result;
+  inputs.timings = std::move(timings);
   if (mesh_path) {
     MESHSEG_ASSIGN_OR_RETURN(inputs.geometry, GeometryForReport(*mesh_path, result, format));
   } else {

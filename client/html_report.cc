@@ -64,15 +64,15 @@ google::protobuf::Struct PageFacts(const ReportInputs& inputs) {
 
 template <typename T>
 std::string Buffer(const char* id, const std::vector<T>& values) {
-  const std::string_view bytes(reinterpret_cast<const char*>(values.data()),
-                               values.size() * sizeof(T));
+  const absl::string_view bytes(reinterpret_cast<const char*>(values.data()),
+                                values.size() * sizeof(T));
   return absl::StrCat("<script type=\"application/octet-stream\" id=\"", id, "\">",
                       absl::Base64Escape(bytes), "</script>\n");
 }
 
 // JSON inside <script>: "</" would end the element early; "<\/" is the same
 // JSON string.
-std::string ScriptSafe(std::string_view json) {
+std::string ScriptSafe(absl::string_view json) {
   return absl::StrReplaceAll(json, {{"</", "<\\/"}});
 }
 

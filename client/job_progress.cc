@@ -13,13 +13,13 @@
 
 namespace meshseg::cli {
 
-absl::StatusOr<std::vector<StageWeight>> ParseStageWeights(std::string_view text) {
+absl::StatusOr<std::vector<StageWeight>> ParseStageWeights(absl::string_view text) {
   std::vector<StageWeight> stages;
   int line_number = 0;
-  for (std::string_view line : absl::StrSplit(text, '\n')) {
+  for (absl::string_view line : absl::StrSplit(text, '\n')) {
     ++line_number;
     line = line.substr(0, line.find('#'));
-    const std::vector<std::string_view> words =
+    const std::vector<absl::string_view> words =
         absl::StrSplit(line, absl::ByAnyChar(" \t\r"), absl::SkipEmpty());
     if (words.empty()) continue;
     StageWeight stage{.name = std::string(words[0])};
@@ -45,7 +45,8 @@ JobProgress::JobProgress(std::vector<StageWeight> stages) : stages_(std::move(st
 
 void JobProgress::Update(std::string_view stage, double fraction, absl::Time now) {
   if (!start_) start_ = now;
-  const std::string_view name = absl::StripAsciiWhitespace(stage.substr(0, stage.find(':')));
+  const absl::string_view head(stage.data(), std::min(stage.size(), stage.find(':')));
+  const absl::string_view name = absl::StripAsciiWhitespace(head);
   const auto it = std::find_if(stages_.begin(), stages_.end(),
                                [&](const StageWeight& s) { return s.name == name; });
   if (it == stages_.end()) return;
@@ -58,7 +59,7 @@ void JobProgress::Update(std::string_view stage, double fraction, absl::Time now
     fraction_ = 0.0;
   }
   seen_.insert(std::string(name));
-  if (name == stage) fraction_ = std::clamp(fraction, 0.0, 1.0);
+  if (name.size() == stage.size()) fraction_ = std::clamp(fraction, 0.0, 1.0);
   overall_ = std::max(overall_, PlannedFraction());
 }
 
@@ -104,7 +105,7 @@ double JobProgress::PlannedFraction() const {
   return total > 0.0 ? std::min(done / total, 1.0) : 0.0;
 }
 
-std::string FormatDuration(absl::Duration d) {
+std::string DurationText(absl::Duration d) {
   const int64_t s = std::max<int64_t>(0, absl::ToInt64Seconds(d + absl::Milliseconds(500)));
   if (s >= 3600) return absl::StrFormat("%d:%02d:%02d", s / 3600, s / 60 % 60, s % 60);
   return absl::StrFormat("%d:%02d", s / 60, s % 60);

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "absl/status/statusor.h"
+#include "absl/strings/string_view.h"
 #include "absl/time/time.h"
 
 namespace meshseg::cli {
@@ -35,7 +36,7 @@ struct StageTime {
 // Returns the stages of a progress_stages.txt text: "name weight
 // always|sometimes" per line, '#' comments. Errors (INVALID_ARGUMENT): a line
 // of another shape, a weight that is not a non-negative number.
-absl::StatusOr<std::vector<StageWeight>> ParseStageWeights(std::string_view text);
+absl::StatusOr<std::vector<StageWeight>> ParseStageWeights(absl::string_view text);
 
 // Returns the stages of the embedded progress_stages.txt.
 std::vector<StageWeight> DefaultStageWeights();
@@ -82,7 +83,7 @@ class JobProgress {
 };
 
 // Returns "0:07", "12:34" or "1:02:03".
-std::string FormatDuration(absl::Duration d);
+std::string DurationText(absl::Duration d);
 
 }  // namespace meshseg::cli
 

@@ -13,7 +13,7 @@ namespace {
 
 std::string EtaText(const JobProgress& job, absl::Time now) {
   const std::optional<absl::Duration> eta = job.Eta(now);
-  return eta ? FormatDuration(*eta) : std::string("--:--");
+  return eta ? DurationText(*eta) : std::string("--:--");
 }
 
 }  // namespace

@@ -31,7 +31,8 @@ void SetPositions(const std::vector<Eigen::Vector3d>& points, ReportGeometry* g)
     lo = lo.cwiseMin(p);
     hi = hi.cwiseMax(p);
   }
-  const Eigen::Vector3d centre = points.empty() ? Eigen::Vector3d::Zero() : 0.5 * (lo + hi);
+  const Eigen::Vector3d centre =
+      points.empty() ? Eigen::Vector3d(Eigen::Vector3d::Zero()) : Eigen::Vector3d(0.5 * (lo + hi));
   g->offset = {centre.x(), centre.y(), centre.z()};
   g->positions.reserve(3 * points.size());
   for (const Eigen::Vector3d& p : points) {
@@ -54,7 +55,8 @@ absl::StatusOr<ReportGeometry> CloudGeometry(const std::string& path,
   if (result.point_labels_size() != n) {
     return CountMismatch(cloud.name, n, "points", result.point_labels_size(), "point labels");
   }
-  ReportGeometry g{.kind = ReportGeometry::Kind::kPoints};
+  ReportGeometry g;
+  g.kind = ReportGeometry::Kind::kPoints;
   SetPositions(cloud.points, &g);
   const std::map<int, int> index = IndexOfRegionId(result);
   g.labels.reserve(cloud.points.size());
@@ -92,7 +94,8 @@ absl::StatusOr<ReportGeometry> MeshGeometry(const std::string& path,
   if (result.face_labels_size() != input_faces) {
     return CountMismatch(mesh.name, input_faces, "faces", result.face_labels_size(), "face labels");
   }
-  ReportGeometry g{.kind = ReportGeometry::Kind::kTriangles};
+  ReportGeometry g;
+  g.kind = ReportGeometry::Kind::kTriangles;
   std::vector<Eigen::Vector3d> vertices;
   vertices.reserve(mesh.tri.n_vertices());
   for (const auto v : mesh.tri.vertices()) vertices.push_back(ToEigen(mesh.tri.point(v)));

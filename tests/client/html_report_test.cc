@@ -41,7 +41,9 @@ v1::SegmentationResult SmallResult() {
 
 TEST(HtmlReport, CarriesTheResultBuffersAndTimings) {
   const v1::SegmentationResult result = SmallResult();
-  ReportInputs inputs{.title = "part</script><b>.stl", .result = &result};
+  ReportInputs inputs;
+  inputs.title = "part</script><b>.stl";
+  inputs.result = &result;
   inputs.geometry.kind = ReportGeometry::Kind::kTriangles;
   inputs.geometry.positions = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0.5f, 0.5f, 1};
   inputs.geometry.triangles = {0, 1, 2, 0, 1, 3, 1, 2, 3};
@@ -90,7 +92,9 @@ TEST(HtmlReport, CarriesTheResultBuffersAndTimings) {
 
 TEST(HtmlReport, TablesOnlyWithoutGeometry) {
   const v1::SegmentationResult result = SmallResult();
-  ReportInputs inputs{.title = "result.json", .result = &result};
+  ReportInputs inputs;
+  inputs.title = "result.json";
+  inputs.result = &result;
   inputs.geometry.note = "no mesh given";
   const absl::StatusOr<std::string> html = HtmlReport(inputs);
   ASSERT_TRUE(html.ok()) << html.status();

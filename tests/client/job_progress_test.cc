@@ -83,11 +83,11 @@ TEST(ParseStageWeights, BadLineNamesItsNumber) {
   }
 }
 
-TEST(FormatDuration, MinutesAndHours) {
-  EXPECT_EQ(FormatDuration(absl::Seconds(7)), "0:07");
-  EXPECT_EQ(FormatDuration(absl::Seconds(754)), "12:34");
-  EXPECT_EQ(FormatDuration(absl::Seconds(3723)), "1:02:03");
-  EXPECT_EQ(FormatDuration(-absl::Seconds(3)), "0:00");
+TEST(DurationText, MinutesAndHours) {
+  EXPECT_EQ(DurationText(absl::Seconds(7)), "0:07");
+  EXPECT_EQ(DurationText(absl::Seconds(754)), "12:34");
+  EXPECT_EQ(DurationText(absl::Seconds(3723)), "1:02:03");
+  EXPECT_EQ(DurationText(-absl::Seconds(3)), "0:00");
 }
 
 }  // namespace
