@@ -52,10 +52,10 @@ void JobProgress::Update(std::string_view stage, double fraction, absl::Time now
   if (it == stages_.end()) return;
   const int index = static_cast<int>(it - stages_.begin());
   if (index != current_) {
-    if (current_ >= 0) stage_end_[current_] = now;
-    stage_start_.emplace(index, now);
-    stage_end_.erase(index);
+    if (current_ >= 0) stage_time_[current_] += now - current_since_;
+    stage_time_.emplace(index, absl::ZeroDuration());
     current_ = index;
+    current_since_ = now;
     fraction_ = 0.0;
   }
   seen_.insert(std::string(name));
@@ -64,8 +64,9 @@ void JobProgress::Update(std::string_view stage, double fraction, absl::Time now
 }
 
 void JobProgress::Finish(absl::Time now) {
-  if (current_ >= 0) stage_end_.emplace(current_, now);
-  if (!end_) end_ = now;
+  if (end_) return;
+  if (current_ >= 0) stage_time_[current_] += now - current_since_;
+  end_ = now;
   overall_ = 1.0;
 }
 
@@ -83,10 +84,9 @@ std::optional<absl::Duration> JobProgress::Eta(absl::Time now) const {
 
 std::vector<StageTime> JobProgress::StageTimes(absl::Time now) const {
   std::vector<StageTime> times;
-  for (const auto& [index, start] : stage_start_) {
-    const auto end = stage_end_.find(index);
-    times.push_back({stages_[index].name,
-                     absl::ToDoubleSeconds((end == stage_end_.end() ? now : end->second) - start)});
+  for (const auto& [index, closed] : stage_time_) {
+    const absl::Duration open = index == current_ && !end_ ? now - current_since_ : absl::ZeroDuration();
+    times.push_back({stages_[index].name, absl::ToDoubleSeconds(closed + open)});
   }
   return times;
 }

@@ -61,8 +61,9 @@ class JobProgress {
   // elapsed * (1 - overall) / overall; nullopt until at least kMinOverall of
   // the job and kMinElapsed have passed.
   std::optional<absl::Duration> Eta(absl::Time now) const;
-  // Wall time of each stage seen, in pipeline order (a running stage counts
-  // up to `now`).
+  // Wall time of each stage seen, in pipeline order: the sum of the spans
+  // it was the running stage (a stage can run again, as remesh inside
+  // reconstruct); the running one counts up to `now`.
   std::vector<StageTime> StageTimes(absl::Time now) const;
 
   static constexpr double kMinOverall = 0.02;
@@ -78,8 +79,8 @@ class JobProgress {
   int current_ = -1;  // index into stages_
   double fraction_ = 0.0;
   double overall_ = 0.0;
-  std::map<int, absl::Time> stage_start_;
-  std::map<int, absl::Time> stage_end_;
+  absl::Time current_since_;  // when stages_[current_] last started
+  std::map<int, absl::Duration> stage_time_;  // closed spans per stage
 };
 
 // Returns "0:07", "12:34" or "1:02:03".

@@ -54,6 +54,18 @@ TEST(JobProgress, StepsOfAStageCountAsThatStage) {
                           Field(&StageTime::stage, "segment")));
 }
 
+TEST(JobProgress, AStageThatRunsAgainAddsItsSpans) {
+  JobProgress job(kStages);
+  job.Update("reconstruct", 0.0, kT0);
+  job.Update("remesh", 0.0, kT0 + absl::Seconds(1));  // a remesh inside reconstruct
+  job.Update("reconstruct", 0.9, kT0 + absl::Seconds(3));
+  job.Update("segment", 0.0, kT0 + absl::Seconds(4));
+  EXPECT_THAT(job.StageTimes(kT0 + absl::Seconds(6)),
+              ElementsAre(Field(&StageTime::seconds, 2.0), Field(&StageTime::seconds, 2.0),
+                          Field(&StageTime::seconds, 2.0)))
+      << "reconstruct 1 + 1 s, remesh 2 s, segment running for 2 s";
+}
+
 TEST(JobProgress, NeverGoesBackAndWaitsBeforeAnEta) {
   JobProgress job(kStages);
   job.Update("segment", 0.8, kT0);

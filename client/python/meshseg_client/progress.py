@@ -69,8 +69,9 @@ class ProgressTracker:
         self._current = None  # index into stages
         self._fraction = 0.0
         self._overall = 0.0
-        self._stage_start = {}
-        self._stage_end = {}
+        self._end = None
+        self._current_since = None  # when the running stage last started
+        self._stage_time = {}  # closed spans per stage name
 
     @property
     def overall(self):
@@ -78,11 +79,14 @@ class ProgressTracker:
 
     def stage_seconds(self):
         """Returns {stage: wall seconds} of the stages seen, in pipeline
-        order; a stage still running counts up to now."""
+        order: the sum of the spans each was the running stage (a stage can
+        run again, as remesh inside reconstruct); the running one counts up
+        to now."""
         now = self._clock()
-        return {name: self._stage_end.get(name, now) - start
-                for name, start in sorted(self._stage_start.items(),
-                                          key=lambda kv: self._order[kv[0]])}
+        times = dict(self._stage_time)
+        if self._current is not None and self._end is None:
+            times[self._stages[self._current].name] += now - self._current_since
+        return {name: times[name] for name in sorted(times, key=self._order.get)}
 
     def update(self, stage, fraction):
         """Records a report; returns (overall, eta_seconds or None)."""
@@ -94,10 +98,10 @@ class ProgressTracker:
         if index is not None:
             if index != self._current:
                 if self._current is not None:
-                    self._stage_end[self._stages[self._current].name] = now
-                self._stage_start.setdefault(name, now)
-                self._stage_end.pop(name, None)
+                    self._stage_time[self._stages[self._current].name] += now - self._current_since
+                self._stage_time.setdefault(name, 0.0)
                 self._current = index
+                self._current_since = now
                 self._fraction = 0.0
             self._seen.add(name)
             if name == stage:
@@ -107,12 +111,18 @@ class ProgressTracker:
 
     def finish(self):
         """Marks the job done: overall 1, the running stage ended."""
+        if self._end is not None:
+            return
+        self._end = self._clock()
         if self._current is not None:
-            self._stage_end.setdefault(self._stages[self._current].name, self._clock())
+            self._stage_time[self._stages[self._current].name] += self._end - self._current_since
         self._overall = 1.0
 
     def elapsed_seconds(self):
-        return 0.0 if self._start is None else self._clock() - self._start
+        """Seconds from the first report to now, or to finish()."""
+        if self._start is None:
+            return 0.0
+        return (self._end if self._end is not None else self._clock()) - self._start
 
     def eta_seconds(self):
         elapsed = self.elapsed_seconds()

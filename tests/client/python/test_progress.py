@@ -50,6 +50,19 @@ class ProgressTrackerTest(unittest.TestCase):
         self.assertAlmostEqual(t.update("reconstruct: octree", 0.9)[0], (1 + 2) / 12)
         self.assertAlmostEqual(t.update("segment", 0.0)[0], (1 + 4) / 12)
 
+    def test_a_stage_that_runs_again_adds_its_spans(self):
+        clock = Clock()
+        t = meshseg_client.ProgressTracker(STAGES, clock)
+        t.update("reconstruct", 0.0)
+        clock.now += 1.0
+        t.update("remesh", 0.0)  # a remesh inside reconstruct
+        clock.now += 2.0
+        t.update("reconstruct", 0.9)
+        clock.now += 1.0
+        t.update("segment", 0.0)
+        clock.now += 2.0
+        self.assertEqual(t.stage_seconds(), {"reconstruct": 2.0, "remesh": 2.0, "segment": 2.0})
+
     def test_never_goes_back_and_waits_before_an_eta(self):
         clock = Clock()
         t = meshseg_client.ProgressTracker(STAGES, clock)
