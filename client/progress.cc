@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <cstdio>
 
-#include "absl/strings/str_cat.h"
 #include "absl/time/clock.h"
 
 namespace meshseg::cli {
@@ -45,7 +44,10 @@ void ProgressPrinter::Draw(std::string_view stage, double fraction) {
     return;
   }
   const int quarter = static_cast<int>(fraction * 4.0);
-  if (stage == stage_ && quarter == quarter_) return;
+  // The job's end gets its line even when its stage's last quarter had one.
+  const bool done = overall >= 1.0 && !done_printed_;
+  if (stage == stage_ && quarter == quarter_ && !done) return;
+  done_printed_ = done_printed_ || done;
   stage_ = std::string(stage);
   quarter_ = quarter;
   std::printf("progress: %s %.0f%% (job %.0f%%, ETA %s)\n", stage_.c_str(), 100.0 * fraction,
@@ -57,7 +59,7 @@ void ProgressPrinter::Event(const v1::JobEvent& event) {
   const v1::Job& job = event.job();
   last_job_ = job;
   if (job.state() == v1::JOB_STATE_QUEUED) {
-    Draw(absl::StrCat("queued (", job.queue_position(), " ahead)"), 0.0);
+    Draw("queued", 0.0);
   } else if (job.state() == v1::JOB_STATE_RUNNING && !job.stage().empty()) {
     Update(job.stage(), job.fraction());
   } else if (job.state() == v1::JOB_STATE_SUCCEEDED) {

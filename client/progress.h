@@ -41,6 +41,7 @@ class ProgressPrinter {
   std::string stage_;          // of the last line printed
   std::string running_stage_;  // of the last Update
   int quarter_ = -1;
+  bool done_printed_ = false;  // the line at job 100% was printed
   JobProgress job_;
   v1::Job last_job_;
 };

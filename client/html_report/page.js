@@ -262,7 +262,7 @@ class Report {
     for (let i = 0; i < n; ++i) {
       v.back = Vec3.normalize(Vec3.rotate(v.back, v.up, 0.05));
       v.draw();
-      gl.finish();
+      gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, new Uint8Array(4));  // waits for the frame
     }
     body.frameMs = (((performance.now() - t) / n)).toFixed(1);
     t = performance.now();
