@@ -16,10 +16,10 @@ import meshseg_client
 import harness
 
 # A small CT-like part: coarse enough to segment in about a second.
-SMALL_VOXEL = 1.0
+SMALL_VOXEL = 1.5
 # A part that takes a few seconds, long enough to be cancelled while running
 # or to hold another job in the queue behind it (one worker).
-LARGE_VOXEL = 0.3
+LARGE_VOXEL = 0.4
 
 
 def generate(path, voxel_size):
