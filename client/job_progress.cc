@@ -85,7 +85,8 @@ std::optional<absl::Duration> JobProgress::Eta(absl::Time now) const {
 std::vector<StageTime> JobProgress::StageTimes(absl::Time now) const {
   std::vector<StageTime> times;
   for (const auto& [index, closed] : stage_time_) {
-    const absl::Duration open = index == current_ && !end_ ? now - current_since_ : absl::ZeroDuration();
+    const absl::Duration open =
+        index == current_ && !end_ ? now - current_since_ : absl::ZeroDuration();
     times.push_back({stages_[index].name, absl::ToDoubleSeconds(closed + open)});
   }
   return times;

@@ -79,7 +79,7 @@ class JobProgress {
   int current_ = -1;  // index into stages_
   double fraction_ = 0.0;
   double overall_ = 0.0;
-  absl::Time current_since_;  // when stages_[current_] last started
+  absl::Time current_since_;                  // when stages_[current_] last started
   std::map<int, absl::Duration> stage_time_;  // closed spans per stage
 };
 
