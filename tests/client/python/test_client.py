@@ -5,8 +5,10 @@ carry the gRPC status code."""
 
 import json
 import os
+import shutil
 import subprocess
 import sys
+import tempfile
 import threading
 import unittest
 
@@ -30,15 +32,15 @@ def generate(path, voxel_size):
 class ClientTest(harness.ScratchTestCase):
     @classmethod
     def setUpClass(cls):
-        cls.server = harness.ServerProcess("--workers", "1", "--spool-dir",
-                                           os.path.join(os.environ.get("TMPDIR", "/tmp"),
-                                                        f"meshseg_py_spool_{os.getpid()}"))
+        cls.spool = tempfile.mkdtemp(prefix="meshseg_py_spool_")
+        cls.server = harness.ServerProcess("--workers", "1", "--spool-dir", cls.spool)
         cls.client = meshseg_client.Client(cls.server.address, timeout=10)
 
     @classmethod
     def tearDownClass(cls):
         cls.client.close()
         cls.server.stop()
+        shutil.rmtree(cls.spool, ignore_errors=True)
 
     def test_segment_gives_the_cli_json_and_progress_to_the_end(self):
         part = generate(self.path("part.ply"), SMALL_VOXEL)
