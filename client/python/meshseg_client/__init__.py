@@ -12,9 +12,9 @@ meshseg_client.service_pb (service.proto).
 from ._stubs import pb, service_pb
 from .client import Client, state_name
 from .errors import *  # noqa: F401,F403  (one class per gRPC status code)
-from .errors import MeshsegError, error_for
+from .errors import __all__ as _error_names
 from .progress import Progress, ProgressTracker
 from .result import Result, message_to_dict
 
-__all__ = ["Client", "Result", "Progress", "ProgressTracker", "MeshsegError", "error_for",
-           "message_to_dict", "state_name", "pb", "service_pb"]
+__all__ = ["Client", "Result", "Progress", "ProgressTracker", "message_to_dict", "state_name",
+           "pb", "service_pb", *_error_names]

@@ -94,6 +94,12 @@ class UnauthenticatedError(MeshsegError):
     code = grpc.StatusCode.UNAUTHENTICATED
 
 
+__all__ = ["MeshsegError", "CancelledError", "UnknownError", "InvalidArgumentError",
+           "DeadlineExceededError", "NotFoundError", "AlreadyExistsError", "PermissionDeniedError",
+           "ResourceExhaustedError", "FailedPreconditionError", "AbortedError", "OutOfRangeError",
+           "UnimplementedError", "InternalError", "UnavailableError", "DataLossError",
+           "UnauthenticatedError", "error_for", "from_rpc_error"]
+
 _BY_CODE = {
     cls.code: cls
     for cls in (CancelledError, UnknownError, InvalidArgumentError, DeadlineExceededError,
