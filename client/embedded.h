@@ -10,6 +10,7 @@ namespace meshseg::cli::embedded {
 
 extern const char kReportHtml[];      // client/html_report/report.html
 extern const char kReportCss[];       // client/html_report/report.css
+extern const char kReportGlJs[];      // client/html_report/gl.js
 extern const char kReportViewerJs[];  // client/html_report/viewer.js
 extern const char kReportPageJs[];    // client/html_report/page.js
 extern const char kProgressStages[];  // client/progress_stages.txt

@@ -105,11 +105,12 @@ absl::StatusOr<std::string> HtmlReport(const ReportInputs& inputs) {
       absl::StrAppend(&data, Buffer("meshseg-smooth", g.smooth_segments));
     }
   }
-  return absl::StrReplaceAll(embedded::kReportHtml,
-                             {{"/*MESHSEG_STYLE*/", embedded::kReportCss},
-                              {"/*MESHSEG_SCRIPT*/", absl::StrCat(embedded::kReportViewerJs, "\n",
-                                                                  embedded::kReportPageJs)},
-                              {"<!--MESHSEG_DATA-->", data}});
+  return absl::StrReplaceAll(
+      embedded::kReportHtml,
+      {{"/*MESHSEG_STYLE*/", embedded::kReportCss},
+       {"/*MESHSEG_SCRIPT*/", absl::StrCat(embedded::kReportGlJs, "\n", embedded::kReportViewerJs,
+                                           "\n", embedded::kReportPageJs)},
+       {"<!--MESHSEG_DATA-->", data}});
 }
 
 }  // namespace meshseg::cli
