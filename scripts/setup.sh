@@ -12,6 +12,7 @@ PACKAGES=(
   libhiredis-dev redis-server
   libssl-dev
   python3 python3-grpcio python3-protobuf python3-pil chromium openssl
+  nodejs
 )
 
 SUDO=""
@@ -23,6 +24,12 @@ for p in "${PACKAGES[@]}"; do
     missing+=("$p")
   fi
 done
+
+# npm (deploy/ validation): Debian's package, unless the installed node
+# already ships it (NodeSource's nodejs does, and conflicts with Debian's npm).
+if ! command -v npm >/dev/null 2>&1; then
+  missing+=(npm)
+fi
 
 if [ ${#missing[@]} -eq 0 ]; then
   echo "setup: all ${#PACKAGES[@]} packages already installed"
