@@ -19,6 +19,13 @@ absl::StatusOr<Args> Args::Parse(const std::vector<std::string>& argv,
                                  std::initializer_list<std::string_view> value_flags,
                                  std::initializer_list<std::string_view> switches,
                                  std::size_t positionals) {
+  return Parse(argv, value_flags, switches, positionals, positionals);
+}
+
+absl::StatusOr<Args> Args::Parse(const std::vector<std::string>& argv,
+                                 std::initializer_list<std::string_view> value_flags,
+                                 std::initializer_list<std::string_view> switches,
+                                 std::size_t min_positionals, std::size_t max_positionals) {
   Args args;
   for (std::size_t i = 0; i < argv.size(); ++i) {
     const std::string& arg = argv[i];
@@ -46,10 +53,13 @@ absl::StatusOr<Args> Args::Parse(const std::vector<std::string>& argv,
       return absl::InvalidArgumentError(absl::StrCat("unknown option ", arg));
     }
   }
-  if (args.positional_.size() != positionals) {
-    return absl::InvalidArgumentError(absl::StrCat("expected ", positionals, " argument",
-                                                   positionals == 1 ? "" : "s", ", got ",
-                                                   args.positional_.size()));
+  const std::size_t n = args.positional_.size();
+  if (n < min_positionals || n > max_positionals) {
+    const std::string expected = min_positionals == max_positionals
+                                     ? absl::StrCat(min_positionals)
+                                     : absl::StrCat(min_positionals, " to ", max_positionals);
+    return absl::InvalidArgumentError(absl::StrCat("expected ", expected, " argument",
+                                                   max_positionals == 1 ? "" : "s", ", got ", n));
   }
   return args;
 }

@@ -1,7 +1,8 @@
-// meshseg segment INPUT -o RESULT.json [--colored-ply OUT.ply]
+// meshseg segment INPUT -o RESULT.json [--colored-ply OUT.ply] [--report REPORT.html]
 //   [--distance-tolerance X] [--angle-tolerance DEG] [--format FMT] [--server HOST:PORT]
 // In-process by default; with --server the same result comes from the service.
 #include <cstdio>
+#include <filesystem>
 
 #include "absl/strings/str_cat.h"
 #include "client/commands.h"
@@ -19,10 +20,10 @@ namespace {
 
 absl::StatusOr<v1::SegmentationResult> SegmentOffline(const std::string& path,
                                                       const v1::SegmentOptions& options,
-                                                      const std::string& format_hint) {
+                                                      const std::string& format_hint,
+                                                      ProgressPrinter& progress) {
   MESHSEG_ASSIGN_OR_RETURN(PipelineParams params, FromProto(options));
   MESHSEG_ASSIGN_OR_RETURN(params.format, FormatFromHint(format_hint));
-  ProgressPrinter progress;
   RunContext ctx;
   ctx.on_progress = [&](std::string_view stage, double f) { progress.Update(stage, f); };
   MESHSEG_ASSIGN_OR_RETURN(const PipelineResult result, RunPipeline(path, params, ctx));
@@ -31,10 +32,13 @@ absl::StatusOr<v1::SegmentationResult> SegmentOffline(const std::string& path,
 }
 
 absl::StatusOr<v1::SegmentationResult> SegmentOnServer(const Args& args, const std::string& path,
-                                                       const UploadOptions& options) {
+                                                       const UploadOptions& options,
+                                                       ProgressPrinter& progress) {
   MESHSEG_ASSIGN_OR_RETURN(MeshsegClient client, ConnectFromArgs(args));
-  ProgressPrinter progress;
-  return client.Segment(path, options, [&](const v1::JobEvent& e) { progress.Event(e); });
+  absl::StatusOr<v1::SegmentationResult> result =
+      client.Segment(path, options, [&](const v1::JobEvent& e) { progress.Event(e); });
+  progress.Finish();
+  return result;
 }
 
 // Writes the input coloured by region: a mesh with one colour per input face;
@@ -68,12 +72,11 @@ absl::Status WriteColored(const std::string& input, const std::optional<FileForm
 }  // namespace
 
 absl::Status RunSegment(const Argv& argv) {
-  MESHSEG_ASSIGN_OR_RETURN(
-      const Args args,
-      Args::Parse(argv,
-                  {"-o", "--colored-ply", "--distance-tolerance", "--angle-tolerance", "--format",
-                   "--server"},
-                  {}, 1));
+  MESHSEG_ASSIGN_OR_RETURN(const Args args,
+                           Args::Parse(argv,
+                                       {"-o", "--colored-ply", "--distance-tolerance",
+                                        "--angle-tolerance", "--format", "--server", "--report"},
+                                       {}, 1));
   const std::string& input = args.positional(0);
   const std::optional<std::string> out = args.Value("-o");
   if (!out) return absl::InvalidArgumentError("-o RESULT.json is required");
@@ -89,14 +92,21 @@ absl::Status RunSegment(const Argv& argv) {
   MESHSEG_ASSIGN_OR_RETURN(const std::optional<FileFormat> format,
                            FormatFromHint(options.format_hint));
 
+  ProgressPrinter progress;
   absl::StatusOr<v1::SegmentationResult> result =
-      args.Has("--server") ? SegmentOnServer(args, input, options)
-                           : SegmentOffline(input, options.segment, options.format_hint);
+      args.Has("--server") ? SegmentOnServer(args, input, options, progress)
+                           : SegmentOffline(input, options.segment, options.format_hint, progress);
   if (!result.ok()) return result.status();
   MESHSEG_ASSIGN_OR_RETURN(const std::string json, ResultJson(*result));
   MESHSEG_RETURN_IF_ERROR(WriteTextFile(*out, json));
   if (const std::optional<std::string> ply = args.Value("--colored-ply")) {
     MESHSEG_RETURN_IF_ERROR(WriteColored(input, format, *result, *ply));
+  }
+  if (const std::optional<std::string> report = args.Value("--report")) {
+    MESHSEG_RETURN_IF_ERROR(WriteHtmlReport(*report,
+                                            std::filesystem::path(input).filename().string(),
+                                            *result, input, format, progress.Timings()));
+    std::printf("wrote %s\n", report->c_str());
   }
   std::fputs(RegionTable(*result).c_str(), stdout);
   std::fputs(TopologySummary(*result).c_str(), stdout);

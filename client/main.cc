@@ -22,6 +22,8 @@ constexpr char kUsage[] =
     "  watch JOB --server HOST:PORT\n"
     "  result JOB -o RESULT.json --server HOST:PORT\n"
     "  cancel JOB --server HOST:PORT\n"
+    "  report RESULT.json [MESH] -o REPORT.html [--format FMT]\n"
+    "(segment also takes --report REPORT.html)\n"
     "(--server defaults to $MESHSEG_SERVER)\n";
 
 }  // namespace
@@ -34,6 +36,7 @@ int main(int argc, char** argv) {
       {"jobs", meshseg::cli::RunJobs},       {"status", meshseg::cli::RunStatus},
       {"watch", meshseg::cli::RunWatch},     {"result", meshseg::cli::RunResult},
       {"cancel", meshseg::cli::RunCancel},  {"reconstruct", meshseg::cli::RunReconstruct},
+      {"report", meshseg::cli::RunReport},
   };
   if (argc < 2 || std::string(argv[1]) == "help" || std::string(argv[1]) == "--help") {
     std::fputs(kUsage, argc < 2 ? stderr : stdout);

@@ -11,6 +11,7 @@ PACKAGES=(
   libtbb-dev libcgal-dev libboost-graph-dev libnanoflann-dev
   libhiredis-dev redis-server
   libssl-dev
+  python3 python3-grpcio python3-protobuf python3-pil chromium openssl
   nodejs
 )
 
