@@ -156,10 +156,10 @@ void WorkerPool::Run(const Lease& lease) {
     return store_.Finish(job_id, status, output);
   });
   if (!finished.ok()) return;                // not recorded: the queue hands it out again
-  (void)blobs_.Remove(record.upload_key());  // the upload is not needed any more
-  queue_.Done(lease);
   Metrics::Global().JobFinished(StateName(status), absl::Now() - start);
   if (status.ok()) Metrics::Global().ResultWritten(output.result_size);
+  (void)blobs_.Remove(record.upload_key());  // the upload is not needed any more
+  queue_.Done(lease);
   Log("job_finished",
       {{"job", job_id},
        {"state", StateName(status)},

@@ -74,7 +74,7 @@ double StageSecondsSum(const std::string& text) {
 }
 
 // Runs `command`; returns its exit code and fills *output with stdout+stderr.
-int Run(const std::string& command, std::string* output) {
+int RunCommand(const std::string& command, std::string* output) {
   FILE* pipe = popen((command + " 2>&1").c_str(), "r");
   if (pipe == nullptr) return -1;
   char buffer[512];
@@ -89,7 +89,7 @@ void ExpectPromtoolClean(const std::string& text, const std::string& when) {
   const std::string path = testing_files::ScratchPath("scrape_" + when + ".txt");
   std::ofstream(path) << text;
   std::string output;
-  const int rc = Run("promtool check metrics < " + path, &output);
+  const int rc = RunCommand("promtool check metrics < " + path, &output);
   ASSERT_NE(rc, 127) << "promtool not found: bash scripts/setup.sh installs it (Debian prometheus)";
   EXPECT_EQ(rc, 0) << when << ": " << output;
   EXPECT_EQ(output, "") << when;
@@ -124,6 +124,15 @@ TEST(Observability, MetricsMoveWithTheJobsAndJsonLogsParse) {
       << log_so_far;
   const int port = std::stoi(match[1]);
   const auto scrape = [&] { return HttpBody(HttpGet(port, "/metrics")); };
+  // Scrapes every 10 ms until `done` holds (or kTimeout); returns the last scrape.
+  const auto scrape_until = [&](auto done) {
+    std::string text = scrape();
+    for (const absl::Time end = absl::Now() + kTimeout; !done(text) && absl::Now() < end;) {
+      absl::SleepFor(absl::Milliseconds(10));
+      text = scrape();
+    }
+    return text;
+  };
 
   const std::string before = scrape();
   ExpectPromtoolClean(before, "before");
@@ -134,12 +143,11 @@ TEST(Observability, MetricsMoveWithTheJobsAndJsonLogsParse) {
   MeshsegClient client = MeshsegClient::Connect(server.address());
   const absl::StatusOr<v1::UploadResponse> a = client.Upload(big);
   ASSERT_TRUE(a.ok()) << a.status();
-  std::string during;
-  for (const absl::Time deadline = absl::Now() + kTimeout; absl::Now() < deadline;) {
-    during = scrape();
-    if (Sample(during, "meshseg_jobs_running") == 1) break;
-    absl::SleepFor(absl::Milliseconds(10));
-  }
+  // A worker counts its attempt just after it marks the job running.
+  const std::string during = scrape_until([](const std::string& text) {
+    return Sample(text, "meshseg_jobs_running") == 1 &&
+           Sample(text, "meshseg_worker_attempts_total") == 1;
+  });
   ASSERT_EQ(Sample(during, "meshseg_jobs_running"), 1) << "never saw the job running\n" << during;
   ExpectPromtoolClean(during, "during");
   EXPECT_EQ(Sample(during, "meshseg_jobs_accepted_total"), 1);
@@ -167,7 +175,11 @@ TEST(Observability, MetricsMoveWithTheJobsAndJsonLogsParse) {
   EXPECT_EQ(failed->state(), v1::JOB_STATE_FAILED);
   EXPECT_EQ(client.Upload(step).status().code(), absl::StatusCode::kInvalidArgument);
 
-  const std::string after = scrape();
+  // A worker counts a job once the store has it terminal, so a watch may
+  // return a moment before the counters move.
+  const std::string after = scrape_until([](const std::string& text) {
+    return Sample(text, "meshseg_job_duration_seconds_count") == 2;
+  });
   ExpectPromtoolClean(after, "after");
   EXPECT_EQ(Sample(after, "meshseg_jobs_total{state=\"succeeded\"}"), 1) << after;
   EXPECT_EQ(Sample(after, "meshseg_jobs_total{state=\"failed\"}"), 1);
@@ -198,7 +210,7 @@ TEST(Observability, MetricsMoveWithTheJobsAndJsonLogsParse) {
   const std::string log_path = testing_files::ScratchPath("server_log.jsonl");
   std::ofstream(log_path) << server.Log();
   std::string output;
-  const int rc = Run(absl::StrCat("python3 ", MESHSEG_TESTS_DIR, "/server/check_json_log.py ",
+  const int rc = RunCommand(absl::StrCat("python3 ", MESHSEG_TESTS_DIR, "/server/check_json_log.py ",
                                   log_path,
                                   " server_started metrics_listening job_queued job_started"
                                   " stage_done job_finished job_cancel_requested upload_rejected"
