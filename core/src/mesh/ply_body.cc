@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstring>
 #include <optional>
+#include <string>
 
 #include "absl/strings/str_cat.h"
 #include "meshseg/status_macros.h"
@@ -172,7 +173,11 @@ absl::Status ReadElement(const PlyElement& element, ValueReader& reader, PlyData
         // A length counts the values that follow, each at least one byte
         // (text or binary): a whole number no larger than the bytes left.
         if (n != std::floor(n) || n > static_cast<double>(reader.BytesLeft())) {
-          return reader.Error(absl::StrCat("list length ", n, " of ", p.name,
+          // Whole lengths are shown as integers ("4000000000", not "4e+09").
+          const std::string shown = n == std::floor(n) && std::abs(n) < 9e15
+                                        ? absl::StrCat(static_cast<int64_t>(n))
+                                        : absl::StrCat(n);
+          return reader.Error(absl::StrCat("list length ", shown, " of ", p.name,
                                            " is not a whole number of values the ",
                                            reader.BytesLeft(), " bytes left can hold"));
         }
