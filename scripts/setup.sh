@@ -12,6 +12,8 @@ PACKAGES=(
   libhiredis-dev redis-server
   libssl-dev
   nodejs
+  prometheus
+  clang-14 libclang-rt-14-dev
 )
 
 SUDO=""
