@@ -12,7 +12,8 @@
 //     empty file): the upload or the job must fail with a message.
 // A job whose upload was accepted but whose end is never seen (watch error,
 // deadline, NOT_FOUND) is LOST. The server's RSS (/proc/PID/status) is read
-// at the start, after --warmup_seconds and at the end.
+// every second; growth is the last minute of load against the first minute
+// after --warmup_seconds.
 // Prints submitted / completed / failed / cancelled / lost / mismatched,
 // p50 / p95 latency of good jobs and the RSS samples; exit 1 if any job was
 // lost or mismatched.
@@ -257,17 +258,15 @@ int Run() {
   for (int c = 0; c < absl::GetFlag(FLAGS_clients); ++c) {
     threads.emplace_back([&soak, c, deadline] { soak.RunClient(c, deadline); });
   }
-  // RSS after warm-up, and its peak, sampled every second.
-  int64_t rss_warm = 0, rss_peak = rss_start;
+  // RSS sampled every second while jobs run. A single sample depends on how
+  // many jobs happen to be in flight, so growth compares the mean RSS of the
+  // first minute after warm-up with the mean of the last minute of load.
+  std::vector<std::pair<double, int64_t>> samples;  // (seconds since start, KiB)
   std::atomic<bool> done{false};
   std::thread sampler([&] {
     while (!done) {
       std::this_thread::sleep_for(std::chrono::seconds(1));
-      const int64_t rss = RssKiB(pid);
-      rss_peak = std::max(rss_peak, rss);
-      if (rss_warm == 0 && SecondsSince(start) >= absl::GetFlag(FLAGS_warmup_seconds)) {
-        rss_warm = rss;
-      }
+      samples.emplace_back(SecondsSince(start), RssKiB(pid));
     }
   });
   for (std::thread& t : threads) t.join();
@@ -291,11 +290,27 @@ int Run() {
       static_cast<long long>(c.refused), static_cast<long long>(c.cancelled),
       static_cast<long long>(c.lost), static_cast<long long>(c.mismatched));
   std::printf("latency of good jobs: p50=%.2f s p95=%.2f s\n", at(0.5), at(0.95));
-  if (pid > 0) {
-    std::printf("server RSS: start %.1f MiB, after warm-up %.1f MiB, end %.1f MiB, peak %.1f MiB",
-                rss_start / 1024.0, rss_warm / 1024.0, rss_end / 1024.0, rss_peak / 1024.0);
-    if (rss_warm > 0) std::printf(", growth after warm-up %+.1f %%", 100.0 * (rss_end - rss_warm) / rss_warm);
-    std::printf("\n");
+  if (pid > 0 && !samples.empty()) {
+    const double warmup = absl::GetFlag(FLAGS_warmup_seconds);
+    const double load_end = absl::GetFlag(FLAGS_seconds);
+    const auto mean_mib = [&](double from, double to) {
+      double sum = 0;
+      int n = 0;
+      for (const auto& [t, kib] : samples) {
+        if (t >= from && t < to) sum += kib, ++n;
+      }
+      return n > 0 ? sum / n / 1024.0 : 0.0;
+    };
+    int64_t peak = rss_start;
+    for (const auto& [t, kib] : samples) peak = std::max(peak, kib);
+    std::printf("server RSS (MiB, mean per minute):");
+    for (double m = 0; m < load_end; m += 60) std::printf(" %.0f", mean_mib(m, m + 60));
+    const double first = mean_mib(warmup, warmup + 60);
+    const double last = mean_mib(load_end - 60, load_end);
+    std::printf("\nserver RSS: start %.1f MiB, peak %.1f MiB, idle at the end %.1f MiB; ",
+                rss_start / 1024.0, peak / 1024.0, rss_end / 1024.0);
+    std::printf("first minute after warm-up %.1f MiB, last minute %.1f MiB: growth %+.1f %%\n",
+                first, last, first > 0 ? 100.0 * (last - first) / first : 0.0);
   }
   for (const std::string& p : c.problems) std::printf("  problem: %s\n", p.c_str());
   return c.lost == 0 && c.mismatched == 0 ? 0 : 1;
