@@ -13,6 +13,8 @@ PACKAGES=(
   libssl-dev
   python3 python3-grpcio python3-protobuf python3-pil chromium openssl
   nodejs
+  prometheus
+  clang-14 libclang-rt-14-dev
 )
 
 SUDO=""

@@ -1,5 +1,6 @@
 #include "meshseg/proto/grpc_status.h"
 #include "server/log.h"
+#include "server/metrics.h"
 #include "server/service.h"
 
 namespace meshseg::server {
@@ -12,6 +13,7 @@ grpc::Status SegmentationService::CancelJob(grpc::ServerContext* /*context*/,
   if (!outcome.ok()) return ToGrpcStatus(outcome.status());
   if (*outcome == JobStore::CancelOutcome::kWasQueued) {
     queue_.Remove(id);
+    Metrics::Global().JobFinished("CANCELLED", std::nullopt);
     if (absl::StatusOr<v1::Job> job = store_.Get(id); job.ok()) {
       (void)blobs_.Remove(UploadKey(id, job->file_name()));
     }

@@ -10,6 +10,7 @@
 #include "absl/flags/flag.h"
 #include "absl/flags/parse.h"
 #include "absl/flags/usage.h"
+#include "absl/flags/usage_config.h"
 #include "absl/strings/str_cat.h"
 #include "server/log.h"
 #include "server/server.h"
@@ -43,6 +44,11 @@ ABSL_FLAG(absl::Duration, result_ttl, kDefaults.result_ttl,
           "how long a finished job and its result are kept, e.g. 24h, 30m");
 ABSL_FLAG(absl::Duration, shutdown_grace, kDefaults.shutdown_grace,
           "on SIGTERM/SIGINT, how long running jobs may take before they are cancelled");
+ABSL_FLAG(std::string, metrics_listen, kDefaults.metrics_listen,
+          "HOST:PORT serving Prometheus metrics at GET /metrics (text format 0.0.4); empty = "
+          "off; port 0 = ephemeral (logged as event=metrics_listening)");
+ABSL_FLAG(std::string, log_format, "text",
+          "text (ts=... event=... key=value) or json (one JSON object per line)");
 
 namespace {
 
@@ -66,9 +72,19 @@ std::vector<char*> UnderscoreFlagNames(int argc, char** argv, std::vector<std::s
 
 int main(int argc, char** argv) {
   absl::SetProgramUsageMessage("meshseg-server --listen HOST:PORT [flags]");
+  absl::FlagsUsageConfig usage_config;
+  usage_config.version_string = [] { return std::string("meshseg-server " MESHSEG_VERSION "\n"); };
+  absl::SetFlagsUsageConfig(usage_config);
   std::vector<std::string> storage;
   std::vector<char*> args = UnderscoreFlagNames(argc, argv, storage);
   absl::ParseCommandLine(static_cast<int>(args.size()), args.data());
+  absl::StatusOr<meshseg::server::LogFormat> log_format =
+      meshseg::server::ParseLogFormat(absl::GetFlag(FLAGS_log_format));
+  if (!log_format.ok()) {
+    std::fprintf(stderr, "meshseg-server: %s\n", std::string(log_format.status().message()).c_str());
+    return 1;
+  }
+  meshseg::server::SetLogFormat(*log_format);
 
   // Block the shutdown signals in every thread; this one waits for them.
   sigset_t signals;
@@ -96,6 +112,7 @@ int main(int argc, char** argv) {
   options.spool_dir = absl::GetFlag(FLAGS_spool_dir);
   options.result_ttl = absl::GetFlag(FLAGS_result_ttl);
   options.shutdown_grace = absl::GetFlag(FLAGS_shutdown_grace);
+  options.metrics_listen = absl::GetFlag(FLAGS_metrics_listen);
 
   auto server = meshseg::server::Server::Start(options);
   if (!server.ok()) {

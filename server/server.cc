@@ -16,6 +16,8 @@
 #include "meshseg/status_macros.h"
 #include "server/backend.h"
 #include "server/log.h"
+#include "server/metrics.h"
+#include "server/metrics_listener.h"
 #include "server/service.h"
 #include "server/worker_pool.h"
 
@@ -32,6 +34,7 @@ constexpr absl::Duration kCallDrainTime = absl::Seconds(2);
 struct Server::Parts {
   ServerOptions options;
   std::unique_ptr<Backend> backend;
+  std::unique_ptr<MetricsListener> metrics;  // --metrics-listen; reads the backend
   std::unique_ptr<SegmentationService> service;  // roles all and api
   std::unique_ptr<WorkerPool> workers;           // roles all and worker
   std::unique_ptr<grpc::Server> grpc_server;
@@ -64,6 +67,8 @@ Server::Server(std::unique_ptr<Parts> parts) : parts_(std::move(parts)) {}
 Server::~Server() {
   Shutdown();
   Wait();
+  parts_->metrics.reset();
+  Metrics::Global().SetGauges({});  // they read the backend, about to go
 }
 
 absl::StatusOr<std::unique_ptr<Server>> Server::Start(ServerOptions options) {
@@ -75,6 +80,14 @@ absl::StatusOr<std::unique_ptr<Server>> Server::Start(ServerOptions options) {
   if (o.role != Role::kWorker) {
     parts->service = std::make_unique<SegmentationService>(*b.store, *b.queue, *b.blobs, *b.spool,
                                                            o.max_upload_bytes);
+  }
+
+  Metrics::Global().SetBuildInfo(RoleName(o.role), o.queue.empty() ? "embedded" : "redis");
+  if (!o.metrics_listen.empty()) {
+    MESHSEG_ASSIGN_OR_RETURN(parts->metrics, MetricsListener::Start(o.metrics_listen, [] {
+                               return Metrics::Global().Exposition();
+                             }));
+    Log("metrics_listening", {{"address", parts->metrics->address()}});
   }
 
   grpc::EnableDefaultHealthCheckService(true);
@@ -95,6 +108,14 @@ absl::StatusOr<std::unique_ptr<Server>> Server::Start(ServerOptions options) {
   if (o.role != Role::kWorker) {
     parts->sweeper = std::jthread([p](std::stop_token stop) { p->Sweep(stop); });
   }
+  // Set last: they read the backend, which lives as long as the server.
+  Metrics::Global().SetGauges(
+      {.queued = [&b]() -> std::optional<int64_t> {
+         const absl::StatusOr<int> size = b.queue->Size();
+         return size.ok() ? std::optional<int64_t>(*size) : std::nullopt;
+       },
+       .running = [&b] { return static_cast<int64_t>(b.store->running().Ids().size()); },
+       .admission_reserved_bytes = {}});
   Log("server_started", {{"listen", o.listen},
                          {"port", absl::StrCat(parts->port)},
                          {"role", RoleName(o.role)},

@@ -57,6 +57,8 @@ struct ServerOptions {
   absl::Duration result_ttl = absl::Hours(24);
   // Running jobs get this long to finish on shutdown before they are cancelled.
   absl::Duration shutdown_grace = absl::Seconds(30);
+  // HOST:PORT of the Prometheus endpoint (GET /metrics); empty = none.
+  std::string metrics_listen = {};
   // The job itself. Empty = RunPipeline.
   JobRunner runner = {};
 };

@@ -9,6 +9,7 @@
 #include "meshseg/proto/grpc_status.h"
 #include "meshseg/status_macros.h"
 #include "server/log.h"
+#include "server/metrics.h"
 #include "server/receive_upload.h"
 #include "server/service.h"
 #include "server/spool.h"
@@ -82,6 +83,7 @@ grpc::Status SegmentationService::Upload(grpc::ServerContext* context,
       Log("job_dropped", {{"job", job_id}, {"error", std::string(pushed.message())}});
       return pushed;
     }
+    Metrics::Global().UploadAccepted(header.total_size());
     response->set_job_id(job_id);
     response->set_queue_position(std::max(0, queue_.Position(job_id)));
     return absl::OkStatus();
@@ -92,6 +94,7 @@ grpc::Status SegmentationService::Upload(grpc::ServerContext* context,
     std::error_code ec;
     if (!scratch.empty()) std::filesystem::remove(scratch, ec);
     if (!record.upload_key().empty()) (void)blobs_.Remove(record.upload_key());
+    Metrics::Global().UploadRejected(status.code());
     Log("upload_rejected", {{"code", absl::StatusCodeToString(status.code())},
                             {"error", std::string(status.message())},
                             {"peer", context->peer()}});

@@ -13,6 +13,7 @@
 #include "meshseg/proto/convert.h"
 #include "meshseg/status_macros.h"
 #include "server/log.h"
+#include "server/metrics.h"
 #include "server/retry.h"
 
 namespace meshseg::server {
@@ -83,9 +84,11 @@ absl::Status WorkerPool::Execute(const RunSpec& spec, JobOutput& output) {
   // Report a stage change or a step of at least 1 %, not every call.
   std::string last_stage;
   double last_fraction = -1.0;
+  StageTimer stages(job_id);  // its destructor ends the last stage on an early return
   RunContext ctx;
   ctx.stop = spec.stop;
   ctx.on_progress = [&](std::string_view stage, double fraction) {
+    stages.Enter(stage);
     if (stage == last_stage && std::abs(fraction - last_fraction) < 0.01 && fraction < 1.0) {
       return;
     }
@@ -95,6 +98,7 @@ absl::Status WorkerPool::Execute(const RunSpec& spec, JobOutput& output) {
   };
   MESHSEG_ASSIGN_OR_RETURN(const PipelineResult result,
                            RunGuarded(runner_, upload->path(), params, ctx));
+  stages.Finish();
   const std::string scratch = scratch_.ScratchPath(job_id, "result.pb");
   MESHSEG_ASSIGN_OR_RETURN(output.result_size, WriteResult(result, scratch));
   if (absl::Status put = blobs_.Put(ResultKey(job_id), scratch); !put.ok()) {
@@ -119,6 +123,7 @@ void WorkerPool::Run(const Lease& lease) {
   if (started->outcome == JobStore::StartOutcome::kGaveUp) {
     (void)blobs_.Remove(record.upload_key());
     queue_.Done(lease);
+    Metrics::Global().JobFinished("FAILED", std::nullopt);
     Log("job_finished", {{"job", job_id},
                          {"state", "FAILED"},
                          {"attempts", absl::StrCat(record.job().attempts())},
@@ -132,6 +137,8 @@ void WorkerPool::Run(const Lease& lease) {
     Log("test_abort_on_file", {{"job", job_id}, {"file", abort_on_file_}});
     std::abort();  // test-only poison input (see worker_pool.h)
   }
+  Metrics::Global().JobStarted(absl::FromUnixMillis(record.job().created_unix_ms()),
+                              record.job().attempts());
   const absl::Time start = absl::Now();
   JobOutput output;
   const absl::Status status = Execute(started->spec, output);
@@ -149,6 +156,8 @@ void WorkerPool::Run(const Lease& lease) {
     return store_.Finish(job_id, status, output);
   });
   if (!finished.ok()) return;                // not recorded: the queue hands it out again
+  Metrics::Global().JobFinished(StateName(status), absl::Now() - start);
+  if (status.ok()) Metrics::Global().ResultWritten(output.result_size);
   (void)blobs_.Remove(record.upload_key());  // the upload is not needed any more
   queue_.Done(lease);
   Log("job_finished",
