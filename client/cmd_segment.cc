@@ -1,4 +1,4 @@
-// meshseg segment INPUT -o RESULT.json [--colored-ply OUT.ply]
+// meshseg segment INPUT -o RESULT.json [--colored-ply OUT.ply] [--step OUT.step [--unit U]]
 //   [--distance-tolerance X] [--angle-tolerance DEG] [--format FMT] [--server HOST:PORT]
 // In-process by default; with --server the same result comes from the service.
 #include <cstdio>
@@ -17,11 +17,20 @@
 namespace meshseg::cli {
 namespace {
 
+// The STEP file asked for with --step (and its --unit), or none.
+struct StepRequest {
+  std::string path;
+  std::string unit;
+};
+
 absl::StatusOr<v1::SegmentationResult> SegmentOffline(const std::string& path,
                                                       const v1::SegmentOptions& options,
-                                                      const std::string& format_hint) {
+                                                      const std::string& format_hint,
+                                                      const StepRequest& step) {
   MESHSEG_ASSIGN_OR_RETURN(PipelineParams params, FromProto(options));
   MESHSEG_ASSIGN_OR_RETURN(params.format, FormatFromHint(format_hint));
+  params.step_path = step.path;
+  params.brep.length_unit = step.unit;
   ProgressPrinter progress;
   RunContext ctx;
   ctx.on_progress = [&](std::string_view stage, double f) { progress.Update(stage, f); };
@@ -72,7 +81,7 @@ absl::Status RunSegment(const Argv& argv) {
       const Args args,
       Args::Parse(argv,
                   {"-o", "--colored-ply", "--distance-tolerance", "--angle-tolerance", "--format",
-                   "--server"},
+                   "--server", "--step", "--unit"},
                   {}, 1));
   const std::string& input = args.positional(0);
   const std::optional<std::string> out = args.Value("-o");
@@ -89,9 +98,14 @@ absl::Status RunSegment(const Argv& argv) {
   MESHSEG_ASSIGN_OR_RETURN(const std::optional<FileFormat> format,
                            FormatFromHint(options.format_hint));
 
+  const StepRequest step{args.Value("--step").value_or(""),
+                         args.Value("--unit").value_or(BrepParams{}.length_unit)};
+  if (step.path.empty() && args.Has("--unit")) {
+    return absl::InvalidArgumentError("--unit needs --step OUT.step");
+  }
   absl::StatusOr<v1::SegmentationResult> result =
       args.Has("--server") ? SegmentOnServer(args, input, options)
-                           : SegmentOffline(input, options.segment, options.format_hint);
+                           : SegmentOffline(input, options.segment, options.format_hint, step);
   if (!result.ok()) return result.status();
   MESHSEG_ASSIGN_OR_RETURN(const std::string json, ResultJson(*result));
   MESHSEG_RETURN_IF_ERROR(WriteTextFile(*out, json));
@@ -101,6 +115,14 @@ absl::Status RunSegment(const Argv& argv) {
   std::fputs(RegionTable(*result).c_str(), stdout);
   std::fputs(TopologySummary(*result).c_str(), stdout);
   std::printf("wrote %s\n", out->c_str());
+  if (!step.path.empty()) {
+    std::fputs(BrepSummary(result->brep()).c_str(), stdout);
+    if (!result->brep().error().empty()) {
+      return absl::FailedPreconditionError(
+          absl::StrCat("no STEP file written: ", result->brep().error()));
+    }
+    std::printf("wrote %s\n", step.path.c_str());
+  }
   return absl::OkStatus();
 }
 

@@ -22,6 +22,7 @@ constexpr char kUsage[] =
     "  watch JOB --server HOST:PORT\n"
     "  result JOB -o RESULT.json --server HOST:PORT\n"
     "  cancel JOB --server HOST:PORT\n"
+    "  brep RESULT.json MESH -o OUT.step [--unit mm|cm|m|in|...]\n"
     "(--server defaults to $MESHSEG_SERVER)\n";
 
 }  // namespace
@@ -34,6 +35,7 @@ int main(int argc, char** argv) {
       {"jobs", meshseg::cli::RunJobs},       {"status", meshseg::cli::RunStatus},
       {"watch", meshseg::cli::RunWatch},     {"result", meshseg::cli::RunResult},
       {"cancel", meshseg::cli::RunCancel},  {"reconstruct", meshseg::cli::RunReconstruct},
+      {"brep", meshseg::cli::RunBrep},
   };
   if (argc < 2 || std::string(argv[1]) == "help" || std::string(argv[1]) == "--help") {
     std::fputs(kUsage, argc < 2 ? stderr : stdout);
