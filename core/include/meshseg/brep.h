@@ -39,7 +39,7 @@ struct BrepParams {
   // Normal-direction noise of the mesh, model units (the `segment` stage's
   // estimate, SegmentEstimates::noise_sigma). Unset = the median rms
   // distance of the regions from their surfaces.
-  std::optional<double> noise_sigma;
+  std::optional<double> noise_sigma = std::nullopt;
   // Sewing tolerance, in noise sigmas: edges of two faces closer than this
   // are one edge. 3 sigma holds 99.7 % of Gaussian noise.
   double sewing_tolerance = 3.0;
@@ -50,7 +50,7 @@ struct BrepParams {
   double curve_tolerance = 2.0;
   // Name written into the STEP product (e.g. the input file name); empty =
   // the mesh's name.
-  std::string product_name;
+  std::string product_name = {};
 };
 
 // A face that could not be built.

@@ -89,6 +89,16 @@ std::optional<double> SeamCrossing(const TrimmedCurve& t, const Handle(Geom_Surf
   return std::nullopt;
 }
 
+// Two surfaces crossing at angle theta: moving one by d along its normal
+// moves their intersection by d / sin(theta) across the curve (and by
+// sqrt(2 r d) where they touch, theta = 0). The intersection is the edge
+// only where a surface offset within the noise keeps it within the curve
+// tolerance; theta is the mean angle between the normals along the curve.
+bool Transversal(const BoundaryCurve& c, const EdgeTolerances& t) {
+  const double theta = c.normal_angle_deg * M_PI / 180.0;
+  return std::sin(std::min(theta, 0.5 * M_PI)) * t.curve > t.surface_offset;
+}
+
 const char* EdgeErrorName(BRepBuilderAPI_EdgeError e) {
   switch (e) {
     case BRepBuilderAPI_EdgeDone: return "done";
@@ -119,7 +129,8 @@ BoundaryEdges MakeBoundaryEdges(const TriMesh& mesh, const Topology& topology,
     std::vector<Handle(Geom_Surface)> around;
     for (const int r : regions) around.push_back(surfaces[r]);
     position[cluster] =
-        CornerPoint(topology.corners[cluster].position, around, tolerances.corner_move);
+        CornerPoint(topology.corners[cluster].position, around, tolerances.corner_move,
+                    {.surface_offset = tolerances.surface_offset, .spacing = tolerances.l_avg});
   }
   auto cluster_of = [&](int corner) { return topology.corners[corner].cluster; };
 
@@ -145,7 +156,8 @@ BoundaryEdges MakeBoundaryEdges(const TriMesh& mesh, const Topology& topology,
                         .hint = c.geometry,
                         .tolerance = tolerances.curve,
                         .exact_gap = tolerances.exact_gap,
-                        .l_avg = tolerances.l_avg};
+                        .l_avg = tolerances.l_avg,
+                        .transversal = Transversal(c, tolerances)};
     // A region without a surface leaves its curves to the other side's.
     if (surfaces[request.left].IsNull()) std::swap(request.left, request.right);
     if (request.left < 0 || surfaces[request.left].IsNull()) {
@@ -183,7 +195,9 @@ BoundaryEdges MakeBoundaryEdges(const TriMesh& mesh, const Topology& topology,
   std::vector<char> moved_cluster(topology.corners.size(), 0);
   for (const auto& [cluster, curves] : exact_at) {
     if (curves.size() < 2) continue;
-    const Vector3d p = CornerOnCurves(position[cluster], curves, tolerances.corner_move);
+    const Vector3d p =
+        CornerOnCurves(position[cluster], curves, tolerances.corner_move,
+                       {.surface_offset = tolerances.surface_offset, .spacing = tolerances.l_avg});
     if ((p - position[cluster]).norm() > tolerances.exact_gap) {
       position[cluster] = p;
       moved_cluster[cluster] = 1;

@@ -25,6 +25,9 @@ struct EdgeTolerances {
   double exact_gap = 0.0;  // a curve this close to both surfaces lies on them
   double corner_move = 0.0;  // how far a corner may move onto its surfaces
   double l_avg = 0.0;
+  // How far a fitted surface may lie off the true one (3 noise sigmas), model
+  // units: it decides where an intersection of two surfaces can be trusted.
+  double surface_offset = 0.0;
 };
 
 struct BoundaryEdges {

@@ -165,7 +165,8 @@ absl::StatusOr<BrepReport> Build(const Mesh& mesh, std::span<const int> face_lab
       {.curve = curve_tolerance,
        .exact_gap = std::max(kExactGap * diagonal, Precision::Confusion()),
        .corner_move = kCornerMove * l_avg + 3.0 * sigma,
-       .l_avg = l_avg});
+       .l_avg = l_avg,
+       .surface_offset = 3.0 * sigma});
   report.exact_edge_count = edges.exact_count;
   report.fitted_edge_count = edges.fitted_count;
   report.edge_count = edges.exact_count + edges.fitted_count;

@@ -1,5 +1,6 @@
 #include "brep/corner_points.h"
 
+#include <algorithm>
 #include <optional>
 
 #include <Eigen/Dense>
@@ -10,19 +11,47 @@ namespace meshseg::brep_internal {
 namespace {
 
 constexpr int kMaxIterations = 20;
-// Weight of the pull towards the start relative to a unit-normal row: small
-// enough to leave the surfaces' common point where they cross transversally,
-// large enough to make the free directions well posed.
-constexpr double kPull = 1e-6;
+// The least weight of the pull towards the start relative to a unit-normal
+// row: it only makes the directions nothing constrains well posed.
+constexpr double kLeastPull = 1e-10;
+
+// The Gauss-Newton step for the normal equations `jtj` x = -`jtr`, solved
+// exactly along the eigendirections the rows fix (eigenvalue >= `resolved`)
+// and pulled back towards the start (`offset` = x - start) with weight
+// `resolved` along the others.
+Eigen::Vector3d Step(const Eigen::Matrix3d& jtj, const Eigen::Vector3d& jtr,
+                     const Eigen::Vector3d& offset, double resolved) {
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(jtj);
+  Eigen::Vector3d step = Eigen::Vector3d::Zero();
+  for (int i = 0; i < 3; ++i) {
+    const Eigen::Vector3d e = eigen.eigenvectors().col(i);
+    const double lambda = std::max(eigen.eigenvalues()(i), 0.0);
+    const double g = e.dot(jtr);
+    step -= (lambda >= resolved ? g / lambda
+                                : (g + resolved * e.dot(offset)) / (lambda + resolved)) *
+            e;
+  }
+  return step;
+}
+
+// A direction fixes the corner when moving the corner by `spacing` along it
+// changes the rows' distances by more than `surface_offset`: the rows'
+// eigenvalue along it exceeds (surface_offset / spacing)^2.
+double Resolved(const CornerNoise& noise) {
+  const double r = noise.spacing > 0.0 ? noise.surface_offset / noise.spacing : 0.0;
+  return std::max(r * r, kLeastPull);
+}
 
 }  // namespace
 
 Eigen::Vector3d CornerPoint(const Eigen::Vector3d& start,
-                            std::span<const Handle(Geom_Surface)> surfaces, double max_move) {
+                            std::span<const Handle(Geom_Surface)> surfaces, double max_move,
+                            const CornerNoise& noise) {
+  const double resolved = Resolved(noise);
   Eigen::Vector3d x = start;
   for (int it = 0; it < kMaxIterations; ++it) {
-    Eigen::Matrix3d jtj = kPull * Eigen::Matrix3d::Identity();
-    Eigen::Vector3d jtr = kPull * (x - start);
+    Eigen::Matrix3d jtj = Eigen::Matrix3d::Zero();
+    Eigen::Vector3d jtr = Eigen::Vector3d::Zero();
     int rows = 0;
     for (const Handle(Geom_Surface) & s : surfaces) {
       if (s.IsNull()) continue;
@@ -33,7 +62,7 @@ Eigen::Vector3d CornerPoint(const Eigen::Vector3d& start,
       ++rows;
     }
     if (rows == 0) return start;
-    const Eigen::Vector3d step = -jtj.ldlt().solve(jtr);
+    const Eigen::Vector3d step = Step(jtj, jtr, x - start, resolved);
     x += step;
     if ((x - start).norm() > max_move) return start;
     if (step.norm() < 1e-12 * (1.0 + max_move)) break;
@@ -42,13 +71,15 @@ Eigen::Vector3d CornerPoint(const Eigen::Vector3d& start,
 }
 
 Eigen::Vector3d CornerOnCurves(const Eigen::Vector3d& start,
-                               std::span<const Handle(Geom_Curve)> curves, double max_move) {
+                               std::span<const Handle(Geom_Curve)> curves, double max_move,
+                               const CornerNoise& noise) {
+  const double resolved = Resolved(noise);
   Eigen::Vector3d x = start;
   for (int it = 0; it < kMaxIterations; ++it) {
     // Gauss-Newton on the distances to the curves: each curve constrains the
     // two directions across its tangent.
-    Eigen::Matrix3d jtj = kPull * Eigen::Matrix3d::Identity();
-    Eigen::Vector3d jtr = kPull * (x - start);
+    Eigen::Matrix3d jtj = Eigen::Matrix3d::Zero();
+    Eigen::Vector3d jtr = Eigen::Vector3d::Zero();
     for (const Handle(Geom_Curve) & c : curves) {
       const double t = ClosestParameter(c, x, c->FirstParameter(), c->LastParameter());
       gp_Pnt p;
@@ -59,7 +90,7 @@ Eigen::Vector3d CornerOnCurves(const Eigen::Vector3d& start,
       jtj += across;
       jtr += across * (x - ToEigen(p));
     }
-    const Eigen::Vector3d step = -jtj.ldlt().solve(jtr);
+    const Eigen::Vector3d step = Step(jtj, jtr, x - start, resolved);
     x += step;
     if ((x - start).norm() > max_move) return start;
     if (step.norm() < 1e-12 * (1.0 + max_move)) break;

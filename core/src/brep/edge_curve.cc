@@ -69,8 +69,11 @@ std::optional<EdgeCurve> ChooseEdgeCurve(const EdgeRequest& request,
     }
   };
   if (!pair[1].IsNull()) {
-    for (const Handle(Geom_Curve) & branch : cache->Branches(request.left, request.right, surfaces)) {
-      consider(branch, true);
+    if (request.transversal) {
+      for (const Handle(Geom_Curve) & branch :
+           cache->Branches(request.left, request.right, surfaces)) {
+        consider(branch, true);
+      }
     }
     if (best) return best;
     // A tangent contact (fillet) has no transversal intersection; the

@@ -51,6 +51,11 @@ struct EdgeRequest {
   double tolerance = 0.0;   // accepted deviation from the polyline, model units
   double exact_gap = 0.0;   // a curve this close to both surfaces lies on them
   double l_avg = 0.0;
+  // The surfaces cross at an angle that places their intersection within
+  // `tolerance` of the true edge (boundary_edges.cc). False along tangent
+  // contacts (fillets): there two fitted surfaces cross, if at all, where
+  // their fit errors put them, not where the faces meet.
+  bool transversal = true;
 };
 
 // Returns the edge geometry of `request`, or nullopt when not even a fitted

@@ -85,7 +85,6 @@ std::optional<TrimmedCurve> FitEdgeCurve(std::span<const Vector3d> polyline,
   const int count =
       std::clamp(static_cast<int>(length / std::max(l_avg, 1e-300)), kMinPoints, kMaxPoints);
   std::vector<Vector3d> pts = Resample(polyline, count);
-  if (pts.size() < 3) pts = Resample(std::vector<Vector3d>{pts.front(), pts.back()}, 3);
   // Closed: no vertex, or both ends on one vertex.
   const bool closed = !start || (*end - *start).norm() <= 1e-6 * length;
   if (start) {

@@ -78,7 +78,7 @@ double DistanceToPolyline(const Vector3d& p, std::span<const Vector3d> points) {
 }
 
 std::vector<Vector3d> Resample(std::span<const Vector3d> polyline, int count) {
-  if (static_cast<int>(polyline.size()) <= count) return {polyline.begin(), polyline.end()};
+  if (polyline.size() < 2 || count < 2) return {polyline.begin(), polyline.end()};
   std::vector<double> length(polyline.size(), 0.0);
   for (size_t i = 1; i < polyline.size(); ++i) {
     length[i] = length[i - 1] + (polyline[i] - polyline[i - 1]).norm();

@@ -41,8 +41,10 @@ void MeasureGap(std::span<const Handle(Geom_Surface)> surfaces, TrimmedCurve* c)
 // Returns the distance from `p` to the polyline through `points`.
 double DistanceToPolyline(const Eigen::Vector3d& p, std::span<const Eigen::Vector3d> points);
 
-// Returns up to `count` points of `polyline` spread evenly by arc length,
-// both ends included.
+// Returns `count` points of `polyline` spread evenly by arc length, both
+// ends included (a polyline of fewer points gains points on its segments,
+// so that parameters taken at consecutive samples of a periodic curve stay
+// within half a period). Fewer than 2 points or `count` < 2: the input.
 std::vector<Eigen::Vector3d> Resample(std::span<const Eigen::Vector3d> polyline, int count);
 
 }  // namespace meshseg::brep_internal
