@@ -12,6 +12,10 @@ PACKAGES=(
   libhiredis-dev redis-server
   libssl-dev
   nodejs
+  # brep stage (STEP export): OpenCASCADE 7.6; the CMake config's components
+  # FoundationClasses ... DataExchange need all five -dev packages.
+  libocct-foundation-dev libocct-modeling-data-dev libocct-modeling-algorithms-dev
+  libocct-ocaf-dev libocct-visualization-dev libocct-data-exchange-dev
 )
 
 SUDO=""
