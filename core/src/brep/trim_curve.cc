@@ -58,6 +58,21 @@ Handle(Geom_Curve) Untrimmed(Handle(Geom_Curve) c) {
   }
 }
 
+// True if `c` runs against the samples' order: their parameters mostly
+// decrease. Steps longer than half the parameter range of a closed curve
+// that is not periodic are the jump across its closure (where the first
+// samples of a closed boundary lie), not a direction.
+bool RunsBackwards(const Handle(Geom_Curve) & c, const std::vector<double>& t) {
+  const double range = c->LastParameter() - c->FirstParameter();
+  const bool jumps = !c->IsPeriodic() && c->IsClosed() && !Precision::IsInfinite(range);
+  double sum = 0.0;
+  for (size_t i = 1; i < t.size(); ++i) {
+    const double step = t[i] - t[i - 1];
+    if (!jumps || std::abs(step) < 0.5 * range) sum += step;
+  }
+  return sum < 0.0;
+}
+
 // `t` moved by whole periods to lie nearest `target`.
 double Nearest(double t, double target, double period) {
   return t + std::round((target - t) / period) * period;
@@ -104,7 +119,7 @@ std::optional<TrimmedCurve> TrimAlong(const Handle(Geom_Curve) & curve,
   TrimmedCurve out;
   out.curve = Untrimmed(curve);
   std::vector<double> t = UnwrappedParameters(out.curve, samples);
-  if (t.back() < t.front()) {
+  if (RunsBackwards(out.curve, t)) {
     out.curve = out.curve->Reversed();
     t = UnwrappedParameters(out.curve, samples);
   }

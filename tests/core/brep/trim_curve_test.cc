@@ -3,16 +3,18 @@
 // rejected when it cannot follow it.
 #include "brep/trim_curve.h"
 
-#include <gtest/gtest.h>
+#include <cmath>
+#include <numbers>
+#include <vector>
 
 #include <GC_MakeSegment.hxx>
 #include <Geom_Circle.hxx>
 #include <Geom_Line.hxx>
 #include <Geom_Plane.hxx>
-#include <cmath>
+#include <Geom_TrimmedCurve.hxx>
+#include <GeomConvert.hxx>
 #include <gp_Ax2.hxx>
-#include <numbers>
-#include <vector>
+#include <gtest/gtest.h>
 
 #include "brep/surface_query.h"
 
@@ -46,6 +48,27 @@ TEST(TrimAlong, ClosedClockwiseBoundaryReversesTheCircleOnceRound) {
   const Vector3d ahead = ToEigen(t->curve->Value(t->first + 0.1));
   EXPECT_LT(ahead.y(), 0.0) << "clockwise about +z";
   EXPECT_LT(t->deviation, 0.01);
+}
+
+TEST(TrimAlong, ClosedBsplineIsOrientedByItsSamplesNotByItsClosure) {
+  // A closed, non-periodic B-spline circle (as GeomAPI_IntSS returns) and a
+  // boundary that starts on its closure point: the first sample's parameter
+  // is its first or its last, whichever the projection picks.
+  const Handle(Geom_Curve) bspline = GeomConvert::CurveToBSplineCurve(
+      new Geom_TrimmedCurve(UnitZCircle(5.0), 0.0, 2.0 * std::numbers::pi));
+  ASSERT_FALSE(bspline->IsPeriodic());
+  ASSERT_TRUE(bspline->IsClosed());
+  for (const bool counterclockwise : {true, false}) {
+    const std::vector<Vector3d> polyline =
+        counterclockwise ? Arc(5.0, 0.0, 2.0 * std::numbers::pi, 60)
+                         : Arc(5.0, 2.0 * std::numbers::pi, 0.0, 60);
+    const std::optional<TrimmedCurve> t =
+        TrimAlong(bspline, polyline, std::nullopt, std::nullopt);
+    ASSERT_TRUE(t.has_value()) << counterclockwise;
+    const Vector3d ahead = ToEigen(t->curve->Value(t->first + 0.05 * (t->last - t->first)));
+    EXPECT_EQ(ahead.y() > 0.0, counterclockwise) << ahead.transpose();
+    EXPECT_LT(t->deviation, 0.01);
+  }
 }
 
 TEST(TrimAlong, ArcAcrossTheParameterOriginKeepsItsShortWay) {
