@@ -52,7 +52,7 @@ TEST_P(WriteStepOnParts, OneValidSolidWithinTheNoise) {
   absl::StatusOr<BrepReport> report =
       WriteStep(part->mesh, truth.face_labels, truth.regions, *topo, path, {.noise_sigma = sigma});
   ASSERT_TRUE(report.ok()) << report.status();
-  for (const BrepFaceFailure &f : report->failures) {
+  for (const BrepFaceFailure& f : report->failures) {
     ADD_FAILURE() << name << ": region " << f.region << " patch " << f.patch << ": " << f.reason;
   }
 

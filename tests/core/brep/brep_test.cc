@@ -33,9 +33,9 @@ struct Case {
   Topology topology;
 };
 
-const Case &SmallBlock() {
-  static const Case *c = [] {
-    auto *out = new Case;
+const Case& SmallBlock() {
+  static const Case* c = [] {
+    auto* out = new Case;
     absl::StatusOr<GeneratedPart> part = GeneratePart("small_block", {.noise = 0.05});
     EXPECT_TRUE(part.ok()) << part.status();
     out->part = *std::move(part);
@@ -49,15 +49,15 @@ const Case &SmallBlock() {
   return *c;
 }
 
-absl::StatusOr<BrepReport> Write(const Case &c, const std::string &path,
-                                 const BrepParams &params = {}) {
+absl::StatusOr<BrepReport> Write(const Case& c, const std::string& path,
+                                 const BrepParams& params = {}) {
   BrepParams p = params;
   if (!p.noise_sigma) p.noise_sigma = c.part.noise;
   return WriteStep(c.part.mesh, c.truth.face_labels, c.truth.regions, c.topology, path, p);
 }
 
 TEST(WriteStep, SmallBlockIsOneValidSolidWithANamedFacePerRegion) {
-  const Case &c = SmallBlock();
+  const Case& c = SmallBlock();
   const std::string path = testing_files::ScratchPath("small_block.step");
   absl::StatusOr<BrepReport> report = Write(c, path);
   ASSERT_TRUE(report.ok()) << report.status();
@@ -83,7 +83,7 @@ TEST(WriteStep, SmallBlockIsOneValidSolidWithANamedFacePerRegion) {
   EXPECT_NEAR(facts.volume, report->volume, 1e-6 * mesh_volume);
   // Every region is there by name, with its surface type.
   std::set<std::string> names(model->face_names.begin(), model->face_names.end());
-  for (const Region &r : c.truth.regions) {
+  for (const Region& r : c.truth.regions) {
     const std::string name = "region " + std::to_string(r.id) + " " + SurfaceTypeName(r.type);
     EXPECT_TRUE(names.count(name)) << name;
   }
@@ -91,7 +91,7 @@ TEST(WriteStep, SmallBlockIsOneValidSolidWithANamedFacePerRegion) {
 }
 
 TEST(WriteStep, CoordinatesAreWrittenInTheDeclaredUnit) {
-  const Case &c = SmallBlock();
+  const Case& c = SmallBlock();
   const std::string path = testing_files::ScratchPath("small_block_m.step");
   absl::StatusOr<BrepReport> report = Write(c, path, {.length_unit = "m"});
   ASSERT_TRUE(report.ok()) << report.status();
@@ -106,7 +106,7 @@ TEST(WriteStep, CoordinatesAreWrittenInTheDeclaredUnit) {
 }
 
 TEST(WriteStep, AFaceThatCannotBeBuiltIsReportedAndTheRestWritten) {
-  const Case &c = SmallBlock();
+  const Case& c = SmallBlock();
   const int bore = testing::PrimitiveId(c.part, "bore");
   ASSERT_GE(bore, 0);
   std::vector<Region> regions = c.truth.regions;
@@ -130,11 +130,11 @@ TEST(WriteStep, AFaceThatCannotBeBuiltIsReportedAndTheRestWritten) {
 }
 
 TEST(WriteStep, BadInputNamesTheProblem) {
-  const Case &c = SmallBlock();
+  const Case& c = SmallBlock();
   const std::string path = testing_files::ScratchPath("never.step");
-  const Mesh &mesh = c.part.mesh;
+  const Mesh& mesh = c.part.mesh;
   auto write = [&](std::span<const int> labels, std::span<const Region> regions,
-                   const Topology &topo, const BrepParams &params) {
+                   const Topology& topo, const BrepParams& params) {
     return WriteStep(mesh, labels, regions, topo, path, params).status();
   };
   absl::Status s = write(c.truth.face_labels, c.truth.regions, c.topology, {.length_unit = "yd"});
@@ -164,9 +164,9 @@ TEST(WriteStep, BadInputNamesTheProblem) {
 }
 
 TEST(WriteStep, NoBuildableFaceIsAFailedPrecondition) {
-  const Case &c = SmallBlock();
+  const Case& c = SmallBlock();
   std::vector<Region> regions = c.truth.regions;
-  for (Region &r : regions) {
+  for (Region& r : regions) {
     r.surface = Sphere{Eigen::Vector3d::Zero(), -1.0};
     r.type = SurfaceType::kSphere;
   }
@@ -178,7 +178,7 @@ TEST(WriteStep, NoBuildableFaceIsAFailedPrecondition) {
 }
 
 TEST(WriteStep, UnwritablePathIsInternalNamingIt) {
-  const Case &c = SmallBlock();
+  const Case& c = SmallBlock();
   const std::string path = testing_files::ScratchPath("missing_dir/out.step");
   const absl::Status s = Write(c, path).status();
   EXPECT_TRUE(absl::IsInternal(s)) << s;
@@ -186,7 +186,7 @@ TEST(WriteStep, UnwritablePathIsInternalNamingIt) {
 }
 
 TEST(WriteStep, StopRequestedIsCancelled) {
-  const Case &c = SmallBlock();
+  const Case& c = SmallBlock();
   std::stop_source stop;
   stop.request_stop();
   RunContext ctx;

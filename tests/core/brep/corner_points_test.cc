@@ -2,16 +2,16 @@
 // between them where they only touch, the start where nothing constrains.
 #include "brep/corner_points.h"
 
-#include <gtest/gtest.h>
+#include <cmath>
 
 #include <Geom_Circle.hxx>
 #include <Geom_CylindricalSurface.hxx>
 #include <Geom_Line.hxx>
 #include <Geom_Plane.hxx>
-#include <cmath>
 #include <gp_Ax2.hxx>
 #include <gp_Ax3.hxx>
 #include <gp_Pln.hxx>
+#include <gtest/gtest.h>
 
 namespace meshseg::brep_internal {
 namespace {
@@ -20,7 +20,7 @@ using Eigen::Vector3d;
 
 constexpr double kExact = 1e-9;
 
-Handle(Geom_Surface) PlaneAt(const gp_Pnt &p, const gp_Dir &n) { return new Geom_Plane(p, n); }
+Handle(Geom_Surface) PlaneAt(const gp_Pnt& p, const gp_Dir& n) { return new Geom_Plane(p, n); }
 
 TEST(CornerPoint, ThreePlanesGiveTheirCommonPoint) {
   const Handle(Geom_Surface) planes[3] = {PlaneAt(gp_Pnt(1, 0, 0), gp_Dir(1, 0, 0)),

@@ -43,23 +43,23 @@ namespace {
 using Eigen::Vector3d;
 
 struct Cloud {
-  const std::vector<Vector3d> &points;
+  const std::vector<Vector3d>& points;
   size_t kdtree_get_point_count() const { return points.size(); }
   double kdtree_get_pt(size_t i, size_t dim) const { return points[i][dim]; }
   template <class Box>
-  bool kdtree_get_bbox(Box &) const {
+  bool kdtree_get_bbox(Box&) const {
     return false;
   }
 };
 using KdTree = nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, Cloud>,
                                                    Cloud, 3, uint32_t>;
 
-Vector3d ToEigen(const gp_Pnt &p) { return {p.X(), p.Y(), p.Z()}; }
+Vector3d ToEigen(const gp_Pnt& p) { return {p.X(), p.Y(), p.Z()}; }
 
 // Distance from p to triangle (a, b, c) (Ericson, Real-Time Collision
 // Detection 5.1.5).
-double PointTriangleDistance(const Vector3d &p, const Vector3d &a, const Vector3d &b,
-                             const Vector3d &c) {
+double PointTriangleDistance(const Vector3d& p, const Vector3d& a, const Vector3d& b,
+                             const Vector3d& c) {
   const Vector3d ab = b - a, ac = c - a, ap = p - a;
   const double d1 = ab.dot(ap), d2 = ac.dot(ap);
   if (d1 <= 0 && d2 <= 0) return ap.norm();
@@ -83,7 +83,7 @@ double PointTriangleDistance(const Vector3d &p, const Vector3d &a, const Vector3
 
 }  // namespace
 
-absl::StatusOr<StepModel> ReadStep(const std::string &path) {
+absl::StatusOr<StepModel> ReadStep(const std::string& path) {
   STEPControl_Reader reader;
   if (reader.ReadFile(path.c_str()) != IFSelect_RetDone) {
     return absl::InvalidArgumentError(absl::StrCat("cannot read STEP \"", path, "\""));
@@ -96,7 +96,7 @@ absl::StatusOr<StepModel> ReadStep(const std::string &path) {
   const Handle(Transfer_TransientProcess) process =
       reader.WS()->TransferReader()->TransientProcess();
   const Handle(Interface_InterfaceModel) model = reader.WS()->Model();
-  std::map<const TopoDS_TShape *, std::string> names;
+  std::map<const TopoDS_TShape*, std::string> names;
   for (int i = 1; i <= model->NbEntities(); ++i) {
     const Handle(Standard_Transient) entity = model->Value(i);
     const Handle(StepShape_AdvancedFace) face = Handle(StepShape_AdvancedFace)::DownCast(entity);
@@ -114,7 +114,7 @@ absl::StatusOr<StepModel> ReadStep(const std::string &path) {
   return out;
 }
 
-ShapeFacts FactsOf(const TopoDS_Shape &shape) {
+ShapeFacts FactsOf(const TopoDS_Shape& shape) {
   ShapeFacts f;
   f.valid = BRepCheck_Analyzer(shape).IsValid();
   TopTools_IndexedMapOfShape map;
@@ -129,8 +129,8 @@ ShapeFacts FactsOf(const TopoDS_Shape &shape) {
   TopTools_IndexedDataMapOfShapeListOfShape edge_faces;
   TopExp::MapShapesAndUniqueAncestors(shape, TopAbs_EDGE, TopAbs_FACE, edge_faces);
   for (int i = 1; i <= edge_faces.Extent(); ++i) {
-    const TopoDS_Edge &e = TopoDS::Edge(edge_faces.FindKey(i));
-    const TopTools_ListOfShape &around = edge_faces.FindFromIndex(i);
+    const TopoDS_Edge& e = TopoDS::Edge(edge_faces.FindKey(i));
+    const TopTools_ListOfShape& around = edge_faces.FindFromIndex(i);
     if (BRep_Tool::Degenerated(e) || around.Extent() != 1) continue;
     if (!BRep_Tool::IsClosed(e, TopoDS::Face(around.First()))) ++f.free_edges;
   }
@@ -142,7 +142,7 @@ ShapeFacts FactsOf(const TopoDS_Shape &shape) {
   return f;
 }
 
-double EnclosedVolume(const TriMesh &mesh) {
+double EnclosedVolume(const TriMesh& mesh) {
   double six_v = 0.0;
   for (OpenMesh::FaceHandle f : mesh.faces()) {
     auto v = mesh.cfv_begin(f);
@@ -154,7 +154,7 @@ double EnclosedVolume(const TriMesh &mesh) {
   return six_v / 6.0;
 }
 
-FaceSamples SampleFaces(const TopoDS_Shape &shape, double spacing) {
+FaceSamples SampleFaces(const TopoDS_Shape& shape, double spacing) {
   FaceSamples out;
   BRepMesh_IncrementalMesh(shape, spacing, false, 0.3, false);
   struct Piece {
@@ -164,7 +164,7 @@ FaceSamples SampleFaces(const TopoDS_Shape &shape, double spacing) {
   int id = -1;
   for (TopExp_Explorer it(shape, TopAbs_FACE); it.More(); it.Next()) {
     ++id;
-    const TopoDS_Face &face = TopoDS::Face(it.Current());
+    const TopoDS_Face& face = TopoDS::Face(it.Current());
     TopLoc_Location loc;
     const Handle(Poly_Triangulation) tri = BRep_Tool::Triangulation(face, loc);
     if (tri.IsNull() || !tri->HasUVNodes()) {
@@ -219,7 +219,7 @@ FaceSamples SampleFaces(const TopoDS_Shape &shape, double spacing) {
 }
 
 struct ShapeDistance::Impl {
-  Impl(const TopoDS_Shape &shape, double spacing_in)
+  Impl(const TopoDS_Shape& shape, double spacing_in)
       : spacing(spacing_in),
         samples(SampleFaces(shape, spacing_in)),
         cloud{samples.points},
@@ -239,15 +239,15 @@ struct ShapeDistance::Impl {
   TopoDS_Shape shape_;
 };
 
-ShapeDistance::ShapeDistance(const TopoDS_Shape &shape, double spacing)
+ShapeDistance::ShapeDistance(const TopoDS_Shape& shape, double spacing)
     : impl_(new Impl(shape, spacing)) {
   impl_->shape_ = shape;
 }
 ShapeDistance::~ShapeDistance() { delete impl_; }
-const FaceSamples &ShapeDistance::samples() const { return impl_->samples; }
+const FaceSamples& ShapeDistance::samples() const { return impl_->samples; }
 
-double ShapeDistance::Distance(const Vector3d &p) const {
-  const Impl &m = *impl_;
+double ShapeDistance::Distance(const Vector3d& p) const {
+  const Impl& m = *impl_;
   if (m.samples.points.empty()) return INFINITY;
   constexpr int kNeighbors = 8;
   uint32_t idx[kNeighbors] = {};
@@ -274,36 +274,36 @@ double ShapeDistance::Distance(const Vector3d &p) const {
   return best;
 }
 
-double ShapeDistance::ExactDistance(const Vector3d &p) const {
+double ShapeDistance::ExactDistance(const Vector3d& p) const {
   const TopoDS_Vertex vertex = BRepBuilderAPI_MakeVertex(gp_Pnt(p.x(), p.y(), p.z()));
   BRepExtrema_DistShapeShape extrema(vertex, impl_->shape_);
   return extrema.IsDone() ? extrema.Value() : INFINITY;
 }
 
 struct MeshDistance::Impl {
-  explicit Impl(const TriMesh &mesh_in)
+  explicit Impl(const TriMesh& mesh_in)
       : mesh(mesh_in),
         vertices(Vertices(mesh_in)),
         cloud{vertices},
         tree(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(16)) {
     tree.buildIndex();
   }
-  static std::vector<Vector3d> Vertices(const TriMesh &mesh) {
+  static std::vector<Vector3d> Vertices(const TriMesh& mesh) {
     std::vector<Vector3d> out;
     for (OpenMesh::VertexHandle v : mesh.vertices()) out.push_back(meshseg::ToEigen(mesh.point(v)));
     return out;
   }
-  const TriMesh &mesh;
+  const TriMesh& mesh;
   std::vector<Vector3d> vertices;
   Cloud cloud;
   KdTree tree;
 };
 
-MeshDistance::MeshDistance(const TriMesh &mesh) : impl_(new Impl(mesh)) {}
+MeshDistance::MeshDistance(const TriMesh& mesh) : impl_(new Impl(mesh)) {}
 MeshDistance::~MeshDistance() { delete impl_; }
 
-double MeshDistance::Distance(const Vector3d &p) const {
-  const Impl &m = *impl_;
+double MeshDistance::Distance(const Vector3d& p) const {
+  const Impl& m = *impl_;
   constexpr int kNeighbors = 4;
   uint32_t idx[kNeighbors] = {};
   double d2[kNeighbors] = {};
@@ -322,8 +322,8 @@ double MeshDistance::Distance(const Vector3d &p) const {
   return best;
 }
 
-EdgeSplitMax MaxDistanceToMesh(const MeshDistance &mesh, const TopoDS_Shape &shape,
-                               const std::vector<Vector3d> &points, double edge_margin) {
+EdgeSplitMax MaxDistanceToMesh(const MeshDistance& mesh, const TopoDS_Shape& shape,
+                               const std::vector<Vector3d>& points, double edge_margin) {
   std::vector<Vector3d> edge_points;
   for (TopExp_Explorer it(shape, TopAbs_EDGE); it.More(); it.Next()) {
     const BRepAdaptor_Curve c(TopoDS::Edge(it.Current()));
@@ -338,11 +338,11 @@ EdgeSplitMax MaxDistanceToMesh(const MeshDistance &mesh, const TopoDS_Shape &sha
   const Cloud edge_cloud{edge_points};
   KdTree edge_tree(3, edge_cloud, nanoflann::KDTreeSingleIndexAdaptorParams(16));
   edge_tree.buildIndex();
-  for (const Vector3d &p : points) {
+  for (const Vector3d& p : points) {
     uint32_t index = 0;
     double d2 = INFINITY;
     if (!edge_points.empty()) edge_tree.knnSearch(p.data(), 1, &index, &d2);
-    double &max = std::sqrt(d2) < edge_margin ? out.near : out.away;
+    double& max = std::sqrt(d2) < edge_margin ? out.near : out.away;
     max = std::max(max, mesh.Distance(p));
   }
   return out;

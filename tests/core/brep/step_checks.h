@@ -7,13 +7,15 @@
 
 // meshseg (OpenMesh) headers come before OpenCASCADE ones: OCCT's Handle()
 // macro breaks OpenMesh's headers.
-#include <Eigen/Core>
-#include <TopoDS_Shape.hxx>
+#include "meshseg/mesh.h"
+
 #include <string>
 #include <vector>
 
+#include <Eigen/Core>
+#include <TopoDS_Shape.hxx>
+
 #include "absl/status/statusor.h"
-#include "meshseg/mesh.h"
 
 namespace meshseg::testing {
 
@@ -24,7 +26,7 @@ struct StepModel {
 };
 
 // Returns the shape in `path` (all roots), its face names and unit.
-absl::StatusOr<StepModel> ReadStep(const std::string &path);
+absl::StatusOr<StepModel> ReadStep(const std::string& path);
 
 struct ShapeFacts {
   bool valid = false;  // BRepCheck_Analyzer
@@ -35,10 +37,10 @@ struct ShapeFacts {
   double volume = 0.0;  // BRepGProp, of the solids
 };
 
-ShapeFacts FactsOf(const TopoDS_Shape &shape);
+ShapeFacts FactsOf(const TopoDS_Shape& shape);
 
 // The volume the closed, outward-oriented `mesh` encloses.
-double EnclosedVolume(const TriMesh &mesh);
+double EnclosedVolume(const TriMesh& mesh);
 
 // Points on the faces of a shape about `spacing` apart: its tessellation's
 // triangles halved at the longest edge down to `spacing`, each piece's
@@ -49,38 +51,38 @@ struct FaceSamples {
   std::vector<double> u, v;     // per point: its surface parameters
   int untessellated_faces = 0;  // faces BRepMesh could not tessellate (not sampled)
 };
-FaceSamples SampleFaces(const TopoDS_Shape &shape, double spacing);
+FaceSamples SampleFaces(const TopoDS_Shape& shape, double spacing);
 
 // Distances from points to a shape's faces.
 class ShapeDistance {
  public:
-  ShapeDistance(const TopoDS_Shape &shape, double spacing);
+  ShapeDistance(const TopoDS_Shape& shape, double spacing);
   ~ShapeDistance();
   // The distance from `p` to the shape: the foot of `p` on the surfaces of
   // the faces of its nearest samples, where that foot lies in the face, else
   // the distance to the nearest sample.
-  double Distance(const Eigen::Vector3d &p) const;
+  double Distance(const Eigen::Vector3d& p) const;
   // The exact distance from `p` to the shape (BRepExtrema_DistShapeShape):
   // slow, for the points Distance() puts beyond a bound (its fallback to the
   // nearest sample overestimates next to an edge).
-  double ExactDistance(const Eigen::Vector3d &p) const;
-  const FaceSamples &samples() const;
+  double ExactDistance(const Eigen::Vector3d& p) const;
+  const FaceSamples& samples() const;
 
  private:
   struct Impl;
-  Impl *impl_;
+  Impl* impl_;
 };
 
 // Distances from points to a triangle mesh's surface.
 class MeshDistance {
  public:
-  explicit MeshDistance(const TriMesh &mesh);
+  explicit MeshDistance(const TriMesh& mesh);
   ~MeshDistance();
-  double Distance(const Eigen::Vector3d &p) const;
+  double Distance(const Eigen::Vector3d& p) const;
 
  private:
   struct Impl;
-  Impl *impl_;
+  Impl* impl_;
 };
 
 // The max over `points` farther than `edge_margin` from every edge of
@@ -89,8 +91,8 @@ struct EdgeSplitMax {
   double away = 0.0;
   double near = 0.0;
 };
-EdgeSplitMax MaxDistanceToMesh(const MeshDistance &mesh, const TopoDS_Shape &shape,
-                               const std::vector<Eigen::Vector3d> &points, double edge_margin);
+EdgeSplitMax MaxDistanceToMesh(const MeshDistance& mesh, const TopoDS_Shape& shape,
+                               const std::vector<Eigen::Vector3d>& points, double edge_margin);
 
 }  // namespace meshseg::testing
 

@@ -2,19 +2,20 @@
 // and a face name written where a reader finds it.
 // step_checks.h (OpenMesh) before any OpenCASCADE header: OCCT's Handle()
 // macro breaks OpenMesh's headers.
+#include "step_checks.h"
+
 #include "brep/step_file.h"
 
-#include <gmock/gmock.h>
-#include <gtest/gtest.h>
+#include <fstream>
+#include <iterator>
 
 #include <BRepPrimAPI_MakeBox.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
-#include <fstream>
-#include <iterator>
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
 
 #include "scratch_dir.h"
-#include "step_checks.h"
 
 namespace meshseg::brep_internal {
 namespace {
@@ -35,12 +36,12 @@ TEST(WriteStepFile, NamesFacesAndDeclaresTheUnit) {
   const std::string path = testing_files::ScratchPath("box.step");
   int k = 0;
   const absl::Status s = WriteStepFile(
-      box, [&](const TopoDS_Face &) { return "face " + std::to_string(k++); }, "in", "box", path);
+      box, [&](const TopoDS_Face&) { return "face " + std::to_string(k++); }, "in", "box", path);
   ASSERT_TRUE(s.ok()) << s;
   absl::StatusOr<testing::StepModel> model = testing::ReadStep(path);
   ASSERT_TRUE(model.ok()) << model.status();
   ASSERT_EQ(model->face_names.size(), 6u);
-  for (const std::string &name : model->face_names) EXPECT_THAT(name, HasSubstr("face "));
+  for (const std::string& name : model->face_names) EXPECT_THAT(name, HasSubstr("face "));
   // The reader names the unit as the file does; the file converts it to
   // millimetres by the exact factor.
   EXPECT_EQ(model->length_unit, "INCH");
@@ -53,7 +54,7 @@ TEST(WriteStepFile, NamesFacesAndDeclaresTheUnit) {
 TEST(WriteStepFile, UnknownUnitIsInvalidArgumentNamingIt) {
   const TopoDS_Shape box = BRepPrimAPI_MakeBox(1.0, 1.0, 1.0).Shape();
   const absl::Status s = WriteStepFile(
-      box, [](const TopoDS_Face &) { return std::string(); }, "furlong", "box",
+      box, [](const TopoDS_Face&) { return std::string(); }, "furlong", "box",
       testing_files::ScratchPath("never.step"));
   EXPECT_TRUE(absl::IsInvalidArgument(s)) << s;
   EXPECT_THAT(s.message(), HasSubstr("\"furlong\""));
