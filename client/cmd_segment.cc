@@ -39,11 +39,23 @@ absl::StatusOr<v1::SegmentationResult> SegmentOffline(const std::string& path,
   return ToProto(result);
 }
 
+// The server's result; with a StepRequest the server writes the STEP file
+// too and it is fetched to `step.path` (when one was written).
 absl::StatusOr<v1::SegmentationResult> SegmentOnServer(const Args& args, const std::string& path,
-                                                       const UploadOptions& options) {
+                                                       UploadOptions options,
+                                                       const StepRequest& step) {
   MESHSEG_ASSIGN_OR_RETURN(MeshsegClient client, ConnectFromArgs(args));
   ProgressPrinter progress;
-  return client.Segment(path, options, [&](const v1::JobEvent& e) { progress.Event(e); });
+  options.step = !step.path.empty();
+  options.step_unit = step.unit;
+  v1::Job job;
+  MESHSEG_ASSIGN_OR_RETURN(
+      v1::SegmentationResult result,
+      client.Segment(path, options, [&](const v1::JobEvent& e) { progress.Event(e); }, &job));
+  if (options.step && job.step_size() > 0) {
+    MESHSEG_RETURN_IF_ERROR(client.SaveStep(job.job_id(), step.path));
+  }
+  return result;
 }
 
 // Writes the input coloured by region: a mesh with one colour per input face;
@@ -104,7 +116,7 @@ absl::Status RunSegment(const Argv& argv) {
     return absl::InvalidArgumentError("--unit needs --step OUT.step");
   }
   absl::StatusOr<v1::SegmentationResult> result =
-      args.Has("--server") ? SegmentOnServer(args, input, options)
+      args.Has("--server") ? SegmentOnServer(args, input, options, step)
                            : SegmentOffline(input, options.segment, options.format_hint, step);
   if (!result.ok()) return result.status();
   MESHSEG_ASSIGN_OR_RETURN(const std::string json, ResultJson(*result));
