@@ -37,25 +37,28 @@ absl::Status RunBrep(const Argv& argv) {
   MESHSEG_ASSIGN_OR_RETURN(const std::string json, ReadTextFile(result_path));
   absl::StatusOr<v1::SegmentationResult> message = ParseResultJson(json);
   if (!message.ok()) {
-    return absl::InvalidArgumentError(absl::StrCat("\"", result_path, "\": ", message.status().message()));
+    return absl::InvalidArgumentError(
+        absl::StrCat("\"", result_path, "\": ", message.status().message()));
   }
   absl::StatusOr<PipelineResult> result = FromProto(*message);
   if (!result.ok()) {
-    return absl::InvalidArgumentError(absl::StrCat("\"", result_path, "\": ", result.status().message()));
+    return absl::InvalidArgumentError(
+        absl::StrCat("\"", result_path, "\": ", result.status().message()));
   }
   if (result->from_point_cloud) {
-    return absl::InvalidArgumentError(absl::StrCat(
-        "\"", result_path, "\" is the result of a point cloud, whose mesh is not kept: use "
-        "meshseg segment CLOUD --step OUT.step"));
+    return absl::InvalidArgumentError(
+        absl::StrCat("\"", result_path,
+                     "\" is the result of a point cloud, whose mesh is not kept: use "
+                     "meshseg segment CLOUD --step OUT.step"));
   }
   absl::StatusOr<Mesh> mesh = ReadMesh(mesh_path);
   if (!mesh.ok()) return mesh.status();
   if (mesh->face_of_input.size() != result->face_labels.size() ||
       static_cast<int64_t>(mesh->tri.n_vertices()) != message->mesh().vertex_count()) {
-    return absl::InvalidArgumentError(absl::StrCat(
-        "\"", mesh_path, "\" has ", mesh->face_of_input.size(), " faces and ",
-        mesh->tri.n_vertices(), " vertices, \"", result_path, "\" was computed on ",
-        result->face_labels.size(), " and ", message->mesh().vertex_count()));
+    return absl::InvalidArgumentError(
+        absl::StrCat("\"", mesh_path, "\" has ", mesh->face_of_input.size(), " faces and ",
+                     mesh->tri.n_vertices(), " vertices, \"", result_path, "\" was computed on ",
+                     result->face_labels.size(), " and ", message->mesh().vertex_count()));
   }
   std::vector<int> labels(mesh->tri.n_faces(), -1);
   for (size_t i = 0; i < mesh->face_of_input.size(); ++i) {
@@ -63,9 +66,8 @@ absl::Status RunBrep(const Argv& argv) {
   }
   BrepParams params{.length_unit = args.Value("--unit").value_or(BrepParams{}.length_unit),
                     .noise_sigma = result->estimates.noise_sigma};
-  MESHSEG_ASSIGN_OR_RETURN(const BrepReport report,
-                           WriteStep(*mesh, labels, result->regions, result->topology, *out,
-                                     params));
+  MESHSEG_ASSIGN_OR_RETURN(const BrepReport report, WriteStep(*mesh, labels, result->regions,
+                                                              result->topology, *out, params));
   result->brep = report;
   v1::SegmentationResult with_report = ToProto(*result);
   std::fputs(BrepSummary(with_report.brep()).c_str(), stdout);

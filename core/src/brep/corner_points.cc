@@ -27,9 +27,9 @@ Eigen::Vector3d Step(const Eigen::Matrix3d& jtj, const Eigen::Vector3d& jtr,
     const Eigen::Vector3d e = eigen.eigenvectors().col(i);
     const double lambda = std::max(eigen.eigenvalues()(i), 0.0);
     const double g = e.dot(jtr);
-    step -= (lambda >= resolved ? g / lambda
-                                : (g + resolved * e.dot(offset)) / (lambda + resolved)) *
-            e;
+    step -=
+        (lambda >= resolved ? g / lambda : (g + resolved * e.dot(offset)) / (lambda + resolved)) *
+        e;
   }
   return step;
 }
@@ -42,27 +42,26 @@ double Resolved(const CornerNoise& noise) {
   return std::max(r * r, kLeastPull);
 }
 
-}  // namespace
+// The normal equations of the distances at a point: rows = how many
+// constraints were found there.
+struct NormalEquations {
+  Eigen::Matrix3d jtj = Eigen::Matrix3d::Zero();
+  Eigen::Vector3d jtr = Eigen::Vector3d::Zero();
+  int rows = 0;
+};
 
-Eigen::Vector3d CornerPoint(const Eigen::Vector3d& start,
-                            std::span<const Handle(Geom_Surface)> surfaces, double max_move,
-                            const CornerNoise& noise) {
+// Gauss-Newton from `start` on the equations `at` gives at each point,
+// solved by Step; `start` when no row constrains or the iteration leaves
+// the ball of radius `max_move`.
+template <typename At>
+Eigen::Vector3d Solve(const Eigen::Vector3d& start, double max_move, const CornerNoise& noise,
+                      At at) {
   const double resolved = Resolved(noise);
   Eigen::Vector3d x = start;
   for (int it = 0; it < kMaxIterations; ++it) {
-    Eigen::Matrix3d jtj = Eigen::Matrix3d::Zero();
-    Eigen::Vector3d jtr = Eigen::Vector3d::Zero();
-    int rows = 0;
-    for (const Handle(Geom_Surface) & s : surfaces) {
-      if (s.IsNull()) continue;
-      const std::optional<SurfacePoint> q = ClosestPoint(s, x);
-      if (!q) continue;
-      jtj += q->normal * q->normal.transpose();
-      jtr += q->normal * q->distance;
-      ++rows;
-    }
-    if (rows == 0) return start;
-    const Eigen::Vector3d step = Step(jtj, jtr, x - start, resolved);
+    const NormalEquations e = at(x);
+    if (e.rows == 0) return start;
+    const Eigen::Vector3d step = Step(e.jtj, e.jtr, x - start, resolved);
     x += step;
     if ((x - start).norm() > max_move) return start;
     if (step.norm() < 1e-12 * (1.0 + max_move)) break;
@@ -70,16 +69,31 @@ Eigen::Vector3d CornerPoint(const Eigen::Vector3d& start,
   return x;
 }
 
+}  // namespace
+
+Eigen::Vector3d CornerPoint(const Eigen::Vector3d& start,
+                            std::span<const Handle(Geom_Surface)> surfaces, double max_move,
+                            const CornerNoise& noise) {
+  return Solve(start, max_move, noise, [&](const Eigen::Vector3d& x) {
+    NormalEquations e;
+    for (const Handle(Geom_Surface) & s : surfaces) {
+      if (s.IsNull()) continue;
+      const std::optional<SurfacePoint> q = ClosestPoint(s, x);
+      if (!q) continue;
+      e.jtj += q->normal * q->normal.transpose();
+      e.jtr += q->normal * q->distance;
+      ++e.rows;
+    }
+    return e;
+  });
+}
+
 Eigen::Vector3d CornerOnCurves(const Eigen::Vector3d& start,
                                std::span<const Handle(Geom_Curve)> curves, double max_move,
                                const CornerNoise& noise) {
-  const double resolved = Resolved(noise);
-  Eigen::Vector3d x = start;
-  for (int it = 0; it < kMaxIterations; ++it) {
-    // Gauss-Newton on the distances to the curves: each curve constrains the
-    // two directions across its tangent.
-    Eigen::Matrix3d jtj = Eigen::Matrix3d::Zero();
-    Eigen::Vector3d jtr = Eigen::Vector3d::Zero();
+  return Solve(start, max_move, noise, [&](const Eigen::Vector3d& x) {
+    // Each curve constrains the two directions across its tangent.
+    NormalEquations e;
     for (const Handle(Geom_Curve) & c : curves) {
       const double t = ClosestParameter(c, x, c->FirstParameter(), c->LastParameter());
       gp_Pnt p;
@@ -87,15 +101,12 @@ Eigen::Vector3d CornerOnCurves(const Eigen::Vector3d& start,
       c->D1(t, p, d);
       const Eigen::Vector3d tangent = ToEigen(d).normalized();
       const Eigen::Matrix3d across = Eigen::Matrix3d::Identity() - tangent * tangent.transpose();
-      jtj += across;
-      jtr += across * (x - ToEigen(p));
+      e.jtj += across;
+      e.jtr += across * (x - ToEigen(p));
+      ++e.rows;
     }
-    const Eigen::Vector3d step = Step(jtj, jtr, x - start, resolved);
-    x += step;
-    if ((x - start).norm() > max_move) return start;
-    if (step.norm() < 1e-12 * (1.0 + max_move)) break;
-  }
-  return x;
+    return e;
+  });
 }
 
 }  // namespace meshseg::brep_internal

@@ -72,13 +72,10 @@ double MaxDistance(const Handle(Geom_Curve) & c, double first, double last,
 
 }  // namespace
 
-std::optional<TrimmedCurve> FitEdgeCurve(std::span<const Vector3d> polyline,
-                                         const Handle(Geom_Surface) & left,
-                                         const Handle(Geom_Surface) & right,
-                                         const std::optional<Vector3d>& start,
-                                         const std::optional<Vector3d>& end,
-                                         const CurveGeometry& hint, double tolerance,
-                                         double l_avg) {
+std::optional<TrimmedCurve> FitEdgeCurve(
+    std::span<const Vector3d> polyline, const Handle(Geom_Surface) & left,
+    const Handle(Geom_Surface) & right, const std::optional<Vector3d>& start,
+    const std::optional<Vector3d>& end, const CurveGeometry& hint, double tolerance, double l_avg) {
   double length = 0.0;
   for (size_t i = 1; i < polyline.size(); ++i) length += (polyline[i] - polyline[i - 1]).norm();
   if (polyline.size() < 2 || !(length > 0.0)) return std::nullopt;
@@ -95,7 +92,8 @@ std::optional<TrimmedCurve> FitEdgeCurve(std::span<const Vector3d> polyline,
   // go onto the surfaces. The ends of an open curve stay on its vertices.
   for (int pass = 0; pass < kSmoothPasses; ++pass) {
     std::vector<Vector3d> next = pts;
-    for (size_t i = 1; i + 1 < pts.size(); ++i) next[i] = 0.5 * pts[i] + 0.25 * (pts[i - 1] + pts[i + 1]);
+    for (size_t i = 1; i + 1 < pts.size(); ++i)
+      next[i] = 0.5 * pts[i] + 0.25 * (pts[i - 1] + pts[i + 1]);
     pts = std::move(next);
   }
   const size_t fixed = start ? 1 : 0;
@@ -106,9 +104,8 @@ std::optional<TrimmedCurve> FitEdgeCurve(std::span<const Vector3d> polyline,
   // Points on both surfaces (they cross) are fitted closely; points between
   // tangent surfaces carry the boundary's noise along the contact and are
   // fitted within a share of the tolerance.
-  const double fit_tolerance = OnBoth(pts, left, right, kSplineShare * l_avg)
-                                   ? kSplineShare * l_avg
-                                   : kFitShare * tolerance;
+  const double fit_tolerance =
+      OnBoth(pts, left, right, kSplineShare * l_avg) ? kSplineShare * l_avg : kFitShare * tolerance;
 
   std::vector<Handle(Geom_Curve)> candidates;
   if (!closed && (*end - *start).norm() > 0.0) {
@@ -119,8 +116,8 @@ std::optional<TrimmedCurve> FitEdgeCurve(std::span<const Vector3d> polyline,
   }
   if (closed && hint.type == CurveGeometryType::kCircle && hint.radius > 0.0) {
     const Vector3d n = hint.direction.normalized();
-    candidates.push_back(new Geom_Circle(
-        gp_Ax2(ToPnt(hint.point), gp_Dir(n.x(), n.y(), n.z())), hint.radius));
+    candidates.push_back(
+        new Geom_Circle(gp_Ax2(ToPnt(hint.point), gp_Dir(n.x(), n.y(), n.z())), hint.radius));
   }
   for (const Handle(Geom_Curve) & c : candidates) {
     const double first = c->FirstParameter();
@@ -130,8 +127,10 @@ std::optional<TrimmedCurve> FitEdgeCurve(std::span<const Vector3d> polyline,
   }
   if (closed) {
     // A periodic spline through the drawn points (the last repeats the first).
-    Handle(TColgp_HArray1OfPnt) array = new TColgp_HArray1OfPnt(1, static_cast<int>(pts.size()) - 1);
-    for (size_t i = 0; i + 1 < pts.size(); ++i) array->SetValue(static_cast<int>(i) + 1, ToPnt(pts[i]));
+    Handle(TColgp_HArray1OfPnt) array =
+        new TColgp_HArray1OfPnt(1, static_cast<int>(pts.size()) - 1);
+    for (size_t i = 0; i + 1 < pts.size(); ++i)
+      array->SetValue(static_cast<int>(i) + 1, ToPnt(pts[i]));
     GeomAPI_Interpolate interpolate(array, Standard_True, Precision::Confusion());
     interpolate.Perform();
     if (!interpolate.IsDone()) return std::nullopt;
