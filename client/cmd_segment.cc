@@ -1,4 +1,5 @@
 // meshseg segment INPUT -o RESULT.json [--colored-ply OUT.ply] [--report REPORT.html]
+//   [--step OUT.step [--unit U]]
 //   [--distance-tolerance X] [--angle-tolerance DEG] [--format FMT] [--server HOST:PORT]
 // In-process by default; with --server the same result comes from the service.
 #include <cstdio>
@@ -18,12 +19,21 @@
 namespace meshseg::cli {
 namespace {
 
+// The STEP file asked for with --step (and its --unit), or none.
+struct StepRequest {
+  std::string path;
+  std::string unit;
+};
+
 absl::StatusOr<v1::SegmentationResult> SegmentOffline(const std::string& path,
                                                       const v1::SegmentOptions& options,
                                                       const std::string& format_hint,
+                                                      const StepRequest& step,
                                                       ProgressPrinter& progress) {
   MESHSEG_ASSIGN_OR_RETURN(PipelineParams params, FromProto(options));
   MESHSEG_ASSIGN_OR_RETURN(params.format, FormatFromHint(format_hint));
+  params.step_path = step.path;
+  params.brep.length_unit = step.unit;
   RunContext ctx;
   ctx.on_progress = [&](std::string_view stage, double f) { progress.Update(stage, f); };
   MESHSEG_ASSIGN_OR_RETURN(const PipelineResult result, RunPipeline(path, params, ctx));
@@ -31,13 +41,22 @@ absl::StatusOr<v1::SegmentationResult> SegmentOffline(const std::string& path,
   return ToProto(result);
 }
 
+// The server's result; with a StepRequest the server writes the STEP file
+// too and it is fetched to `step.path` (when one was written).
 absl::StatusOr<v1::SegmentationResult> SegmentOnServer(const Args& args, const std::string& path,
-                                                       const UploadOptions& options,
+                                                       UploadOptions options,
+                                                       const StepRequest& step,
                                                        ProgressPrinter& progress) {
   MESHSEG_ASSIGN_OR_RETURN(MeshsegClient client, ConnectFromArgs(args));
+  options.step = !step.path.empty();
+  options.step_unit = step.unit;
+  v1::Job job;
   absl::StatusOr<v1::SegmentationResult> result =
-      client.Segment(path, options, [&](const v1::JobEvent& e) { progress.Event(e); });
+      client.Segment(path, options, [&](const v1::JobEvent& e) { progress.Event(e); }, &job);
   progress.Finish();
+  if (result.ok() && options.step && job.step_size() > 0) {
+    MESHSEG_RETURN_IF_ERROR(client.SaveStep(job.job_id(), step.path));
+  }
   return result;
 }
 
@@ -75,7 +94,8 @@ absl::Status RunSegment(const Argv& argv) {
   MESHSEG_ASSIGN_OR_RETURN(const Args args,
                            Args::Parse(argv,
                                        {"-o", "--colored-ply", "--distance-tolerance",
-                                        "--angle-tolerance", "--format", "--server", "--report"},
+                                        "--angle-tolerance", "--format", "--server", "--report",
+                                        "--step", "--unit"},
                                        {}, 1));
   const std::string& input = args.positional(0);
   const std::optional<std::string> out = args.Value("-o");
@@ -92,10 +112,16 @@ absl::Status RunSegment(const Argv& argv) {
   MESHSEG_ASSIGN_OR_RETURN(const std::optional<FileFormat> format,
                            FormatFromHint(options.format_hint));
 
+  const StepRequest step{args.Value("--step").value_or(""),
+                         args.Value("--unit").value_or(BrepParams{}.length_unit)};
+  if (step.path.empty() && args.Has("--unit")) {
+    return absl::InvalidArgumentError("--unit needs --step OUT.step");
+  }
   ProgressPrinter progress;
   absl::StatusOr<v1::SegmentationResult> result =
-      args.Has("--server") ? SegmentOnServer(args, input, options, progress)
-                           : SegmentOffline(input, options.segment, options.format_hint, progress);
+      args.Has("--server")
+          ? SegmentOnServer(args, input, options, step, progress)
+          : SegmentOffline(input, options.segment, options.format_hint, step, progress);
   if (!result.ok()) return result.status();
   MESHSEG_ASSIGN_OR_RETURN(const std::string json, ResultJson(*result));
   MESHSEG_RETURN_IF_ERROR(WriteTextFile(*out, json));
@@ -111,6 +137,14 @@ absl::Status RunSegment(const Argv& argv) {
   std::fputs(RegionTable(*result).c_str(), stdout);
   std::fputs(TopologySummary(*result).c_str(), stdout);
   std::printf("wrote %s\n", out->c_str());
+  if (!step.path.empty()) {
+    std::fputs(BrepSummary(result->brep()).c_str(), stdout);
+    if (!result->brep().error().empty()) {
+      return absl::FailedPreconditionError(
+          absl::StrCat("no STEP file written: ", result->brep().error()));
+    }
+    std::printf("wrote %s\n", step.path.c_str());
+  }
   return absl::OkStatus();
 }
 

@@ -24,6 +24,7 @@ constexpr char kUsage[] =
     "  cancel JOB --server HOST:PORT\n"
     "  report RESULT.json [MESH] -o REPORT.html [--format FMT]\n"
     "(segment also takes --report REPORT.html)\n"
+    "  brep RESULT.json MESH -o OUT.step [--unit mm|cm|m|in|...]\n"
     "(--server defaults to $MESHSEG_SERVER)\n";
 
 }  // namespace
@@ -37,6 +38,7 @@ int main(int argc, char** argv) {
       {"watch", meshseg::cli::RunWatch},     {"result", meshseg::cli::RunResult},
       {"cancel", meshseg::cli::RunCancel},  {"reconstruct", meshseg::cli::RunReconstruct},
       {"report", meshseg::cli::RunReport},
+      {"brep", meshseg::cli::RunBrep},
   };
   if (argc < 2 || std::string(argv[1]) == "help" || std::string(argv[1]) == "--help") {
     std::fputs(kUsage, argc < 2 ? stderr : stdout);

@@ -51,6 +51,8 @@ absl::StatusOr<v1::UploadResponse> MeshsegClient::Upload(const std::string& path
   header->set_format_hint(options.format_hint);
   header->set_total_size(static_cast<int64_t>(size));
   *header->mutable_options() = options.segment;
+  header->set_step(options.step);
+  header->set_step_unit(options.step_unit);
   if (options.checksum) {
     MESHSEG_ASSIGN_OR_RETURN(*header->mutable_sha256(), FileSha256(path));
   }
@@ -96,10 +98,12 @@ absl::StatusOr<v1::Job> MeshsegClient::Watch(
   return last;
 }
 
-absl::StatusOr<v1::SegmentationResult> MeshsegClient::Result(const std::string& job_id) {
+absl::StatusOr<std::string> MeshsegClient::ResultBytes(const std::string& job_id,
+                                                       v1::ResultFormat format) {
   grpc::ClientContext context;
   v1::GetResultRequest request;
   request.set_job_id(job_id);
+  request.set_format(format);
   auto reader = stub_->GetResult(&context, request);
   std::string bytes;
   v1::ResultChunk chunk;
@@ -114,12 +118,29 @@ absl::StatusOr<v1::SegmentationResult> MeshsegClient::Result(const std::string& 
     bytes += chunk.data();
   }
   MESHSEG_RETURN_IF_ERROR(FromGrpcStatus(reader->Finish()));
+  return bytes;
+}
+
+absl::StatusOr<v1::SegmentationResult> MeshsegClient::Result(const std::string& job_id) {
+  MESHSEG_ASSIGN_OR_RETURN(const std::string bytes,
+                           ResultBytes(job_id, v1::RESULT_FORMAT_UNSPECIFIED));
   v1::SegmentationResult result;
   if (!result.ParseFromString(bytes)) {
     return absl::DataLossError(
         absl::StrCat("result: job ", job_id, ": ", bytes.size(), " bytes do not parse"));
   }
   return result;
+}
+
+absl::Status MeshsegClient::SaveStep(const std::string& job_id, const std::string& path) {
+  MESHSEG_ASSIGN_OR_RETURN(const std::string bytes, ResultBytes(job_id, v1::RESULT_FORMAT_STEP));
+  std::ofstream out(path, std::ios::binary);
+  out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+  out.close();
+  if (!out) {
+    return absl::InternalError(absl::StrCat("step: cannot write \"", path, "\""));
+  }
+  return absl::OkStatus();
 }
 
 absl::StatusOr<v1::Job> MeshsegClient::GetJob(const std::string& job_id) {
@@ -150,9 +171,10 @@ absl::StatusOr<v1::Job> MeshsegClient::Cancel(const std::string& job_id) {
 
 absl::StatusOr<v1::SegmentationResult> MeshsegClient::Segment(
     const std::string& path, const UploadOptions& options,
-    const std::function<void(const v1::JobEvent&)>& on_event) {
+    const std::function<void(const v1::JobEvent&)>& on_event, v1::Job* job_out) {
   MESHSEG_ASSIGN_OR_RETURN(const v1::UploadResponse upload, Upload(path, options));
   MESHSEG_ASSIGN_OR_RETURN(const v1::Job job, Watch(upload.job_id(), on_event));
+  if (job_out != nullptr) *job_out = job;
   if (job.state() != v1::JOB_STATE_SUCCEEDED) return JobError(job);
   return Result(upload.job_id());
 }

@@ -29,6 +29,9 @@ struct UploadOptions {
   std::size_t chunk_bytes = std::size_t{1} << 20;
   // Send the file's SHA-256 for the server to check.
   bool checksum = true;
+  // UploadHeader.step / .step_unit: the server also writes the STEP file.
+  bool step = false;
+  std::string step_unit;
 };
 
 class MeshsegClient {
@@ -55,19 +58,28 @@ class MeshsegClient {
   // Returns the result of a SUCCEEDED job, reassembled from its chunks.
   absl::StatusOr<v1::SegmentationResult> Result(const std::string& job_id);
 
+  // Writes the STEP file of a SUCCEEDED job uploaded with `step` to `path`.
+  // Errors: the server's NOT_FOUND when the job has none; INTERNAL when
+  // `path` cannot be written.
+  absl::Status SaveStep(const std::string& job_id, const std::string& path);
+
   absl::StatusOr<v1::Job> GetJob(const std::string& job_id);
   absl::StatusOr<std::vector<v1::Job>> ListJobs();
   absl::StatusOr<v1::Job> Cancel(const std::string& job_id);
 
   // Upload, watch and fetch: the server path of `meshseg segment`. A job that
-  // ends FAILED or CANCELLED returns its error code and message.
+  // ends FAILED or CANCELLED returns its error code and message. `job`, when
+  // given, receives the terminal job (its id and step_size).
   absl::StatusOr<v1::SegmentationResult> Segment(
       const std::string& path, const UploadOptions& options = {},
-      const std::function<void(const v1::JobEvent&)>& on_event = {});
+      const std::function<void(const v1::JobEvent&)>& on_event = {}, v1::Job* job = nullptr);
 
   v1::Segmentation::Stub& stub() { return *stub_; }
 
  private:
+  // The bytes GetResult streams for `job_id` in `format`.
+  absl::StatusOr<std::string> ResultBytes(const std::string& job_id, v1::ResultFormat format);
+
   // A context with the unary deadline set.
   std::unique_ptr<grpc::ClientContext> UnaryContext() const;
 

@@ -15,6 +15,10 @@ PACKAGES=(
   nodejs
   prometheus
   clang-14 libclang-rt-14-dev
+  # brep stage (STEP export): OpenCASCADE 7.6; the CMake config's components
+  # FoundationClasses ... DataExchange need all five -dev packages.
+  libocct-foundation-dev libocct-modeling-data-dev libocct-modeling-algorithms-dev
+  libocct-ocaf-dev libocct-visualization-dev libocct-data-exchange-dev
 )
 
 SUDO=""

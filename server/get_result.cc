@@ -34,7 +34,19 @@ grpc::Status SegmentationService::GetResult(grpc::ServerContext* context,
         absl::StrCat("result: chunk_size must be >= 0, got ", request->chunk_size())));
   }
 
-  const absl::StatusOr<std::unique_ptr<LocalBlob>> blob = blobs_.Open(ResultKey(job->job_id()));
+  const bool step = request->format() == v1::RESULT_FORMAT_STEP;
+  if (!step && request->format() != v1::RESULT_FORMAT_UNSPECIFIED) {
+    return ToGrpcStatus(absl::InvalidArgumentError(
+        absl::StrCat("result: unknown format ", static_cast<int>(request->format()))));
+  }
+  if (step && job->step_size() == 0) {
+    return ToGrpcStatus(absl::NotFoundError(absl::StrCat(
+        "result: job \"", job->job_id(), "\" has no STEP file (upload with step = true; when it ",
+        "was, the result's brep.error says why none was written)")));
+  }
+  const int64_t total_size = step ? job->step_size() : job->result_size();
+  const absl::StatusOr<std::unique_ptr<LocalBlob>> blob =
+      blobs_.Open(step ? StepKey(job->job_id()) : ResultKey(job->job_id()));
   std::ifstream in;
   if (blob.ok()) in.open((*blob)->path(), std::ios::binary);
   if (!blob.ok() || !in.is_open()) {  // expired between Get() and here
@@ -53,16 +65,16 @@ grpc::Status SegmentationService::GetResult(grpc::ServerContext* context,
     v1::ResultChunk chunk;
     chunk.set_data(buffer.data(), static_cast<std::size_t>(n));
     chunk.set_offset(offset);
-    chunk.set_total_size(job->result_size());
+    chunk.set_total_size(total_size);
     if (context->IsCancelled() || !writer->Write(chunk)) {
       return ToGrpcStatus(absl::CancelledError("result: client went away"));
     }
     offset += n;
   } while (in);
-  if (offset != job->result_size()) {
-    return ToGrpcStatus(absl::InternalError(absl::StrCat(
-        "result: job \"", job->job_id(), "\" result has ", offset, " bytes, expected ",
-        job->result_size())));
+  if (offset != total_size) {
+    return ToGrpcStatus(absl::InternalError(absl::StrCat("result: job \"", job->job_id(), "\" ",
+                                                         step ? "STEP file" : "result", " has ",
+                                                         offset, " bytes, expected ", total_size)));
   }
   return grpc::Status::OK;
 }

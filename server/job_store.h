@@ -42,6 +42,7 @@ struct JobOutput {
   int64_t result_size = 0;
   int64_t face_count = 0;
   int region_count = 0;
+  int64_t step_size = 0;  // bytes of the job's STEP file; 0 = none
 };
 
 class JobStore {

@@ -164,6 +164,7 @@ absl::Status LocalJobStore::Finish(const std::string& id, const absl::Status& st
     job.set_result_size(output.result_size);
     job.set_face_count(output.face_count);
     job.set_region_count(output.region_count);
+    job.set_step_size(output.step_size);
   } else {
     job.set_error_code(static_cast<int>(status.code()));
     job.set_error_message(std::string(status.message()));

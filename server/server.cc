@@ -56,6 +56,7 @@ struct Server::Parts {
       if (stop.stop_requested()) return;
       for (const std::string& id : backend->store->Expire(absl::Now() - options.result_ttl)) {
         (void)backend->blobs->Remove(ResultKey(id));
+        (void)backend->blobs->Remove(StepKey(id));
         Log("job_expired", {{"job", id}});
       }
     }

@@ -72,6 +72,8 @@ grpc::Status SegmentationService::Upload(grpc::ServerContext* context,
     job.set_created_unix_ms(absl::ToUnixMillis(absl::Now()));
     *record.mutable_options() = header.options();
     record.set_format_hint(header.format_hint());
+    record.set_step(header.step());
+    record.set_step_unit(header.step_unit());
     MESHSEG_RETURN_IF_ERROR(store_.Create(record));
     // Logged before the push: a free worker may log job_started at once.
     Log("job_queued", {{"job", job_id},

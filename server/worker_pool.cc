@@ -78,6 +78,10 @@ absl::Status WorkerPool::Execute(const RunSpec& spec, JobOutput& output) {
   const std::string& job_id = spec.record.job().job_id();
   MESHSEG_ASSIGN_OR_RETURN(PipelineParams params, FromProto(spec.record.options()));
   MESHSEG_ASSIGN_OR_RETURN(params.format, FormatFromHint(spec.record.format_hint()));
+  if (spec.record.step()) {
+    params.step_path = scratch_.ScratchPath(job_id, "result.step");
+    if (!spec.record.step_unit().empty()) params.brep.length_unit = spec.record.step_unit();
+  }
   MESHSEG_ASSIGN_OR_RETURN(const std::unique_ptr<LocalBlob> upload,
                            blobs_.Open(spec.record.upload_key()));
 
@@ -107,6 +111,13 @@ absl::Status WorkerPool::Execute(const RunSpec& spec, JobOutput& output) {
   }
   output.face_count = static_cast<int64_t>(result.face_labels.size());
   output.region_count = static_cast<int>(result.regions.size());
+  // The STEP file, when asked for and written (else the result says why).
+  if (!params.step_path.empty() && result.brep) {
+    MESHSEG_RETURN_IF_ERROR(blobs_.Put(StepKey(job_id), params.step_path));
+    output.step_size = result.brep->step_size;
+  } else if (!params.step_path.empty()) {
+    std::remove(params.step_path.c_str());
+  }
   return absl::OkStatus();
 }
 
@@ -145,13 +156,17 @@ void WorkerPool::Run(const Lease& lease) {
 
   if (!status.ok() && store_.running().ReasonOf(job_id) == StopReason::kShutdown) {
     (void)blobs_.Remove(ResultKey(job_id));
+    (void)blobs_.Remove(StepKey(job_id));
     (void)RetryWhileUnavailable("release", job_id, give_up_.get_token(),
                                 [&] { return store_.Release(job_id); });
     queue_.Release(lease);
     Log("job_released", {{"job", job_id}, {"reason", "server shutting down"}});
     return;
   }
-  if (!status.ok()) (void)blobs_.Remove(ResultKey(job_id));  // no result: leave no file
+  if (!status.ok()) {  // no result: leave no file
+    (void)blobs_.Remove(ResultKey(job_id));
+    (void)blobs_.Remove(StepKey(job_id));
+  }
   const absl::Status finished = RetryWhileUnavailable("finish", job_id, give_up_.get_token(), [&] {
     return store_.Finish(job_id, status, output);
   });

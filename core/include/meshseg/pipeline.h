@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "absl/status/statusor.h"
+#include "meshseg/brep.h"
 #include "meshseg/curvature.h"
 #include "meshseg/features.h"
 #include "meshseg/mesh.h"
@@ -39,6 +40,10 @@ struct PipelineParams {
   FeatureParams features;
   // Upper bound on declared vertex/face counts of the input.
   int64_t max_elements = 200'000'000;
+  // When set, the B-rep of the result is written there as STEP (brep.h);
+  // brep.noise_sigma defaults to the segmentation's estimate.
+  std::string step_path;
+  BrepParams brep;
 };
 
 struct PipelineResult {
@@ -65,6 +70,10 @@ struct PipelineResult {
   bool from_point_cloud = false;
   int64_t point_count = 0;
   std::vector<int> point_labels;
+  // When PipelineParams::step_path is set: what the `brep` stage wrote, or
+  // (brep unset) why it wrote nothing; the segmentation stands either way.
+  std::optional<BrepReport> brep;
+  std::string brep_error;
 };
 
 // Returns the segmentation of the mesh or point cloud in `input_path`.

@@ -100,6 +100,25 @@ absl::StatusOr<std::vector<int>> SegmentRemeshed(const Mesh& mesh, double edge_l
   return labels;
 }
 
+// Writes the STEP file when params ask for one (`labels` one per face of
+// `mesh`, the mesh the topology refers to).
+absl::Status ExportStep(const Mesh& mesh, std::span<const int> labels,
+                        const PipelineParams& params, const RunContext& ctx,
+                        PipelineResult* result) {
+  if (params.step_path.empty()) return absl::OkStatus();
+  BrepParams brep = params.brep;
+  if (!brep.noise_sigma) brep.noise_sigma = result->estimates.noise_sigma;
+  absl::StatusOr<BrepReport> report =
+      WriteStep(mesh, labels, result->regions, result->topology, params.step_path, brep, ctx);
+  if (absl::IsCancelled(report.status())) return report.status();
+  if (report.ok()) {
+    result->brep = *std::move(report);
+  } else {
+    result->brep_error = std::string(report.status().message());
+  }
+  return absl::OkStatus();
+}
+
 absl::StatusOr<PipelineResult> RunOnPointCloud(const std::string& input_path,
                                                const PipelineParams& params,
                                                const RunContext& ctx) {
@@ -114,6 +133,8 @@ absl::StatusOr<PipelineResult> RunOnPointCloud(const std::string& input_path,
   result.point_count = static_cast<int64_t>(cloud.points.size());
   MESHSEG_ASSIGN_OR_RETURN(result.face_labels,
                            SegmentMesh(reconstruction.mesh, params, ctx, &result));
+  MESHSEG_RETURN_IF_ERROR(
+      ExportStep(reconstruction.mesh, result.face_labels, params, ctx, &result));
   result.point_labels = pipeline_internal::PointLabels(
       reconstruction.mesh.tri, result.face_labels, cloud.points, reconstruction.is_outlier);
   return result;
@@ -135,6 +156,7 @@ absl::StatusOr<PipelineResult> RunOnMesh(const std::string& input_path,
     absl::StatusOr<std::vector<int>> mesh_labels = SegmentMesh(mesh, exact, ctx, &result);
     if (mesh_labels.ok()) {
       result.face_labels = pipeline_internal::InputFaceLabels(mesh.face_of_input, *mesh_labels);
+      MESHSEG_RETURN_IF_ERROR(ExportStep(mesh, *mesh_labels, params, ctx, &result));
       return result;
     }
     if (!absl::IsFailedPrecondition(mesh_labels.status())) return mesh_labels.status();
@@ -149,6 +171,7 @@ absl::StatusOr<PipelineResult> RunOnMesh(const std::string& input_path,
                            remesh ? SegmentRemeshed(mesh, edge_length, params, ctx, &result)
                                   : SegmentMesh(mesh, params, ctx, &result));
   result.face_labels = pipeline_internal::InputFaceLabels(mesh.face_of_input, mesh_labels);
+  MESHSEG_RETURN_IF_ERROR(ExportStep(mesh, mesh_labels, params, ctx, &result));
   return result;
 }
 

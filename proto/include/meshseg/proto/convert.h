@@ -26,6 +26,14 @@ v1::SegmentationResult ToProto(const PipelineResult& result);
 // its limit (distance 100 x mean edge length, angle 90 degrees).
 absl::StatusOr<PipelineParams> FromProto(const v1::SegmentOptions& options);
 
+// Returns the core form of a result message (the inverse of ToProto; the
+// features are not read back): labels, regions, estimates and topology,
+// RegionTopology::patch_count from the loops.
+// Errors (INVALID_ARGUMENT): a region without surface type or parameters, a
+// quadric without 10 coefficients, ids that are not their index, references
+// to regions, curves or corners that do not exist.
+absl::StatusOr<PipelineResult> FromProto(const v1::SegmentationResult& result);
+
 // Returns the format a wire format hint names: "" = unset (detect),
 // "stl", "obj", "off", "ply", "xyz", "pwn" (any case).
 // Errors (INVALID_ARGUMENT): any other hint.
