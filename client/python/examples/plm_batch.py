@@ -71,12 +71,16 @@ def main():
     if step is None:
         print("plm_batch: this server's API has no STEP export yet; writing the JSON only")
 
+    # The server writes a STEP file only for uploads that ask for one.
+    upload_fields = {f.name for f in service_pb.UploadHeader.DESCRIPTOR.fields}
+    upload_step = {"step": True} if step is not None and "step" in upload_fields else {}
+
     summary = {}
     with meshseg_client.Client(args.server, token=args.token, tls_ca=args.tls_ca) as client:
         jobs = {}
         for part in parts:
             try:
-                jobs[part] = client.submit(os.path.join(args.folder, part))
+                jobs[part] = client.submit(os.path.join(args.folder, part), **upload_step)
             except meshseg_client.MeshsegError as e:
                 summary[part] = {"state": "REJECTED", "error": str(e)}
         for part, job_id in jobs.items():
@@ -92,10 +96,13 @@ def main():
             summary[part]["regions"] = len(result.regions)
             if step is not None:
                 try:
-                    with open(os.path.join(args.out, stem + ".step"), "wb") as f:
-                        f.write(client.result_bytes(job_id, **step))
+                    data = client.result_bytes(job_id, **step)
                 except meshseg_client.MeshsegError as e:
                     summary[part]["step_error"] = str(e)
+                else:
+                    with open(os.path.join(args.out, stem + ".step"), "wb") as f:
+                        f.write(data)
+                    summary[part]["step_bytes"] = len(data)
 
     with open(os.path.join(args.out, "summary.json"), "w") as f:
         json.dump(summary, f, indent=2)

@@ -153,11 +153,17 @@ class ClientTest(harness.ScratchTestCase):
                          {"box.off": "SUCCEEDED", "flat.off": "SUCCEEDED",
                           "broken.obj": "FAILED"})
         self.assertIn("broken.obj", summary["broken.obj"]["error"])
+        # The API has a STEP export, so the example asks for it: the JSON then
+        # carries the B-rep report, as `meshseg segment --step` writes it.
         for stem in ("box", "flat"):
             harness.run_meshseg("segment", os.path.join(parts, stem + ".off"), "-o",
-                                self.path(stem + ".json"))
+                                self.path(stem + ".json"), "--step", self.path(stem + ".step"))
             with open(self.path(stem + ".json")) as a, open(os.path.join(out, stem + ".json")) as b:
                 self.assertEqual(json.load(b), json.load(a), stem)
+            with open(os.path.join(out, stem + ".step"), "rb") as f:
+                step = f.read()
+            self.assertTrue(step.startswith(b"ISO-10303-21;"), stem)
+            self.assertEqual(summary[stem + ".off"]["step_bytes"], len(step), stem)
 
     def test_no_server_is_unavailable(self):
         # A port nobody listens on: the server just stopped.
