@@ -31,7 +31,7 @@ struct UploadOptions {
   bool checksum = true;
   // UploadHeader.step / .step_unit: the server also writes the STEP file.
   bool step = false;
-  std::string step_unit;
+  std::string step_unit = "";
 };
 
 class MeshsegClient {
