@@ -5,6 +5,7 @@
 
 #include "absl/strings/str_cat.h"
 #include "absl/strings/str_format.h"
+#include "meshseg/proto/grpc_status.h"
 
 namespace meshseg::server {
 namespace {
@@ -118,8 +119,7 @@ void JobStore::Finish(const std::string& id, const absl::Status& status, int64_t
     job.set_face_count(face_count);
     job.set_region_count(region_count);
   } else {
-    job.set_error_code(static_cast<int>(status.code()));
-    job.set_error_message(std::string(status.message()));
+    SetJobError(status, &job);
   }
   --running_;
   Changed();
@@ -144,8 +144,7 @@ absl::StatusOr<JobStore::CancelOutcome> JobStore::Cancel(const std::string& id,
   }
   job.set_state(v1::JOB_STATE_CANCELLED);
   job.set_finished_unix_ms(NowUnixMs());
-  job.set_error_code(static_cast<int>(absl::StatusCode::kCancelled));
-  job.set_error_message(std::string(reason));
+  SetJobError(absl::CancelledError(std::string(reason)), &job);
   Changed();
   return CancelOutcome::kWasQueued;
 }
