@@ -39,6 +39,9 @@ struct PipelineParams {
   FeatureParams features;
   // Upper bound on declared vertex/face counts of the input.
   int64_t max_elements = 200'000'000;
+  // Peak memory the job may take, in bytes; 0 = no limit. A job whose
+  // EstimateJobMemory exceeds it is refused before its input is read.
+  int64_t memory_budget_bytes = 0;
 };
 
 struct PipelineResult {
@@ -67,10 +70,29 @@ struct PipelineResult {
   std::vector<int> point_labels;
 };
 
+// A job's predicted peak resident memory, from the size its input declares
+// (ProbeInput), by the model measured in core/src/pipeline/memory_model.h:
+// a base, the mapped file, a cost per mesh face (plus a full-size remesh when
+// the remesh may run) or per point, times a safety margin.
+struct MemoryEstimate {
+  InputSize input;
+  int64_t peak_bytes = 0;
+};
+
+// Returns the estimate for the file at `input_path` under `params` (its
+// format and remesh settings), reading only its header or its lines.
+// Errors: those of ProbeInput.
+absl::StatusOr<MemoryEstimate> EstimateJobMemory(const std::string& input_path,
+                                                 const PipelineParams& params = {});
+
 // Returns the segmentation of the mesh or point cloud in `input_path`.
 // A point cloud is first reconstructed into a watertight mesh (Reconstruct).
 // Errors: those of ReadMesh / ReadPointCloud, Reconstruct, EstimateCurvature,
-// Segment, ExtractTopology and RecognizeFeatures; CANCELLED on stop.
+// Segment, ExtractTopology and RecognizeFeatures; RESOURCE_EXHAUSTED, before
+// the input is read, when params.memory_budget_bytes is set and the job's
+// EstimateJobMemory exceeds it (the message gives both); INVALID_ARGUMENT
+// for coordinates beyond +-1e75 (their fourth powers overflow the fits);
+// INTERNAL if a number of the result is not finite; CANCELLED on stop.
 absl::StatusOr<PipelineResult> RunPipeline(const std::string& input_path,
                                            const PipelineParams& params = {},
                                            const RunContext& ctx = {});
