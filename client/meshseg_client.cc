@@ -2,6 +2,8 @@
 
 #include <filesystem>
 #include <fstream>
+#include <sstream>
+#include <utility>
 
 #include "absl/strings/str_cat.h"
 #include "meshseg/proto/grpc_status.h"
@@ -10,6 +12,16 @@
 
 namespace meshseg {
 namespace {
+
+absl::StatusOr<std::string> ReadPem(const std::string& path, const char* flag) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  if (in) text << in.rdbuf();
+  if (!in || text.str().empty()) {
+    return absl::NotFoundError(absl::StrCat(flag, ": cannot read PEM file \"", path, "\""));
+  }
+  return text.str();
+}
 
 absl::Status JobError(const v1::Job& job) {
   const auto code = job.error_code() != 0 ? static_cast<absl::StatusCode>(job.error_code())
@@ -22,19 +34,43 @@ absl::Status JobError(const v1::Job& job) {
 
 }  // namespace
 
-MeshsegClient::MeshsegClient(std::shared_ptr<grpc::Channel> channel)
-    : stub_(v1::Segmentation::NewStub(channel)) {}
+MeshsegClient::MeshsegClient(std::shared_ptr<grpc::Channel> channel, std::string token)
+    : stub_(v1::Segmentation::NewStub(channel)), token_(std::move(token)) {}
 
 MeshsegClient MeshsegClient::Connect(const std::string& address) {
+  return *Connect(address, ConnectOptions{});
+}
+
+absl::StatusOr<MeshsegClient> MeshsegClient::Connect(const std::string& address,
+                                                     const ConnectOptions& options) {
   grpc::ChannelArguments args;
   args.SetMaxReceiveMessageSize(8 << 20);
-  return MeshsegClient(
-      grpc::CreateCustomChannel(address, grpc::InsecureChannelCredentials(), args));
+  std::shared_ptr<grpc::ChannelCredentials> credentials = grpc::InsecureChannelCredentials();
+  if (options.tls_cert.empty() != options.tls_key.empty()) {
+    return absl::InvalidArgumentError("--tls-cert and --tls-key must be given together");
+  }
+  if (!options.tls_ca.empty()) {
+    grpc::SslCredentialsOptions ssl;
+    MESHSEG_ASSIGN_OR_RETURN(ssl.pem_root_certs, ReadPem(options.tls_ca, "--tls-ca"));
+    if (!options.tls_cert.empty()) {
+      MESHSEG_ASSIGN_OR_RETURN(ssl.pem_cert_chain, ReadPem(options.tls_cert, "--tls-cert"));
+      MESHSEG_ASSIGN_OR_RETURN(ssl.pem_private_key, ReadPem(options.tls_key, "--tls-key"));
+    }
+    credentials = grpc::SslCredentials(ssl);
+  } else if (!options.tls_cert.empty()) {
+    return absl::InvalidArgumentError("--tls-cert needs --tls-ca (the server's CA)");
+  }
+  return MeshsegClient(grpc::CreateCustomChannel(address, credentials, args), options.token);
+}
+
+void MeshsegClient::Authorize(grpc::ClientContext& context) const {
+  if (!token_.empty()) context.AddMetadata("authorization", absl::StrCat("Bearer ", token_));
 }
 
 std::unique_ptr<grpc::ClientContext> MeshsegClient::UnaryContext() const {
   auto context = std::make_unique<grpc::ClientContext>();
   context->set_deadline(absl::ToChronoTime(absl::Now() + call_timeout_));
+  Authorize(*context);
   return context;
 }
 
@@ -56,6 +92,7 @@ absl::StatusOr<v1::UploadResponse> MeshsegClient::Upload(const std::string& path
   }
 
   grpc::ClientContext context;
+  Authorize(context);
   v1::UploadResponse response;
   std::unique_ptr<grpc::ClientWriter<v1::UploadRequest>> writer =
       stub_->Upload(&context, &response);
@@ -77,6 +114,7 @@ absl::StatusOr<v1::Job> MeshsegClient::Watch(
     const std::string& job_id, const std::function<void(const v1::JobEvent&)>& on_event,
     absl::Duration timeout) {
   grpc::ClientContext context;
+  Authorize(context);
   if (timeout != absl::InfiniteDuration()) {
     context.set_deadline(absl::ToChronoTime(absl::Now() + timeout));
   }
@@ -98,6 +136,7 @@ absl::StatusOr<v1::Job> MeshsegClient::Watch(
 
 absl::StatusOr<v1::SegmentationResult> MeshsegClient::Result(const std::string& job_id) {
   grpc::ClientContext context;
+  Authorize(context);
   v1::GetResultRequest request;
   request.set_job_id(job_id);
   auto reader = stub_->GetResult(&context, request);

@@ -31,12 +31,31 @@ struct UploadOptions {
   bool checksum = true;
 };
 
+// How to reach a server that uses TLS or bearer tokens (server/credentials.h).
+struct ConnectOptions {
+  // PEM file of the CA that signed the server's certificate; set = TLS.
+  std::string tls_ca;
+  // PEM files of this client's certificate and key, for mutual TLS.
+  std::string tls_cert;
+  std::string tls_key;
+  // Sent as "authorization: Bearer TOKEN" with every call; empty = none.
+  std::string token;
+};
+
 class MeshsegClient {
  public:
-  explicit MeshsegClient(std::shared_ptr<grpc::Channel> channel);
+  // `token`: sent with every call when not empty.
+  explicit MeshsegClient(std::shared_ptr<grpc::Channel> channel, std::string token = "");
 
   // Returns a client of the server at `address` (HOST:PORT, plaintext).
   static MeshsegClient Connect(const std::string& address);
+
+  // Returns a client of the server at `address` with TLS when
+  // options.tls_ca is set and the bearer token if given.
+  // Errors: NOT_FOUND for a PEM file that cannot be read; INVALID_ARGUMENT
+  // for --tls-cert without --tls-key (or the reverse) or without --tls-ca.
+  static absl::StatusOr<MeshsegClient> Connect(const std::string& address,
+                                               const ConnectOptions& options);
 
   // Deadline of the unary calls and of each call's wait for the connection.
   void set_call_timeout(absl::Duration timeout) { call_timeout_ = timeout; }
@@ -68,10 +87,13 @@ class MeshsegClient {
   v1::Segmentation::Stub& stub() { return *stub_; }
 
  private:
-  // A context with the unary deadline set.
+  // A context with the unary deadline set, authorized.
   std::unique_ptr<grpc::ClientContext> UnaryContext() const;
+  // Adds the bearer token, if any, to `context`.
+  void Authorize(grpc::ClientContext& context) const;
 
   std::unique_ptr<v1::Segmentation::Stub> stub_;
+  std::string token_;
   absl::Duration call_timeout_ = absl::Seconds(30);
 };
 
