@@ -13,6 +13,7 @@
 #include "absl/strings/str_cat.h"
 #include "server/log.h"
 #include "server/server.h"
+#include "server/usage.h"
 
 namespace {
 const meshseg::server::ServerOptions kDefaults;
@@ -51,7 +52,12 @@ std::vector<char*> UnderscoreFlagNames(int argc, char** argv, std::vector<std::s
 }  // namespace
 
 int main(int argc, char** argv) {
-  absl::SetProgramUsageMessage("meshseg-server --listen HOST:PORT [flags]");
+  constexpr char kSynopsis[] = "meshseg-server --listen HOST:PORT [flags]";
+  if (meshseg::server::WantsHelp(argc, argv)) {
+    std::fputs(meshseg::server::UsageText(kSynopsis).c_str(), stdout);
+    return 0;
+  }
+  absl::SetProgramUsageMessage(kSynopsis);
   std::vector<std::string> storage;
   std::vector<char*> args = UnderscoreFlagNames(argc, argv, storage);
   absl::ParseCommandLine(static_cast<int>(args.size()), args.data());

@@ -8,6 +8,8 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
+#include <regex>
 #include <string>
 #include <thread>
 #include <vector>
@@ -16,6 +18,7 @@
 #include <gtest/gtest.h>
 
 #include "absl/strings/str_cat.h"
+#include "absl/strings/str_replace.h"
 #include "absl/strings/str_split.h"
 #include "absl/synchronization/notification.h"
 #include "client/meshseg_client.h"
@@ -144,6 +147,44 @@ TEST(ServerMain, BadFlagValueExitsNonZero) {
   const int status = pclose(p);
   EXPECT_NE(WEXITSTATUS(status), 0);
   EXPECT_THAT(output, HasSubstr("--queue-capacity"));
+}
+
+// Returns the names of every ABSL_FLAG defined in server/*.cc, hyphenated
+// as the command line spells them ("spool-dir").
+std::vector<std::string> ServerFlagNames() {
+  std::vector<std::string> names;
+  const std::regex flag(R"(ABSL_FLAG\(\s*[^,]+,\s*(\w+)\s*,)");
+  for (const auto& entry :
+       std::filesystem::directory_iterator(std::string(MESHSEG_SOURCE_DIR) + "/server")) {
+    if (entry.path().extension() != ".cc") continue;
+    std::ifstream in(entry.path());
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    for (std::sregex_iterator it(text.begin(), text.end(), flag), end; it != end; ++it) {
+      names.push_back(absl::StrReplaceAll((*it)[1].str(), {{"_", "-"}}));
+    }
+  }
+  return names;
+}
+
+TEST(ServerMain, HelpDocumentsEveryFlagAndExitsZero) {
+  const std::vector<std::string> names = ServerFlagNames();
+  ASSERT_GE(names.size(), 7u) << "the flag scan found too few ABSL_FLAGs";
+  for (const char* help : {"--help", "-h", "--helpfull"}) {
+    const std::string cmd = absl::StrCat(kServer, " ", help, " 2>/dev/null");
+    FILE* p = popen(cmd.c_str(), "r");
+    ASSERT_NE(p, nullptr);
+    std::string output;
+    char buf[256];
+    while (fgets(buf, sizeof buf, p)) output += buf;
+    const int status = pclose(p);
+    EXPECT_EQ(WEXITSTATUS(status), 0) << help;
+    EXPECT_THAT(output, HasSubstr("usage: meshseg-server")) << help;
+    for (const std::string& name : names) {
+      EXPECT_THAT(output, HasSubstr(absl::StrCat("  --", name))) << help << ": " << name;
+    }
+    EXPECT_THAT(output, HasSubstr("(default: \"127.0.0.1:50051\")\n      HOST:PORT to listen on"));
+    EXPECT_THAT(output, Not(HasSubstr("--flagfile"))) << "only the server's own flags";
+  }
 }
 
 // SIGTERM while a job runs and another waits: the waiting one is cancelled,
