@@ -94,31 +94,6 @@ absl::StatusOr<FileFormat> DetectFileFormat(const std::string& path);
 // True if `path` holds a point cloud (XYZ, PWN, or a PLY without faces).
 absl::StatusOr<bool> IsPointCloudFile(const std::string& path);
 
-// The size of an input file as its header declares it (or, for OBJ, ASCII
-// STL and XYZ, which have no counts in a header, as one pass over its lines
-// counts it), known before the file is read: for admission control.
-struct InputSize {
-  FileFormat format = FileFormat::kUnknown;
-  // A cloud: XYZ, PWN, or a PLY without faces.
-  bool point_cloud = false;
-  // Declared vertices (STL: 3 per triangle, before welding; a cloud: points).
-  int64_t vertex_count = 0;
-  // Declared faces, triangles where the format says (OBJ: fan triangles of
-  // its polygons; OFF and PLY: polygons).
-  int64_t face_count = 0;
-  int64_t file_bytes = 0;
-};
-
-// Returns the size `path` declares, reading only its header or streaming
-// its lines (memory use is a few MiB whatever the file's size). `format`
-// overrides detection. Counts are what the file claims; the readers still
-// check them against the data.
-// Errors: NOT_FOUND if it cannot be opened; INVALID_ARGUMENT (naming the
-// file) for an empty or unknown file, a header without counts, a negative
-// count.
-absl::StatusOr<InputSize> ProbeInput(const std::string& path,
-                                     std::optional<FileFormat> format = std::nullopt);
-
 struct ReadMeshOptions {
   // Overrides detection (e.g. a format hint sent with an upload).
   std::optional<FileFormat> format;

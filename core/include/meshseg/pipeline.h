@@ -17,6 +17,7 @@
 #include "absl/status/statusor.h"
 #include "meshseg/curvature.h"
 #include "meshseg/features.h"
+#include "meshseg/input_size.h"
 #include "meshseg/mesh.h"
 #include "meshseg/reconstruct.h"
 #include "meshseg/remesh.h"

@@ -15,7 +15,7 @@
 #include "mesh/ply_header.h"
 #include "mesh/source.h"
 #include "mesh/text_cursor.h"
-#include "meshseg/mesh.h"
+#include "meshseg/input_size.h"
 #include "meshseg/status_macros.h"
 
 namespace meshseg {

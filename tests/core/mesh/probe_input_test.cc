@@ -9,7 +9,7 @@
 #include <string>
 
 #include "absl/strings/str_cat.h"
-#include "meshseg/mesh.h"
+#include "meshseg/input_size.h"
 #include "temp_file.h"
 
 namespace meshseg {
