@@ -34,12 +34,12 @@ struct UploadOptions {
 // How to reach a server that uses TLS or bearer tokens (server/credentials.h).
 struct ConnectOptions {
   // PEM file of the CA that signed the server's certificate; set = TLS.
-  std::string tls_ca;
+  std::string tls_ca = "";
   // PEM files of this client's certificate and key, for mutual TLS.
-  std::string tls_cert;
-  std::string tls_key;
+  std::string tls_cert = "";
+  std::string tls_key = "";
   // Sent as "authorization: Bearer TOKEN" with every call; empty = none.
-  std::string token;
+  std::string token = "";
 };
 
 class MeshsegClient {

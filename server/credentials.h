@@ -27,12 +27,12 @@ namespace meshseg::server {
 
 struct SecurityOptions {
   // PEM files: the server's certificate chain and private key.
-  std::string tls_cert;
-  std::string tls_key;
+  std::string tls_cert = "";
+  std::string tls_key = "";
   // PEM file of the CA that signs client certificates; set = mutual TLS.
-  std::string tls_client_ca;
+  std::string tls_client_ca = "";
   // Token file (auth.h); empty = no authentication.
-  std::string auth_tokens;
+  std::string auth_tokens = "";
   // Allow plaintext without tokens on any address.
   bool insecure = false;
 };

@@ -21,10 +21,9 @@ std::string Quoted(std::string_view value) {
   if (!value.empty() && text == value && value.find_first_of(" \"=") == std::string::npos) {
     return text;
   }
-  return absl::StrCat(
-      "\"",
-      EscapeToUtf8(absl::StrReplaceAll(value, {{"\\", "\\\\"}, {"\"", "\\\""}, {"\n", "\\n"}})),
-      "\"");
+  const std::string escaped =
+      absl::StrReplaceAll(std::string(value), {{"\\", "\\\\"}, {"\"", "\\\""}, {"\n", "\\n"}});
+  return absl::StrCat("\"", EscapeToUtf8(escaped), "\"");
 }
 
 }  // namespace

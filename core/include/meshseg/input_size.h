@@ -16,6 +16,13 @@
 
 namespace meshseg {
 
+// Largest coordinate magnitude an input may have: the surface fits sum
+// fourth powers of coordinates (the quadric's normal equations, seed 000
+// eq. (7)), and 1e75^4 summed over millions of points stays below double's
+// max (1.8e308). Readers refuse vertices beyond it (INVALID_ARGUMENT naming
+// the vertex), as they refuse NaN.
+inline constexpr double kMaxCoordinate = 1e75;
+
 // The size of an input file as its header declares it (or, for OBJ, ASCII
 // STL and XYZ, which have no counts in a header, as one pass over its lines
 // counts it), known before the file is read: for admission control.

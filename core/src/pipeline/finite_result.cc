@@ -82,12 +82,12 @@ void CheckTopology(const Topology& topology, FiniteCheck& check) {
   check.Value("topology mean_edge_length", topology.mean_edge_length);
 }
 
-// Returns OK if `magnitude` (the largest |coordinate| of vertex `index`) is
+// Returns OK if `magnitude` (the largest |coordinate| of point `index`) is
 // at most kMaxCoordinate; NaN fails too.
 absl::Status CheckCoordinate(std::string_view name, std::size_t index, double magnitude) {
   if (magnitude <= kMaxCoordinate) return absl::OkStatus();
   return absl::InvalidArgumentError(absl::StrCat(
-      "pipeline: \"", std::string(name), "\": vertex ", index, " has coordinate ", magnitude,
+      "pipeline: \"", std::string(name), "\": point ", index, " has coordinate ", magnitude,
       ", beyond the +-", kMaxCoordinate,
       " whose fourth powers the surface fits can sum without overflow; rescale the part"));
 }
@@ -97,15 +97,6 @@ absl::Status CheckCoordinate(std::string_view name, std::size_t index, double ma
 absl::Status CheckCoordinateRange(std::string_view name, std::span<const Eigen::Vector3d> points) {
   for (std::size_t i = 0; i < points.size(); ++i) {
     MESHSEG_RETURN_IF_ERROR(CheckCoordinate(name, i, points[i].cwiseAbs().maxCoeff()));
-  }
-  return absl::OkStatus();
-}
-
-absl::Status CheckCoordinateRange(const Mesh& mesh) {
-  for (const auto v : mesh.tri.vertices()) {
-    const OpenMesh::Vec3d& p = mesh.tri.point(v);
-    const double m = std::max({std::abs(p[0]), std::abs(p[1]), std::abs(p[2])});
-    MESHSEG_RETURN_IF_ERROR(CheckCoordinate(mesh.name, static_cast<std::size_t>(v.idx()), m));
   }
   return absl::OkStatus();
 }

@@ -1,9 +1,9 @@
 // Numbers a job can return are finite and computed within double's range.
-// Fits form sums of fourth powers of coordinates (the quadric's normal
-// equations, seed 000 eq. (7)), so coordinates beyond 1e75 overflow to Inf
-// and their results to NaN; such input is refused before any work, and every
-// number of the result is checked before it is returned, so a job never
-// succeeds with NaN in it.
+// Fits form sums of fourth powers of coordinates, so coordinates beyond
+// kMaxCoordinate (input_size.h) overflow to Inf and their results to NaN:
+// the mesh readers refuse such vertices, a cloud's points are checked here
+// before any work, and every number of the result is checked before it is
+// returned, so a job never succeeds with NaN in it.
 #ifndef MESHSEG_PIPELINE_FINITE_RESULT_H_
 #define MESHSEG_PIPELINE_FINITE_RESULT_H_
 
@@ -16,15 +16,10 @@
 
 namespace meshseg::pipeline_internal {
 
-// Largest coordinate magnitude accepted: its fourth power, summed over a
-// few million points, stays below double's max (1.8e308).
-inline constexpr double kMaxCoordinate = 1e75;
-
-// Returns OK if every coordinate of the points (a cloud's) or vertices (a
-// mesh's) has magnitude <= kMaxCoordinate. Errors: INVALID_ARGUMENT
-// `pipeline: "<name>": vertex 5 has coordinate 1e+300, beyond the +-1e+75 ...`.
+// Returns OK if every coordinate of a cloud's `points` has magnitude <=
+// kMaxCoordinate. Errors: INVALID_ARGUMENT `pipeline: "<name>": point 5 has
+// coordinate 1e+300, beyond the +-1e+75 ...`.
 absl::Status CheckCoordinateRange(std::string_view name, std::span<const Eigen::Vector3d> points);
-absl::Status CheckCoordinateRange(const Mesh& mesh);
 
 // Returns OK if every number of `result` is finite. Errors: INTERNAL naming
 // the first non-finite value and where it is (`region 3 (cylinder) radius

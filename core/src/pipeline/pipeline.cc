@@ -147,7 +147,6 @@ absl::StatusOr<PipelineResult> RunOnMesh(const std::string& input_path,
       Mesh mesh,
       ReadMesh(input_path, {.format = params.format, .max_elements = params.max_elements}));
   ctx.Progress("read", 1.0);
-  MESHSEG_RETURN_IF_ERROR(pipeline_internal::CheckCoordinateRange(mesh));
   PipelineResult result;
   const TessellationShape shape = Assess(mesh, params.remesh);
   if (params.remesh.mode == RemeshMode::kAuto && shape.too_fine_to_remesh) {

@@ -38,17 +38,18 @@ std::string WriteBox(const std::string& name, double scale) {
   return path;
 }
 
-TEST(CheckCoordinateRange, RefusesCoordinatesWhoseFourthPowersOverflow) {
+TEST(CheckCoordinateRange, RefusesCloudCoordinatesWhoseFourthPowersOverflow) {
   const std::vector<Eigen::Vector3d> ok = {{0, 0, 0}, {-1e75, 1e75, 3}};
   EXPECT_TRUE(CheckCoordinateRange("a.xyz", ok).ok());
   const std::vector<Eigen::Vector3d> big = {{0, 0, 0}, {1, 2, -1e76}};
   const absl::Status s = CheckCoordinateRange("a.xyz", big);
   EXPECT_EQ(s.code(), absl::StatusCode::kInvalidArgument);
   EXPECT_THAT(Message(s),
-              HasSubstr("\"a.xyz\": vertex 1 has coordinate 1e+76, beyond the +-1e+75"));
+              HasSubstr("\"a.xyz\": point 1 has coordinate 1e+76, beyond the +-1e+75"));
 }
 
-// The mesh scaled by 1e300 used to end SUCCEEDED with NaN parameters.
+// The mesh scaled by 1e300 used to end SUCCEEDED with NaN parameters; the
+// reader now refuses it, before its areas overflow to "12 degenerate".
 TEST(RunPipeline, AMeshScaledBy1e300FailsWithAReason) {
   const absl::StatusOr<PipelineResult> r = RunPipeline(WriteBox("huge_box.off", 1e300));
   EXPECT_EQ(r.status().code(), absl::StatusCode::kInvalidArgument);
