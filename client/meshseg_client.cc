@@ -2,26 +2,16 @@
 
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <utility>
 
 #include "absl/strings/str_cat.h"
+#include "meshseg/proto/credential_files.h"
 #include "meshseg/proto/grpc_status.h"
 #include "meshseg/proto/sha256.h"
 #include "meshseg/status_macros.h"
 
 namespace meshseg {
 namespace {
-
-absl::StatusOr<std::string> ReadPem(const std::string& path, const char* flag) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  if (in) text << in.rdbuf();
-  if (!in || text.str().empty()) {
-    return absl::NotFoundError(absl::StrCat(flag, ": cannot read PEM file \"", path, "\""));
-  }
-  return text.str();
-}
 
 absl::Status JobError(const v1::Job& job) {
   const auto code = job.error_code() != 0 ? static_cast<absl::StatusCode>(job.error_code())
@@ -51,10 +41,12 @@ absl::StatusOr<MeshsegClient> MeshsegClient::Connect(const std::string& address,
   }
   if (!options.tls_ca.empty()) {
     grpc::SslCredentialsOptions ssl;
-    MESHSEG_ASSIGN_OR_RETURN(ssl.pem_root_certs, ReadPem(options.tls_ca, "--tls-ca"));
+    MESHSEG_ASSIGN_OR_RETURN(ssl.pem_root_certs, ReadCredentialFile(options.tls_ca, "--tls-ca"));
     if (!options.tls_cert.empty()) {
-      MESHSEG_ASSIGN_OR_RETURN(ssl.pem_cert_chain, ReadPem(options.tls_cert, "--tls-cert"));
-      MESHSEG_ASSIGN_OR_RETURN(ssl.pem_private_key, ReadPem(options.tls_key, "--tls-key"));
+      MESHSEG_ASSIGN_OR_RETURN(ssl.pem_cert_chain,
+                               ReadCredentialFile(options.tls_cert, "--tls-cert"));
+      MESHSEG_ASSIGN_OR_RETURN(ssl.pem_private_key,
+                               ReadCredentialFile(options.tls_key, "--tls-key"));
     }
     credentials = grpc::SslCredentials(ssl);
   } else if (!options.tls_cert.empty()) {

@@ -1,13 +1,12 @@
 #include "server/auth.h"
 
-#include <fstream>
-#include <sstream>
 #include <utility>
 #include <vector>
 
 #include "absl/strings/ascii.h"
 #include "absl/strings/str_cat.h"
 #include "absl/strings/str_split.h"
+#include "meshseg/proto/credential_files.h"
 #include "meshseg/proto/sha256.h"
 #include "meshseg/status_macros.h"
 
@@ -33,14 +32,6 @@ bool IsTenantName(std::string_view name) {
     }
   }
   return true;
-}
-
-absl::StatusOr<std::string> ReadFile(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return absl::NotFoundError(absl::StrCat("auth: cannot read token file \"", path, "\""));
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
 }
 
 // Refuses calls without a known bearer token, except to open methods.
@@ -119,13 +110,13 @@ absl::StatusOr<std::map<std::string, std::string>> ParseTokenFile(std::string_vi
 }
 
 absl::StatusOr<std::shared_ptr<TokenAuth>> TokenAuth::Load(const std::string& path) {
-  MESHSEG_ASSIGN_OR_RETURN(const std::string text, ReadFile(path));
+  MESHSEG_ASSIGN_OR_RETURN(const std::string text, ReadCredentialFile(path, "--auth-tokens"));
   MESHSEG_ASSIGN_OR_RETURN(auto by_digest, ParseTokenFile(text, path));
   return std::shared_ptr<TokenAuth>(new TokenAuth(path, std::move(by_digest)));
 }
 
 absl::StatusOr<int> TokenAuth::Reload() {
-  MESHSEG_ASSIGN_OR_RETURN(const std::string text, ReadFile(path_));
+  MESHSEG_ASSIGN_OR_RETURN(const std::string text, ReadCredentialFile(path_, "--auth-tokens"));
   MESHSEG_ASSIGN_OR_RETURN(auto by_digest, ParseTokenFile(text, path_));
   absl::MutexLock lock(&mu_);
   by_digest_ = std::move(by_digest);

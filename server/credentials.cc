@@ -2,24 +2,12 @@
 
 #include <grpcpp/security/server_credentials.h>
 
-#include <fstream>
-#include <sstream>
-
 #include "absl/strings/str_cat.h"
+#include "meshseg/proto/credential_files.h"
 #include "meshseg/status_macros.h"
 
 namespace meshseg::server {
 namespace {
-
-absl::StatusOr<std::string> ReadPem(const std::string& path, const char* flag) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  if (in) text << in.rdbuf();
-  if (!in || text.str().empty()) {
-    return absl::NotFoundError(absl::StrCat(flag, ": cannot read PEM file \"", path, "\""));
-  }
-  return text.str();
-}
 
 // Returns the host part of HOST:PORT ("[::1]" keeps its brackets).
 std::string HostOf(const std::string& listen) { return listen.substr(0, listen.rfind(':')); }
@@ -30,11 +18,12 @@ absl::StatusOr<std::shared_ptr<grpc::ServerCredentials>> TlsCredentials(
     const SecurityOptions& options) {
   grpc::SslServerCredentialsOptions ssl;
   grpc::SslServerCredentialsOptions::PemKeyCertPair pair;
-  MESHSEG_ASSIGN_OR_RETURN(pair.private_key, ReadPem(options.tls_key, "--tls-key"));
-  MESHSEG_ASSIGN_OR_RETURN(pair.cert_chain, ReadPem(options.tls_cert, "--tls-cert"));
+  MESHSEG_ASSIGN_OR_RETURN(pair.private_key, ReadCredentialFile(options.tls_key, "--tls-key"));
+  MESHSEG_ASSIGN_OR_RETURN(pair.cert_chain, ReadCredentialFile(options.tls_cert, "--tls-cert"));
   ssl.pem_key_cert_pairs.push_back(std::move(pair));
   if (!options.tls_client_ca.empty()) {
-    MESHSEG_ASSIGN_OR_RETURN(ssl.pem_root_certs, ReadPem(options.tls_client_ca, "--tls-client-ca"));
+    MESHSEG_ASSIGN_OR_RETURN(ssl.pem_root_certs,
+                             ReadCredentialFile(options.tls_client_ca, "--tls-client-ca"));
     ssl.client_certificate_request = GRPC_SSL_REQUEST_AND_REQUIRE_CLIENT_CERTIFICATE_AND_VERIFY;
   }
   return grpc::SslServerCredentials(ssl);

@@ -111,34 +111,6 @@ absl::StatusOr<std::string> CallAs(const std::string& address, const ConnectOpti
   return job->job_id();
 }
 
-// Returns the health status (1 = SERVING) over `credentials`, no token.
-int Health(const std::string& address, std::shared_ptr<grpc::ChannelCredentials> credentials) {
-  grpc::GenericStub stub(grpc::CreateChannel(address, credentials));
-  grpc::ClientContext context;
-  context.set_deadline(absl::ToChronoTime(absl::Now() + absl::Seconds(5)));
-  grpc::CompletionQueue cq;
-  grpc::Slice empty;
-  grpc::ByteBuffer request(&empty, 1);
-  auto call = stub.PrepareUnaryCall(&context, "/grpc.health.v1.Health/Check", request, &cq);
-  call->StartCall();
-  grpc::ByteBuffer response;
-  grpc::Status status;
-  call->Finish(&response, &status, reinterpret_cast<void*>(1));
-  void* tag = nullptr;
-  bool ok = false;
-  cq.Next(&tag, &ok);
-  cq.Shutdown();
-  while (cq.Next(&tag, &ok)) {
-  }
-  if (!status.ok()) return -static_cast<int>(status.error_code());
-  std::vector<grpc::Slice> slices;
-  response.Dump(&slices);
-  std::string bytes;
-  for (const grpc::Slice& s : slices)
-    bytes.append(reinterpret_cast<const char*>(s.begin()), s.size());
-  return bytes.size() == 2 ? bytes[1] : 0;
-}
-
 std::string ReadAll(const std::string& path) {
   std::ifstream in(path);
   return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
@@ -219,7 +191,8 @@ TEST_F(Credentials, TokensMapToTenantsPerCallAndHealthNeedsNone) {
 
   grpc::SslCredentialsOptions ssl;
   ssl.pem_root_certs = ReadAll(certs_->ca);
-  EXPECT_EQ(Health(server.address(), grpc::SslCredentials(ssl)), 1) << "probes need no token";
+  EXPECT_EQ(testing_server::HealthStatus(server.address(), grpc::SslCredentials(ssl)), 1)
+      << "probes need no token";
 }
 
 // gRPC shares one AuthContext per connection; tenants must still be per
@@ -241,7 +214,7 @@ TEST_F(Credentials, TokensWithoutTlsWorkOnLoopback) {
   SecureServer server({}, Tokens());
   EXPECT_EQ(CallAs(server.address(), {.token = kBob}).value_or("?"), "bob");
   EXPECT_EQ(CallAs(server.address(), {}).status().code(), absl::StatusCode::kUnauthenticated);
-  EXPECT_EQ(Health(server.address(), grpc::InsecureChannelCredentials()), 1);
+  EXPECT_EQ(testing_server::HealthStatus(server.address(), grpc::InsecureChannelCredentials()), 1);
 }
 
 TEST(BuildTransport, PlaintextListensOnLoopbackUnlessInsecure) {

@@ -137,15 +137,25 @@ TEST(ServerMain, PrintsTheBoundPortAndStopsOnSigterm) {
   EXPECT_GT(done, signal) << server.Log();
 }
 
-TEST(ServerMain, BadFlagValueExitsNonZero) {
-  const std::string cmd = kServer + " --listen 127.0.0.1:0 --queue-capacity 0 2>&1";
-  FILE* p = popen(cmd.c_str(), "r");
-  ASSERT_NE(p, nullptr);
+// Runs the shell command `cmd`; returns its stdout and sets *exit_code.
+std::string RunCommand(const std::string& cmd, int* exit_code) {
   std::string output;
+  FILE* p = popen(cmd.c_str(), "r");
+  if (p == nullptr) {
+    *exit_code = -1;
+    return output;
+  }
   char buf[256];
   while (fgets(buf, sizeof buf, p)) output += buf;
-  const int status = pclose(p);
-  EXPECT_NE(WEXITSTATUS(status), 0);
+  *exit_code = WEXITSTATUS(pclose(p));
+  return output;
+}
+
+TEST(ServerMain, BadFlagValueExitsNonZero) {
+  int exit_code = 0;
+  const std::string output =
+      RunCommand(kServer + " --listen 127.0.0.1:0 --queue-capacity 0 2>&1", &exit_code);
+  EXPECT_NE(exit_code, 0);
   EXPECT_THAT(output, HasSubstr("--queue-capacity"));
 }
 
@@ -170,14 +180,10 @@ TEST(ServerMain, HelpDocumentsEveryFlagAndExitsZero) {
   const std::vector<std::string> names = ServerFlagNames();
   ASSERT_GE(names.size(), 7u) << "the flag scan found too few ABSL_FLAGs";
   for (const char* help : {"--help", "-h", "--helpfull"}) {
-    const std::string cmd = absl::StrCat(kServer, " ", help, " 2>/dev/null");
-    FILE* p = popen(cmd.c_str(), "r");
-    ASSERT_NE(p, nullptr);
-    std::string output;
-    char buf[256];
-    while (fgets(buf, sizeof buf, p)) output += buf;
-    const int status = pclose(p);
-    EXPECT_EQ(WEXITSTATUS(status), 0) << help;
+    int exit_code = -1;
+    const std::string output =
+        RunCommand(absl::StrCat(kServer, " ", help, " 2>/dev/null"), &exit_code);
+    EXPECT_EQ(exit_code, 0) << help;
     EXPECT_THAT(output, HasSubstr("usage: meshseg-server")) << help;
     for (const std::string& name : names) {
       EXPECT_THAT(output, HasSubstr(absl::StrCat("  --", name))) << help << ": " << name;

@@ -77,8 +77,11 @@ struct Gate {
 // Returns the grpc.health.v1 status of the whole server: 1 = SERVING,
 // 2 = NOT_SERVING, -1 = the call failed. The messages are tiny, so they are
 // encoded by hand (HealthCheckRequest{} is empty; the response is field 1).
-inline int HealthStatus(const std::string& address) {
-  auto channel = grpc::CreateChannel(address, grpc::InsecureChannelCredentials());
+// `credentials`: plaintext unless given (TLS tests).
+inline int HealthStatus(const std::string& address,
+                        std::shared_ptr<grpc::ChannelCredentials> credentials = nullptr) {
+  if (credentials == nullptr) credentials = grpc::InsecureChannelCredentials();
+  auto channel = grpc::CreateChannel(address, credentials);
   grpc::GenericStub stub(channel);
   grpc::ClientContext context;
   context.set_deadline(absl::ToChronoTime(absl::Now() + absl::Seconds(5)));
