@@ -12,6 +12,7 @@ PACKAGES=(
   libhiredis-dev redis-server
   libssl-dev
   openssl
+  time
 )
 
 SUDO=""

@@ -7,7 +7,7 @@
 // may see. The table is re-read on Reload() (main.cc calls it on SIGHUP).
 //
 // Token file: one "TOKEN TENANT" pair per line, '#' starts a comment.
-// Tokens are at least 16 printable ASCII characters without spaces; tenants
+// Tokens are at least 16 printable ASCII characters without spaces or '#'; tenants
 // are 1-64 characters of [A-Za-z0-9._-]; a token may appear once.
 //
 // gRPC shares one AuthContext between all calls of a connection (its
