@@ -59,12 +59,6 @@ struct HostileUpload {
   std::function<void(v1::UploadHeader&)> tweak = {};
 };
 
-std::string Repeat(const std::string& s, int n) {
-  std::string out;
-  for (int i = 0; i < n; ++i) out += s;
-  return out;
-}
-
 std::string Le32(uint32_t v) {
   std::string s(4, '\0');
   std::memcpy(s.data(), &v, 4);
