@@ -13,6 +13,7 @@ PACKAGES=(
   libssl-dev
   openssl
   time
+  nodejs
 )
 
 SUDO=""
@@ -24,6 +25,12 @@ for p in "${PACKAGES[@]}"; do
     missing+=("$p")
   fi
 done
+
+# npm (deploy/ validation): Debian's package, unless the installed node
+# already ships it (NodeSource's nodejs does, and conflicts with Debian's npm).
+if ! command -v npm >/dev/null 2>&1; then
+  missing+=(npm)
+fi
 
 if [ ${#missing[@]} -eq 0 ]; then
   echo "setup: all ${#PACKAGES[@]} packages already installed"
