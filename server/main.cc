@@ -1,6 +1,7 @@
 // meshseg-server: the segmentation service (proto/meshseg/v1/service.proto).
 // Prints "listening on HOST:PORT" once it accepts calls; SIGTERM or SIGINT
-// shut it down gracefully. Log lines (key=value) go to stderr.
+// shut it down gracefully; SIGHUP re-reads the --auth-tokens file. Log lines
+// (key=value) go to stderr.
 #include <csignal>
 #include <cstdio>
 #include <algorithm>
@@ -44,6 +45,19 @@ ABSL_FLAG(absl::Duration, result_ttl, kDefaults.result_ttl,
           "how long a finished job and its result are kept, e.g. 24h, 30m");
 ABSL_FLAG(absl::Duration, shutdown_grace, kDefaults.shutdown_grace,
           "on SIGTERM/SIGINT, how long running jobs may take before they are cancelled");
+ABSL_FLAG(std::string, tls_cert, "", "PEM certificate chain of the server; with --tls-key = TLS");
+ABSL_FLAG(std::string, tls_key, "", "PEM private key of --tls-cert");
+ABSL_FLAG(std::string, tls_client_ca, "",
+          "PEM CA certificate(s); set = mutual TLS: clients must present a certificate it "
+          "signed");
+ABSL_FLAG(std::string, auth_tokens, "",
+          "file of \"TOKEN TENANT\" lines: every call but health needs \"authorization: Bearer "
+          "TOKEN\" and sees only its tenant's jobs; re-read on SIGHUP");
+ABSL_FLAG(bool, insecure, false,
+          "without TLS, listen on the --listen address as given (plaintext from the network); "
+          "without it a server with no TLS listens on 127.0.0.1 only");
+ABSL_FLAG(bool, reflection, false,
+          "serve gRPC server reflection (grpcurl lists and calls the API without .proto files)");
 
 namespace {
 
@@ -81,6 +95,7 @@ int main(int argc, char** argv) {
   sigemptyset(&signals);
   sigaddset(&signals, SIGTERM);
   sigaddset(&signals, SIGINT);
+  sigaddset(&signals, SIGHUP);
   pthread_sigmask(SIG_BLOCK, &signals, nullptr);
 
   meshseg::server::ServerOptions options;
@@ -102,6 +117,12 @@ int main(int argc, char** argv) {
   options.spool_dir = absl::GetFlag(FLAGS_spool_dir);
   options.result_ttl = absl::GetFlag(FLAGS_result_ttl);
   options.shutdown_grace = absl::GetFlag(FLAGS_shutdown_grace);
+  options.security.tls_cert = absl::GetFlag(FLAGS_tls_cert);
+  options.security.tls_key = absl::GetFlag(FLAGS_tls_key);
+  options.security.tls_client_ca = absl::GetFlag(FLAGS_tls_client_ca);
+  options.security.auth_tokens = absl::GetFlag(FLAGS_auth_tokens);
+  options.security.insecure = absl::GetFlag(FLAGS_insecure);
+  options.reflection = absl::GetFlag(FLAGS_reflection);
 
   auto server = meshseg::server::Server::Start(options);
   if (!server.ok()) {
@@ -112,7 +133,10 @@ int main(int argc, char** argv) {
   std::fflush(stdout);
 
   int signal_number = 0;
-  sigwait(&signals, &signal_number);
+  while (sigwait(&signals, &signal_number) == 0 && signal_number == SIGHUP) {
+    meshseg::server::Log("signal", {{"signal", "SIGHUP"}});
+    (void)(*server)->ReloadTokens();  // logs the outcome; a bad file keeps the old tokens
+  }
   meshseg::server::Log("signal", {{"signal", signal_number == SIGTERM ? "SIGTERM" : "SIGINT"}});
   (*server)->Shutdown();
   return 0;

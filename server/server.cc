@@ -3,6 +3,7 @@
 #include <grpcpp/ext/proto_server_reflection_plugin.h>
 #include <grpcpp/grpcpp.h>
 #include <grpcpp/health_check_service_interface.h>
+#include <grpcpp/impl/server_builder_option.h>
 
 #include <algorithm>
 #include <condition_variable>
@@ -14,7 +15,9 @@
 #include "absl/synchronization/notification.h"
 #include "absl/time/clock.h"
 #include "meshseg/status_macros.h"
+#include "server/auth.h"
 #include "server/backend.h"
+#include "server/credentials.h"
 #include "server/log.h"
 #include "server/service.h"
 #include "server/worker_pool.h"
@@ -27,6 +30,26 @@ constexpr int kMaxReceiveBytes = 8 << 20;
 // Open calls (watchers) get this long to end after the jobs are done.
 constexpr absl::Duration kCallDrainTime = absl::Seconds(2);
 
+// Serves reflection on this server if `on`, else not. Linking
+// libgrpc++_reflection registers its plugin for every server the process
+// builds (a static initializer), so it is taken out of the builder's
+// plugins here and added back only when asked for.
+class ReflectionOption : public grpc::ServerBuilderOption {
+ public:
+  explicit ReflectionOption(bool on) : on_(on) {}
+  void UpdateArguments(grpc::ChannelArguments* /*args*/) override {}
+  void UpdatePlugins(std::vector<std::unique_ptr<grpc::ServerBuilderPlugin>>* plugins) override {
+    auto reflection = std::make_unique<grpc::reflection::ProtoServerReflectionPlugin>();
+    std::erase_if(*plugins, [&](const std::unique_ptr<grpc::ServerBuilderPlugin>& plugin) {
+      return plugin->name() == reflection->name();
+    });
+    if (on_) plugins->push_back(std::move(reflection));
+  }
+
+ private:
+  const bool on_;
+};
+
 }  // namespace
 
 struct Server::Parts {
@@ -35,6 +58,8 @@ struct Server::Parts {
   std::unique_ptr<SegmentationService> service;  // roles all and api
   std::unique_ptr<WorkerPool> workers;           // roles all and worker
   std::unique_ptr<grpc::Server> grpc_server;
+  std::shared_ptr<TokenAuth> auth;  // null without --auth-tokens
+  std::string listen;               // as bound (credentials.h may move it to loopback)
   int port = 0;
   std::jthread sweeper;
   std::once_flag shutdown_once;
@@ -70,23 +95,31 @@ absl::StatusOr<std::unique_ptr<Server>> Server::Start(ServerOptions options) {
   auto parts = std::make_unique<Parts>();
   MESHSEG_ASSIGN_OR_RETURN(parts->options, ResolveOptions(std::move(options)));
   const ServerOptions& o = parts->options;
+  if (!o.security.auth_tokens.empty()) {
+    MESHSEG_ASSIGN_OR_RETURN(parts->auth, TokenAuth::Load(o.security.auth_tokens));
+  }
+  MESHSEG_ASSIGN_OR_RETURN(const Transport transport,
+                           BuildTransport(o.security, o.listen, parts->auth));
+  parts->listen = transport.listen;
   MESHSEG_ASSIGN_OR_RETURN(parts->backend, OpenBackend(o));
   Backend& b = *parts->backend;
   if (o.role != Role::kWorker) {
     parts->service = std::make_unique<SegmentationService>(*b.store, *b.queue, *b.blobs, *b.spool,
-                                                           o.max_upload_bytes);
+                                                           o.max_upload_bytes, parts->auth);
   }
 
   grpc::EnableDefaultHealthCheckService(true);
-  grpc::reflection::InitProtoReflectionServerBuilderPlugin();
   grpc::ServerBuilder builder;
-  builder.AddListeningPort(o.listen, grpc::InsecureServerCredentials(), &parts->port);
+  builder.AddListeningPort(transport.listen, transport.credentials, &parts->port);
   builder.SetMaxReceiveMessageSize(kMaxReceiveBytes);
+  builder.SetOption(std::make_unique<ReflectionOption>(o.reflection));
   if (parts->service) builder.RegisterService(parts->service.get());
   parts->grpc_server = builder.BuildAndStart();
   if (!parts->grpc_server || parts->port == 0) {
-    return absl::UnavailableError(absl::StrCat("server: cannot listen on \"", o.listen, "\""));
+    return absl::UnavailableError(
+        absl::StrCat("server: cannot listen on \"", transport.listen, "\""));
   }
+  if (!transport.note.empty()) Log("listen_loopback_only", {{"reason", transport.note}});
   if (o.role != Role::kApi) {
     parts->workers = std::make_unique<WorkerPool>(o.workers, o.max_attempts, *b.queue, *b.store,
                                                   *b.blobs, *b.spool, o.runner);
@@ -95,7 +128,10 @@ absl::StatusOr<std::unique_ptr<Server>> Server::Start(ServerOptions options) {
   if (o.role != Role::kWorker) {
     parts->sweeper = std::jthread([p](std::stop_token stop) { p->Sweep(stop); });
   }
-  Log("server_started", {{"listen", o.listen},
+  Log("server_started", {{"listen", transport.listen},
+                         {"transport", transport.mode},
+                         {"auth", parts->auth ? "tokens" : "none"},
+                         {"reflection", o.reflection ? "on" : "off"},
                          {"port", absl::StrCat(parts->port)},
                          {"role", RoleName(o.role)},
                          {"queue", o.queue.empty() ? "embedded" : o.queue},
@@ -108,8 +144,21 @@ absl::StatusOr<std::unique_ptr<Server>> Server::Start(ServerOptions options) {
 int Server::port() const { return parts_->port; }
 
 std::string Server::address() const {
-  const std::string& listen = parts_->options.listen;
+  const std::string& listen = parts_->listen;
   return absl::StrCat(listen.substr(0, listen.rfind(':')), ":", parts_->port);
+}
+
+absl::StatusOr<int> Server::ReloadTokens() {
+  if (parts_->auth == nullptr) {
+    return absl::FailedPreconditionError("tokens: the server runs without --auth-tokens");
+  }
+  absl::StatusOr<int> count = parts_->auth->Reload();
+  if (count.ok()) {
+    Log("tokens_reloaded", {{"tokens", absl::StrCat(*count)}});
+  } else {
+    Log("tokens_reload_failed", {{"error", std::string(count.status().message())}});
+  }
+  return count;
 }
 
 int64_t Server::SpoolFileCount() const { return parts_->backend->spool->FileCount(); }

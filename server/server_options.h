@@ -15,6 +15,7 @@
 #include "absl/time/time.h"
 #include "meshseg/pipeline.h"
 #include "meshseg/run_context.h"
+#include "server/credentials.h"
 
 namespace meshseg::server {
 
@@ -59,6 +60,12 @@ struct ServerOptions {
   absl::Duration shutdown_grace = absl::Seconds(30);
   // The job itself. Empty = RunPipeline.
   JobRunner runner = {};
+  // TLS, mutual TLS, bearer tokens, --insecure (credentials.h).
+  SecurityOptions security = {};
+  // Serve gRPC server reflection (grpcurl and the like list and call the
+  // API without .proto files). Off by default: it describes the whole API
+  // to anyone who connects.
+  bool reflection = false;
 };
 
 // Returns "all", "api" or "worker".

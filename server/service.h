@@ -10,8 +10,12 @@
 
 #include <atomic>
 #include <cstdint>
+#include <memory>
+#include <string>
 
+#include "absl/status/statusor.h"
 #include "meshseg/v1/service.grpc.pb.h"
+#include "server/auth.h"
 #include "server/blob_store.h"
 #include "server/job_queue.h"
 #include "server/job_store.h"
@@ -23,13 +27,16 @@ class SegmentationService final : public v1::Segmentation::Service {
  public:
   // All references must outlive the service.
   // `scratch` holds uploads while they arrive, before they are put in `blobs`.
+  // `auth` (null: no authentication, every caller is the tenant "") says
+  // which tenant a call comes from.
   SegmentationService(JobStore& store, JobQueue& queue, BlobStore& blobs, const Spool& scratch,
-                      int64_t max_upload_bytes)
+                      int64_t max_upload_bytes, std::shared_ptr<const TokenAuth> auth = nullptr)
       : store_(store),
         queue_(queue),
         blobs_(blobs),
         scratch_(scratch),
-        max_upload_bytes_(max_upload_bytes) {}
+        max_upload_bytes_(max_upload_bytes),
+        auth_(std::move(auth)) {}
 
   // From now on Upload answers UNAVAILABLE (shutting down).
   void StopAccepting() { accepting_ = false; }
@@ -53,7 +60,12 @@ class SegmentationService final : public v1::Segmentation::Service {
   JobQueue& queue_;
   BlobStore& blobs_;
   const Spool& scratch_;
+  // Returns the caller's tenant ("" without --auth-tokens).
+  // Errors: UNAUTHENTICATED (the auth processor let no such call through).
+  absl::StatusOr<std::string> TenantOf(const grpc::ServerContext& context) const;
+
   const int64_t max_upload_bytes_;
+  const std::shared_ptr<const TokenAuth> auth_;
   std::atomic<bool> accepting_ = true;
 };
 

@@ -138,6 +138,36 @@ TEST(ServerMain, PrintsTheBoundPortAndStopsOnSigterm) {
   EXPECT_GT(done, signal) << server.Log();
 }
 
+// SIGHUP re-reads --auth-tokens: a token added to the file works after it,
+// a removed one stops working; the process keeps running. (Without TLS the
+// tokens ride gRPC local credentials, which the client's plaintext channel
+// to 127.0.0.1 satisfies.)
+TEST(ServerMain, SighupReloadsTheTokenFile) {
+  const std::string tokens = FreshDir("auth") + "/tokens.txt";
+  constexpr char kOld[] = "old-token-0123456789ab";
+  constexpr char kNew[] = "new-token-0123456789ab";
+  std::ofstream(tokens) << kOld << " acme\n";
+  ServerProcess server({"--spool-dir", FreshDir("spool"), "--workers", "1", "--auth-tokens",
+                        tokens});
+  ASSERT_FALSE(server.address().empty()) << server.Log();
+  const auto list_code = [&](const std::string& token) {
+    absl::StatusOr<MeshsegClient> client = MeshsegClient::Connect(server.address(), {.token = token});
+    if (!client.ok()) return client.status().code();
+    client->set_call_timeout(absl::Seconds(5));
+    return client->ListJobs().status().code();
+  };
+  EXPECT_EQ(list_code(kOld), absl::StatusCode::kOk);
+  EXPECT_EQ(list_code(kNew), absl::StatusCode::kUnauthenticated);
+  std::ofstream(tokens, std::ios::trunc) << kNew << " acme\n";
+  server.Signal(SIGHUP);
+  ASSERT_TRUE(server.AwaitLog("event=tokens_reloaded tokens=1", kTimeout)) << server.Log();
+  EXPECT_EQ(list_code(kNew), absl::StatusCode::kOk);
+  EXPECT_EQ(list_code(kOld), absl::StatusCode::kUnauthenticated);
+  EXPECT_THAT(server.Log(), HasSubstr("transport=local"));
+  server.Signal(SIGTERM);
+  EXPECT_EQ(server.AwaitExit(kTimeout), 0);
+}
+
 // Runs the shell command `cmd`; returns its stdout and sets *exit_code.
 std::string RunCommand(const std::string& cmd, int* exit_code) {
   std::string output;
