@@ -162,12 +162,24 @@ absl::StatusOr<v1::Job> MeshsegClient::GetJob(const std::string& job_id) {
   return job;
 }
 
-absl::StatusOr<std::vector<v1::Job>> MeshsegClient::ListJobs() {
+absl::StatusOr<v1::ListJobsResponse> MeshsegClient::ListJobsPage(
+    const v1::ListJobsRequest& request) {
   auto context = UnaryContext();
   v1::ListJobsResponse response;
-  MESHSEG_RETURN_IF_ERROR(
-      FromGrpcStatus(stub_->ListJobs(context.get(), v1::ListJobsRequest(), &response)));
-  return std::vector<v1::Job>(response.jobs().begin(), response.jobs().end());
+  MESHSEG_RETURN_IF_ERROR(FromGrpcStatus(stub_->ListJobs(context.get(), request, &response)));
+  return response;
+}
+
+absl::StatusOr<std::vector<v1::Job>> MeshsegClient::ListJobs() {
+  std::vector<v1::Job> jobs;
+  v1::ListJobsRequest request;
+  request.set_page_size(1000);
+  do {
+    MESHSEG_ASSIGN_OR_RETURN(v1::ListJobsResponse page, ListJobsPage(request));
+    for (v1::Job& job : *page.mutable_jobs()) jobs.push_back(std::move(job));
+    request.set_page_token(page.next_page_token());
+  } while (!request.page_token().empty());
+  return jobs;
 }
 
 absl::StatusOr<v1::Job> MeshsegClient::Cancel(const std::string& job_id) {

@@ -75,7 +75,10 @@ class MeshsegClient {
   absl::StatusOr<v1::SegmentationResult> Result(const std::string& job_id);
 
   absl::StatusOr<v1::Job> GetJob(const std::string& job_id);
+  // Returns every job of the caller's tenant, oldest first (all pages).
   absl::StatusOr<std::vector<v1::Job>> ListJobs();
+  // Returns one page of the caller's jobs (`request`: size, token, state).
+  absl::StatusOr<v1::ListJobsResponse> ListJobsPage(const v1::ListJobsRequest& request);
   absl::StatusOr<v1::Job> Cancel(const std::string& job_id);
 
   // Upload, watch and fetch: the server path of `meshseg segment`. A job that

@@ -26,7 +26,7 @@ absl::Status CheckSucceeded(const v1::Job& job) {
 grpc::Status SegmentationService::GetResult(grpc::ServerContext* context,
                                             const v1::GetResultRequest* request,
                                             grpc::ServerWriter<v1::ResultChunk>* writer) {
-  absl::StatusOr<v1::Job> job = store_.Get(request->job_id());
+  absl::StatusOr<v1::Job> job = OwnJob(*context, request->job_id());
   if (!job.ok()) return ToGrpcStatus(job.status());
   if (absl::Status s = CheckSucceeded(*job); !s.ok()) return ToGrpcStatus(s);
   if (request->chunk_size() < 0) {

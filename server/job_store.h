@@ -113,6 +113,10 @@ class JobStore {
 // The terminal state a job ends in with `status`.
 v1::JobState TerminalState(const absl::Status& status);
 
+// The NOT_FOUND of a job id that is unknown, expired, or another tenant's
+// (one message for all three: an id's existence is not revealed).
+absl::Status JobNotFound(const std::string& id);
+
 // The message of a job given up after `attempts` starts (of `max_attempts`).
 std::string GaveUpMessage(int attempts, int max_attempts);
 

@@ -12,11 +12,6 @@ namespace {
 
 int64_t NowUnixMs() { return absl::ToUnixMillis(absl::Now()); }
 
-absl::Status NotFound(const std::string& id) {
-  return absl::NotFoundError(
-      absl::StrCat("job \"", id.substr(0, 64), "\" not found (unknown or expired)"));
-}
-
 }  // namespace
 
 void LocalJobStore::Persist(const JobRecord& record) const {
@@ -88,7 +83,7 @@ v1::Job LocalJobStore::View(const JobRecord& record) const {
 absl::StatusOr<v1::Job> LocalJobStore::Get(const std::string& id) const {
   absl::ReaderMutexLock lock(&mu_);
   const auto it = jobs_.find(id);
-  if (it == jobs_.end()) return NotFound(id);
+  if (it == jobs_.end()) return JobNotFound(id);
   return View(it->second);
 }
 
@@ -192,7 +187,7 @@ absl::StatusOr<JobStore::CancelOutcome> LocalJobStore::Cancel(const std::string&
                                                               std::string_view reason) {
   absl::MutexLock lock(&mu_);
   const auto it = jobs_.find(id);
-  if (it == jobs_.end()) return NotFound(id);
+  if (it == jobs_.end()) return JobNotFound(id);
   v1::Job& job = *it->second.mutable_job();
   if (IsTerminal(job.state())) {
     return absl::FailedPreconditionError(

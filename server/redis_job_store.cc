@@ -112,10 +112,6 @@ absl::StatusOr<RedisValue> Eval(RedisPool& pool, const char* script, std::vector
   return pool.Command(command);
 }
 
-absl::Status NotFound(const std::string& id) {
-  return absl::NotFoundError(
-      absl::StrCat("job \"", id.substr(0, 64), "\" not found (unknown or expired)"));
-}
 
 int64_t ToInt(const std::string& text) {
   int64_t v = 0;
@@ -156,7 +152,7 @@ absl::StatusOr<JobRecord> RedisJobStore::Read(const std::string& id) const {
     f[fields->elements[i].str] = fields->elements[i + 1].str;
   }
   JobRecord record;
-  if (!f.contains("record") || !record.ParseFromString(f["record"])) return NotFound(id);
+  if (!f.contains("record") || !record.ParseFromString(f["record"])) return JobNotFound(id);
   v1::Job& job = *record.mutable_job();
   job.set_state(static_cast<v1::JobState>(ToInt(f["state"])));
   job.set_attempts(static_cast<int>(ToInt(f["attempts"])));
@@ -239,11 +235,12 @@ absl::Status RedisJobStore::Release(const std::string& id) {
 absl::StatusOr<JobStore::CancelOutcome> RedisJobStore::Cancel(const std::string& id,
                                                               std::string_view reason) {
   absl::StatusOr<RedisValue> reply =
-      Eval(pool_, kCancel, {Key(id), kFinished, kEvents}, {id, Now(), WireMessage(absl::CancelledError(reason))});
+      Eval(pool_, kCancel, {Key(id), kFinished, kEvents},
+           {id, Now(), WireMessage(absl::CancelledError(std::string(reason)))});
   if (!reply.ok()) return reply.status();
   switch (reply->integer) {
     case 0:
-      return NotFound(id);
+      return JobNotFound(id);
     case 1:
       return CancelOutcome::kWasQueued;
     case 2:

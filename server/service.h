@@ -63,6 +63,10 @@ class SegmentationService final : public v1::Segmentation::Service {
   // Returns the caller's tenant ("" without --auth-tokens).
   // Errors: UNAUTHENTICATED (the auth processor let no such call through).
   absl::StatusOr<std::string> TenantOf(const grpc::ServerContext& context) const;
+  // Returns job `id` if it belongs to the caller's tenant. Errors: NOT_FOUND
+  // for another tenant's job, with the message of an unknown id; those of
+  // TenantOf and JobStore::Get.
+  absl::StatusOr<v1::Job> OwnJob(const grpc::ServerContext& context, const std::string& id) const;
 
   const int64_t max_upload_bytes_;
   const std::shared_ptr<const TokenAuth> auth_;

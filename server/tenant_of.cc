@@ -9,4 +9,14 @@ absl::StatusOr<std::string> SegmentationService::TenantOf(
   return auth_->TenantOf(context);
 }
 
+absl::StatusOr<v1::Job> SegmentationService::OwnJob(const grpc::ServerContext& context,
+                                                    const std::string& id) const {
+  absl::StatusOr<std::string> tenant = TenantOf(context);
+  if (!tenant.ok()) return tenant.status();
+  absl::StatusOr<v1::Job> job = store_.Get(id);
+  if (!job.ok()) return job.status();
+  if (job->tenant() != *tenant) return JobNotFound(id);
+  return job;
+}
+
 }  // namespace meshseg::server

@@ -37,6 +37,7 @@ grpc::Status SegmentationService::Upload(grpc::ServerContext* context,
   JobRecord record;
   const auto accept = [&]() -> absl::Status {
     if (!accepting_) return absl::UnavailableError("upload: server is shutting down");
+    MESHSEG_ASSIGN_OR_RETURN(const std::string tenant, TenantOf(*context));
     v1::UploadRequest first;
     if (!reader->Read(&first)) {
       return context->IsCancelled() ? absl::CancelledError("upload: client went away")
@@ -67,6 +68,7 @@ grpc::Status SegmentationService::Upload(grpc::ServerContext* context,
     v1::Job& job = *record.mutable_job();
     job.set_job_id(job_id);
     job.set_file_name(file_name);
+    job.set_tenant(tenant);
     job.set_upload_size(header.total_size());
     job.set_created_unix_ms(absl::ToUnixMillis(absl::Now()));
     *record.mutable_options() = header.options();
@@ -74,6 +76,7 @@ grpc::Status SegmentationService::Upload(grpc::ServerContext* context,
     MESHSEG_RETURN_IF_ERROR(store_.Create(record));
     // Logged before the push: a free worker may log job_started at once.
     Log("job_queued", {{"job", job_id},
+                       {"tenant", tenant},
                        {"file", file_name},
                        {"bytes", absl::StrCat(header.total_size())},
                        {"peer", context->peer()}});

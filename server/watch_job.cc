@@ -61,7 +61,7 @@ grpc::Status SegmentationService::WatchJob(grpc::ServerContext* context,
     }
     seen = generation;
     next_read = absl::Now() + kRereadInterval;
-    absl::StatusOr<v1::Job> job = store_.Get(request->job_id());
+    absl::StatusOr<v1::Job> job = OwnJob(*context, request->job_id());
     if (!job.ok()) return ToGrpcStatus(job.status());  // unknown, or expired meanwhile
     if (first || !SameEvent(*job, last)) {
       v1::JobEvent event;
