@@ -26,6 +26,8 @@ absl::Status CheckSucceeded(const v1::Job& job) {
 grpc::Status SegmentationService::GetResult(grpc::ServerContext* context,
                                             const v1::GetResultRequest* request,
                                             grpc::ServerWriter<v1::ResultChunk>* writer) {
+  const absl::StatusOr<std::unique_ptr<StreamLimit::Slot>> slot = StreamSlot("result");
+  if (!slot.ok()) return ToGrpcStatus(slot.status());
   absl::StatusOr<v1::Job> job = OwnJob(*context, request->job_id());
   if (!job.ok()) return ToGrpcStatus(job.status());
   if (absl::Status s = CheckSucceeded(*job); !s.ok()) return ToGrpcStatus(s);

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <algorithm>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "absl/flags/flag.h"
@@ -45,6 +46,16 @@ ABSL_FLAG(absl::Duration, result_ttl, kDefaults.result_ttl,
           "how long a finished job and its result are kept, e.g. 24h, 30m");
 ABSL_FLAG(absl::Duration, shutdown_grace, kDefaults.shutdown_grace,
           "on SIGTERM/SIGINT, how long running jobs may take before they are cancelled");
+ABSL_FLAG(std::string, memory_budget, "0",
+          "memory the jobs running here may take at once, by their estimated peak, e.g. 6Gi; "
+          "a job over it is refused at upload, one that fits later waits; 0 = 85% of the "
+          "container's memory limit (cgroup), else of the machine's (role api: not checked)");
+ABSL_FLAG(std::string, min_free_disk, "256Mi",
+          "free bytes kept on the spool and blob disks: an upload whose declared size would cut "
+          "into it, with the uploads in flight, is refused before its data arrives");
+ABSL_FLAG(int, max_concurrent_streams, kDefaults.max_concurrent_streams,
+          "Upload, WatchJob and GetResult calls open at once, server-wide; more get "
+          "RESOURCE_EXHAUSTED");
 ABSL_FLAG(std::string, tls_cert, "", "PEM certificate chain of the server; with --tls-key = TLS");
 ABSL_FLAG(std::string, tls_key, "", "PEM private key of --tls-cert");
 ABSL_FLAG(std::string, tls_client_ca, "",
@@ -117,6 +128,17 @@ int main(int argc, char** argv) {
   options.spool_dir = absl::GetFlag(FLAGS_spool_dir);
   options.result_ttl = absl::GetFlag(FLAGS_result_ttl);
   options.shutdown_grace = absl::GetFlag(FLAGS_shutdown_grace);
+  options.max_concurrent_streams = absl::GetFlag(FLAGS_max_concurrent_streams);
+  for (const auto& [flag, text, out] :
+       {std::tuple{"--memory-budget", absl::GetFlag(FLAGS_memory_budget), &options.memory_budget},
+        std::tuple{"--min-free-disk", absl::GetFlag(FLAGS_min_free_disk), &options.min_free_disk}}) {
+    absl::StatusOr<int64_t> bytes = meshseg::server::ParseByteSize(text, flag);
+    if (!bytes.ok()) {
+      std::fprintf(stderr, "meshseg-server: %s\n", std::string(bytes.status().message()).c_str());
+      return 1;
+    }
+    *out = *bytes;
+  }
   options.security.tls_cert = absl::GetFlag(FLAGS_tls_cert);
   options.security.tls_key = absl::GetFlag(FLAGS_tls_key);
   options.security.tls_client_ca = absl::GetFlag(FLAGS_tls_client_ca);

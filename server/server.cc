@@ -18,6 +18,9 @@
 #include "server/auth.h"
 #include "server/backend.h"
 #include "server/credentials.h"
+#include "server/disk_reservations.h"
+#include "server/memory_budget.h"
+#include "server/stream_limit.h"
 #include "server/log.h"
 #include "server/service.h"
 #include "server/worker_pool.h"
@@ -29,6 +32,9 @@ namespace {
 constexpr int kMaxReceiveBytes = 8 << 20;
 // Open calls (watchers) get this long to end after the jobs are done.
 constexpr absl::Duration kCallDrainTime = absl::Seconds(2);
+// Threads of the synchronous server beyond the streaming-call cap, for
+// unary calls and gRPC's own pollers.
+constexpr int kSpareThreads = 64;
 
 // Serves reflection on this server if `on`, else not. Linking
 // libgrpc++_reflection registers its plugin for every server the process
@@ -55,6 +61,9 @@ class ReflectionOption : public grpc::ServerBuilderOption {
 struct Server::Parts {
   ServerOptions options;
   std::unique_ptr<Backend> backend;
+  std::unique_ptr<MemoryBudget> memory;      // null: role api
+  std::unique_ptr<DiskReservations> disk;    // roles all and api
+  std::unique_ptr<StreamLimit> streams;
   std::unique_ptr<SegmentationService> service;  // roles all and api
   std::unique_ptr<WorkerPool> workers;           // roles all and worker
   std::unique_ptr<grpc::Server> grpc_server;
@@ -103,15 +112,27 @@ absl::StatusOr<std::unique_ptr<Server>> Server::Start(ServerOptions options) {
   parts->listen = transport.listen;
   MESHSEG_ASSIGN_OR_RETURN(parts->backend, OpenBackend(o));
   Backend& b = *parts->backend;
+  parts->streams = std::make_unique<StreamLimit>(o.max_concurrent_streams);
+  if (o.role != Role::kApi) parts->memory = std::make_unique<MemoryBudget>(o.memory_budget);
   if (o.role != Role::kWorker) {
+    std::vector<std::string> upload_folders = {o.spool_dir};
+    if (!o.blob_dir.empty()) upload_folders.push_back(o.blob_dir);
+    parts->disk = std::make_unique<DiskReservations>(std::move(upload_folders), o.min_free_disk);
+    const Admission admission = {.max_upload_bytes = o.max_upload_bytes,
+                                 .memory_budget = o.memory_budget,
+                                 .disk = parts->disk.get(),
+                                 .streams = parts->streams.get()};
     parts->service = std::make_unique<SegmentationService>(*b.store, *b.queue, *b.blobs, *b.spool,
-                                                           o.max_upload_bytes, parts->auth);
+                                                           admission, parts->auth);
   }
 
   grpc::EnableDefaultHealthCheckService(true);
   grpc::ServerBuilder builder;
   builder.AddListeningPort(transport.listen, transport.credentials, &parts->port);
   builder.SetMaxReceiveMessageSize(kMaxReceiveBytes);
+  grpc::ResourceQuota quota("meshseg-server");
+  quota.SetMaxThreads(o.max_concurrent_streams + kSpareThreads);
+  builder.SetResourceQuota(quota);
   builder.SetOption(std::make_unique<ReflectionOption>(o.reflection));
   if (parts->service) builder.RegisterService(parts->service.get());
   parts->grpc_server = builder.BuildAndStart();
@@ -122,7 +143,8 @@ absl::StatusOr<std::unique_ptr<Server>> Server::Start(ServerOptions options) {
   if (!transport.note.empty()) Log("listen_loopback_only", {{"reason", transport.note}});
   if (o.role != Role::kApi) {
     parts->workers = std::make_unique<WorkerPool>(o.workers, o.max_attempts, *b.queue, *b.store,
-                                                  *b.blobs, *b.spool, o.runner);
+                                                  *b.blobs, *b.spool, o.runner,
+                                                  parts->memory.get());
   }
   Parts* p = parts.get();
   if (o.role != Role::kWorker) {
@@ -137,6 +159,8 @@ absl::StatusOr<std::unique_ptr<Server>> Server::Start(ServerOptions options) {
                          {"queue", o.queue.empty() ? "embedded" : o.queue},
                          {"workers", absl::StrCat(o.role == Role::kApi ? 0 : o.workers)},
                          {"queue_capacity", absl::StrCat(o.queue_capacity)},
+                         {"memory_budget", absl::StrCat(o.memory_budget)},
+                         {"max_concurrent_streams", absl::StrCat(o.max_concurrent_streams)},
                          {"spool", o.spool_dir}});
   return std::unique_ptr<Server>(new Server(std::move(parts)));
 }

@@ -3,8 +3,11 @@
 #include <system_error>
 
 #include "absl/strings/str_cat.h"
+#include "absl/strings/str_replace.h"
 #include "absl/time/clock.h"
+#include "meshseg/input_size.h"
 #include "meshseg/mesh.h"
+#include "meshseg/pipeline.h"
 #include "meshseg/proto/convert.h"
 #include "meshseg/proto/grpc_status.h"
 #include "meshseg/status_macros.h"
@@ -25,6 +28,31 @@ absl::Status CheckFormat(const std::string& path, const PipelineParams& params) 
   return absl::OkStatus();
 }
 
+// Returns OK if the job in `path` can ever run under `budget` bytes (0 = not
+// checked): its estimated peak (EstimateJobMemory, from the file's header
+// or one pass over its lines) must fit the whole budget; a job that fits
+// waits for room at its worker.
+absl::Status CheckMemory(const std::string& path, const std::string& file_name,
+                         const PipelineParams& params, int64_t budget) {
+  if (budget == 0) return absl::OkStatus();
+  absl::StatusOr<MemoryEstimate> estimate = EstimateJobMemory(path, params);
+  if (!estimate.ok()) {  // the message names the spooled file: give the client's name
+    return absl::InvalidArgumentError(absl::StrCat(
+        "upload: ", absl::StrReplaceAll(estimate.status().message(),
+                                        {{std::filesystem::path(path).filename().string(),
+                                          file_name}})));
+  }
+  if (estimate->peak_bytes <= budget) return absl::OkStatus();
+  const InputSize& in = estimate->input;
+  return absl::ResourceExhaustedError(absl::StrCat(
+      "upload: \"", file_name, "\": ",
+      in.point_cloud ? absl::StrCat(in.vertex_count, " points")
+                     : absl::StrCat(in.face_count, " faces, ", in.vertex_count, " vertices"),
+      " need an estimated ", estimate->peak_bytes >> 20, " MiB (", estimate->peak_bytes,
+      " bytes) at peak, more than this server's whole memory budget of ", budget >> 20,
+      " MiB (", budget, " bytes, --memory-budget)"));
+}
+
 }  // namespace
 
 grpc::Status SegmentationService::Upload(grpc::ServerContext* context,
@@ -37,6 +65,7 @@ grpc::Status SegmentationService::Upload(grpc::ServerContext* context,
   JobRecord record;
   const auto accept = [&]() -> absl::Status {
     if (!accepting_) return absl::UnavailableError("upload: server is shutting down");
+    MESHSEG_ASSIGN_OR_RETURN(const std::unique_ptr<StreamLimit::Slot> slot, StreamSlot("upload"));
     MESHSEG_ASSIGN_OR_RETURN(const std::string tenant, TenantOf(*context));
     v1::UploadRequest first;
     if (!reader->Read(&first)) {
@@ -47,7 +76,7 @@ grpc::Status SegmentationService::Upload(grpc::ServerContext* context,
       return absl::InvalidArgumentError("upload: the first message must be the header");
     }
     const v1::UploadHeader& header = first.header();
-    MESHSEG_RETURN_IF_ERROR(CheckUploadHeader(header, max_upload_bytes_));
+    MESHSEG_RETURN_IF_ERROR(CheckUploadHeader(header, admission_.max_upload_bytes));
     MESHSEG_ASSIGN_OR_RETURN(PipelineParams params, FromProto(header.options()));
     MESHSEG_ASSIGN_OR_RETURN(params.format, FormatFromHint(header.format_hint()));
     // Refuse before receiving the data (also when the queue is unreachable).
@@ -57,11 +86,20 @@ grpc::Status SegmentationService::Upload(grpc::ServerContext* context,
           absl::StrCat("upload: job queue full (", queue_.Capacity(), " jobs waiting)"));
     }
 
+    // The declared bytes are reserved on the disks they will occupy before
+    // any is received; held until the upload is in the blob store or gone.
+    std::unique_ptr<DiskReservations::Hold> disk;
+    if (admission_.disk != nullptr) {
+      MESHSEG_ASSIGN_OR_RETURN(disk, admission_.disk->Reserve(header.total_size()));
+    }
+
     job_id = NewJobId();
     const std::string file_name = SafeFileName(header.file_name());
     scratch = scratch_.ScratchPath(job_id, file_name);
-    MESHSEG_RETURN_IF_ERROR(ReceiveUpload(context, reader, header, max_upload_bytes_, scratch));
+    MESHSEG_RETURN_IF_ERROR(
+        ReceiveUpload(context, reader, header, admission_.max_upload_bytes, scratch));
     MESHSEG_RETURN_IF_ERROR(CheckFormat(scratch, params));
+    MESHSEG_RETURN_IF_ERROR(CheckMemory(scratch, file_name, params, admission_.memory_budget));
 
     record.set_upload_key(UploadKey(job_id, file_name));
     MESHSEG_RETURN_IF_ERROR(blobs_.Put(record.upload_key(), scratch));

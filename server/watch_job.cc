@@ -43,6 +43,8 @@ std::string Describe(const v1::Job& job) {
 grpc::Status SegmentationService::WatchJob(grpc::ServerContext* context,
                                            const v1::WatchJobRequest* request,
                                            grpc::ServerWriter<v1::JobEvent>* writer) {
+  const absl::StatusOr<std::unique_ptr<StreamLimit::Slot>> slot = StreamSlot("watch");
+  if (!slot.ok()) return ToGrpcStatus(slot.status());
   v1::Job last;
   bool first = true;
   int64_t seen = 0;

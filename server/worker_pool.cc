@@ -50,13 +50,15 @@ const char* StateName(const absl::Status& status) {
 }  // namespace
 
 WorkerPool::WorkerPool(int workers, int max_attempts, JobQueue& queue, JobStore& store,
-                       BlobStore& blobs, const Spool& scratch, JobRunner runner)
+                       BlobStore& blobs, const Spool& scratch, JobRunner runner,
+                       MemoryBudget* budget)
     : max_attempts_(max_attempts),
       queue_(queue),
       store_(store),
       blobs_(blobs),
       scratch_(scratch),
-      runner_(std::move(runner)) {
+      runner_(std::move(runner)),
+      budget_(budget) {
   if (const char* hook = std::getenv("MESHSEG_TEST_ABORT_ON_FILE")) abort_on_file_ = hook;
   for (int i = 0; i < workers; ++i) threads_.emplace_back([this] { Loop(); });
 }
@@ -70,7 +72,35 @@ void WorkerPool::Join() {
 }
 
 void WorkerPool::Loop() {
-  while (std::optional<Lease> lease = queue_.Pop()) Run(*lease);
+  while (true) {
+    // A job waiting for memory here: leave the next ones in the queue (for
+    // this process later, or for other workers).
+    if (budget_ != nullptr && !budget_->AwaitNoWaiter(give_up_.get_token())) return;
+    std::optional<Lease> lease = queue_.Pop();
+    if (!lease.has_value()) return;
+    Run(*lease);
+  }
+}
+
+absl::StatusOr<int64_t> WorkerPool::ReserveMemory(const std::string& job_id,
+                                                  const std::string& path,
+                                                  const PipelineParams& params,
+                                                  std::stop_token stop) {
+  if (budget_ == nullptr) return 0;
+  const absl::StatusOr<MemoryEstimate> estimate = EstimateJobMemory(path, params);
+  if (!estimate.ok() || estimate->peak_bytes > budget_->total()) return 0;
+  const int64_t bytes = estimate->peak_bytes;
+  if (budget_->reserved() + bytes > budget_->total()) {
+    store_.Progress(job_id, "waiting for memory", 0.0);
+    Log("job_waiting_for_memory", {{"job", job_id},
+                                   {"estimate", absl::StrCat(bytes)},
+                                   {"reserved", absl::StrCat(budget_->reserved())},
+                                   {"budget", absl::StrCat(budget_->total())}});
+  }
+  if (!budget_->Reserve(bytes, stop)) {
+    return absl::CancelledError("stopped while waiting for memory");
+  }
+  return bytes;
 }
 
 absl::Status WorkerPool::Execute(const RunSpec& spec, JobOutput& output) {
@@ -93,8 +123,12 @@ absl::Status WorkerPool::Execute(const RunSpec& spec, JobOutput& output) {
     last_fraction = fraction;
     store_.Progress(job_id, stage, fraction);
   };
-  MESHSEG_ASSIGN_OR_RETURN(const PipelineResult result,
-                           RunGuarded(runner_, upload->path(), params, ctx));
+  if (budget_ != nullptr) params.memory_budget_bytes = budget_->total();
+  MESHSEG_ASSIGN_OR_RETURN(const int64_t reserved,
+                           ReserveMemory(job_id, upload->path(), params, spec.stop));
+  absl::StatusOr<PipelineResult> run = RunGuarded(runner_, upload->path(), params, ctx);
+  if (reserved > 0) budget_->Release(reserved);
+  MESHSEG_ASSIGN_OR_RETURN(const PipelineResult result, std::move(run));
   const std::string scratch = scratch_.ScratchPath(job_id, "result.pb");
   MESHSEG_ASSIGN_OR_RETURN(output.result_size, WriteResult(result, scratch));
   if (absl::Status put = blobs_.Put(ResultKey(job_id), scratch); !put.ok()) {

@@ -19,4 +19,10 @@ absl::StatusOr<v1::Job> SegmentationService::OwnJob(const grpc::ServerContext& c
   return job;
 }
 
+absl::StatusOr<std::unique_ptr<StreamLimit::Slot>> SegmentationService::StreamSlot(
+    absl::string_view call) const {
+  if (admission_.streams == nullptr) return nullptr;
+  return admission_.streams->Acquire(call);
+}
+
 }  // namespace meshseg::server
