@@ -36,9 +36,15 @@ grpc::Status SegmentationService::GetResult(grpc::ServerContext* context,
         absl::StrCat("result: chunk_size must be >= 0, got ", request->chunk_size())));
   }
 
+  if (request->offset() < 0 || request->offset() > job->result_size()) {
+    return ToGrpcStatus(absl::OutOfRangeError(
+        absl::StrCat("result: offset must be in [0, ", job->result_size(),
+                     "] (the result's size), got ", request->offset())));
+  }
   const absl::StatusOr<std::unique_ptr<LocalBlob>> blob = blobs_.Open(ResultKey(job->job_id()));
   std::ifstream in;
   if (blob.ok()) in.open((*blob)->path(), std::ios::binary);
+  if (in.is_open()) in.seekg(request->offset());
   if (!blob.ok() || !in.is_open()) {  // expired between Get() and here
     return ToGrpcStatus(absl::NotFoundError(
         absl::StrCat("result: job \"", job->job_id(), "\" result expired")));
@@ -47,11 +53,11 @@ grpc::Status SegmentationService::GetResult(grpc::ServerContext* context,
       request->chunk_size() == 0 ? kDefaultChunkBytes
                                  : std::min(request->chunk_size(), kMaxChunkBytes);
   std::vector<char> buffer(static_cast<std::size_t>(chunk_bytes));
-  int64_t offset = 0;
+  int64_t offset = request->offset();
   do {
     in.read(buffer.data(), chunk_bytes);
     const std::streamsize n = in.gcount();
-    if (n == 0 && offset > 0) break;
+    if (n == 0 && offset > request->offset()) break;
     v1::ResultChunk chunk;
     chunk.set_data(buffer.data(), static_cast<std::size_t>(n));
     chunk.set_offset(offset);

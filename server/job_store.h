@@ -40,6 +40,7 @@ struct RunSpec {
 // What a finished job produced (SUCCEEDED only).
 struct JobOutput {
   int64_t result_size = 0;
+  std::string result_sha256;  // lowercase hex
   int64_t face_count = 0;
   int region_count = 0;
 };

@@ -157,6 +157,7 @@ absl::Status LocalJobStore::Finish(const std::string& id, const absl::Status& st
   if (status.ok()) {
     job.set_fraction(1.0);
     job.set_result_size(output.result_size);
+    job.set_result_sha256(output.result_sha256);
     job.set_face_count(output.face_count);
     job.set_region_count(output.region_count);
   } else {

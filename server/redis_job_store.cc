@@ -63,12 +63,12 @@ redis.call('PUBLISH', KEYS[2], ARGV[1])
 return 1)";
 
 // KEYS: job hash, finished index, events. ARGV: id, state, now, code,
-// message, result size, faces, regions.
+// message, result size, faces, regions, result sha256.
 constexpr char kFinish[] = R"(
 if redis.call('HGET', KEYS[1], 'state') ~= '2' then return 0 end
 redis.call('HSET', KEYS[1], 'state', ARGV[2], 'finished_ms', ARGV[3], 'error_code', ARGV[4],
   'error_message', ARGV[5], 'result_size', ARGV[6], 'face_count', ARGV[7],
-  'region_count', ARGV[8])
+  'region_count', ARGV[8], 'result_sha256', ARGV[9])
 if ARGV[2] == '3' then redis.call('HSET', KEYS[1], 'fraction', 1) end
 redis.call('HDEL', KEYS[1], 'cancel')
 redis.call('ZADD', KEYS[2], ARGV[3], ARGV[1])
@@ -165,6 +165,7 @@ absl::StatusOr<JobRecord> RedisJobStore::Read(const std::string& id) const {
   job.set_error_code(static_cast<int>(ToInt(f["error_code"])));
   job.set_error_message(f["error_message"]);
   job.set_result_size(ToInt(f["result_size"]));
+  job.set_result_sha256(f["result_sha256"]);
   job.set_face_count(ToInt(f["face_count"]));
   job.set_region_count(static_cast<int>(ToInt(f["region_count"])));
   return record;
@@ -221,7 +222,7 @@ absl::Status RedisJobStore::Finish(const std::string& id, const absl::Status& st
            {id, absl::StrCat(static_cast<int>(TerminalState(status))), Now(),
             absl::StrCat(static_cast<int>(status.code())), WireMessage(status),
             absl::StrCat(output.result_size), absl::StrCat(output.face_count),
-            absl::StrCat(output.region_count)});
+            absl::StrCat(output.region_count), output.result_sha256});
   if (reply.ok()) running_.Erase(id);
   return reply.status();
 }

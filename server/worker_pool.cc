@@ -11,6 +11,7 @@
 #include "absl/strings/str_format.h"
 #include "absl/time/clock.h"
 #include "meshseg/proto/convert.h"
+#include "meshseg/proto/sha256.h"
 #include "meshseg/status_macros.h"
 #include "server/log.h"
 #include "server/retry.h"
@@ -18,14 +19,20 @@
 namespace meshseg::server {
 namespace {
 
-// Writes the wire form of `result` to `path`; returns its size in bytes.
-absl::StatusOr<int64_t> WriteResult(const PipelineResult& result, const std::string& path) {
-  const v1::SegmentationResult message = ToProto(result);
+// Writes the wire form of `result` to `path`; sets its size and SHA-256.
+absl::Status WriteResult(const PipelineResult& result, const std::string& path,
+                         JobOutput& output) {
+  const std::string bytes = ToProto(result).SerializeAsString();
   std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  if (!out || !message.SerializeToOstream(&out) || !out.flush()) {
+  if (!out || !out.write(bytes.data(), static_cast<std::streamsize>(bytes.size())) ||
+      !out.flush()) {
     return absl::InternalError(absl::StrCat("spool: cannot write result \"", path, "\""));
   }
-  return static_cast<int64_t>(message.ByteSizeLong());
+  Sha256 digest;
+  digest.Update(bytes);
+  output.result_sha256 = digest.HexDigest();
+  output.result_size = static_cast<int64_t>(bytes.size());
+  return absl::OkStatus();
 }
 
 // Calls the runner; an exception escaping it becomes INTERNAL, so bad input
@@ -130,7 +137,7 @@ absl::Status WorkerPool::Execute(const RunSpec& spec, JobOutput& output) {
   if (reserved > 0) budget_->Release(reserved);
   MESHSEG_ASSIGN_OR_RETURN(const PipelineResult result, std::move(run));
   const std::string scratch = scratch_.ScratchPath(job_id, "result.pb");
-  MESHSEG_ASSIGN_OR_RETURN(output.result_size, WriteResult(result, scratch));
+  MESHSEG_RETURN_IF_ERROR(WriteResult(result, scratch, output));
   if (absl::Status put = blobs_.Put(ResultKey(job_id), scratch); !put.ok()) {
     std::remove(scratch.c_str());
     return put;

@@ -117,6 +117,7 @@ TEST_P(Tenants, AnotherTenantsJobsAreNotFoundForEveryCallAndNotListed) {
   ExpectHidden(bob, running);  // GetResult of a finished job too
   EXPECT_TRUE(alice.Result(running).ok());
   EXPECT_EQ(alice.GetJob(running)->state(), v1::JOB_STATE_SUCCEEDED);
+  EXPECT_EQ(alice.GetJob(running)->result_sha256().size(), 64u);  // kept by both stores
 }
 
 TEST_P(Tenants, ListJobsPagesThroughOwnJobsAndFiltersByState) {
