@@ -79,6 +79,7 @@ absl::StatusOr<v1::UploadResponse> MeshsegClient::Upload(const std::string& path
   header->set_format_hint(options.format_hint);
   header->set_total_size(static_cast<int64_t>(size));
   *header->mutable_options() = options.segment;
+  header->set_request_id(options.request_id);
   if (options.checksum) {
     MESHSEG_ASSIGN_OR_RETURN(*header->mutable_sha256(), FileSha256(path));
   }

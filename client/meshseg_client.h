@@ -23,12 +23,14 @@ namespace meshseg {
 
 struct UploadOptions {
   // Sent as UploadHeader.format_hint ("" = the server detects it).
-  std::string format_hint;
+  std::string format_hint = "";
   v1::SegmentOptions segment = {};
   // Bytes per chunk message.
   std::size_t chunk_bytes = std::size_t{1} << 20;
   // Send the file's SHA-256 for the server to check.
   bool checksum = true;
+  // UploadHeader.request_id: a retry with the same id gets the same job.
+  std::string request_id = "";
 };
 
 // How to reach a server that uses TLS or bearer tokens (server/credentials.h).

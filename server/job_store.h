@@ -40,7 +40,7 @@ struct RunSpec {
 // What a finished job produced (SUCCEEDED only).
 struct JobOutput {
   int64_t result_size = 0;
-  std::string result_sha256;  // lowercase hex
+  std::string result_sha256 = "";  // lowercase hex
   int64_t face_count = 0;
   int region_count = 0;
 };
@@ -50,8 +50,17 @@ class JobStore {
   virtual ~JobStore() = default;
 
   // Records a new QUEUED job (record.job holds id, file name, sizes, created
-  // time). Errors: UNAVAILABLE (store unreachable), INTERNAL (not written).
-  virtual absl::Status Create(JobRecord record) = 0;
+  // time, tenant, request id) and returns its id; or, when record.job has a
+  // request_id and a job of the same tenant with that request_id is still
+  // known, records nothing and returns that job's id (atomically: two
+  // uploads with one request id never both create a job).
+  // Errors: UNAVAILABLE (store unreachable), INTERNAL (not written).
+  virtual absl::StatusOr<std::string> Create(JobRecord record) = 0;
+
+  // Returns the id of the known job of `tenant` created with `request_id`,
+  // or nullopt. Errors: UNAVAILABLE.
+  virtual absl::StatusOr<std::optional<std::string>> FindRequest(
+      const std::string& tenant, const std::string& request_id) const = 0;
 
   // Forgets `id` (a job that could not be queued).
   virtual void Remove(const std::string& id) = 0;

@@ -55,8 +55,27 @@ LocalJobStore::Recovery LocalJobStore::Recover(absl::Time cutoff) {
   return out;
 }
 
-absl::Status LocalJobStore::Create(JobRecord record) {
+std::optional<std::string> LocalJobStore::FindRequestLocked(const std::string& tenant,
+                                                            const std::string& request_id) const {
+  if (request_id.empty()) return std::nullopt;
+  for (const auto& [id, record] : jobs_) {
+    if (record.job().request_id() == request_id && record.job().tenant() == tenant) return id;
+  }
+  return std::nullopt;
+}
+
+absl::StatusOr<std::optional<std::string>> LocalJobStore::FindRequest(
+    const std::string& tenant, const std::string& request_id) const {
+  absl::ReaderMutexLock lock(&mu_);
+  return FindRequestLocked(tenant, request_id);
+}
+
+absl::StatusOr<std::string> LocalJobStore::Create(JobRecord record) {
   absl::MutexLock lock(&mu_);
+  if (std::optional<std::string> existing =
+          FindRequestLocked(record.job().tenant(), record.job().request_id())) {
+    return *existing;
+  }
   record.set_format_version(kRecordFormat);
   record.set_sequence(next_sequence_++);
   record.mutable_job()->set_state(v1::JOB_STATE_QUEUED);
@@ -64,7 +83,7 @@ absl::Status LocalJobStore::Create(JobRecord record) {
   const std::string id = record.job().job_id();
   jobs_[id] = std::move(record);
   Changed();
-  return absl::OkStatus();
+  return id;
 }
 
 void LocalJobStore::Remove(const std::string& id) {

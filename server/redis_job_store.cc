@@ -20,12 +20,36 @@ constexpr absl::Duration kRecheck = absl::Milliseconds(500);
 std::string Key(const std::string& id) { return absl::StrCat("meshseg:job:", id); }
 std::string Now() { return absl::StrCat(absl::ToUnixMillis(absl::Now())); }
 
-// KEYS: job hash, jobs index, events. ARGV: record, created ms, id.
+// KEYS: job hash, jobs index, events, request key ("" = none). ARGV: record,
+// created ms, id. Returns the id of the job that stands for the upload: a
+// known job that claimed the request key, else the new one.
 constexpr char kCreate[] = R"(
-redis.call('HSET', KEYS[1], 'record', ARGV[1], 'state', 1, 'attempts', 0)
+if KEYS[4] ~= '' then
+  local existing = redis.call('GET', KEYS[4])
+  if existing and redis.call('EXISTS', 'meshseg:job:' .. existing) == 1 then return existing end
+  redis.call('SET', KEYS[4], ARGV[3])
+end
+redis.call('HSET', KEYS[1], 'record', ARGV[1], 'state', 1, 'attempts', 0, 'request_key', KEYS[4])
 redis.call('ZADD', KEYS[2], ARGV[2], ARGV[3])
 redis.call('PUBLISH', KEYS[3], ARGV[3])
+return ARGV[3])";
+
+// KEYS: job hash, jobs index. ARGV: id. Forgets the job and the request key
+// it claimed (if the key still names it).
+constexpr char kRemove[] = R"(
+local request_key = redis.call('HGET', KEYS[1], 'request_key')
+if request_key and request_key ~= '' and redis.call('GET', request_key) == ARGV[1] then
+  redis.call('DEL', request_key)
+end
+redis.call('DEL', KEYS[1])
+redis.call('ZREM', KEYS[2], ARGV[1])
 return 1)";
+
+// The key of a tenant's request id (tenants hold no ':', so the pair is
+// unambiguous).
+std::string RequestKey(const std::string& tenant, const std::string& request_id) {
+  return request_id.empty() ? "" : absl::StrCat("meshseg:request:", tenant, ":", request_id);
+}
 
 // KEYS: job hash, finished index, events. ARGV: max attempts, now, id.
 // Returns {outcome (0 not runnable, 1 run, 2 gave up), attempts, record}.
@@ -130,18 +154,32 @@ RedisJobStore::~RedisJobStore() {
   if (subscriber_.joinable()) subscriber_.join();
 }
 
-absl::Status RedisJobStore::Create(JobRecord record) {
+absl::StatusOr<std::string> RedisJobStore::Create(JobRecord record) {
   record.set_format_version(1);
   record.mutable_job()->set_state(v1::JOB_STATE_QUEUED);
   const std::string id = record.job().job_id();
-  return Eval(pool_, kCreate, {Key(id), kJobs, kEvents},
-              {record.SerializeAsString(), absl::StrCat(record.job().created_unix_ms()), id})
-      .status();
+  absl::StatusOr<RedisValue> reply =
+      Eval(pool_, kCreate,
+           {Key(id), kJobs, kEvents, RequestKey(record.job().tenant(), record.job().request_id())},
+           {record.SerializeAsString(), absl::StrCat(record.job().created_unix_ms()), id});
+  if (!reply.ok()) return reply.status();
+  return reply->str;
+}
+
+absl::StatusOr<std::optional<std::string>> RedisJobStore::FindRequest(
+    const std::string& tenant, const std::string& request_id) const {
+  if (request_id.empty()) return std::nullopt;
+  absl::StatusOr<RedisValue> id = pool_.Command({"GET", RequestKey(tenant, request_id)});
+  if (!id.ok()) return id.status();
+  if (id->str.empty()) return std::nullopt;
+  absl::StatusOr<RedisValue> exists = pool_.Command({"EXISTS", Key(id->str)});
+  if (!exists.ok()) return exists.status();
+  if (exists->integer != 1) return std::nullopt;
+  return id->str;
 }
 
 void RedisJobStore::Remove(const std::string& id) {
-  (void)pool_.Command({"DEL", Key(id)});
-  (void)pool_.Command({"ZREM", kJobs, id});
+  (void)Eval(pool_, kRemove, {Key(id), kJobs}, {id});
 }
 
 absl::StatusOr<JobRecord> RedisJobStore::Read(const std::string& id) const {

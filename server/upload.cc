@@ -53,6 +53,16 @@ absl::Status CheckMemory(const std::string& path, const std::string& file_name,
       " MiB (", budget, " bytes, --memory-budget)"));
 }
 
+// Returns OK for an empty request id or 1-128 printable ASCII characters.
+absl::Status CheckRequestId(const std::string& id) {
+  constexpr std::size_t kMaxLength = 128;
+  const bool printable = std::all_of(id.begin(), id.end(), [](char c) { return c > 32 && c < 127; });
+  if (id.size() <= kMaxLength && printable) return absl::OkStatus();
+  return absl::InvalidArgumentError(absl::StrCat(
+      "upload: request_id must be at most ", kMaxLength,
+      " printable ASCII characters without spaces, got ", id.size(), " characters"));
+}
+
 }  // namespace
 
 grpc::Status SegmentationService::Upload(grpc::ServerContext* context,
@@ -77,6 +87,17 @@ grpc::Status SegmentationService::Upload(grpc::ServerContext* context,
     }
     const v1::UploadHeader& header = first.header();
     MESHSEG_RETURN_IF_ERROR(CheckUploadHeader(header, admission_.max_upload_bytes));
+    MESHSEG_RETURN_IF_ERROR(CheckRequestId(header.request_id()));
+    // A retry of an upload that created a job: answer with that job and
+    // leave the data unread.
+    MESHSEG_ASSIGN_OR_RETURN(const std::optional<std::string> earlier,
+                             store_.FindRequest(tenant, header.request_id()));
+    if (earlier.has_value()) {
+      response->set_job_id(*earlier);
+      response->set_queue_position(std::max(0, queue_.Position(*earlier)));
+      Log("upload_repeated", {{"job", *earlier}, {"request_id", header.request_id()}});
+      return absl::OkStatus();
+    }
     MESHSEG_ASSIGN_OR_RETURN(PipelineParams params, FromProto(header.options()));
     MESHSEG_ASSIGN_OR_RETURN(params.format, FormatFromHint(header.format_hint()));
     // Refuse before receiving the data (also when the queue is unreachable).
@@ -107,11 +128,19 @@ grpc::Status SegmentationService::Upload(grpc::ServerContext* context,
     job.set_job_id(job_id);
     job.set_file_name(file_name);
     job.set_tenant(tenant);
+    job.set_request_id(header.request_id());
     job.set_upload_size(header.total_size());
     job.set_created_unix_ms(absl::ToUnixMillis(absl::Now()));
     *record.mutable_options() = header.options();
     record.set_format_hint(header.format_hint());
-    MESHSEG_RETURN_IF_ERROR(store_.Create(record));
+    MESHSEG_ASSIGN_OR_RETURN(const std::string created, store_.Create(record));
+    if (created != job_id) {  // the same request completed meanwhile: its job stands
+      (void)blobs_.Remove(record.upload_key());
+      response->set_job_id(created);
+      response->set_queue_position(std::max(0, queue_.Position(created)));
+      Log("upload_repeated", {{"job", created}, {"request_id", header.request_id()}});
+      return absl::OkStatus();
+    }
     // Logged before the push: a free worker may log job_started at once.
     Log("job_queued", {{"job", job_id},
                        {"tenant", tenant},

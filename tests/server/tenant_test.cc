@@ -10,6 +10,7 @@
 #include <memory>
 #include <set>
 #include <string>
+#include <thread>
 
 #include "client/meshseg_client.h"
 #include "server/job_store.h"
@@ -173,6 +174,38 @@ TEST_P(Tenants, ListJobsPagesThroughOwnJobsAndFiltersByState) {
   bad.set_page_size(0);
   bad.set_page_token("not a token");
   EXPECT_EQ(alice.ListJobsPage(bad).status().code(), absl::StatusCode::kInvalidArgument);
+}
+
+// A retried upload (same request_id, same tenant) gets the job the first
+// created, also while many retries race; another tenant's same id is its own.
+TEST_P(Tenants, ARetriedUploadWithTheSameRequestIdGetsTheSameJob) {
+  MeshsegClient alice = As(kAlice);
+  MeshsegClient bob = As(kBob);
+  const UploadOptions once{.request_id = "order-4711/attempt"};
+  const absl::StatusOr<v1::UploadResponse> first = alice.Upload(mesh_, once);
+  ASSERT_TRUE(first.ok()) << first.status();
+  std::vector<std::string> retried(6);
+  std::vector<std::thread> threads;
+  for (int i = 0; i < 6; ++i) {
+    threads.emplace_back([&, i] {
+      MeshsegClient c = As(kAlice);
+      absl::StatusOr<v1::UploadResponse> up = c.Upload(mesh_, once);
+      if (up.ok()) retried[i] = up->job_id();
+    });
+  }
+  for (std::thread& t : threads) t.join();
+  EXPECT_THAT(retried, ::testing::Each(first->job_id()));
+  EXPECT_EQ(alice.ListJobs()->size(), 1u);
+  EXPECT_EQ(alice.GetJob(first->job_id())->request_id(), once.request_id);
+
+  const absl::StatusOr<v1::UploadResponse> bobs = bob.Upload(mesh_, once);
+  ASSERT_TRUE(bobs.ok());
+  EXPECT_NE(bobs->job_id(), first->job_id());
+  const absl::StatusOr<v1::UploadResponse> other = alice.Upload(mesh_, {.request_id = "another"});
+  ASSERT_TRUE(other.ok());
+  EXPECT_NE(other->job_id(), first->job_id());
+  EXPECT_EQ(alice.Upload(mesh_, {.request_id = "has space"}).status().code(),
+            absl::StatusCode::kInvalidArgument);
 }
 
 INSTANTIATE_TEST_SUITE_P(Backends, Tenants, ::testing::Values(Backend::kEmbedded, Backend::kRedis),
