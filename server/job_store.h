@@ -20,6 +20,7 @@
 #include "absl/status/statusor.h"
 #include "absl/time/time.h"
 #include "meshseg/v1/service.pb.h"
+#include "server/job_changes.h"
 #include "server/job_record.pb.h"
 #include "server/running_jobs.h"
 
@@ -116,8 +117,14 @@ class JobStore {
   // The jobs running in this process (to stop them on shutdown).
   RunningJobs& running() { return running_; }
 
+  // Per-job change notification, for watchers of one job (WatchJob): the
+  // store bumps a job on each of its changes, and the watchers of queued
+  // jobs when the queue moves.
+  JobChanges& job_changes() { return job_changes_; }
+
  protected:
   RunningJobs running_;
+  JobChanges job_changes_;
 };
 
 // The terminal state a job ends in with `status`.

@@ -51,7 +51,8 @@ LocalJobStore::Recovery LocalJobStore::Recover(absl::Time cutoff) {
     const std::string id = job.job_id();
     jobs_[id] = std::move(record);
   }
-  Changed();
+  job_changes_.BumpAll();
+  changes_.Bump();
   return out;
 }
 
@@ -82,7 +83,7 @@ absl::StatusOr<std::string> LocalJobStore::Create(JobRecord record) {
   if (absl::Status s = spool_.WriteRecord(record); !s.ok()) return s;
   const std::string id = record.job().job_id();
   jobs_[id] = std::move(record);
-  Changed();
+  Changed(id, /*queue_moved=*/false);
   return id;
 }
 
@@ -90,7 +91,7 @@ void LocalJobStore::Remove(const std::string& id) {
   absl::MutexLock lock(&mu_);
   jobs_.erase(id);
   spool_.RemoveJob(id);
-  Changed();
+  Changed(id, /*queue_moved=*/true);
 }
 
 v1::Job LocalJobStore::View(const JobRecord& record) const {
@@ -144,7 +145,7 @@ absl::StatusOr<JobStore::Started> LocalJobStore::Start(const std::string& id, in
   }
   // Durable before the job runs: a crash during the run counts this attempt.
   Persist(record);
-  Changed();
+  Changed(id, /*queue_moved=*/true);
   return out;
 }
 
@@ -155,7 +156,7 @@ void LocalJobStore::Progress(const std::string& id, std::string_view stage, doub
   v1::Job& job = *it->second.mutable_job();
   job.set_stage(std::string(stage));
   job.set_fraction(std::clamp(fraction, 0.0, 1.0));
-  Changed();
+  Changed(id, /*queue_moved=*/false);
 }
 
 JobRecord* LocalJobStore::RunningRecord(const std::string& id) {
@@ -183,7 +184,7 @@ absl::Status LocalJobStore::Finish(const std::string& id, const absl::Status& st
     SetJobError(status, &job);
   }
   Persist(*record);
-  Changed();
+  Changed(id, /*queue_moved=*/false);
   return absl::OkStatus();
 }
 
@@ -199,7 +200,7 @@ absl::Status LocalJobStore::Release(const std::string& id) {
   job.clear_fraction();
   job.clear_started_unix_ms();
   Persist(*record);
-  Changed();
+  Changed(id, /*queue_moved=*/true);
   return absl::OkStatus();
 }
 
@@ -221,7 +222,7 @@ absl::StatusOr<JobStore::CancelOutcome> LocalJobStore::Cancel(const std::string&
   job.set_finished_unix_ms(NowUnixMs());
   SetJobError(absl::CancelledError(std::string(reason)), &job);
   Persist(it->second);
-  Changed();
+  Changed(id, /*queue_moved=*/true);
   return CancelOutcome::kWasQueued;
 }
 
@@ -239,7 +240,8 @@ std::vector<std::string> LocalJobStore::Expire(absl::Time cutoff) {
       ++it;
     }
   }
-  if (!expired.empty()) Changed();
+  for (const std::string& id : expired) job_changes_.Bump(id);
+  if (!expired.empty()) changes_.Bump();
   return expired;
 }
 

@@ -305,6 +305,7 @@ std::vector<std::string> RedisJobStore::Expire(absl::Time cutoff) {
     Remove(id.str);
     expired.push_back(id.str);
   }
+  for (const std::string& id : expired) job_changes_.Bump(id);
   if (!expired.empty()) changes_.Bump();
   return expired;
 }
@@ -335,6 +336,7 @@ void RedisJobStore::Subscribe(std::stop_token stop) {
       }
       backoff = absl::Milliseconds(100);
       changes_.Bump();  // watchers re-read what changed while unsubscribed
+      job_changes_.BumpAll();
     }
     absl::StatusOr<std::optional<RedisValue>> message = connection.Receive(absl::Milliseconds(250));
     if (!message.ok()) {
@@ -346,6 +348,10 @@ void RedisJobStore::Subscribe(std::stop_token stop) {
       const RedisValue& m = **message;
       if (m.elements.size() == 3 && m.elements[0].str == "message") {
         changes_.Bump();
+        // The message names the job; any event may move the queue (a start,
+        // a cancel, a release), so queued jobs' watchers re-read too.
+        job_changes_.Bump(m.elements[2].str);
+        job_changes_.BumpQueued();
         const std::vector<std::string> here = running_.Ids();
         if (std::find(here.begin(), here.end(), m.elements[2].str) != here.end()) {
           CheckCancel(m.elements[2].str);
