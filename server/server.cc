@@ -61,10 +61,13 @@ class ReflectionOption : public grpc::ServerBuilderOption {
 struct Server::Parts {
   ServerOptions options;
   std::unique_ptr<Backend> backend;
-  std::unique_ptr<MemoryBudget> memory;      // null: role api
-  std::unique_ptr<DiskReservations> disk;    // roles all and api
+  std::unique_ptr<MemoryBudget> memory;    // null: role api
+  std::unique_ptr<DiskReservations> disk;  // roles all and api
   std::unique_ptr<StreamLimit> streams;
   std::unique_ptr<SegmentationService> service;  // roles all and api
+  // Role worker: the service's base class, every method UNIMPLEMENTED. A
+  // gRPC server needs one synchronous service to poll its health checks.
+  std::unique_ptr<v1::Segmentation::Service> no_jobs_here;
   std::unique_ptr<WorkerPool> workers;           // roles all and worker
   std::unique_ptr<grpc::Server> grpc_server;
   std::shared_ptr<TokenAuth> auth;  // null without --auth-tokens
@@ -134,7 +137,12 @@ absl::StatusOr<std::unique_ptr<Server>> Server::Start(ServerOptions options) {
   quota.SetMaxThreads(o.max_concurrent_streams + kSpareThreads);
   builder.SetResourceQuota(quota);
   builder.SetOption(std::make_unique<ReflectionOption>(o.reflection));
-  if (parts->service) builder.RegisterService(parts->service.get());
+  if (parts->service) {
+    builder.RegisterService(parts->service.get());
+  } else {
+    parts->no_jobs_here = std::make_unique<v1::Segmentation::Service>();
+    builder.RegisterService(parts->no_jobs_here.get());
+  }
   parts->grpc_server = builder.BuildAndStart();
   if (!parts->grpc_server || parts->port == 0) {
     return absl::UnavailableError(
@@ -142,9 +150,9 @@ absl::StatusOr<std::unique_ptr<Server>> Server::Start(ServerOptions options) {
   }
   if (!transport.note.empty()) Log("listen_loopback_only", {{"reason", transport.note}});
   if (o.role != Role::kApi) {
-    parts->workers = std::make_unique<WorkerPool>(o.workers, o.max_attempts, *b.queue, *b.store,
-                                                  *b.blobs, *b.spool, o.runner,
-                                                  parts->memory.get());
+    parts->workers =
+        std::make_unique<WorkerPool>(o.workers, o.max_attempts, *b.queue, *b.store, *b.blobs,
+                                     *b.spool, o.runner, parts->memory.get());
   }
   Parts* p = parts.get();
   if (o.role != Role::kWorker) {
