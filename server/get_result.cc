@@ -37,9 +37,9 @@ grpc::Status SegmentationService::GetResult(grpc::ServerContext* context,
   }
 
   if (request->offset() < 0 || request->offset() > job->result_size()) {
-    return ToGrpcStatus(absl::OutOfRangeError(
-        absl::StrCat("result: offset must be in [0, ", job->result_size(),
-                     "] (the result's size), got ", request->offset())));
+    return ToGrpcStatus(
+        absl::OutOfRangeError(absl::StrCat("result: offset must be in [0, ", job->result_size(),
+                                           "] (the result's size), got ", request->offset())));
   }
   const absl::StatusOr<std::unique_ptr<LocalBlob>> blob = blobs_.Open(ResultKey(job->job_id()));
   std::ifstream in;

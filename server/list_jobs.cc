@@ -29,8 +29,8 @@ std::string TokenOf(const Position& p) {
 }
 
 absl::StatusOr<Position> ParseToken(const std::string& token) {
-  const absl::Status bad = absl::InvalidArgumentError(
-      "list: page_token is not a next_page_token this server returned");
+  const absl::Status bad =
+      absl::InvalidArgumentError("list: page_token is not a next_page_token this server returned");
   std::string text;
   if (!absl::WebSafeBase64Unescape(token, &text)) return bad;
   const std::pair<std::string, std::string> parts = absl::StrSplit(text, absl::MaxSplits('/', 1));
@@ -45,9 +45,9 @@ grpc::Status SegmentationService::ListJobs(grpc::ServerContext* context,
                                            const v1::ListJobsRequest* request,
                                            v1::ListJobsResponse* response) {
   if (request->page_size() < 0 || request->page_size() > kMaxPageSize) {
-    return ToGrpcStatus(absl::InvalidArgumentError(absl::StrCat(
-        "list: page_size must be in [0, ", kMaxPageSize, "] (0 = ", kDefaultPageSize,
-        "), got ", request->page_size())));
+    return ToGrpcStatus(absl::InvalidArgumentError(
+        absl::StrCat("list: page_size must be in [0, ", kMaxPageSize, "] (0 = ", kDefaultPageSize,
+                     "), got ", request->page_size())));
   }
   if (!v1::JobState_IsValid(request->state())) {
     return ToGrpcStatus(absl::InvalidArgumentError(

@@ -131,7 +131,8 @@ int main(int argc, char** argv) {
   options.max_concurrent_streams = absl::GetFlag(FLAGS_max_concurrent_streams);
   for (const auto& [flag, text, out] :
        {std::tuple{"--memory-budget", absl::GetFlag(FLAGS_memory_budget), &options.memory_budget},
-        std::tuple{"--min-free-disk", absl::GetFlag(FLAGS_min_free_disk), &options.min_free_disk}}) {
+        std::tuple{"--min-free-disk", absl::GetFlag(FLAGS_min_free_disk),
+                   &options.min_free_disk}}) {
     absl::StatusOr<int64_t> bytes = meshseg::server::ParseByteSize(text, flag);
     if (!bytes.ok()) {
       std::fprintf(stderr, "meshseg-server: %s\n", std::string(bytes.status().message()).c_str());

@@ -136,7 +136,6 @@ absl::StatusOr<RedisValue> Eval(RedisPool& pool, const char* script, std::vector
   return pool.Command(command);
 }
 
-
 int64_t ToInt(const std::string& text) {
   int64_t v = 0;
   (void)absl::SimpleAtoi(text, &v);

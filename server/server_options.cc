@@ -60,7 +60,8 @@ absl::StatusOr<int64_t> ParseByteSize(absl::string_view text, absl::string_view 
   int64_t value = 0;
   if (!absl::SimpleAtoi(digits, &value) || value < 0 || value > INT64_MAX / unit) {
     return absl::InvalidArgumentError(absl::StrCat(
-        flag, " must be bytes with an optional suffix k, M, G, T, Ki, Mi, Gi, Ti (e.g. 6Gi), got \"",
+        flag,
+        " must be bytes with an optional suffix k, M, G, T, Ki, Mi, Gi, Ti (e.g. 6Gi), got \"",
         text, "\""));
   }
   return value * unit;
@@ -95,8 +96,8 @@ absl::StatusOr<ServerOptions> ResolveOptions(ServerOptions options) {
     return absl::InvalidArgumentError("--spool-dir must not be empty");
   }
   if (options.result_ttl <= absl::ZeroDuration()) {
-    return absl::InvalidArgumentError(absl::StrCat(
-        "--result-ttl must be positive, got ", absl::FormatDuration(options.result_ttl)));
+    return absl::InvalidArgumentError(absl::StrCat("--result-ttl must be positive, got ",
+                                                   absl::FormatDuration(options.result_ttl)));
   }
   if (options.max_attempts < 1 || options.max_attempts > 100) {
     return absl::InvalidArgumentError(

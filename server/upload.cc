@@ -38,9 +38,9 @@ absl::Status CheckMemory(const std::string& path, const std::string& file_name,
   absl::StatusOr<MemoryEstimate> estimate = EstimateJobMemory(path, params);
   if (!estimate.ok()) {  // the message names the spooled file: give the client's name
     return absl::InvalidArgumentError(absl::StrCat(
-        "upload: ", absl::StrReplaceAll(estimate.status().message(),
-                                        {{std::filesystem::path(path).filename().string(),
-                                          file_name}})));
+        "upload: ",
+        absl::StrReplaceAll(estimate.status().message(),
+                            {{std::filesystem::path(path).filename().string(), file_name}})));
   }
   if (estimate->peak_bytes <= budget) return absl::OkStatus();
   const InputSize& in = estimate->input;
@@ -49,18 +49,19 @@ absl::Status CheckMemory(const std::string& path, const std::string& file_name,
       in.point_cloud ? absl::StrCat(in.vertex_count, " points")
                      : absl::StrCat(in.face_count, " faces, ", in.vertex_count, " vertices"),
       " need an estimated ", estimate->peak_bytes >> 20, " MiB (", estimate->peak_bytes,
-      " bytes) at peak, more than this server's whole memory budget of ", budget >> 20,
-      " MiB (", budget, " bytes, --memory-budget)"));
+      " bytes) at peak, more than this server's whole memory budget of ", budget >> 20, " MiB (",
+      budget, " bytes, --memory-budget)"));
 }
 
 // Returns OK for an empty request id or 1-128 printable ASCII characters.
 absl::Status CheckRequestId(const std::string& id) {
   constexpr std::size_t kMaxLength = 128;
-  const bool printable = std::all_of(id.begin(), id.end(), [](char c) { return c > 32 && c < 127; });
+  const bool printable =
+      std::all_of(id.begin(), id.end(), [](char c) { return c > 32 && c < 127; });
   if (id.size() <= kMaxLength && printable) return absl::OkStatus();
-  return absl::InvalidArgumentError(absl::StrCat(
-      "upload: request_id must be at most ", kMaxLength,
-      " printable ASCII characters without spaces, got ", id.size(), " characters"));
+  return absl::InvalidArgumentError(absl::StrCat("upload: request_id must be at most ", kMaxLength,
+                                                 " printable ASCII characters without spaces, got ",
+                                                 id.size(), " characters"));
 }
 
 }  // namespace

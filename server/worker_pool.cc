@@ -20,8 +20,7 @@ namespace meshseg::server {
 namespace {
 
 // Writes the wire form of `result` to `path`; sets its size and SHA-256.
-absl::Status WriteResult(const PipelineResult& result, const std::string& path,
-                         JobOutput& output) {
+absl::Status WriteResult(const PipelineResult& result, const std::string& path, JobOutput& output) {
   const std::string bytes = ToProto(result).SerializeAsString();
   std::ofstream out(path, std::ios::binary | std::ios::trunc);
   if (!out || !out.write(bytes.data(), static_cast<std::streamsize>(bytes.size())) ||

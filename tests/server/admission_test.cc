@@ -109,7 +109,8 @@ TEST(Admission, AJobOverTheWholeBudgetIsRefusedAtUploadWithTheNumbers) {
   EXPECT_EQ(up.status().code(), absl::StatusCode::kResourceExhausted) << up.status();
   EXPECT_THAT(up.status().message(), HasSubstr("192 faces"));
   EXPECT_THAT(up.status().message(), HasSubstr(absl::StrCat("(", estimate, " bytes)")));
-  EXPECT_THAT(up.status().message(), HasSubstr(absl::StrCat("(", estimate / 2, " bytes, --memory-budget)")));
+  EXPECT_THAT(up.status().message(),
+              HasSubstr(absl::StrCat("(", estimate / 2, " bytes, --memory-budget)")));
   EXPECT_THAT(*client.ListJobs(), ::testing::IsEmpty());
   EXPECT_EQ(server.SpoolFiles(), 0);
 }
@@ -176,19 +177,26 @@ TEST(Admission, StreamingCallsBeyondTheCapAreRefusedAndSlotsComeBack) {
   const absl::StatusOr<v1::UploadResponse> up = client.Upload(path);
   ASSERT_TRUE(up.ok()) << up.status();
   std::vector<absl::StatusOr<v1::Job>> watched(2, absl::UnknownError("not run"));
+  std::atomic<int> first_events{0};
   std::vector<std::thread> watchers;
   for (int i = 0; i < 2; ++i) {
     watchers.emplace_back([&, i] {
       MeshsegClient c = server.Client();
-      watched[i] = c.Watch(up->job_id(), {}, absl::Seconds(30));
+      bool counted = false;
+      watched[i] = c.Watch(
+          up->job_id(),
+          [&](const v1::JobEvent&) {
+            if (!counted) ++first_events;
+            counted = true;
+          },
+          absl::Seconds(30));
     });
   }
-  // Once both watchers hold their slots, a third stream is refused.
-  absl::Status third;
-  EXPECT_TRUE(Eventually([&] {
-    third = client.Watch(up->job_id(), {}, absl::Milliseconds(300)).status();
-    return third.code() == absl::StatusCode::kResourceExhausted;
-  })) << third;
+  // A watcher's first event is sent after it took its slot: once both have
+  // one, a third stream is refused.
+  ASSERT_TRUE(Eventually([&] { return first_events == 2; }));
+  const absl::Status third = client.Watch(up->job_id(), {}, absl::Seconds(5)).status();
+  EXPECT_EQ(third.code(), absl::StatusCode::kResourceExhausted) << third;
   EXPECT_THAT(third.message(), HasSubstr("--max-concurrent-streams 2"));
   EXPECT_EQ(client.Upload(path).status().code(), absl::StatusCode::kResourceExhausted);
   EXPECT_TRUE(client.GetJob(up->job_id()).ok());  // unary calls are not capped

@@ -38,24 +38,8 @@ std::string ReadFile(const std::string& path) {
 
 // Returns the status code of a unary call to `method` with an empty request.
 grpc::StatusCode CallCode(const std::string& address, const std::string& method) {
-  grpc::GenericStub stub(grpc::CreateChannel(address, grpc::InsecureChannelCredentials()));
-  grpc::ClientContext context;
-  context.set_deadline(absl::ToChronoTime(absl::Now() + absl::Seconds(5)));
-  grpc::CompletionQueue cq;
-  grpc::Slice empty;
-  grpc::ByteBuffer request(&empty, 1);
-  auto call = stub.PrepareUnaryCall(&context, method, request, &cq);
-  call->StartCall();
-  grpc::ByteBuffer response;
-  grpc::Status status;
-  call->Finish(&response, &status, reinterpret_cast<void*>(1));
-  void* tag = nullptr;
-  bool ok = false;
-  cq.Next(&tag, &ok);
-  cq.Shutdown();
-  while (cq.Next(&tag, &ok)) {
-  }
-  return status.error_code();
+  std::string response;
+  return testing_server::UnaryCall(address, method, "", &response).error_code();
 }
 
 class Security : public ::testing::Test {
@@ -70,7 +54,9 @@ class Security : public ::testing::Test {
   void SetUp() override {
     ASSERT_TRUE(certs_->ok) << "openssl could not make the certificates";
     tokens_ = FreshDir("auth") + "/tokens.txt";
-    std::ofstream(tokens_) << "# tenants of this test\n" << kAlice << " alice\n" << kBob << " bob\n";
+    std::ofstream(tokens_) << "# tenants of this test\n"
+                           << kAlice << " alice\n"
+                           << kBob << " bob\n";
     mesh_ = FreshDir("mesh") + "/box.stl";
     testing_files::WriteStlBinary(testing_files::SplitBox(2, {1, 1, 1}), mesh_);
   }
@@ -134,11 +120,11 @@ TEST_F(Security, MutualTlsNeedsAClientCertificateSignedByTheClientCa) {
   without->set_call_timeout(absl::Seconds(3));
   EXPECT_EQ(without->ListJobs().status().code(), absl::StatusCode::kUnavailable);
 
-  absl::StatusOr<MeshsegClient> other = MeshsegClient::Connect(
-      server->address(), {.tls_ca = certs_->ca,
-                          .tls_cert = certs_->other_client_cert,
-                          .tls_key = certs_->other_client_key,
-                          .token = kAlice});
+  absl::StatusOr<MeshsegClient> other =
+      MeshsegClient::Connect(server->address(), {.tls_ca = certs_->ca,
+                                                 .tls_cert = certs_->other_client_cert,
+                                                 .tls_key = certs_->other_client_key,
+                                                 .token = kAlice});
   ASSERT_TRUE(other.ok());
   other->set_call_timeout(absl::Seconds(3));
   EXPECT_EQ(other->ListJobs().status().code(), absl::StatusCode::kUnavailable);

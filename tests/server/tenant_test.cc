@@ -57,7 +57,8 @@ class Tenants : public ::testing::TestWithParam<Backend> {
   }
 
   MeshsegClient As(const char* token) {
-    absl::StatusOr<MeshsegClient> client = MeshsegClient::Connect(server_->address(), {.token = token});
+    absl::StatusOr<MeshsegClient> client =
+        MeshsegClient::Connect(server_->address(), {.token = token});
     EXPECT_TRUE(client.ok()) << client.status();
     client->set_call_timeout(absl::Seconds(20));
     return *std::move(client);
