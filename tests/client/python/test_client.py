@@ -138,6 +138,9 @@ class ClientTest(harness.ScratchTestCase):
         os.makedirs(parts)
         harness.write_box_off(os.path.join(parts, "box.off"))
         harness.write_box_off(os.path.join(parts, "flat.off"), n=2, size=(3.0, 2.0, 0.2))
+        # A machined block the B-rep stage closes into a solid: its STEP must come back.
+        harness.run_meshseg("generate", "small_block", "-o", os.path.join(parts, "block.ply"),
+                            "--voxel-size", "1.5")
         with open(os.path.join(parts, "broken.obj"), "w") as f:
             f.write("v 0 0 0\nv 1 0 0\nf 1 2 3\n")  # index 3 does not exist
         out = self.path("out")
@@ -146,24 +149,34 @@ class ClientTest(harness.ScratchTestCase):
         run = subprocess.run([sys.executable, example, self.server.address, parts, out],
                              capture_output=True, text=True, timeout=harness.COMMAND_TIMEOUT_S)
         self.assertEqual(run.returncode, 1, "one part failed: " + run.stderr)
-        self.assertIn("2 of 3 parts segmented", run.stdout)
+        self.assertIn("3 of 4 parts segmented", run.stdout)
         with open(os.path.join(out, "summary.json")) as f:
             summary = json.load(f)
         self.assertEqual({p: s["state"] for p, s in summary.items()},
                          {"box.off": "SUCCEEDED", "flat.off": "SUCCEEDED",
-                          "broken.obj": "FAILED"})
+                          "block.ply": "SUCCEEDED", "broken.obj": "FAILED"})
         self.assertIn("broken.obj", summary["broken.obj"]["error"])
         # The API has a STEP export, so the example asks for it: the JSON then
-        # carries the B-rep report, as `meshseg segment --step` writes it.
-        for stem in ("box", "flat"):
-            harness.run_meshseg("segment", os.path.join(parts, stem + ".off"), "-o",
-                                self.path(stem + ".json"), "--step", self.path(stem + ".step"))
+        # carries the B-rep report, as `meshseg segment --step` writes it (which
+        # exits 1, JSON written, when no STEP file can be built).
+        for part in ("box.off", "flat.off", "block.ply"):
+            stem = os.path.splitext(part)[0]
+            cli = harness.run_meshseg("segment", os.path.join(parts, part), "-o",
+                                      self.path(stem + ".json"), "--step",
+                                      self.path(stem + ".step"), check=False)
             with open(self.path(stem + ".json")) as a, open(os.path.join(out, stem + ".json")) as b:
                 self.assertEqual(json.load(b), json.load(a), stem)
-            with open(os.path.join(out, stem + ".step"), "rb") as f:
+            step_path = os.path.join(out, stem + ".step")
+            if cli.returncode != 0:
+                self.assertIn("no STEP file written", cli.stderr, stem)
+                self.assertIn("step_error", summary[part], stem)
+                self.assertFalse(os.path.exists(step_path), stem)
+                continue
+            with open(step_path, "rb") as f:
                 step = f.read()
             self.assertTrue(step.startswith(b"ISO-10303-21;"), stem)
-            self.assertEqual(summary[stem + ".off"]["step_bytes"], len(step), stem)
+            self.assertEqual(summary[part]["step_bytes"], len(step), stem)
+        self.assertIn("step_bytes", summary["block.ply"], "the block's STEP was written")
 
     def test_no_server_is_unavailable(self):
         # A port nobody listens on: the server just stopped.
