@@ -31,7 +31,7 @@ struct UploadOptions {
   bool checksum = true;
   // UploadHeader.step / .step_unit: the server also writes the STEP file.
   bool step = false;
-  std::string step_unit;
+  std::string step_unit = "";
   // UploadHeader.request_id: a retry with the same id gets the same job.
   std::string request_id = "";
 };

@@ -12,8 +12,9 @@ namespace meshseg::fuzz {
 // Prints `what` and `detail` and aborts if `ok` is false.
 inline void Check(bool ok, const char* what, std::string_view detail = {}) {
   if (ok) return;
-  std::fprintf(stderr, "fuzz check failed: %s: %.*s\n", what, static_cast<int>(detail.size()),
-               detail.data());
+  std::fprintf(stderr, "fuzz check failed: %s: ", what);
+  std::fwrite(detail.data(), 1, detail.size(), stderr);  // not NUL-terminated
+  std::fputc('\n', stderr);
   std::abort();
 }
 
