@@ -184,7 +184,7 @@ absl::StatusOr<std::unique_ptr<Server>> Server::Start(ServerOptions options) {
        }});
   Log("server_started", {{"listen", transport.listen},
                          {"transport", transport.mode},
-                         {"auth", parts->auth ? "tokens" : "none"},
+                         {"access", parts->auth ? "bearer" : "open"},
                          {"reflection", o.reflection ? "on" : "off"},
                          {"port", absl::StrCat(parts->port)},
                          {"role", RoleName(o.role)},
@@ -210,7 +210,7 @@ absl::StatusOr<int> Server::ReloadTokens() {
   }
   absl::StatusOr<int> count = parts_->auth->Reload();
   if (count.ok()) {
-    Log("tokens_reloaded", {{"tokens", absl::StrCat(*count)}});
+    Log("tokens_reloaded", {{"count", absl::StrCat(*count)}});
   } else {
     Log("tokens_reload_failed", {{"error", std::string(count.status().message())}});
   }

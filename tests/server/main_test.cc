@@ -160,7 +160,7 @@ TEST(ServerMain, SighupReloadsTheTokenFile) {
   EXPECT_EQ(list_code(kNew), absl::StatusCode::kUnauthenticated);
   std::ofstream(tokens, std::ios::trunc) << kNew << " acme\n";
   server.Signal(SIGHUP);
-  ASSERT_TRUE(server.AwaitLog("event=tokens_reloaded tokens=1", kTimeout)) << server.Log();
+  ASSERT_TRUE(server.AwaitLog("event=tokens_reloaded count=1", kTimeout)) << server.Log();
   EXPECT_EQ(list_code(kNew), absl::StatusCode::kOk);
   EXPECT_EQ(list_code(kOld), absl::StatusCode::kUnauthenticated);
   EXPECT_THAT(server.Log(), HasSubstr("transport=local"));
