@@ -13,6 +13,18 @@ bool Contains(std::initializer_list<std::string_view> names, std::string_view na
   return std::find(names.begin(), names.end(), name) != names.end();
 }
 
+// How a command that talks to a server (it knows --server) reaches it
+// securely: the CA of the server's certificate, a client certificate for
+// mutual TLS, and the bearer token.
+constexpr std::string_view kConnectionFlags[] = {"--tls-ca", "--tls-cert", "--tls-key", "--token"};
+
+bool IsValueFlag(std::initializer_list<std::string_view> value_flags, std::string_view name) {
+  if (Contains(value_flags, name)) return true;
+  return Contains(value_flags, "--server") &&
+         std::find(std::begin(kConnectionFlags), std::end(kConnectionFlags), name) !=
+             std::end(kConnectionFlags);
+}
+
 }  // namespace
 
 absl::StatusOr<Args> Args::Parse(const std::vector<std::string>& argv,
@@ -41,7 +53,7 @@ absl::StatusOr<Args> Args::Parse(const std::vector<std::string>& argv,
     }
     if (Contains(switches, name) && !value) {
       args.switches_.insert(name);
-    } else if (Contains(value_flags, name)) {
+    } else if (IsValueFlag(value_flags, name)) {
       if (!value) {
         if (i + 1 >= argv.size()) {
           return absl::InvalidArgumentError(absl::StrCat(name, " needs a value"));

@@ -11,7 +11,7 @@ namespace {
 
 constexpr char kUsage[] =
     "usage: meshseg <command> ...\n"
-    "  info FILE [--json]\n"
+    "  info FILE [--json] [--memory-estimate]\n"
     "  generate PART -o FILE [--voxel-size H] [--noise S] [--ground-truth GT.json]\n"
     "  convert IN OUT\n"
     "  reconstruct CLOUD -o MESH.ply [--format FMT]\n"
@@ -25,7 +25,10 @@ constexpr char kUsage[] =
     "  report RESULT.json [MESH] -o REPORT.html [--format FMT]\n"
     "(segment also takes --report REPORT.html)\n"
     "  brep RESULT.json MESH -o OUT.step [--unit mm|cm|m|in|...]\n"
-    "(--server defaults to $MESHSEG_SERVER)\n";
+    "(--server defaults to $MESHSEG_SERVER)\n"
+    "Commands with --server also take --tls-ca CA.pem (TLS; the server's CA),\n"
+    "--tls-cert CERT.pem --tls-key KEY.pem (mutual TLS) and --token TOKEN\n"
+    "(default $MESHSEG_TOKEN; sent as \"authorization: Bearer TOKEN\").\n";
 
 }  // namespace
 

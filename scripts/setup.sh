@@ -12,6 +12,7 @@ PACKAGES=(
   libhiredis-dev redis-server
   libssl-dev
   python3 python3-grpcio python3-protobuf python3-pil chromium openssl
+  time
   nodejs
   prometheus
   clang-14 libclang-rt-14-dev

@@ -5,10 +5,13 @@
 
 namespace meshseg::server {
 
-grpc::Status SegmentationService::CancelJob(grpc::ServerContext* /*context*/,
+grpc::Status SegmentationService::CancelJob(grpc::ServerContext* context,
                                             const v1::CancelJobRequest* request,
                                             v1::Job* response) {
   const std::string& id = request->job_id();
+  if (absl::StatusOr<v1::Job> own = OwnJob(*context, id); !own.ok()) {
+    return ToGrpcStatus(own.status());
+  }
   absl::StatusOr<JobStore::CancelOutcome> outcome = store_.Cancel(id, "cancelled by request");
   if (!outcome.ok()) return ToGrpcStatus(outcome.status());
   if (*outcome == JobStore::CancelOutcome::kWasQueued) {

@@ -14,17 +14,23 @@
 #include "absl/time/clock.h"
 #include "absl/time/time.h"
 #include "server/log_json.h"
+#include "meshseg/proto/utf8.h"
 
 namespace meshseg::server {
 namespace {
 
+// Returns `value` as one token: quoted, with backslashes, quotes and
+// newlines escaped, if it holds spaces, quotes, '=', controls or bytes that
+// are not UTF-8 (a value may quote an uploaded file); the latter two then
+// written as \xNN (utf8.h).
 std::string Quoted(std::string_view value) {
-  if (!value.empty() && value.find_first_of(" \"=\t\n") == std::string_view::npos) {
-    return std::string(value);
+  const std::string text = EscapeToUtf8(value);
+  if (!value.empty() && text == value && value.find_first_of(" \"=") == std::string::npos) {
+    return text;
   }
-  return absl::StrCat("\"",
-                      absl::StrReplaceAll(std::string(value), {{"\\", "\\\\"}, {"\"", "\\\""}, {"\n", "\\n"}}),
-                      "\"");
+  const std::string escaped =
+      absl::StrReplaceAll(std::string(value), {{"\\", "\\\\"}, {"\"", "\\\""}, {"\n", "\\n"}});
+  return absl::StrCat("\"", EscapeToUtf8(escaped), "\"");
 }
 
 std::atomic<LogFormat> format{LogFormat::kText};

@@ -29,13 +29,16 @@ namespace meshseg::server {
 
 // Every field key a log line may carry. Add a key here only for a value that
 // can never hold a credential (no request metadata, headers or tokens).
-inline constexpr std::array<std::string_view, 46> kLogKeys = {
+inline constexpr std::array<std::string_view, 55> kLogKeys = {
     "job", "tenant", "stage", "seconds", "state", "error", "code", "reason", "was",
     "file", "input", "folder", "bytes", "result_bytes", "faces", "regions", "attempt",
     "attempts", "peer", "listen", "port", "address", "role", "queue", "queue_capacity",
     "workers", "spool", "grace", "signal", "call", "entry", "idle_over", "redis",
     "requeued", "interrupted", "served", "expired", "cpu_source", "cpu_quota_cores",
-    "affinity_cores", "memory_limit_bytes", "metrics", "format", "count", "limit", "version"};
+    "affinity_cores", "memory_limit_bytes", "metrics", "format", "count", "limit", "version",
+    // Security and admission: modes, counts and byte sizes, never a token.
+    "transport", "access", "reflection", "request_id", "memory_budget",
+    "max_concurrent_streams", "estimate", "reserved", "budget"};
 
 constexpr bool IsLogKey(std::string_view key) {
   for (std::string_view allowed : kLogKeys) {

@@ -68,10 +68,11 @@ std::string JsonString(std::string_view text) {
 std::string_view LevelOf(std::string_view event) {
   constexpr std::array<std::string_view, 3> kErrors = {
       "job_record_not_written", "job_dropped", "test_abort_on_file"};
-  constexpr std::array<std::string_view, 9> kWarnings = {
+  constexpr std::array<std::string_view, 11> kWarnings = {
       "upload_rejected",    "spool_folder_skipped", "store_unavailable_retrying",
       "queue_unavailable",  "redis_unavailable_at_start", "job_reclaimed",
-      "shutdown_releasing_running_jobs", "job_gave_up", "metrics_request_refused"};
+      "shutdown_releasing_running_jobs", "job_gave_up", "metrics_request_refused",
+      "tokens_reload_failed", "listen_loopback_only"};
   for (std::string_view e : kErrors) {
     if (e == event) return "error";
   }

@@ -11,6 +11,7 @@
 #include "absl/strings/str_format.h"
 #include "absl/time/clock.h"
 #include "meshseg/proto/convert.h"
+#include "meshseg/proto/sha256.h"
 #include "meshseg/status_macros.h"
 #include "server/log.h"
 #include "server/metrics.h"
@@ -19,14 +20,19 @@
 namespace meshseg::server {
 namespace {
 
-// Writes the wire form of `result` to `path`; returns its size in bytes.
-absl::StatusOr<int64_t> WriteResult(const PipelineResult& result, const std::string& path) {
-  const v1::SegmentationResult message = ToProto(result);
+// Writes the wire form of `result` to `path`; sets its size and SHA-256.
+absl::Status WriteResult(const PipelineResult& result, const std::string& path, JobOutput& output) {
+  const std::string bytes = ToProto(result).SerializeAsString();
   std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  if (!out || !message.SerializeToOstream(&out) || !out.flush()) {
+  if (!out || !out.write(bytes.data(), static_cast<std::streamsize>(bytes.size())) ||
+      !out.flush()) {
     return absl::InternalError(absl::StrCat("spool: cannot write result \"", path, "\""));
   }
-  return static_cast<int64_t>(message.ByteSizeLong());
+  Sha256 digest;
+  digest.Update(bytes);
+  output.result_sha256 = digest.HexDigest();
+  output.result_size = static_cast<int64_t>(bytes.size());
+  return absl::OkStatus();
 }
 
 // Calls the runner; an exception escaping it becomes INTERNAL, so bad input
@@ -51,13 +57,15 @@ const char* StateName(const absl::Status& status) {
 }  // namespace
 
 WorkerPool::WorkerPool(int workers, int max_attempts, JobQueue& queue, JobStore& store,
-                       BlobStore& blobs, const Spool& scratch, JobRunner runner)
+                       BlobStore& blobs, const Spool& scratch, JobRunner runner,
+                       MemoryBudget* budget)
     : max_attempts_(max_attempts),
       queue_(queue),
       store_(store),
       blobs_(blobs),
       scratch_(scratch),
-      runner_(std::move(runner)) {
+      runner_(std::move(runner)),
+      budget_(budget) {
   if (const char* hook = std::getenv("MESHSEG_TEST_ABORT_ON_FILE")) abort_on_file_ = hook;
   for (int i = 0; i < workers; ++i) threads_.emplace_back([this] { Loop(); });
 }
@@ -71,7 +79,35 @@ void WorkerPool::Join() {
 }
 
 void WorkerPool::Loop() {
-  while (std::optional<Lease> lease = queue_.Pop()) Run(*lease);
+  while (true) {
+    // A job waiting for memory here: leave the next ones in the queue (for
+    // this process later, or for other workers).
+    if (budget_ != nullptr && !budget_->AwaitNoWaiter(give_up_.get_token())) return;
+    std::optional<Lease> lease = queue_.Pop();
+    if (!lease.has_value()) return;
+    Run(*lease);
+  }
+}
+
+absl::StatusOr<int64_t> WorkerPool::ReserveMemory(const std::string& job_id,
+                                                  const std::string& path,
+                                                  const PipelineParams& params,
+                                                  std::stop_token stop) {
+  if (budget_ == nullptr) return 0;
+  const absl::StatusOr<MemoryEstimate> estimate = EstimateJobMemory(path, params);
+  if (!estimate.ok() || estimate->peak_bytes > budget_->total()) return 0;
+  const int64_t bytes = estimate->peak_bytes;
+  if (budget_->reserved() + bytes > budget_->total()) {
+    store_.Progress(job_id, "waiting for memory", 0.0);
+    Log("job_waiting_for_memory", {{"job", job_id},
+                                   {"estimate", absl::StrCat(bytes)},
+                                   {"reserved", absl::StrCat(budget_->reserved())},
+                                   {"budget", absl::StrCat(budget_->total())}});
+  }
+  if (!budget_->Reserve(bytes, stop)) {
+    return absl::CancelledError("stopped while waiting for memory");
+  }
+  return bytes;
 }
 
 absl::Status WorkerPool::Execute(const RunSpec& spec, JobOutput& output) {
@@ -100,11 +136,15 @@ absl::Status WorkerPool::Execute(const RunSpec& spec, JobOutput& output) {
     last_fraction = fraction;
     store_.Progress(job_id, stage, fraction);
   };
-  MESHSEG_ASSIGN_OR_RETURN(const PipelineResult result,
-                           RunGuarded(runner_, upload->path(), params, ctx));
+  if (budget_ != nullptr) params.memory_budget_bytes = budget_->total();
+  MESHSEG_ASSIGN_OR_RETURN(const int64_t reserved,
+                           ReserveMemory(job_id, upload->path(), params, spec.stop));
+  absl::StatusOr<PipelineResult> run = RunGuarded(runner_, upload->path(), params, ctx);
+  if (reserved > 0) budget_->Release(reserved);
+  MESHSEG_ASSIGN_OR_RETURN(const PipelineResult result, std::move(run));
   stages.Finish();
   const std::string scratch = scratch_.ScratchPath(job_id, "result.pb");
-  MESHSEG_ASSIGN_OR_RETURN(output.result_size, WriteResult(result, scratch));
+  MESHSEG_RETURN_IF_ERROR(WriteResult(result, scratch, output));
   if (absl::Status put = blobs_.Put(ResultKey(job_id), scratch); !put.ok()) {
     std::remove(scratch.c_str());
     return put;

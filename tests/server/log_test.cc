@@ -86,6 +86,18 @@ TEST(Log, QuotesValuesWithSpacesQuotesEqualsOrNewlinesAndKeepsOneLine) {
                                             " peer=\"a=b\" reason=\"\" file=\"C:\\\\x y\""));
 }
 
+// An error message may quote bytes of an uploaded file: they reach the log
+// escaped, so every line is valid UTF-8 and stays one line.
+TEST(Log, EscapesBytesThatAreNotUtf8AndControlCharacters) {
+  const std::string out = CaptureStderr([] {
+    Log("upload_rejected", {{"error", "got \"\xff\xfe\r\""}, {"file", "a\tb"}});
+  });
+  const std::vector<std::string> lines = Lines(out);
+  ASSERT_EQ(lines.size(), 1u) << out;
+  EXPECT_THAT(lines[0],
+              ::testing::EndsWith(" error=\"got \\\"\\xff\\xfe\\x0d\\\"\" file=\"a\\x09b\""));
+}
+
 TEST(Log, LinesFromManyThreadsStayWhole) {
   constexpr int kThreads = 4;
   constexpr int kLines = 200;
