@@ -7,9 +7,11 @@
 namespace meshseg {
 namespace {
 
-// Returns the length (1-4) of the well-formed UTF-8 sequence at the start of
-// `text`, or 0 if it does not start with one. Unicode 15 table 3-7.
-std::size_t SequenceLength(std::string_view text) {
+bool IsControl(uint8_t c) { return c < 0x20 || c == 0x7F; }
+
+}  // namespace
+
+std::size_t Utf8SequenceLength(std::string_view text) {
   const auto byte = [&](std::size_t i) { return static_cast<uint8_t>(text[i]); };
   const uint8_t b0 = byte(0);
   if (b0 < 0x80) return 1;
@@ -35,13 +37,9 @@ std::size_t SequenceLength(std::string_view text) {
   return n;
 }
 
-bool IsControl(uint8_t c) { return c < 0x20 || c == 0x7F; }
-
-}  // namespace
-
 bool IsValidUtf8(std::string_view text) {
   while (!text.empty()) {
-    const std::size_t n = SequenceLength(text);
+    const std::size_t n = Utf8SequenceLength(text);
     if (n == 0) return false;
     text.remove_prefix(n);
   }
@@ -52,7 +50,7 @@ std::string EscapeToUtf8(std::string_view text) {
   std::string out;
   out.reserve(text.size());
   while (!text.empty()) {
-    const std::size_t n = SequenceLength(text);
+    const std::size_t n = Utf8SequenceLength(text);
     const uint8_t first = static_cast<uint8_t>(text[0]);
     if (n == 0 || (n == 1 && IsControl(first))) {
       absl::StrAppendFormat(&out, "\\x%02x", first);

@@ -7,7 +7,7 @@
 // ("Maximum resident set size" of /usr/bin/time -v) of `meshseg segment` on
 // a 2-core machine, one job per process, for each input kind at several
 // sizes, then a least-squares line through the points:
-//   scan-like meshes (generated test_piece, binary PLY, h = 1.0 .. 0.35):
+//   scan-like meshes (a machined part sampled at h = 1.0 .. 0.35, binary PLY):
 //       45 548 faces 36.3 MiB, 93 032 faces 55.1 MiB, 182 516 faces 91.5 MiB,
 //       372 756 faces 166.8 MiB  ->  18.2 MiB + 418 B per face (binary PLY's
 //       own 25 B per face included; the file is mapped whole)
