@@ -11,6 +11,7 @@ PACKAGES=(
   libtbb-dev libcgal-dev libboost-graph-dev libnanoflann-dev
   libhiredis-dev redis-server
   libssl-dev
+  zlib1g-dev
 )
 
 SUDO=""

@@ -23,6 +23,7 @@
 #include "meshseg/run_context.h"
 #include "meshseg/segment.h"
 #include "meshseg/topology.h"
+#include "meshseg/voxel.h"
 
 namespace meshseg {
 
@@ -37,6 +38,13 @@ struct PipelineParams {
   SegmentParams segment;
   TopologyParams topology;
   FeatureParams features;
+  // Volumes (NRRD, MetaImage, raw): reading and iso-surface (voxel.h).
+  VolumeParams volume;
+  // Binary-occupancy surfaces (binary volumes, terraced marching-cubes
+  // meshes) are segmented on their seed 003 simplification: at most this
+  // share of the faces, and a quadric error of at most this many voxels.
+  double binary_face_share = 0.1;
+  double binary_max_error_voxels = 0.5;
   // Upper bound on declared vertex/face counts of the input.
   int64_t max_elements = 200'000'000;
 };
@@ -65,10 +73,25 @@ struct PipelineResult {
   bool from_point_cloud = false;
   int64_t point_count = 0;
   std::vector<int> point_labels;
+  // Volume input: the volume's header and the iso value used; face_labels
+  // and the mesh statistics are those of the extracted surface.
+  bool from_volume = false;
+  VolumeInfo volume;
+  double iso_value = 0.0;
+  // Binary occupancy (a binary volume, or a mesh detected as terraced
+  // marching-cubes output): segmented on the seed 003 simplification of this
+  // many faces, whose Hausdorff distance to the full surface is given; labels
+  // refer to the full-resolution faces.
+  bool binary_occupancy = false;
+  int64_t simplified_face_count = 0;
+  double simplified_hausdorff = 0.0;
 };
 
-// Returns the segmentation of the mesh or point cloud in `input_path`.
-// A point cloud is first reconstructed into a watertight mesh (Reconstruct).
+// Returns the segmentation of the mesh, point cloud or volume in
+// `input_path`. A point cloud is first reconstructed into a watertight mesh
+// (Reconstruct); a volume's surface is extracted (ExtractSurface). Binary
+// occupancy surfaces go through seed 003: feature voxels, QEM simplification,
+// segmentation of its remesh, labels mapped back to the full surface.
 // Errors: those of ReadMesh / ReadPointCloud, Reconstruct, EstimateCurvature,
 // Segment, ExtractTopology and RecognizeFeatures; CANCELLED on stop.
 absl::StatusOr<PipelineResult> RunPipeline(const std::string& input_path,

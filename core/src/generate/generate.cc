@@ -63,6 +63,17 @@ absl::StatusOr<Grid> GridFor(const PartSpec& spec, double h) {
 
 }  // namespace
 
+absl::StatusOr<Grid> generate_internal::PartGrid(std::string_view name, const GenerateParams& params) {
+  MESHSEG_RETURN_IF_ERROR(ValidateParams(name, params));
+  std::optional<PartSpec> spec = generate_internal::FindPart(name);
+  if (!spec) {
+    return absl::InvalidArgumentError(absl::StrCat("generate: unknown part \"", std::string(name),
+                                                   "\"; known parts: ",
+                                                   absl::StrJoin(PartNames(), ", ")));
+  }
+  return GridFor(*spec, params.voxel_size > 0.0 ? params.voxel_size : spec->default_voxel_size);
+}
+
 std::vector<std::string> PartNames() { return generate_internal::CatalogueNames(); }
 
 absl::StatusOr<GeneratedPart> GeneratePart(std::string_view name, const GenerateParams& params,

@@ -3,6 +3,8 @@
 // to the faces or points of the input file.
 #include "meshseg/pipeline.h"
 
+#include <algorithm>
+#include <optional>
 #include <span>
 #include <utility>
 
@@ -67,16 +69,19 @@ absl::StatusOr<std::vector<int>> SegmentMesh(const Mesh& mesh, const PipelinePar
 // A CAD tessellation (meshseg/remesh.h): segments an isotropic remesh, then
 // labels the faces and vertices of `mesh` from it and extracts boundaries and
 // features on `mesh` itself, so curve vertex ids are ids of the input.
-absl::StatusOr<std::vector<int>> SegmentRemeshed(const Mesh& mesh, double edge_length,
+// `surface` is what is remeshed: `mesh` itself, or (binary occupancy) its
+// de-terraced simplification, whose vertices are not on `mesh`'s facets.
+absl::StatusOr<std::vector<int>> SegmentRemeshed(const Mesh& surface, const Mesh& mesh,
+                                                 double edge_length, bool on_facets,
                                                  const PipelineParams& params,
                                                  const RunContext& ctx, PipelineResult* result) {
   RemeshStats remesh;
   MESHSEG_ASSIGN_OR_RETURN(const Mesh fine,
-                           IsotropicRemesh(mesh, edge_length, params.remesh, ctx, &remesh));
+                           IsotropicRemesh(surface, edge_length, params.remesh, ctx, &remesh));
   MESHSEG_ASSIGN_OR_RETURN(CurvatureField curvature,
                            EstimateCurvature(fine, params.curvature, ctx));
   SegmentParams segment = params.segment;
-  segment.on_facets = true;  // the remesh's vertices lie on the input's facets
+  segment.on_facets = on_facets;  // the remesh's vertices lie on the input's facets
   MESHSEG_ASSIGN_OR_RETURN(Segmentation segmentation, Segment(fine, curvature, segment, ctx));
   const double tolerance = segmentation.estimates.distance_tolerance;
   std::vector<int> labels =
@@ -85,7 +90,7 @@ absl::StatusOr<std::vector<int>> SegmentRemeshed(const Mesh& mesh, double edge_l
   result->regions = std::move(segmentation.regions);
   pipeline_internal::CompactRegions(&labels, &result->vertex_labels, &result->regions);
   pipeline_internal::RefitOnInputVertices(mesh.tri, labels, tolerance, &result->regions);
-  if (pipeline_internal::RelabelFacesOffTheirSurface(
+  if (on_facets && pipeline_internal::RelabelFacesOffTheirSurface(
           mesh.tri, result->regions, kExactCorner * MeanEdgeLength(mesh.tri), &labels) > 0) {
     result->vertex_labels = pipeline_internal::VertexLabelsFromFaces(mesh.tri, labels);
     pipeline_internal::CompactRegions(&labels, &result->vertex_labels, &result->regions);
@@ -98,6 +103,46 @@ absl::StatusOr<std::vector<int>> SegmentRemeshed(const Mesh& mesh, double edge_l
   result->remesh_face_count = static_cast<int64_t>(fine.tri.n_faces());
   result->remesh_fine_edge_length = remesh.fine_edge_length;
   return labels;
+}
+
+// Seed 003 (ALGORITHMS.md S4) for a binary-occupancy surface `mesh` on
+// voxels of size h: its terraces (steps of one voxel on every slanted face)
+// defeat curvature and growing, so it is segmented on its QEM simplification
+// (feature points kept), remeshed at the full surface's edge length; labels
+// and surfaces come back to the full surface's own faces and vertices.
+absl::StatusOr<std::vector<int>> SegmentBinary(const Mesh& mesh, std::span<const uint8_t> features,
+                                               double h, const PipelineParams& params,
+                                               const RunContext& ctx, PipelineResult* result) {
+  const SimplifyParams simplify{
+      .target_faces = std::max<int64_t>(
+          1000, static_cast<int64_t>(params.binary_face_share * mesh.tri.n_faces())),
+      .max_error = params.binary_max_error_voxels * h};
+  absl::StatusOr<Simplification> simple = Simplify(mesh.tri, simplify, features, {}, ctx);
+  if (!simple.ok()) return simple.status();
+  result->binary_occupancy = true;
+  result->simplified_face_count = static_cast<int64_t>(simple->mesh.tri.n_faces());
+  result->simplified_hausdorff = simple->hausdorff.Max();
+  return SegmentRemeshed(simple->mesh, mesh, MeanEdgeLength(mesh.tri), /*on_facets=*/false, params,
+                         ctx, result);
+}
+
+absl::StatusOr<PipelineResult> RunOnVolume(const std::string& input_path,
+                                           const PipelineParams& params, const RunContext& ctx) {
+  VolumeParams volume = params.volume;
+  if (params.format) volume.read.format = params.format;
+  const absl::StatusOr<VolumeSurface> surface = ExtractSurface(input_path, volume, ctx);
+  if (!surface.ok()) return surface.status();
+  PipelineResult result;
+  result.from_volume = true;
+  result.volume = surface->info;
+  result.iso_value = surface->iso;
+  const double h = surface->info.geometry.Spacing().minCoeff();
+  MESHSEG_ASSIGN_OR_RETURN(
+      const std::vector<int> labels,
+      surface->binary ? SegmentBinary(surface->mesh, surface->feature_vertex, h, params, ctx, &result)
+                      : SegmentMesh(surface->mesh, params, ctx, &result));
+  result.face_labels = pipeline_internal::InputFaceLabels(surface->mesh.face_of_input, labels);
+  return result;
 }
 
 absl::StatusOr<PipelineResult> RunOnPointCloud(const std::string& input_path,
@@ -126,6 +171,15 @@ absl::StatusOr<PipelineResult> RunOnMesh(const std::string& input_path,
       ReadMesh(input_path, {.format = params.format, .max_elements = params.max_elements}));
   ctx.Progress("read", 1.0);
   PipelineResult result;
+  if (const std::optional<BinaryLattice> lattice = DetectBinaryLattice(mesh.tri)) {
+    MESHSEG_ASSIGN_OR_RETURN(const std::vector<uint8_t> features,
+                             BinaryMeshFeatures(mesh.tri, *lattice, params.volume));
+    MESHSEG_ASSIGN_OR_RETURN(
+        const std::vector<int> labels,
+        SegmentBinary(mesh, features, lattice->spacing.minCoeff(), params, ctx, &result));
+    result.face_labels = pipeline_internal::InputFaceLabels(mesh.face_of_input, labels);
+    return result;
+  }
   const TessellationShape shape = Assess(mesh, params.remesh);
   if (params.remesh.mode == RemeshMode::kAuto && shape.too_fine_to_remesh) {
     // A remesh at the face budget would lose what the export resolves (thin
@@ -146,7 +200,7 @@ absl::StatusOr<PipelineResult> RunOnMesh(const std::string& input_path,
                                  ? params.remesh.target_edge_length
                                  : shape.target_edge_length;
   MESHSEG_ASSIGN_OR_RETURN(const std::vector<int> mesh_labels,
-                           remesh ? SegmentRemeshed(mesh, edge_length, params, ctx, &result)
+                           remesh ? SegmentRemeshed(mesh, mesh, edge_length, true, params, ctx, &result)
                                   : SegmentMesh(mesh, params, ctx, &result));
   result.face_labels = pipeline_internal::InputFaceLabels(mesh.face_of_input, mesh_labels);
   return result;
@@ -159,6 +213,16 @@ absl::StatusOr<PipelineResult> RunPipeline(const std::string& input_path,
                                            const RunContext& ctx) {
   MESHSEG_RETURN_IF_ERROR(ValidateParams(params));
   ctx.Progress("read", 0.0);
+  std::optional<FileFormat> format = params.format;
+  if (!format) {
+    const absl::StatusOr<FileFormat> detected = DetectFileFormat(input_path);
+    if (detected.ok() && IsVolumeFormat(*detected)) format = *detected;
+  }
+  if (format && IsVolumeFormat(*format)) {
+    absl::StatusOr<PipelineResult> result = RunOnVolume(input_path, params, ctx);
+    if (result.ok()) MESHSEG_RETURN_IF_ERROR(ctx.CheckStop("pipeline"));
+    return result;
+  }
   bool point_cloud = params.format && IsPointCloudFormat(*params.format);
   if (!params.format || *params.format == FileFormat::kPly) {
     MESHSEG_ASSIGN_OR_RETURN(point_cloud, IsPointCloudFile(input_path));

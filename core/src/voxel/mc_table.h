@@ -4,14 +4,14 @@
 // fan-triangulated. An ambiguous face (diagonal corners alike) always
 // separates its inside corners; the decision depends on that face's corners
 // only, so two cubes sharing a face cut it alike and the mesh is watertight.
-#ifndef MESHSEG_GENERATE_MC_TABLE_H_
-#define MESHSEG_GENERATE_MC_TABLE_H_
+#ifndef MESHSEG_VOXEL_MC_TABLE_H_
+#define MESHSEG_VOXEL_MC_TABLE_H_
 
 #include <array>
 #include <cstdint>
 #include <vector>
 
-namespace meshseg::generate_internal {
+namespace meshseg::voxel_internal {
 
 // Corner c of the unit cube sits at (c & 1, (c >> 1) & 1, (c >> 2) & 1).
 // Edge e joins kCubeEdgeCorners[e][0] and [1]; edges 0-3 run along x, 4-7
@@ -32,6 +32,6 @@ using McTable = std::array<McCase, 256>;
 // Returns the table described above.
 McTable BuildMcTable();
 
-}  // namespace meshseg::generate_internal
+}  // namespace meshseg::voxel_internal
 
-#endif  // MESHSEG_GENERATE_MC_TABLE_H_
+#endif  // MESHSEG_VOXEL_MC_TABLE_H_
