@@ -27,6 +27,7 @@ absl::Status RunStatus(const Argv& argv);
 absl::Status RunWatch(const Argv& argv);
 absl::Status RunResult(const Argv& argv);
 absl::Status RunCancel(const Argv& argv);
+absl::Status RunSimplify(const Argv& argv);
 
 // The server of a job command: --server, else $MESHSEG_SERVER.
 // Errors (INVALID_ARGUMENT): neither is set.

@@ -13,6 +13,7 @@ constexpr char kUsage[] =
     "usage: meshseg <command> ...\n"
     "  info FILE [--json]\n"
     "  generate PART -o FILE [--voxel-size H] [--noise S] [--ground-truth GT.json]\n"
+    "           [--volume OUT.nrrd [--binary]]\n"
     "  convert IN OUT\n"
     "  reconstruct CLOUD -o MESH.ply [--format FMT]\n"
     "  segment INPUT -o RESULT.json [--colored-ply OUT.ply] [--distance-tolerance X]\n"
@@ -22,6 +23,10 @@ constexpr char kUsage[] =
     "  watch JOB --server HOST:PORT\n"
     "  result JOB -o RESULT.json --server HOST:PORT\n"
     "  cancel JOB --server HOST:PORT\n"
+    "  simplify IN -o OUT (--target-faces N | --max-error E) [--regions RESULT.json]\n"
+    "volumes (nrrd, mha, mhd, raw) go through info and segment; options:\n"
+    "  [--iso V] [--volume-mode auto|grey|binary] [--dims X,Y,Z --spacing SX,SY,SZ\n"
+    "   --type uint8|uint16|int16|float32 [--origin X,Y,Z] [--big-endian]] (raw)\n"
     "(--server defaults to $MESHSEG_SERVER)\n";
 
 }  // namespace
@@ -34,6 +39,7 @@ int main(int argc, char** argv) {
       {"jobs", meshseg::cli::RunJobs},       {"status", meshseg::cli::RunStatus},
       {"watch", meshseg::cli::RunWatch},     {"result", meshseg::cli::RunResult},
       {"cancel", meshseg::cli::RunCancel},  {"reconstruct", meshseg::cli::RunReconstruct},
+      {"simplify", meshseg::cli::RunSimplify},
   };
   if (argc < 2 || std::string(argv[1]) == "help" || std::string(argv[1]) == "--help") {
     std::fputs(kUsage, argc < 2 ? stderr : stdout);

@@ -44,6 +44,7 @@ grpc::Status SegmentationService::Upload(grpc::ServerContext* context,
     MESHSEG_RETURN_IF_ERROR(CheckUploadHeader(header, max_upload_bytes_));
     MESHSEG_ASSIGN_OR_RETURN(PipelineParams params, FromProto(header.options()));
     MESHSEG_ASSIGN_OR_RETURN(params.format, FormatFromHint(header.format_hint()));
+    MESHSEG_RETURN_IF_ERROR(RawLayoutFromProto(header, &params));
     if (queue_.Size() >= queue_.Capacity()) {  // refuse before receiving the data
       return absl::ResourceExhaustedError(
           absl::StrCat("upload: job queue full (", queue_.Capacity(), " jobs waiting)"));

@@ -40,9 +40,16 @@ struct PipelineParams {
   FeatureParams features;
   // Volumes (NRRD, MetaImage, raw): reading and iso-surface (voxel.h).
   VolumeParams volume;
-  // Binary-occupancy surfaces (binary volumes, terraced marching-cubes
-  // meshes) are segmented on their seed 003 simplification: at most this
-  // share of the faces, and a quadric error of at most this many voxels.
+  // How binary-occupancy surfaces (binary volumes, terraced marching-cubes
+  // meshes) lose their terraces before segmentation; both keep seed 003's
+  // feature vertices and fit the surfaces on the original vertices.
+  enum class BinarySurface {
+    kRelax,     // RelaxTerraces on the full surface (voxel.h)
+    kSimplify,  // seed 003's QEM simplification, remeshed (remesh.h)
+  };
+  BinarySurface binary_surface = BinarySurface::kRelax;
+  // kSimplify: at most this share of the faces, and a quadric error of at
+  // most this many voxels (seed 003: 0.5-0.6 voxel).
   double binary_face_share = 0.1;
   double binary_max_error_voxels = 0.5;
   // Upper bound on declared vertex/face counts of the input.

@@ -211,6 +211,9 @@ struct VolumeSurface {
   // Binary volumes: one per mesh vertex, 1 if the vertex lies on a feature
   // voxel (seed 003 section 2.1); empty for grey volumes.
   std::vector<uint8_t> feature_vertex;
+  // Binary volumes: one per mesh vertex, the positions of the material and
+  // the air sample at the ends of its grid edge; empty for grey volumes.
+  std::vector<Eigen::Vector3d> edge_inside, edge_outside;
 };
 
 // Returns the surface of the volume in `path` (see VolumeParams). Reports
@@ -258,13 +261,30 @@ struct BinaryLattice {
 // path: their dihedral angles take a handful of values only.
 std::optional<BinaryLattice> DetectBinaryLattice(const TriMesh& mesh);
 
-// Returns, per vertex of `mesh` (a binary-occupancy mesh on `lattice`), 1 if
-// it lies on a seed 003 feature voxel of the occupancy the mesh bounds.
+// Per vertex of a binary-occupancy surface: whether it lies on a seed 003
+// feature voxel, and the material and air samples at the ends of its edge.
+struct BinaryVertices {
+  std::vector<uint8_t> feature;
+  std::vector<Eigen::Vector3d> inside, outside;
+};
+
+// Returns the BinaryVertices of `mesh` (a binary-occupancy mesh on `lattice`)
+// from the occupancy the mesh bounds.
 // Errors: INVALID_ARGUMENT if a vertex is off the lattice or the box of voxels
 // exceeds max_voxels.
-absl::StatusOr<std::vector<uint8_t>> BinaryMeshFeatures(const TriMesh& mesh,
-                                                        const BinaryLattice& lattice,
-                                                        const VolumeParams& params = {});
+absl::StatusOr<BinaryVertices> BinaryMeshFeatures(const TriMesh& mesh, const BinaryLattice& lattice,
+                                                  const VolumeParams& params = {});
+
+// Returns the vertices of a binary-occupancy surface with its terraces
+// relaxed: constrained surface nets (Gibson 1998) with the constraint the
+// binary data states. Each non-feature vertex moves, `iterations` times,
+// half way to the mean of its neighbours, projected onto its own edge
+// between the material and the air sample (the data say only that the
+// surface crosses there); feature vertices stay. A slanted plane becomes
+// flat; convex surfaces sink by at most the slack of their edges, so fits
+// belong on the original vertices.
+std::vector<Eigen::Vector3d> RelaxTerraces(const TriMesh& mesh, const BinaryVertices& vertices,
+                                           int iterations = 64);
 
 // ---------------------------------------------------------------- simplify
 

@@ -107,23 +107,49 @@ absl::StatusOr<std::vector<int>> SegmentRemeshed(const Mesh& surface, const Mesh
 
 // Seed 003 (ALGORITHMS.md S4) for a binary-occupancy surface `mesh` on
 // voxels of size h: its terraces (steps of one voxel on every slanted face)
-// defeat curvature and growing, so it is segmented on its QEM simplification
-// (feature points kept), remeshed at the full surface's edge length; labels
+// defeat curvature and growing, so it is segmented on a de-terraced surface
+// (PipelineParams::BinarySurface) that keeps the feature vertices; labels
 // and surfaces come back to the full surface's own faces and vertices.
-absl::StatusOr<std::vector<int>> SegmentBinary(const Mesh& mesh, std::span<const uint8_t> features,
+absl::StatusOr<std::vector<int>> SegmentBinary(const Mesh& mesh, const BinaryVertices& binary,
                                                double h, const PipelineParams& params,
                                                const RunContext& ctx, PipelineResult* result) {
-  const SimplifyParams simplify{
-      .target_faces = std::max<int64_t>(
-          1000, static_cast<int64_t>(params.binary_face_share * mesh.tri.n_faces())),
-      .max_error = params.binary_max_error_voxels * h};
-  absl::StatusOr<Simplification> simple = Simplify(mesh.tri, simplify, features, {}, ctx);
-  if (!simple.ok()) return simple.status();
   result->binary_occupancy = true;
-  result->simplified_face_count = static_cast<int64_t>(simple->mesh.tri.n_faces());
-  result->simplified_hausdorff = simple->hausdorff.Max();
-  return SegmentRemeshed(simple->mesh, mesh, MeanEdgeLength(mesh.tri), /*on_facets=*/false, params,
-                         ctx, result);
+  if (params.binary_surface == PipelineParams::BinarySurface::kSimplify) {
+    const SimplifyParams simplify{
+        .target_faces = std::max<int64_t>(
+            1000, static_cast<int64_t>(params.binary_face_share * mesh.tri.n_faces())),
+        .max_error = params.binary_max_error_voxels * h};
+    absl::StatusOr<Simplification> simple = Simplify(mesh.tri, simplify, binary.feature, {}, ctx);
+    if (!simple.ok()) return simple.status();
+    result->simplified_face_count = static_cast<int64_t>(simple->mesh.tri.n_faces());
+    result->simplified_hausdorff = simple->hausdorff.Max();
+    return SegmentRemeshed(simple->mesh, mesh, MeanEdgeLength(mesh.tri), /*on_facets=*/false, params,
+                           ctx, result);
+  }
+  // The relaxed surface has the input's faces and vertex ids.
+  Mesh relaxed;
+  relaxed.tri = mesh.tri;
+  const std::vector<Eigen::Vector3d> moved = RelaxTerraces(mesh.tri, binary);
+  for (auto v : relaxed.tri.vertices()) {
+    const Eigen::Vector3d& p = moved[v.idx()];
+    relaxed.tri.set_point(v, TriMesh::Point(p.x(), p.y(), p.z()));
+  }
+  relaxed.tri.update_normals();
+  relaxed.face_of_input = mesh.face_of_input;
+  relaxed.name = mesh.name;
+  MESHSEG_ASSIGN_OR_RETURN(CurvatureField curvature,
+                           EstimateCurvature(relaxed, params.curvature, ctx));
+  MESHSEG_ASSIGN_OR_RETURN(Segmentation segmentation,
+                           Segment(relaxed, curvature, params.segment, ctx));
+  std::vector<int> labels = std::move(segmentation.face_labels);
+  result->vertex_labels = std::move(segmentation.vertex_labels);
+  result->regions = std::move(segmentation.regions);
+  result->estimates = segmentation.estimates;
+  pipeline_internal::RefitOnInputVertices(mesh.tri, labels, segmentation.estimates.distance_tolerance,
+                                          &result->regions);
+  MESHSEG_RETURN_IF_ERROR(DescribeRegions(mesh, labels, result->regions, params, ctx, result));
+  result->mesh = MeshStatistics(mesh);
+  return labels;
 }
 
 absl::StatusOr<PipelineResult> RunOnVolume(const std::string& input_path,
@@ -139,7 +165,10 @@ absl::StatusOr<PipelineResult> RunOnVolume(const std::string& input_path,
   const double h = surface->info.geometry.Spacing().minCoeff();
   MESHSEG_ASSIGN_OR_RETURN(
       const std::vector<int> labels,
-      surface->binary ? SegmentBinary(surface->mesh, surface->feature_vertex, h, params, ctx, &result)
+      surface->binary
+          ? SegmentBinary(surface->mesh,
+                          {surface->feature_vertex, surface->edge_inside, surface->edge_outside}, h,
+                          params, ctx, &result)
                       : SegmentMesh(surface->mesh, params, ctx, &result));
   result.face_labels = pipeline_internal::InputFaceLabels(surface->mesh.face_of_input, labels);
   return result;
@@ -172,11 +201,11 @@ absl::StatusOr<PipelineResult> RunOnMesh(const std::string& input_path,
   ctx.Progress("read", 1.0);
   PipelineResult result;
   if (const std::optional<BinaryLattice> lattice = DetectBinaryLattice(mesh.tri)) {
-    MESHSEG_ASSIGN_OR_RETURN(const std::vector<uint8_t> features,
+    MESHSEG_ASSIGN_OR_RETURN(const BinaryVertices binary,
                              BinaryMeshFeatures(mesh.tri, *lattice, params.volume));
     MESHSEG_ASSIGN_OR_RETURN(
         const std::vector<int> labels,
-        SegmentBinary(mesh, features, lattice->spacing.minCoeff(), params, ctx, &result));
+        SegmentBinary(mesh, binary, lattice->spacing.minCoeff(), params, ctx, &result));
     result.face_labels = pipeline_internal::InputFaceLabels(mesh.face_of_input, labels);
     return result;
   }

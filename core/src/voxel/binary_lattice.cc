@@ -1,4 +1,4 @@
-// DetectBinaryLattice() and BinaryMeshFeatures(): marching cubes on binary
+// DetectBinaryLattice(), BinaryMeshFeatures() and RelaxTerraces(): marching cubes on binary
 // occupancy puts every vertex at the midpoint of a lattice edge, so each
 // coordinate axis holds only the lattice values and the midpoints between
 // them. The occupancy is recovered from the mesh itself: the two ends of
@@ -8,6 +8,9 @@
 #include <cmath>
 #include <deque>
 #include <unordered_map>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
 
 #include "absl/strings/str_cat.h"
 #include "meshseg/voxel.h"
@@ -41,6 +44,16 @@ std::optional<AxisLattice> AxisOf(std::vector<double> values, double extent) {
     if (std::abs(m - std::round(m)) > kLatticeTolerance) return std::nullopt;
   }
   return AxisLattice{distinct.front(), gap};
+}
+
+// Position of lattice point x of the box `occ` whose point 0 is `base`.
+Eigen::Vector3d LatticePoint(int64_t x, const Occupancy& occ, const int64_t base[3],
+                             const BinaryLattice& lattice) {
+  const int64_t c[3] = {x % occ.dims[0], (x / occ.dims[0]) % occ.dims[1],
+                        x / (int64_t{occ.dims[0]} * occ.dims[1])};
+  Eigen::Vector3d p;
+  for (int a = 0; a < 3; ++a) p[a] = lattice.origin[a] + lattice.spacing[a] * static_cast<double>(base[a] + c[a]);
+  return p;
 }
 
 // Index along an axis in half steps from `first`.
@@ -84,8 +97,8 @@ std::optional<BinaryLattice> DetectBinaryLattice(const TriMesh& mesh) {
   return std::nullopt;
 }
 
-absl::StatusOr<std::vector<uint8_t>> BinaryMeshFeatures(const TriMesh& mesh, const BinaryLattice& lattice,
-                                                        const VolumeParams& params) {
+absl::StatusOr<BinaryVertices> BinaryMeshFeatures(const TriMesh& mesh, const BinaryLattice& lattice,
+                                                  const VolumeParams& params) {
   // Lattice box around the vertices, one point of air beyond.
   Eigen::Vector3d lo = Eigen::Vector3d::Constant(1e300), hi = -lo;
   for (auto v : mesh.vertices()) {
@@ -107,7 +120,7 @@ absl::StatusOr<std::vector<uint8_t>> BinaryMeshFeatures(const TriMesh& mesh, con
   const auto index = [&](const int64_t c[3]) { return occ.Index(int(c[0]), int(c[1]), int(c[2])); };
   std::vector<int8_t> state(static_cast<size_t>(voxels), -1);
   std::unordered_map<int64_t, int> crossed;  // lattice edge id -> vertex
-  std::vector<int64_t> inside_end(mesh.n_vertices(), -1);
+  std::vector<int64_t> inside_end(mesh.n_vertices(), -1), outside_end(mesh.n_vertices(), -1);
   std::deque<size_t> queue;
   for (auto v : mesh.vertices()) {
     const Eigen::Vector3d p = ToEigen(mesh.point(v));
@@ -131,6 +144,7 @@ absl::StatusOr<std::vector<uint8_t>> BinaryMeshFeatures(const TriMesh& mesh, con
     ++d[axis];
     const size_t upper = index(d);
     inside_end[v.idx()] = static_cast<int64_t>(upper_inside ? upper : lower);
+    outside_end[v.idx()] = static_cast<int64_t>(upper_inside ? lower : upper);
     state[upper_inside ? upper : lower] = 1;
     state[upper_inside ? lower : upper] = 0;
     queue.push_back(lower);
@@ -158,9 +172,47 @@ absl::StatusOr<std::vector<uint8_t>> BinaryMeshFeatures(const TriMesh& mesh, con
   occ.inside.resize(state.size());
   for (size_t x = 0; x < state.size(); ++x) occ.inside[x] = state[x] == 1;
   const std::vector<uint8_t> features = FeatureVoxels(occ, params.opening_radius, params.closing_radius);
-  std::vector<uint8_t> out(mesh.n_vertices(), 0);
-  for (size_t v = 0; v < out.size(); ++v) out[v] = inside_end[v] >= 0 && features[inside_end[v]];
+  BinaryVertices out;
+  out.feature.assign(mesh.n_vertices(), 0);
+  for (size_t v = 0; v < out.feature.size(); ++v) {
+    out.feature[v] = inside_end[v] >= 0 && features[inside_end[v]];
+    out.inside.push_back(LatticePoint(inside_end[v], occ, base, lattice));
+    out.outside.push_back(LatticePoint(outside_end[v], occ, base, lattice));
+  }
   return out;
+}
+
+std::vector<Eigen::Vector3d> RelaxTerraces(const TriMesh& mesh, const BinaryVertices& vertices,
+                                           int iterations) {
+  // Keeps vertices this fraction of their edge from its ends (no two
+  // vertices of a cube meet).
+  constexpr double kMargin = 0.05;
+  constexpr double kStep = 0.5;
+  const size_t n = mesh.n_vertices();
+  std::vector<Eigen::Vector3d> at(n), next(n);
+  for (auto v : mesh.vertices()) at[v.idx()] = ToEigen(mesh.point(v));
+  std::vector<int> start(n + 1, 0), ring;
+  for (auto v : mesh.vertices()) {
+    for (auto w : mesh.vv_range(v)) ring.push_back(w.idx());
+    start[v.idx() + 1] = static_cast<int>(ring.size());
+  }
+  for (int it = 0; it < iterations; ++it) {
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, n), [&](const tbb::blocked_range<size_t>& r) {
+      for (size_t v = r.begin(); v < r.end(); ++v) {
+        next[v] = at[v];
+        if (vertices.feature[v] || start[v] == start[v + 1]) continue;
+        Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+        for (int k = start[v]; k < start[v + 1]; ++k) mean += at[ring[k]];
+        mean /= start[v + 1] - start[v];
+        const Eigen::Vector3d target = at[v] + kStep * (mean - at[v]);
+        const Eigen::Vector3d a = vertices.inside[v], d = vertices.outside[v] - a;
+        const double t = std::clamp((target - a).dot(d) / d.squaredNorm(), kMargin, 1.0 - kMargin);
+        next[v] = a + t * d;
+      }
+    });
+    std::swap(at, next);
+  }
+  return at;
 }
 
 }  // namespace meshseg

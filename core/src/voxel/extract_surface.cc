@@ -184,7 +184,14 @@ absl::StatusOr<VolumeSurface> ExtractSurface(const std::string& path, const Volu
       const int axis = static_cast<int>(e % 3);
       int64_t lower = e / 3;
       int64_t c[3] = {lower % px, (lower / px) % py, lower / (px * py)};
-      if (iso_surface.vertex_tag[v] == 1) ++c[axis];  // the upper end is inside
+      int64_t o[3] = {c[0], c[1], c[2]};
+      if (iso_surface.vertex_tag[v] == 1) {
+        ++c[axis];  // the upper end is inside
+      } else {
+        ++o[axis];
+      }
+      out.edge_inside.push_back(g.Point(c[0] - 1.0, c[1] - 1.0, c[2] - 1.0));
+      out.edge_outside.push_back(g.Point(o[0] - 1.0, o[1] - 1.0, o[2] - 1.0));
       out.feature_vertex[v] = features[occupancy.Index(static_cast<int>(c[0] - 1), static_cast<int>(c[1] - 1),
                                                        static_cast<int>(c[2] - 1))];
     }

@@ -33,7 +33,8 @@ struct Scored {
 
 // Writes part `name` as a volume, segments it, and scores the labels on the
 // surface the volume gives (extracted again: the extraction is deterministic).
-Scored SegmentVolumeOf(const std::string& name, bool binary, double noise = 0.0) {
+Scored SegmentVolumeOf(const std::string& name, bool binary, double noise = 0.0,
+                       const PipelineParams& params = {}) {
   Scored s;
   const GenerateParams gen{.noise = noise};
   const absl::StatusOr<VolumeData> volume = GenerateVolume(name, binary, gen);
@@ -41,7 +42,7 @@ Scored SegmentVolumeOf(const std::string& name, bool binary, double noise = 0.0)
   if (!volume.ok()) return s;
   const std::string path = testing_files::ScratchPath(name + (binary ? "_binary.nrrd" : "_grey.nrrd"));
   EXPECT_TRUE(WriteNrrd(*volume, path, /*gzip=*/true).ok());
-  absl::StatusOr<PipelineResult> result = RunPipeline(path);
+  absl::StatusOr<PipelineResult> result = RunPipeline(path, params);
   EXPECT_TRUE(result.ok()) << result.status();
   if (!result.ok()) return s;
   s.result = *std::move(result);
@@ -102,6 +103,17 @@ TEST_P(BinaryVolume, SegmentsLikeTheTrueSurfaces) {
 
 INSTANTIATE_TEST_SUITE_P(Parts, BinaryVolume,
                          ::testing::Values("test_piece", "small_block", "plate_boss", "stepped_shaft"));
+
+// Seed 003's own route (QEM simplification, remeshed), measured for the
+// notes; run with --gtest_also_run_disabled_tests.
+TEST(BinaryVolumeSimplifyRoute, DISABLED_SegmentsTestPiece) {
+  PipelineParams params;
+  params.binary_surface = PipelineParams::BinarySurface::kSimplify;
+  const Scored s = SegmentVolumeOf("test_piece", /*binary=*/true, 0.0, params);
+  std::cout << "simplified to " << s.result.simplified_face_count << " faces, Hausdorff "
+            << s.result.simplified_hausdorff << "\n" << s.eval;
+  ExpectBar(s);
+}
 
 }  // namespace
 }  // namespace meshseg
