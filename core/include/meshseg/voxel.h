@@ -297,6 +297,8 @@ struct SimplifyParams {
   double max_error = 0.0;
   // A collapse that turns a face normal by more than this is refused.
   double max_normal_flip_deg = 60.0;
+  // Measure Simplification::hausdorff (a second pass over both meshes).
+  bool measure_hausdorff = true;
 };
 
 struct HausdorffDistance {

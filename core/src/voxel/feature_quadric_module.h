@@ -17,6 +17,7 @@
 #include <string>
 
 #include <Eigen/Dense>
+#include <Eigen/LU>
 #include <OpenMesh/Tools/Decimater/ModBaseT.hh>
 
 #include "meshseg/mesh.h"
@@ -117,15 +118,15 @@ class ModFeatureQuadricT : public OpenMesh::Decimater::ModBaseT<MeshT> {
  private:
   const Mesh& mesh_const() const { return const_cast<ModFeatureQuadricT*>(this)->Base::mesh(); }
 
-  // argmin q over space if well conditioned (relative to its largest
-  // eigenvalue), else over the segment p0 p1.
+  // argmin q over space if A is well conditioned (determinant against the
+  // cube of its trace), else over the segment p0 p1.
   static Eigen::Vector3d Optimum(const Quadric& q, const Eigen::Vector3d& p0, const Eigen::Vector3d& p1) {
-    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(q.a);
-    const Eigen::Vector3d ev = eig.eigenvalues();
-    if (ev(2) > 0.0 && ev(0) > 1e-3 * ev(2)) {
-      const Eigen::Vector3d x = -eig.eigenvectors() * ((eig.eigenvectors().transpose() * q.b).array() / ev.array()).matrix();
+    const double trace = q.a.trace();
+    const double det = q.a.determinant();
+    if (trace > 0.0 && det > 1e-6 * trace * trace * trace) {
+      const Eigen::Vector3d x = -(q.a.inverse() * q.b);
       // Stay near the edge: an optimum far off it is a conditioning artefact.
-      if ((x - 0.5 * (p0 + p1)).norm() <= 2.0 * (p1 - p0).norm()) return x;
+      if ((x - 0.5 * (p0 + p1)).squaredNorm() <= 4.0 * (p1 - p0).squaredNorm()) return x;
     }
     // Along the segment: minimise the 1D quadratic in t.
     const Eigen::Vector3d d = p1 - p0;

@@ -129,7 +129,7 @@ absl::StatusOr<Simplification> Simplify(const TriMesh& mesh, const SimplifyParam
     out.face_labels = std::move(labels);
   }
   ctx.Progress("simplify", 0.95);
-  out.hausdorff = Hausdorff(mesh, out.mesh.tri);
+  if (params.measure_hausdorff) out.hausdorff = Hausdorff(mesh, out.mesh.tri);
   ctx.Progress("simplify", 1.0);
   return out;
 }
