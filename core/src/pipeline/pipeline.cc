@@ -145,8 +145,16 @@ absl::StatusOr<std::vector<int>> SegmentBinary(const Mesh& mesh, const BinaryVer
   result->vertex_labels = std::move(segmentation.vertex_labels);
   result->regions = std::move(segmentation.regions);
   result->estimates = segmentation.estimates;
+  // The relaxation is a membrane: where a plane passes through every
+  // vertex's edge it is the relaxed surface, so planes keep their fit on the
+  // relaxed vertices; curved surfaces move by their curvature (up to the
+  // edges' slack) and are fitted on the original, unbiased vertices.
+  const std::vector<Region> relaxed_fits = result->regions;
   pipeline_internal::RefitOnInputVertices(mesh.tri, labels, segmentation.estimates.distance_tolerance,
                                           &result->regions);
+  for (size_t r = 0; r < relaxed_fits.size(); ++r) {
+    if (relaxed_fits[r].type == SurfaceType::kPlane) result->regions[r] = relaxed_fits[r];
+  }
   MESHSEG_RETURN_IF_ERROR(DescribeRegions(mesh, labels, result->regions, params, ctx, result));
   result->mesh = MeshStatistics(mesh);
   return labels;

@@ -6,6 +6,8 @@
 #include <cmath>
 #include <limits>
 
+#include <Eigen/Geometry>
+
 #include "absl/strings/str_cat.h"
 #include "meshseg/status_macros.h"
 #include "meshseg/voxel.h"

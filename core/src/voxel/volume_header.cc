@@ -49,7 +49,10 @@ struct Fields {
   std::optional<std::array<int64_t, 3>> dims;
   std::optional<VoxelType> type;
   Eigen::Vector3d spacing = Eigen::Vector3d::Ones();
-  std::optional<std::array<Eigen::Vector3d, 3>> directions;  // with spacing
+  std::optional<std::array<Eigen::Vector3d, 3>> directions;
+  // NRRD's space directions carry the spacing; MetaImage's TransformMatrix
+  // holds direction cosines and ElementSpacing the spacing.
+  bool directions_carry_spacing = true;
 };
 
 absl::Status ParseDims(std::string_view name, std::string_view key, std::string_view value,
@@ -146,8 +149,13 @@ absl::Status Finish(std::string_view name, const Fields& f, VolumeInfo* info) {
   info->geometry.dims = *f.dims;
   info->type = *f.type;
   for (int a = 0; a < 3; ++a) {
-    info->geometry.axes[a] = f.directions ? (*f.directions)[a]
-                                          : f.spacing[a] * Eigen::Vector3d::Unit(a);
+    if (!f.directions) {
+      info->geometry.axes[a] = f.spacing[a] * Eigen::Vector3d::Unit(a);
+    } else if (f.directions_carry_spacing) {
+      info->geometry.axes[a] = (*f.directions)[a];
+    } else {
+      info->geometry.axes[a] = f.spacing[a] * (*f.directions)[a].normalized();
+    }
   }
   return absl::OkStatus();
 }
@@ -250,6 +258,7 @@ absl::StatusOr<VolumeInfo> ParseMetaImageHeader(std::string_view text, const std
   info.format = Lower(path).ends_with(".mhd") ? FileFormat::kMhd : FileFormat::kMha;
   const std::string_view name = info.name;
   Fields f;
+  f.directions_carry_spacing = false;
   bool ended = false;
   size_t start = 0;
   int line_no = 0;

@@ -1,4 +1,6 @@
+#include <algorithm>
 #include <cmath>
+#include <iostream>
 
 #include <gtest/gtest.h>
 
@@ -57,23 +59,28 @@ TEST(RelaxTerraces, FlattensATurnedBoxFaceWithinItsEdges) {
   const VolumeSurface s = Surface(testing::SampleSdf(box, 36, kH, true), "box3.nrrd");
   const BinaryVertices bv{s.feature_vertex, s.edge_inside, s.edge_outside};
   const std::vector<Eigen::Vector3d> relaxed = RelaxTerraces(s.mesh.tri, bv);
-  // Terraced vertices lie up to ~0.5 h off the true faces (rms ~0.2 h);
-  // relaxed, the face interiors (away from the edges) are flat.
+  // Terraced vertices lie up to ~0.5 h off the true faces; relaxed, the
+  // face interiors (more than the opening's reach from the edges) are flat,
+  // and every vertex stays on its own grid edge.
+  const Eigen::Matrix3d r = Eigen::AngleAxisd(17.0 * 3.14159265358979 / 180.0,
+                                              Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
   double before = 0.0, after = 0.0;
   int count = 0;
   for (size_t v = 0; v < relaxed.size(); ++v) {
-    const Eigen::Vector3d p = ToEigen(s.mesh.tri.point(TriMesh::VertexHandle(static_cast<int>(v))));
-    if (box(p) < -1.5 * kH || std::abs(box(p)) > kH) continue;
-    const double dp = std::abs(box(p)), dr = std::abs(box(relaxed[v]));
-    // Only vertices whose nearest face is far from the edges (interiors).
-    before += dp * dp, after += dr * dr, ++count;
     const Eigen::Vector3d d = s.edge_outside[v] - s.edge_inside[v];
     const double t = (relaxed[v] - s.edge_inside[v]).dot(d) / d.squaredNorm();
     EXPECT_GE(t, 0.0);
     EXPECT_LE(t, 1.0);
+    const Eigen::Vector3d p = ToEigen(s.mesh.tri.point(TriMesh::VertexHandle(static_cast<int>(v))));
+    Eigen::Vector3d q = (Eigen::Vector3d(5, 4, 3) - (r.transpose() * p).cwiseAbs()).cwiseAbs();
+    std::sort(q.data(), q.data() + 3);
+    if (q[1] < 3.5 * kH) continue;
+    const double dp = box(p), dr = box(relaxed[v]);
+    before += dp * dp, after += dr * dr, ++count;
   }
   ASSERT_GT(count, 100);
-  EXPECT_LT(std::sqrt(after / count), 0.6 * std::sqrt(before / count));
+  std::cout << "rms to the faces: " << std::sqrt(before / count) << " -> " << std::sqrt(after / count) << "\n";
+  EXPECT_LT(std::sqrt(after / count), 0.5 * std::sqrt(before / count));
 }
 
 }  // namespace

@@ -131,7 +131,7 @@ TEST(ReadVolume, RawTakesItsLayoutFromTheCaller) {
     WriteFile(path, Bytes(v, false));
     const RawVolumeLayout layout{.dims = {5, 4, 3}, .spacing = {0.5, 0.75, 1.25},
                                  .origin = {1.5, -2.0, 3.25}, .type = type};
-    const absl::StatusOr<VolumeInfo> info = ReadVolumeInfo(path, {.raw = layout});
+    const absl::StatusOr<VolumeInfo> info = ReadVolumeInfo(path, {.format = std::nullopt, .raw = layout});
     ASSERT_TRUE(info.ok()) << info.status();
     ExpectSameGeometry(info->geometry, v.geometry);
     EXPECT_EQ(ReadAll(*info), v.values);
@@ -213,9 +213,9 @@ TEST(ReadVolume, BadMetaImageHeadersNameTheProblem) {
 TEST(ReadVolume, RawWithoutLayoutOrOfTheWrongSizeIsRefused) {
   ExpectBad("no_layout.raw", std::string(60, '\0'), "needs its dims");
   ExpectBad("short.raw", std::string(59, '\0'), "truncated data",
-            {.raw = RawVolumeLayout{.dims = {5, 4, 3}, .type = VoxelType::kUint8}});
+            {.format = std::nullopt, .raw = RawVolumeLayout{.dims = {5, 4, 3}, .type = VoxelType::kUint8}});
   ExpectBad("huge.raw", std::string(60, '\0'), "over the limit",
-            {.raw = RawVolumeLayout{.dims = {1000000, 1000000, 1000000}, .type = VoxelType::kUint8}});
+            {.format = std::nullopt, .raw = RawVolumeLayout{.dims = {1000000, 1000000, 1000000}, .type = VoxelType::kUint8}});
 }
 
 TEST(ReadVolume, MissingFileIsNotFound) {

@@ -75,7 +75,8 @@ void ExpectBar(const Scored& s) {
     }
     const Region& r = s.result.regions[p.region];
     if (p.faces >= kTypedFaces) {
-      EXPECT_EQ(SurfaceTypeName(r.type), SurfaceTypeName(p.true_type)) << p.name;
+      EXPECT_EQ(std::string(SurfaceTypeName(r.type)), std::string(SurfaceTypeName(p.true_type)))
+          << p.name;
     }
     const Surface& truth = s.truth.primitives[p.primitive].surface;
     if (const auto* cyl = std::get_if<Cylinder>(&truth); cyl && p.angular_span >= kFullTurn) {
@@ -102,6 +103,41 @@ TEST_P(BinaryVolume, SegmentsLikeTheTrueSurfaces) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Parts, BinaryVolume,
+                         ::testing::Values("test_piece", "small_block", "plate_boss", "stepped_shaft"));
+
+// The grey-mesh path's score on the same part: its mesh written to a file,
+// segmented, evaluated on its own ground truth.
+testing::Evaluation MeshPathScore(const std::string& name, double noise) {
+  const absl::StatusOr<GeneratedPart> part = GeneratePart(name, {.noise = noise});
+  EXPECT_TRUE(part.ok()) << part.status();
+  const std::string path = testing_files::ScratchPath(name + "_mesh.ply");
+  EXPECT_TRUE(WriteMesh(part->mesh.tri, path).ok());
+  const absl::StatusOr<PipelineResult> result = RunPipeline(path);
+  EXPECT_TRUE(result.ok()) << result.status();
+  Segmentation seg;
+  seg.face_labels = result->face_labels;  // PLY keeps the mesh's face order
+  seg.regions = result->regions;
+  return testing::Evaluate(*part, seg);
+}
+
+// Grey volumes match the grey-mesh path: face accuracy within half a point,
+// no more than one extra region.
+constexpr double kGreyAccuracySlack = 0.005;
+constexpr double kGreyNoise = 0.05;  // h
+
+class GreyVolume : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(GreyVolume, MatchesTheGreyMeshPath) {
+  const Scored s = SegmentVolumeOf(GetParam(), /*binary=*/false, kGreyNoise);
+  ASSERT_FALSE(s.result.regions.empty());
+  EXPECT_FALSE(s.result.binary_occupancy);
+  const testing::Evaluation mesh = MeshPathScore(GetParam(), kGreyNoise);
+  std::cout << GetParam() << " grey volume: " << s.eval << "grey mesh: " << mesh;
+  EXPECT_GE(s.eval.area_fraction, mesh.area_fraction - kGreyAccuracySlack);
+  EXPECT_LE(s.eval.region_count, mesh.region_count + 1);
+}
+
+INSTANTIATE_TEST_SUITE_P(Parts, GreyVolume,
                          ::testing::Values("test_piece", "small_block", "plate_boss", "stepped_shaft"));
 
 // Seed 003's own route (QEM simplification, remeshed), measured for the
