@@ -6,7 +6,6 @@
 #ifndef MESHSEG_CLIENT_VOLUME_ARGS_H_
 #define MESHSEG_CLIENT_VOLUME_ARGS_H_
 
-#include <initializer_list>
 #include <string_view>
 
 #include "absl/status/status.h"
@@ -15,9 +14,8 @@
 
 namespace meshseg::cli {
 
-// Value flags and switches of the volume options, for Args::Parse.
-inline constexpr std::initializer_list<std::string_view> kVolumeFlags = {
-    "--iso", "--volume-mode", "--dims", "--spacing", "--origin", "--type"};
+// The switch of the volume options; their value flags are --iso,
+// --volume-mode, --dims, --spacing, --origin and --type.
 inline constexpr std::string_view kBigEndianSwitch = "--big-endian";
 
 // Sets options->segment's iso_value / volume_mode and options->raw's raw_*

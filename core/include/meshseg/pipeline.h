@@ -48,6 +48,8 @@ struct PipelineParams {
     kSimplify,  // seed 003's QEM simplification, remeshed (remesh.h)
   };
   BinarySurface binary_surface = BinarySurface::kRelax;
+  // kRelax: seed 003's feature vertices stay put while the rest relax.
+  bool binary_relax_keeps_features = true;
   // kSimplify: at most this share of the faces, and a quadric error of at
   // most this many voxels (seed 003: 0.5-0.6 voxel).
   double binary_face_share = 0.1;

@@ -129,7 +129,9 @@ absl::StatusOr<std::vector<int>> SegmentBinary(const Mesh& mesh, const BinaryVer
   // The relaxed surface has the input's faces and vertex ids.
   Mesh relaxed;
   relaxed.tri = mesh.tri;
-  const std::vector<Eigen::Vector3d> moved = RelaxTerraces(mesh.tri, binary);
+  BinaryVertices free = binary;
+  if (!params.binary_relax_keeps_features) std::fill(free.feature.begin(), free.feature.end(), 0);
+  const std::vector<Eigen::Vector3d> moved = RelaxTerraces(mesh.tri, free);
   for (auto v : relaxed.tri.vertices()) {
     const Eigen::Vector3d& p = moved[v.idx()];
     relaxed.tri.set_point(v, TriMesh::Point(p.x(), p.y(), p.z()));
@@ -145,16 +147,10 @@ absl::StatusOr<std::vector<int>> SegmentBinary(const Mesh& mesh, const BinaryVer
   result->vertex_labels = std::move(segmentation.vertex_labels);
   result->regions = std::move(segmentation.regions);
   result->estimates = segmentation.estimates;
-  // The relaxation is a membrane: where a plane passes through every
-  // vertex's edge it is the relaxed surface, so planes keep their fit on the
-  // relaxed vertices; curved surfaces move by their curvature (up to the
-  // edges' slack) and are fitted on the original, unbiased vertices.
-  const std::vector<Region> relaxed_fits = result->regions;
+  // The relaxation moves curved surfaces by their curvature (up to the
+  // edges' slack): surfaces are fitted on the original, unbiased vertices.
   pipeline_internal::RefitOnInputVertices(mesh.tri, labels, segmentation.estimates.distance_tolerance,
                                           &result->regions);
-  for (size_t r = 0; r < relaxed_fits.size(); ++r) {
-    if (relaxed_fits[r].type == SurfaceType::kPlane) result->regions[r] = relaxed_fits[r];
-  }
   MESHSEG_RETURN_IF_ERROR(DescribeRegions(mesh, labels, result->regions, params, ctx, result));
   result->mesh = MeshStatistics(mesh);
   return labels;

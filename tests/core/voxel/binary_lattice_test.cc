@@ -13,18 +13,11 @@ namespace {
 
 constexpr double kH = 0.5;
 
-VolumeSurface Surface(const VolumeData& v, const std::string& name) {
-  const std::string path = testing_files::ScratchPath(name);
-  EXPECT_TRUE(WriteNrrd(v, path).ok());
-  absl::StatusOr<VolumeSurface> s = ExtractSurface(path);
-  EXPECT_TRUE(s.ok()) << s.status();
-  return *std::move(s);
-}
 
 TEST(DetectBinaryLattice, FindsTheVoxelGridOfABinarySurface) {
   const VolumeData v =
       testing::SampleSdf(testing::TurnedBox(Eigen::Vector3d(5, 4, 3), 17.0), 36, kH, true);
-  const VolumeSurface s = Surface(v, "box.nrrd");
+  const VolumeSurface s = testing::SurfaceOf(v, "box.nrrd");
   const std::optional<BinaryLattice> lattice = DetectBinaryLattice(s.mesh.tri);
   ASSERT_TRUE(lattice.has_value());
   for (int a = 0; a < 3; ++a) {
@@ -35,12 +28,12 @@ TEST(DetectBinaryLattice, FindsTheVoxelGridOfABinarySurface) {
 }
 
 TEST(DetectBinaryLattice, GreyIsoSurfaceIsNotBinary) {
-  const VolumeSurface s = Surface(testing::SampleSdf(testing::Ball(6.0), 32, kH, false), "ball.nrrd");
+  const VolumeSurface s = testing::SurfaceOf(testing::SampleSdf(testing::Ball(6.0), 32, kH, false), "ball.nrrd");
   EXPECT_FALSE(DetectBinaryLattice(s.mesh.tri).has_value());
 }
 
 TEST(BinaryMeshFeatures, RecoversTheVolumesFeatureVertices) {
-  const VolumeSurface s = Surface(
+  const VolumeSurface s = testing::SurfaceOf(
       testing::SampleSdf(testing::TurnedBox(Eigen::Vector3d(5, 4, 3), 17.0), 36, kH, true), "box2.nrrd");
   const std::optional<BinaryLattice> lattice = DetectBinaryLattice(s.mesh.tri);
   ASSERT_TRUE(lattice.has_value());
@@ -56,7 +49,7 @@ TEST(BinaryMeshFeatures, RecoversTheVolumesFeatureVertices) {
 
 TEST(RelaxTerraces, FlattensATurnedBoxFaceWithinItsEdges) {
   const auto box = testing::TurnedBox(Eigen::Vector3d(5, 4, 3), 17.0);
-  const VolumeSurface s = Surface(testing::SampleSdf(box, 36, kH, true), "box3.nrrd");
+  const VolumeSurface s = testing::SurfaceOf(testing::SampleSdf(box, 36, kH, true), "box3.nrrd");
   const BinaryVertices bv{s.feature_vertex, s.edge_inside, s.edge_outside};
   const std::vector<Eigen::Vector3d> relaxed = RelaxTerraces(s.mesh.tri, bv);
   // Terraced vertices lie up to ~0.5 h off the true faces; relaxed, the

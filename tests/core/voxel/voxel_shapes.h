@@ -8,7 +8,10 @@
 
 #include <Eigen/Geometry>
 
+#include <gtest/gtest.h>
+
 #include "meshseg/voxel.h"
+#include "scratch_dir.h"
 
 namespace meshseg::testing {
 
@@ -45,6 +48,15 @@ inline std::function<double(const Eigen::Vector3d&)> TurnedBox(const Eigen::Vect
 
 inline std::function<double(const Eigen::Vector3d&)> Ball(double radius) {
   return [=](const Eigen::Vector3d& p) { return p.norm() - radius; };
+}
+
+// The surface ExtractSurface finds in `v`, written as NRRD under `name`.
+inline VolumeSurface SurfaceOf(const VolumeData& v, const std::string& name) {
+  const std::string path = testing_files::ScratchPath(name);
+  EXPECT_TRUE(WriteNrrd(v, path).ok());
+  absl::StatusOr<VolumeSurface> s = ExtractSurface(path);
+  EXPECT_TRUE(s.ok()) << s.status();
+  return *std::move(s);
 }
 
 }  // namespace meshseg::testing
