@@ -8,7 +8,7 @@ build=${1:-build}
 size=${2:-512}
 dir=$(mktemp -d)
 trap 'rm -rf "$dir"' EXIT
-"$build/bin/voxel_volume_bench" "$dir/volume.nrrd" test_piece --size "$size"
+"$build/bin/voxel_volume_bench" "$dir/volume.nrrd" test_piece --size "$size" --voxel-size 0.2
 echo "load before: $(uptime)"
 /usr/bin/time -v "$build/bin/meshseg" segment "$dir/volume.nrrd" -o "$dir/result.json" \
   > "$dir/segment.out" 2> "$dir/time.txt" || { cat "$dir/time.txt"; exit 1; }

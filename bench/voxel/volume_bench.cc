@@ -18,7 +18,7 @@ int main(int argc, char** argv) {
   const std::string out = argv[1];
   std::string part = "test_piece";
   int n = 512;
-  meshseg::GenerateParams gen{.voxel_size = 0.19, .noise = 0.05};
+  meshseg::GenerateParams gen{.voxel_size = 0.2, .noise = 0.05};
   for (int i = 2; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--size" && i + 1 < argc) n = std::stoi(argv[++i]);
