@@ -34,12 +34,13 @@ absl::StatusOr<std::vector<int>> RegionLabels(const std::string& path, const Mes
   }
   if (static_cast<size_t>(result.face_labels_size()) != mesh.face_of_input.size()) {
     return absl::InvalidArgumentError(absl::StrCat("\"", path, "\" has ", result.face_labels_size(),
-                                                   " face labels, the mesh ", mesh.face_of_input.size(),
-                                                   " faces"));
+                                                   " face labels, the mesh ",
+                                                   mesh.face_of_input.size(), " faces"));
   }
   std::vector<int> labels(mesh.tri.n_faces(), -1);
   for (size_t i = 0; i < mesh.face_of_input.size(); ++i) {
-    if (mesh.face_of_input[i] >= 0) labels[mesh.face_of_input[i]] = result.face_labels(static_cast<int>(i));
+    if (mesh.face_of_input[i] >= 0)
+      labels[mesh.face_of_input[i]] = result.face_labels(static_cast<int>(i));
   }
   return labels;
 }
@@ -71,13 +72,15 @@ absl::Status RunSimplify(const Argv& argv) {
   const auto start = std::chrono::steady_clock::now();
   const absl::StatusOr<Simplification> simple = Simplify(mesh->tri, params, features, labels);
   if (!simple.ok()) return simple.status();
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   MESHSEG_RETURN_IF_ERROR(WriteMesh(simple->mesh.tri, *out));
-  std::printf("wrote %s: %zu -> %zu faces%s, Hausdorff %.6g to the input (%.6g in->out, %.6g out->in), %.2f s\n",
-              out->c_str(), mesh->tri.n_faces(), simple->mesh.tri.n_faces(),
-              features.empty() ? "" : " (binary occupancy: feature voxels kept)",
-              simple->hausdorff.Max(), simple->hausdorff.input_to_output,
-              simple->hausdorff.output_to_input, seconds);
+  std::printf(
+      "wrote %s: %zu -> %zu faces%s, Hausdorff %.6g to the input (%.6g in->out, %.6g out->in), "
+      "%.2f s\n",
+      out->c_str(), mesh->tri.n_faces(), simple->mesh.tri.n_faces(),
+      features.empty() ? "" : " (binary occupancy: feature voxels kept)", simple->hausdorff.Max(),
+      simple->hausdorff.input_to_output, simple->hausdorff.output_to_input, seconds);
   return absl::OkStatus();
 }
 

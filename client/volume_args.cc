@@ -18,8 +18,8 @@ absl::StatusOr<std::vector<double>> NumberList(const Args& args, std::string_vie
   for (absl::string_view part : absl::StrSplit(*value, ',')) {
     double v;
     if (!absl::SimpleAtod(part, &v)) {
-      return absl::InvalidArgumentError(absl::StrCat(std::string(flag), " \"", *value,
-                                                     "\" is not a comma-separated list of numbers"));
+      return absl::InvalidArgumentError(absl::StrCat(
+          std::string(flag), " \"", *value, "\" is not a comma-separated list of numbers"));
     }
     out.push_back(v);
   }

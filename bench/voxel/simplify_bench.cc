@@ -58,11 +58,16 @@ int main(int argc, char** argv) {
   double share = 0.1;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
-    if (a == "--voxel-size" && i + 1 < argc) gen.voxel_size = std::stod(argv[++i]);
-    else if (a == "--noise" && i + 1 < argc) gen.noise = std::stod(argv[++i]);
-    else if (a == "--share" && i + 1 < argc) share = std::stod(argv[++i]);
-    else if (a == "--segment" && i + 1 < argc) out = argv[++i];
-    else part = a;
+    if (a == "--voxel-size" && i + 1 < argc)
+      gen.voxel_size = std::stod(argv[++i]);
+    else if (a == "--noise" && i + 1 < argc)
+      gen.noise = std::stod(argv[++i]);
+    else if (a == "--share" && i + 1 < argc)
+      share = std::stod(argv[++i]);
+    else if (a == "--segment" && i + 1 < argc)
+      out = argv[++i];
+    else
+      part = a;
   }
   const auto t0 = std::chrono::steady_clock::now();
   const absl::StatusOr<meshseg::GeneratedPart> g = meshseg::GeneratePart(part, gen);
@@ -72,8 +77,8 @@ int main(int argc, char** argv) {
   }
   const double h = g->voxel_size;
   const meshseg::TriMesh& in = g->mesh.tri;
-  std::printf("%s: %zu faces, h %g, noise %g h (generated in %.1f s)\n", part.c_str(), in.n_faces(), h,
-              gen.noise, Seconds(t0));
+  std::printf("%s: %zu faces, h %g, noise %g h (generated in %.1f s)\n", part.c_str(), in.n_faces(),
+              h, gen.noise, Seconds(t0));
   const int64_t target = static_cast<int64_t>(share * in.n_faces());
   const auto t1 = std::chrono::steady_clock::now();
   const double cpu1 = CpuSeconds();
@@ -88,10 +93,12 @@ int main(int argc, char** argv) {
   const auto t2 = std::chrono::steady_clock::now();
   const meshseg::HausdorffDistance hd = meshseg::Hausdorff(in, s->mesh.tri);
   const double hausdorff_s = Seconds(t2);
-  std::printf("simplify: %zu -> %zu faces in %.2f s wall, %.2f s CPU; Hausdorff %.3f h (in->out %.3f h, out->in %.3f h, "
-              "%.2f s); peak RSS %.0f MiB\n",
-              in.n_faces(), s->mesh.tri.n_faces(), simplify_s, simplify_cpu, hd.Max() / h, hd.input_to_output / h,
-              hd.output_to_input / h, hausdorff_s, PeakMiB());
+  std::printf(
+      "simplify: %zu -> %zu faces in %.2f s wall, %.2f s CPU; Hausdorff %.3f h (in->out %.3f h, "
+      "out->in %.3f h, "
+      "%.2f s); peak RSS %.0f MiB\n",
+      in.n_faces(), s->mesh.tri.n_faces(), simplify_s, simplify_cpu, hd.Max() / h,
+      hd.input_to_output / h, hd.output_to_input / h, hausdorff_s, PeakMiB());
 
   // Sharp feature edges of the ground truth, sampled at edge midpoints.
   const meshseg::TriMesh& sm = s->mesh.tri;
@@ -111,7 +118,8 @@ int main(int argc, char** argv) {
     return (x * 73856093) ^ (y * 19349663) ^ (z * 83492791);
   };
   std::unordered_map<int64_t, std::vector<int>> grid;
-  for (size_t f = 0; f < centroid.size(); ++f) grid[key(centroid[f], 0, 0, 0)].push_back(static_cast<int>(f));
+  for (size_t f = 0; f < centroid.size(); ++f)
+    grid[key(centroid[f], 0, 0, 0)].push_back(static_cast<int>(f));
   int samples = 0, kept = 0;
   const double cos_facing = std::cos(kFacingDeg * std::numbers::pi / 180.0);
   for (auto e : in.edges()) {
@@ -122,7 +130,8 @@ int main(int argc, char** argv) {
     const Eigen::Vector3d p = ToEigen(in.calc_edge_midpoint(e));
     const Eigen::Vector3d na = meshseg::Project(g->primitives[pa].surface, p).normal;
     const Eigen::Vector3d nb = meshseg::Project(g->primitives[pb].surface, p).normal;
-    if (std::acos(std::clamp(na.dot(nb), -1.0, 1.0)) * 180.0 / std::numbers::pi < kSharpDeg) continue;
+    if (std::acos(std::clamp(na.dot(nb), -1.0, 1.0)) * 180.0 / std::numbers::pi < kSharpDeg)
+      continue;
     ++samples;
     bool near = false, faces_a = false, faces_b = false;
     std::vector<int> candidates;
@@ -130,7 +139,8 @@ int main(int argc, char** argv) {
       for (int dy = -1; dy <= 1; ++dy) {
         for (int dz = -1; dz <= 1; ++dz) {
           const auto it = grid.find(key(p, dx, dy, dz));
-          if (it != grid.end()) candidates.insert(candidates.end(), it->second.begin(), it->second.end());
+          if (it != grid.end())
+            candidates.insert(candidates.end(), it->second.begin(), it->second.end());
         }
       }
     }

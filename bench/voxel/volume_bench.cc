@@ -12,7 +12,8 @@
 
 int main(int argc, char** argv) {
   if (argc < 2) {
-    std::fprintf(stderr, "usage: %s OUT.nrrd [PART] [--size N] [--voxel-size H] [--noise S]\n", argv[0]);
+    std::fprintf(stderr, "usage: %s OUT.nrrd [PART] [--size N] [--voxel-size H] [--noise S]\n",
+                 argv[0]);
     return 2;
   }
   const std::string out = argv[1];
@@ -21,20 +22,25 @@ int main(int argc, char** argv) {
   meshseg::GenerateParams gen{.voxel_size = 0.2, .noise = 0.05};
   for (int i = 2; i < argc; ++i) {
     const std::string a = argv[i];
-    if (a == "--size" && i + 1 < argc) n = std::stoi(argv[++i]);
-    else if (a == "--voxel-size" && i + 1 < argc) gen.voxel_size = std::stod(argv[++i]);
-    else if (a == "--noise" && i + 1 < argc) gen.noise = std::stod(argv[++i]);
-    else part = a;
+    if (a == "--size" && i + 1 < argc)
+      n = std::stoi(argv[++i]);
+    else if (a == "--voxel-size" && i + 1 < argc)
+      gen.voxel_size = std::stod(argv[++i]);
+    else if (a == "--noise" && i + 1 < argc)
+      gen.noise = std::stod(argv[++i]);
+    else
+      part = a;
   }
-  const absl::StatusOr<meshseg::VolumeData> v = meshseg::GenerateVolume(part, /*binary=*/false, gen);
+  const absl::StatusOr<meshseg::VolumeData> v =
+      meshseg::GenerateVolume(part, /*binary=*/false, gen);
   if (!v.ok()) {
     std::fprintf(stderr, "%s\n", std::string(v.status().message()).c_str());
     return 1;
   }
   const auto& d = v->geometry.dims;
   if (d[0] > n || d[1] > n || d[2] > n) {
-    std::fprintf(stderr, "part grid %lld x %lld x %lld exceeds %d^3; raise --voxel-size\n", (long long)d[0],
-                 (long long)d[1], (long long)d[2], n);
+    std::fprintf(stderr, "part grid %lld x %lld x %lld exceeds %d^3; raise --voxel-size\n",
+                 (long long)d[0], (long long)d[1], (long long)d[2], n);
     return 1;
   }
   meshseg::VolumeData cube;
@@ -56,7 +62,8 @@ int main(int argc, char** argv) {
     }
   }
   if (!meshseg::WriteNrrd(cube, out, /*gzip=*/false).ok()) return 1;
-  std::printf("wrote %s: %s, part grid %lld x %lld x %lld in %d^3 uint16, h %g\n", out.c_str(), part.c_str(),
-              (long long)d[0], (long long)d[1], (long long)d[2], n, v->geometry.axes[0].norm());
+  std::printf("wrote %s: %s, part grid %lld x %lld x %lld in %d^3 uint16, h %g\n", out.c_str(),
+              part.c_str(), (long long)d[0], (long long)d[1], (long long)d[2], n,
+              v->geometry.axes[0].norm());
   return 0;
 }

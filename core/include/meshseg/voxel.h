@@ -64,9 +64,7 @@ struct VolumeGeometry {
   }
   int64_t VoxelCount() const { return dims[0] * dims[1] * dims[2]; }
   // Length of the axes (the spacing).
-  Eigen::Vector3d Spacing() const {
-    return {axes[0].norm(), axes[1].norm(), axes[2].norm()};
-  }
+  Eigen::Vector3d Spacing() const { return {axes[0].norm(), axes[1].norm(), axes[2].norm()}; }
 };
 
 // The layout of a headerless .raw file (or of an upload without header).
@@ -85,9 +83,9 @@ struct VolumeInfo {
   VolumeGeometry geometry;
   VoxelType type = VoxelType::kUint8;
   bool big_endian = false;
-  bool gzip = false;          // gzip-compressed samples (NRRD encoding gzip)
-  std::string data_path;      // the file holding the samples
-  int64_t data_offset = 0;    // byte offset of the first sample in data_path
+  bool gzip = false;        // gzip-compressed samples (NRRD encoding gzip)
+  std::string data_path;    // the file holding the samples
+  int64_t data_offset = 0;  // byte offset of the first sample in data_path
 };
 
 struct VolumeReadOptions {
@@ -235,7 +233,8 @@ struct Occupancy {
   std::array<int, 3> dims = {0, 0, 0};
   std::vector<uint8_t> inside;
   size_t Index(int i, int j, int k) const {
-    return static_cast<size_t>(i) + static_cast<size_t>(dims[0]) * (j + static_cast<size_t>(dims[1]) * k);
+    return static_cast<size_t>(i) +
+           static_cast<size_t>(dims[0]) * (j + static_cast<size_t>(dims[1]) * k);
   }
 };
 

@@ -22,18 +22,20 @@ constexpr double kMaterial = 3000.0;
 absl::StatusOr<generate_internal::PartSpec> Find(std::string_view name) {
   std::optional<generate_internal::PartSpec> spec = generate_internal::FindPart(name);
   if (!spec) {
-    return absl::InvalidArgumentError(absl::StrCat("generate: unknown part \"", std::string(name), "\""));
+    return absl::InvalidArgumentError(
+        absl::StrCat("generate: unknown part \"", std::string(name), "\""));
   }
   return *std::move(spec);
 }
 
 }  // namespace
 
-absl::StatusOr<VolumeData> GenerateVolume(std::string_view name, bool binary, const GenerateParams& params,
-                                          const RunContext& ctx) {
+absl::StatusOr<VolumeData> GenerateVolume(std::string_view name, bool binary,
+                                          const GenerateParams& params, const RunContext& ctx) {
   // The mesh's own checks and grid: generate the part's grid once.
   MESHSEG_ASSIGN_OR_RETURN(const generate_internal::PartSpec spec, Find(name));
-  MESHSEG_ASSIGN_OR_RETURN(const generate_internal::Grid g, generate_internal::PartGrid(name, params));
+  MESHSEG_ASSIGN_OR_RETURN(const generate_internal::Grid g,
+                           generate_internal::PartGrid(name, params));
   VolumeData v;
   v.type = binary ? VoxelType::kUint8 : VoxelType::kUint16;
   v.geometry.dims = {g.nx, g.ny, g.nz};
@@ -49,8 +51,9 @@ absl::StatusOr<VolumeData> GenerateVolume(std::string_view name, bool binary, co
         for (int i = 0; i < g.nx; ++i) {
           const double f = spec.solid.Eval(g.Point(i, j, k)).f;
           const size_t at = k * slice + static_cast<size_t>(j) * g.nx + i;
-          v.values[at] = binary ? (f < 0.0 ? 1.0 : 0.0)
-                                : kAir + (kMaterial - kAir) * std::clamp(0.5 - f / (2.0 * g.h), 0.0, 1.0);
+          v.values[at] =
+              binary ? (f < 0.0 ? 1.0 : 0.0)
+                     : kAir + (kMaterial - kAir) * std::clamp(0.5 - f / (2.0 * g.h), 0.0, 1.0);
         }
       }
     });
@@ -84,9 +87,10 @@ absl::StatusOr<GeneratedPart> LabelWithGroundTruth(std::string_view name, const 
     raw.triangles.push_back(t);
   }
   part.vertex_primitive = generate_internal::VertexPrimitives(spec.solid, raw);
-  part.face_primitive =
-      generate_internal::FacePrimitives(raw, part.vertex_primitive, part.primitives, part.voxel_size);
-  part.face_near_boundary = generate_internal::NearBoundary(raw, part.vertex_primitive, part.voxel_size);
+  part.face_primitive = generate_internal::FacePrimitives(raw, part.vertex_primitive,
+                                                          part.primitives, part.voxel_size);
+  part.face_near_boundary =
+      generate_internal::NearBoundary(raw, part.vertex_primitive, part.voxel_size);
   part.mesh.tri = mesh.tri;
   part.mesh.face_of_input = mesh.face_of_input;
   part.mesh.name = mesh.name;

@@ -36,7 +36,8 @@ std::optional<AxisLattice> AxisOf(std::vector<double> values, double extent) {
   for (double v : values) {
     if (distinct.empty() || v - distinct.back() > merge) distinct.push_back(v);
   }
-  if (distinct.size() < 3 || distinct.size() > kMaxDistinctShare * values.size()) return std::nullopt;
+  if (distinct.size() < 3 || distinct.size() > kMaxDistinctShare * values.size())
+    return std::nullopt;
   double gap = std::numeric_limits<double>::infinity();
   for (size_t i = 1; i < distinct.size(); ++i) gap = std::min(gap, distinct[i] - distinct[i - 1]);
   for (double v : distinct) {
@@ -52,7 +53,8 @@ Eigen::Vector3d LatticePoint(int64_t x, const Occupancy& occ, const int64_t base
   const int64_t c[3] = {x % occ.dims[0], (x / occ.dims[0]) % occ.dims[1],
                         x / (int64_t{occ.dims[0]} * occ.dims[1])};
   Eigen::Vector3d p;
-  for (int a = 0; a < 3; ++a) p[a] = lattice.origin[a] + lattice.spacing[a] * static_cast<double>(base[a] + c[a]);
+  for (int a = 0; a < 3; ++a)
+    p[a] = lattice.origin[a] + lattice.spacing[a] * static_cast<double>(base[a] + c[a]);
   return p;
 }
 
@@ -108,14 +110,17 @@ absl::StatusOr<BinaryVertices> BinaryMeshFeatures(const TriMesh& mesh, const Bin
   int64_t base[3];
   double voxels = 1.0;
   for (int a = 0; a < 3; ++a) {
-    base[a] = static_cast<int64_t>(std::floor((lo[a] - lattice.origin[a]) / lattice.spacing[a])) - 1;
-    const int64_t top = static_cast<int64_t>(std::ceil((hi[a] - lattice.origin[a]) / lattice.spacing[a])) + 1;
+    base[a] =
+        static_cast<int64_t>(std::floor((lo[a] - lattice.origin[a]) / lattice.spacing[a])) - 1;
+    const int64_t top =
+        static_cast<int64_t>(std::ceil((hi[a] - lattice.origin[a]) / lattice.spacing[a])) + 1;
     occ.dims[a] = static_cast<int>(top - base[a] + 1);
     voxels *= occ.dims[a];
   }
   if (voxels > static_cast<double>(params.read.max_voxels)) {
     return absl::InvalidArgumentError(absl::StrCat("binary mesh: a lattice of ", voxels,
-                                                   " voxels is over the limit of ", params.read.max_voxels));
+                                                   " voxels is over the limit of ",
+                                                   params.read.max_voxels));
   }
   const auto index = [&](const int64_t c[3]) { return occ.Index(int(c[0]), int(c[1]), int(c[2])); };
   std::vector<int8_t> state(static_cast<size_t>(voxels), -1);
@@ -131,7 +136,8 @@ absl::StatusOr<BinaryVertices> BinaryMeshFeatures(const TriMesh& mesh, const Bin
       if (std::abs(u[a] - std::round(u[a])) > 0.25) axis = a;
     }
     if (axis < 0) {
-      return absl::InvalidArgumentError(absl::StrCat("binary mesh: vertex ", v.idx(), " is off the lattice"));
+      return absl::InvalidArgumentError(
+          absl::StrCat("binary mesh: vertex ", v.idx(), " is off the lattice"));
     }
     int64_t c[3] = {std::llround(u[0]), std::llround(u[1]), std::llround(u[2])};
     c[axis] = static_cast<int64_t>(std::floor(u[axis]));
@@ -155,7 +161,8 @@ absl::StatusOr<BinaryVertices> BinaryMeshFeatures(const TriMesh& mesh, const Bin
   while (!queue.empty()) {
     const size_t x = queue.front();
     queue.pop_front();
-    int64_t c[3] = {static_cast<int64_t>(x) % occ.dims[0], (static_cast<int64_t>(x) / occ.dims[0]) % occ.dims[1],
+    int64_t c[3] = {static_cast<int64_t>(x) % occ.dims[0],
+                    (static_cast<int64_t>(x) / occ.dims[0]) % occ.dims[1],
                     static_cast<int64_t>(x) / stride[2]};
     for (int a = 0; a < 3; ++a) {
       for (int step : {-1, 1}) {
@@ -171,7 +178,8 @@ absl::StatusOr<BinaryVertices> BinaryMeshFeatures(const TriMesh& mesh, const Bin
   }
   occ.inside.resize(state.size());
   for (size_t x = 0; x < state.size(); ++x) occ.inside[x] = state[x] == 1;
-  const std::vector<uint8_t> features = FeatureVoxels(occ, params.opening_radius, params.closing_radius);
+  const std::vector<uint8_t> features =
+      FeatureVoxels(occ, params.opening_radius, params.closing_radius);
   BinaryVertices out;
   out.feature.assign(mesh.n_vertices(), 0);
   for (size_t v = 0; v < out.feature.size(); ++v) {

@@ -50,7 +50,8 @@ absl::StatusOr<ValueStats> Statistics(const VolumeInfo& info, const RunContext& 
     for (double v : values) {
       s.lo = std::min(s.lo, v);
       s.hi = std::max(s.hi, v);
-      if (s.distinct.size() < 3 && std::find(s.distinct.begin(), s.distinct.end(), v) == s.distinct.end()) {
+      if (s.distinct.size() < 3 &&
+          std::find(s.distinct.begin(), s.distinct.end(), v) == s.distinct.end()) {
         s.distinct.push_back(v);
       }
       if (integer) ++s.histogram[static_cast<size_t>(v - s.hist_lo)];
@@ -77,8 +78,8 @@ absl::StatusOr<ValueStats> Statistics(const VolumeInfo& info, const RunContext& 
 absl::Status ChooseIso(const VolumeInfo& info, const VolumeParams& params, const ValueStats& s,
                        VolumeSurface* out) {
   if (s.distinct.size() < 2) {
-    return absl::InvalidArgumentError(absl::StrCat("volume: \"", info.name,
-                                                   "\": every sample is ", s.lo, "; no surface"));
+    return absl::InvalidArgumentError(
+        absl::StrCat("volume: \"", info.name, "\": every sample is ", s.lo, "; no surface"));
   }
   out->binary = params.mode == VolumeMode::kBinary ||
                 (params.mode == VolumeMode::kAuto && s.distinct.size() == 2);
@@ -90,9 +91,9 @@ absl::Status ChooseIso(const VolumeInfo& info, const VolumeParams& params, const
     out->iso = OtsuThreshold(s.histogram, s.hist_lo, s.hist_hi);
   }
   if (!(out->iso >= s.lo && out->iso < s.hi)) {
-    return absl::InvalidArgumentError(absl::StrCat("volume: \"", info.name, "\": iso value ", out->iso,
-                                                   " is outside the samples' range [", s.lo, ", ",
-                                                   s.hi, ")"));
+    return absl::InvalidArgumentError(absl::StrCat("volume: \"", info.name, "\": iso value ",
+                                                   out->iso, " is outside the samples' range [",
+                                                   s.lo, ", ", s.hi, ")"));
   }
   return absl::OkStatus();
 }
@@ -168,8 +169,8 @@ absl::StatusOr<VolumeSurface> ExtractSurface(const std::string& path, const Volu
   mc_ctx.on_progress = [&](std::string_view, double f) { ctx.Progress("volume", 0.3 + 0.6 * f); };
   MESHSEG_ASSIGN_OR_RETURN(IsoSurface iso_surface, MarchingCubes(field, mc_ctx, "volume"));
   if (iso_surface.triangles.empty()) {
-    return absl::InvalidArgumentError(absl::StrCat("volume: \"", info.name, "\": no surface at iso value ",
-                                                   iso));
+    return absl::InvalidArgumentError(
+        absl::StrCat("volume: \"", info.name, "\": no surface at iso value ", iso));
   }
   // A left-handed frame turns the triangles inside out.
   if (g.axes[0].cross(g.axes[1]).dot(g.axes[2]) < 0.0) {
@@ -194,13 +195,13 @@ absl::StatusOr<VolumeSurface> ExtractSurface(const std::string& path, const Volu
       }
       out.edge_inside.push_back(g.Point(c[0] - 1.0, c[1] - 1.0, c[2] - 1.0));
       out.edge_outside.push_back(g.Point(o[0] - 1.0, o[1] - 1.0, o[2] - 1.0));
-      out.feature_vertex[v] = features[occupancy.Index(static_cast<int>(c[0] - 1), static_cast<int>(c[1] - 1),
-                                                       static_cast<int>(c[2] - 1))];
+      out.feature_vertex[v] = features[occupancy.Index(
+          static_cast<int>(c[0] - 1), static_cast<int>(c[1] - 1), static_cast<int>(c[2] - 1))];
     }
   }
   ctx.Progress("volume", 0.95);
-  MESHSEG_ASSIGN_OR_RETURN(out.mesh, BuildMesh(std::move(iso_surface.vertices), iso_surface.triangles,
-                                               info.name));
+  MESHSEG_ASSIGN_OR_RETURN(
+      out.mesh, BuildMesh(std::move(iso_surface.vertices), iso_surface.triangles, info.name));
   ctx.Progress("volume", 1.0);
   return out;
 }

@@ -65,7 +65,9 @@ class ModFeatureQuadricT : public OpenMesh::Decimater::ModBaseT<MeshT> {
   void set_max_error(double e) { max_error_ = e; }
   // Cosine of the largest turn of a face normal a collapse may cause.
   void set_min_cos_normal(double c) { min_cos_normal_ = c; }
-  void set_feature(typename Mesh::VertexHandle v, bool f) { Base::mesh().property(feature_, v) = f; }
+  void set_feature(typename Mesh::VertexHandle v, bool f) {
+    Base::mesh().property(feature_, v) = f;
+  }
   bool feature(typename Mesh::VertexHandle v) const { return mesh_const().property(feature_, v); }
 
   void initialize() override {
@@ -120,7 +122,8 @@ class ModFeatureQuadricT : public OpenMesh::Decimater::ModBaseT<MeshT> {
 
   // argmin q over space if A is well conditioned (determinant against the
   // cube of its trace), else over the segment p0 p1.
-  static Eigen::Vector3d Optimum(const Quadric& q, const Eigen::Vector3d& p0, const Eigen::Vector3d& p1) {
+  static Eigen::Vector3d Optimum(const Quadric& q, const Eigen::Vector3d& p0,
+                                 const Eigen::Vector3d& p1) {
     const double trace = q.a.trace();
     const double det = q.a.determinant();
     if (trace > 0.0 && det > 1e-6 * trace * trace * trace) {

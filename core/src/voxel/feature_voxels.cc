@@ -31,14 +31,16 @@ void Transform1d(std::vector<int32_t>& f, std::vector<int32_t>& d, std::vector<i
   for (int q = 0; q < n; ++q) {
     if (f[q] >= kFar) continue;
     while (k >= 0) {
-      const double s = ((f[q] + double(q) * q) - (f[v[k]] + double(v[k]) * v[k])) / (2.0 * (q - v[k]));
+      const double s =
+          ((f[q] + double(q) * q) - (f[v[k]] + double(v[k]) * v[k])) / (2.0 * (q - v[k]));
       if (s > z[k]) break;
       --k;
     }
     ++k;
     v[k] = q;
-    z[k] = k == 0 ? -1e300 : ((f[q] + double(q) * q) - (f[v[k - 1]] + double(v[k - 1]) * v[k - 1])) /
-                                 (2.0 * (q - v[k - 1]));
+    z[k] = k == 0 ? -1e300
+                  : ((f[q] + double(q) * q) - (f[v[k - 1]] + double(v[k - 1]) * v[k - 1])) /
+                        (2.0 * (q - v[k - 1]));
   }
   if (k < 0) {
     std::fill(d.begin(), d.begin() + n, kFar);
@@ -89,7 +91,7 @@ std::vector<uint8_t> OpeningTips(const Box& b, const std::vector<uint8_t>& s, in
   const int32_t r2 = r * r;
   std::vector<uint8_t> mark(s.size());
   for (size_t x = 0; x < s.size(); ++x) mark[x] = !s[x];
-  std::vector<int32_t> dist = SquaredDistance(b, mark);  // to the complement
+  std::vector<int32_t> dist = SquaredDistance(b, mark);                  // to the complement
   for (size_t x = 0; x < s.size(); ++x) mark[x] = s[x] && dist[x] > r2;  // erosion
   dist = SquaredDistance(b, mark);
   for (size_t x = 0; x < s.size(); ++x) mark[x] = dist[x] <= r2;  // opening

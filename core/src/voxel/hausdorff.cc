@@ -25,10 +25,13 @@ struct Triangles {
   size_t kdtree_get_point_count() const { return centroids.size(); }
   double kdtree_get_pt(size_t i, size_t dim) const { return centroids[i][dim]; }
   template <class Box>
-  bool kdtree_get_bbox(Box&) const { return false; }
+  bool kdtree_get_bbox(Box&) const {
+    return false;
+  }
 };
 using CentroidTree =
-    nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, Triangles>, Triangles, 3, uint32_t>;
+    nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, Triangles>, Triangles,
+                                        3, uint32_t>;
 
 Triangles TrianglesOf(const TriMesh& mesh) {
   Triangles t;
@@ -75,7 +78,8 @@ double OneSided(const std::vector<Eigen::Vector3d>& points, const Triangles& to)
           double best = SquaredDistanceToTriangle(p, c[0], c[1], c[2]);
           const double radius = std::sqrt(best) + to.reach;
           found.clear();
-          tree.radiusSearch(p.data(), radius * radius, found, nanoflann::SearchParams(32, 0, false));
+          tree.radiusSearch(p.data(), radius * radius, found,
+                            nanoflann::SearchParams(32, 0, false));
           for (const auto& [t, unused] : found) {
             const auto& tc = to.corners[t];
             best = std::min(best, SquaredDistanceToTriangle(p, tc[0], tc[1], tc[2]));

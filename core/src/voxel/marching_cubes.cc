@@ -33,29 +33,31 @@ struct Slice {
 
 class Marcher {
  public:
-  explicit Marcher(const SampledField& field) : field_(field), nx_(field.dims[0]), ny_(field.dims[1]) {}
+  explicit Marcher(const SampledField& field)
+      : field_(field), nx_(field.dims[0]), ny_(field.dims[1]) {}
 
   Slice FreshSlice() const {
     const size_t points = static_cast<size_t>(nx_) * ny_;
-    return Slice{std::vector<double>(points), std::vector<int>((nx_ - 1) * static_cast<size_t>(ny_), -1),
+    return Slice{std::vector<double>(points),
+                 std::vector<int>((nx_ - 1) * static_cast<size_t>(ny_), -1),
                  std::vector<int>(nx_ * static_cast<size_t>(ny_ - 1), -1)};
   }
 
   // Vertices on the x and y edges of slice k.
   void AddSliceVertices(int k, Slice& s) {
-    AddEdgeVertices(ny_, nx_ - 1, k, 0, [&](int j, int i) {
-      return std::pair(s.f[At(i, j)], s.f[At(i + 1, j)]);
-    }, s.x_edge);
-    AddEdgeVertices(ny_ - 1, nx_, k, 1, [&](int j, int i) {
-      return std::pair(s.f[At(i, j)], s.f[At(i, j + 1)]);
-    }, s.y_edge);
+    AddEdgeVertices(
+        ny_, nx_ - 1, k, 0,
+        [&](int j, int i) { return std::pair(s.f[At(i, j)], s.f[At(i + 1, j)]); }, s.x_edge);
+    AddEdgeVertices(
+        ny_ - 1, nx_, k, 1,
+        [&](int j, int i) { return std::pair(s.f[At(i, j)], s.f[At(i, j + 1)]); }, s.y_edge);
   }
 
   // Vertices on the z edges between slices k and k + 1.
   void AddSlabVertices(int k, const Slice& lo, const Slice& hi, std::vector<int>& z_edge) {
-    AddEdgeVertices(ny_, nx_, k, 2, [&](int j, int i) {
-      return std::pair(lo.f[At(i, j)], hi.f[At(i, j)]);
-    }, z_edge);
+    AddEdgeVertices(
+        ny_, nx_, k, 2, [&](int j, int i) { return std::pair(lo.f[At(i, j)], hi.f[At(i, j)]); },
+        z_edge);
   }
 
   // Triangles of the cubes between slices k and k + 1, in row order.
@@ -80,12 +82,14 @@ class Marcher {
             return z_edge[At(i + di, j + dj)];
           };
           for (const auto& tri : table[mask]) {
-            rows[j].push_back({vertex_of_edge(tri[0]), vertex_of_edge(tri[1]), vertex_of_edge(tri[2])});
+            rows[j].push_back(
+                {vertex_of_edge(tri[0]), vertex_of_edge(tri[1]), vertex_of_edge(tri[2])});
           }
         }
       }
     });
-    for (const auto& row : rows) out_.triangles.insert(out_.triangles.end(), row.begin(), row.end());
+    for (const auto& row : rows)
+      out_.triangles.insert(out_.triangles.end(), row.begin(), row.end());
   }
 
   IsoSurface Take() { return std::move(out_); }
@@ -130,8 +134,8 @@ absl::StatusOr<IsoSurface> MarchingCubes(const SampledField& field, const RunCon
                                          std::string_view stage) {
   const int nx = field.dims[0], ny = field.dims[1], nz = field.dims[2];
   if (nx < 2 || ny < 2 || nz < 2) {
-    return absl::InvalidArgumentError(
-        absl::StrCat(std::string(stage), ": a grid of ", nx, " x ", ny, " x ", nz, " points has no cubes"));
+    return absl::InvalidArgumentError(absl::StrCat(std::string(stage), ": a grid of ", nx, " x ",
+                                                   ny, " x ", nz, " points has no cubes"));
   }
   const McTable table = voxel_internal::BuildMcTable();
   Marcher marcher(field);

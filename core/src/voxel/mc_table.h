@@ -17,9 +17,18 @@ namespace meshseg::voxel_internal {
 // Edge e joins kCubeEdgeCorners[e][0] and [1]; edges 0-3 run along x, 4-7
 // along y, 8-11 along z, and the first corner is the one at the lower end.
 inline constexpr std::array<std::array<int, 2>, 12> kCubeEdgeCorners = {{
-    {0, 1}, {2, 3}, {4, 5}, {6, 7},  // x
-    {0, 2}, {1, 3}, {4, 6}, {5, 7},  // y
-    {0, 4}, {1, 5}, {2, 6}, {3, 7},  // z
+    {0, 1},
+    {2, 3},
+    {4, 5},
+    {6, 7},  // x
+    {0, 2},
+    {1, 3},
+    {4, 6},
+    {5, 7},  // y
+    {0, 4},
+    {1, 5},
+    {2, 6},
+    {3, 7},  // z
 }};
 
 // Triangles of one case as cube-edge ids, oriented so that their normals

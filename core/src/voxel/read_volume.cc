@@ -22,20 +22,27 @@ using voxel_internal::BadVolume;
 
 const char* VoxelTypeName(VoxelType type) {
   switch (type) {
-    case VoxelType::kUint8: return "uint8";
-    case VoxelType::kUint16: return "uint16";
-    case VoxelType::kInt16: return "int16";
-    case VoxelType::kFloat32: return "float32";
+    case VoxelType::kUint8:
+      return "uint8";
+    case VoxelType::kUint16:
+      return "uint16";
+    case VoxelType::kInt16:
+      return "int16";
+    case VoxelType::kFloat32:
+      return "float32";
   }
   return "unknown";
 }
 
 int VoxelTypeSize(VoxelType type) {
   switch (type) {
-    case VoxelType::kUint8: return 1;
+    case VoxelType::kUint8:
+      return 1;
     case VoxelType::kUint16:
-    case VoxelType::kInt16: return 2;
-    case VoxelType::kFloat32: return 4;
+    case VoxelType::kInt16:
+      return 2;
+    case VoxelType::kFloat32:
+      return 4;
   }
   return 1;
 }
@@ -82,31 +89,32 @@ absl::Status CheckDataSize(const VolumeInfo& info) {
   std::error_code ec;
   const uintmax_t size = std::filesystem::file_size(info.data_path, ec);
   if (ec) {
-    return absl::NotFoundError(absl::StrCat("read_volume: \"", info.name, "\": cannot open data file \"",
-                                            std::filesystem::path(info.data_path).filename().string(),
-                                            "\""));
+    return absl::NotFoundError(
+        absl::StrCat("read_volume: \"", info.name, "\": cannot open data file \"",
+                     std::filesystem::path(info.data_path).filename().string(), "\""));
   }
   if (info.gzip) return absl::OkStatus();  // checked while streaming
   const int64_t have = static_cast<int64_t>(size) - info.data_offset;
   const int64_t need = info.geometry.VoxelCount() * VoxelTypeSize(info.type);
   if (have < need) {
     return BadVolume(info.name, absl::StrCat("truncated data: ", have, " bytes of samples, sizes ",
-                                             info.geometry.dims[0], " x ", info.geometry.dims[1], " x ",
-                                             info.geometry.dims[2], " ", VoxelTypeName(info.type),
-                                             " need ", need));
+                                             info.geometry.dims[0], " x ", info.geometry.dims[1],
+                                             " x ", info.geometry.dims[2], " ",
+                                             VoxelTypeName(info.type), " need ", need));
   }
   if (have > need) {
     return BadVolume(info.name, absl::StrCat("wrong sizes: ", have, " bytes of samples, sizes ",
-                                             info.geometry.dims[0], " x ", info.geometry.dims[1], " x ",
-                                             info.geometry.dims[2], " ", VoxelTypeName(info.type),
-                                             " need ", need));
+                                             info.geometry.dims[0], " x ", info.geometry.dims[1],
+                                             " x ", info.geometry.dims[2], " ",
+                                             VoxelTypeName(info.type), " need ", need));
   }
   return absl::OkStatus();
 }
 
 }  // namespace
 
-absl::StatusOr<VolumeInfo> ReadVolumeInfo(const std::string& path, const VolumeReadOptions& options) {
+absl::StatusOr<VolumeInfo> ReadVolumeInfo(const std::string& path,
+                                          const VolumeReadOptions& options) {
   const std::string name = std::filesystem::path(path).filename().string();
   FileFormat format;
   if (options.format) {
@@ -163,7 +171,8 @@ absl::StatusOr<VolumeSlices> VolumeSlices::Open(const VolumeInfo& info) {
   slices.stream_ = new Stream;
   FILE* file = std::fopen(info.data_path.c_str(), "rb");
   if (file == nullptr) {
-    return absl::NotFoundError(absl::StrCat("read_volume: \"", info.name, "\": cannot open data file"));
+    return absl::NotFoundError(
+        absl::StrCat("read_volume: \"", info.name, "\": cannot open data file"));
   }
   slices.stream_->file = file;
   if (std::fseek(file, info.data_offset, SEEK_SET) != 0) {
@@ -205,8 +214,8 @@ absl::Status VolumeSlices::Next(std::vector<double>& values) {
       if (n < 0) {
         int err = 0;
         const char* msg = gzerror(stream_->gz, &err);
-        return BadVolume(info_.name, absl::StrCat("corrupt gzip data in slice ", next_, " of ", d[2],
-                                                  ": ", msg));
+        return BadVolume(info_.name, absl::StrCat("corrupt gzip data in slice ", next_, " of ",
+                                                  d[2], ": ", msg));
       }
       if (n == 0) break;
       got += static_cast<size_t>(n);
@@ -215,8 +224,8 @@ absl::Status VolumeSlices::Next(std::vector<double>& values) {
     got = std::fread(bytes_.data(), 1, want, stream_->file);
   }
   if (got < want) {
-    return BadVolume(info_.name, absl::StrCat("truncated data: slice ", next_, " of ", d[2], " has ",
-                                              got, " of ", want, " bytes"));
+    return BadVolume(info_.name, absl::StrCat("truncated data: slice ", next_, " of ", d[2],
+                                              " has ", got, " of ", want, " bytes"));
   }
   values.resize(count);
   const bool swap = info_.big_endian != (std::endian::native == std::endian::big);
@@ -225,9 +234,21 @@ absl::Status VolumeSlices::Next(std::vector<double>& values) {
     unsigned char s[4];
     for (int c = 0; c < size; ++c) s[c] = swap ? b[size - 1 - c] : b[c];
     switch (info_.type) {
-      case VoxelType::kUint8: values[v] = s[0]; break;
-      case VoxelType::kUint16: { uint16_t x; std::memcpy(&x, s, 2); values[v] = x; break; }
-      case VoxelType::kInt16: { int16_t x; std::memcpy(&x, s, 2); values[v] = x; break; }
+      case VoxelType::kUint8:
+        values[v] = s[0];
+        break;
+      case VoxelType::kUint16: {
+        uint16_t x;
+        std::memcpy(&x, s, 2);
+        values[v] = x;
+        break;
+      }
+      case VoxelType::kInt16: {
+        int16_t x;
+        std::memcpy(&x, s, 2);
+        values[v] = x;
+        break;
+      }
       case VoxelType::kFloat32: {
         float x;
         std::memcpy(&x, s, 4);

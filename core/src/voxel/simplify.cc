@@ -19,7 +19,8 @@ using Decimater = OpenMesh::Decimater::DecimaterT<TriMesh>;
 using Module = voxel_internal::ModFeatureQuadricT<TriMesh>;
 
 absl::Status ValidateParams(const TriMesh& mesh, const SimplifyParams& params,
-                            std::span<const uint8_t> feature_vertex, std::span<const int> face_labels) {
+                            std::span<const uint8_t> feature_vertex,
+                            std::span<const int> face_labels) {
   if (params.target_faces <= 0 && !(params.max_error > 0.0)) {
     return absl::InvalidArgumentError("simplify: give a target face count or a max error");
   }
@@ -29,17 +30,18 @@ absl::Status ValidateParams(const TriMesh& mesh, const SimplifyParams& params,
                                                    " must not be negative"));
   }
   if (!(params.max_normal_flip_deg > 0.0 && params.max_normal_flip_deg <= 180.0)) {
-    return absl::InvalidArgumentError(absl::StrCat("simplify: max_normal_flip_deg ",
-                                                   params.max_normal_flip_deg, " must be in (0, 180]"));
+    return absl::InvalidArgumentError(absl::StrCat(
+        "simplify: max_normal_flip_deg ", params.max_normal_flip_deg, " must be in (0, 180]"));
   }
   if (mesh.n_faces() == 0) return absl::InvalidArgumentError("simplify: the mesh has no faces");
   if (!feature_vertex.empty() && feature_vertex.size() != mesh.n_vertices()) {
     return absl::InvalidArgumentError(absl::StrCat("simplify: ", feature_vertex.size(),
-                                                   " feature flags for ", mesh.n_vertices(), " vertices"));
+                                                   " feature flags for ", mesh.n_vertices(),
+                                                   " vertices"));
   }
   if (!face_labels.empty() && face_labels.size() != mesh.n_faces()) {
-    return absl::InvalidArgumentError(absl::StrCat("simplify: ", face_labels.size(), " face labels for ",
-                                                   mesh.n_faces(), " faces"));
+    return absl::InvalidArgumentError(absl::StrCat("simplify: ", face_labels.size(),
+                                                   " face labels for ", mesh.n_faces(), " faces"));
   }
   return absl::OkStatus();
 }
@@ -49,7 +51,8 @@ class Progress : public OpenMesh::Decimater::Observer {
  public:
   Progress(const RunContext& ctx, size_t total) : Observer(4096), ctx_(ctx), total_(total) {}
   void notify(size_t step) override {
-    ctx_.Progress("simplify", std::min(0.9, static_cast<double>(step) / std::max<size_t>(1, total_)));
+    ctx_.Progress("simplify",
+                  std::min(0.9, static_cast<double>(step) / std::max<size_t>(1, total_)));
   }
   bool abort() const override { return ctx_.stop_requested(); }
 
@@ -92,7 +95,8 @@ absl::StatusOr<Simplification> Simplify(const TriMesh& mesh, const SimplifyParam
       mod.set_feature(work.to_vertex_handle(work.halfedge_handle(e, 1)), true);
     }
   }
-  if (!decimater.initialize()) return absl::InternalError("simplify: the decimater did not initialise");
+  if (!decimater.initialize())
+    return absl::InternalError("simplify: the decimater did not initialise");
   const size_t target = params.target_faces > 0 ? static_cast<size_t>(params.target_faces) : 0;
   Progress progress(ctx, work.n_faces() > target ? (work.n_faces() - target) / 2 : 1);
   decimater.set_observer(&progress);

@@ -61,7 +61,8 @@ absl::Status ParseDims(std::string_view name, std::string_view key, std::string_
   std::vector<absl::string_view> parts =
       absl::StrSplit(absl::string_view(value.data(), value.size()), ' ', absl::SkipWhitespace());
   if (parts.size() != 3) {
-    return BadVolume(name, absl::StrCat(std::string(key), " \"", Clip(value), "\" must give 3 sizes"));
+    return BadVolume(name,
+                     absl::StrCat(std::string(key), " \"", Clip(value), "\" must give 3 sizes"));
   }
   for (int a = 0; a < 3; ++a) {
     if (!absl::SimpleAtoi(parts[a], &dims[a]) || dims[a] <= 0) {
@@ -77,7 +78,8 @@ absl::Status ParseSpacing(std::string_view name, std::string_view key, std::stri
                           Fields* f) {
   const std::optional<std::vector<double>> v = Numbers(value);
   if (!v || v->size() != 3) {
-    return BadVolume(name, absl::StrCat(std::string(key), " \"", Clip(value), "\" must give 3 numbers"));
+    return BadVolume(name,
+                     absl::StrCat(std::string(key), " \"", Clip(value), "\" must give 3 numbers"));
   }
   for (int a = 0; a < 3; ++a) {
     if (!std::isfinite((*v)[a]) || (*v)[a] <= 0.0) {
@@ -94,7 +96,8 @@ absl::StatusOr<Eigen::Vector3d> ParseVector(std::string_view name, std::string_v
   const std::optional<std::vector<double>> v = Numbers(value);
   if (!v || v->size() != 3 || !std::isfinite((*v)[0]) || !std::isfinite((*v)[1]) ||
       !std::isfinite((*v)[2])) {
-    return BadVolume(name, absl::StrCat(std::string(key), " \"", Clip(value), "\" must give 3 finite numbers"));
+    return BadVolume(
+        name, absl::StrCat(std::string(key), " \"", Clip(value), "\" must give 3 finite numbers"));
   }
   return Eigen::Vector3d((*v)[0], (*v)[1], (*v)[2]);
 }
@@ -104,7 +107,8 @@ absl::Status ParseDirections(std::string_view name, std::string_view key, std::s
                              Fields* f) {
   const std::optional<std::vector<double>> v = Numbers(value);
   if (!v || v->size() != 9) {
-    return BadVolume(name, absl::StrCat(std::string(key), " \"", Clip(value), "\" must give 3 vectors of 3"));
+    return BadVolume(
+        name, absl::StrCat(std::string(key), " \"", Clip(value), "\" must give 3 vectors of 3"));
   }
   std::array<Eigen::Vector3d, 3> d;
   for (int a = 0; a < 3; ++a) {
@@ -123,8 +127,8 @@ std::optional<VoxelType> NrrdType(std::string value) {
   for (const char* s : {"uchar", "unsigned char", "uint8", "uint8_t"}) {
     if (value == s) return VoxelType::kUint8;
   }
-  for (const char* s : {"short", "short int", "signed short", "signed short int", "int16",
-                        "int16_t"}) {
+  for (const char* s :
+       {"short", "short int", "signed short", "signed short int", "int16", "int16_t"}) {
     if (value == s) return VoxelType::kInt16;
   }
   for (const char* s : {"ushort", "unsigned short", "unsigned short int", "uint16", "uint16_t"}) {
@@ -213,7 +217,8 @@ absl::StatusOr<VolumeInfo> ParseNrrdHeader(std::string_view text, const std::str
                                             "\" (uint8, uint16, int16, float)"));
       }
     } else if (key == "dimension") {
-      if (value != "3") return BadVolume(name, absl::StrCat("dimension ", Clip(value), " is not 3"));
+      if (value != "3")
+        return BadVolume(name, absl::StrCat("dimension ", Clip(value), " is not 3"));
     } else if (key == "sizes") {
       s = ParseDims(name, key, value, &f);
     } else if (key == "spacings") {
@@ -240,7 +245,9 @@ absl::StatusOr<VolumeInfo> ParseNrrdHeader(std::string_view text, const std::str
       info.data_path = DataPathBeside(path, value);
       info.data_offset = 0;
     } else if (key == "byte skip" || key == "byteskip" || key == "line skip" || key == "lineskip") {
-      if (value != "0") return BadVolume(name, absl::StrCat(std::string(key), " ", Clip(value), " is not supported"));
+      if (value != "0")
+        return BadVolume(name,
+                         absl::StrCat(std::string(key), " ", Clip(value), " is not supported"));
     }
     if (!s.ok()) return s;
   }
@@ -307,7 +314,8 @@ absl::StatusOr<VolumeInfo> ParseMetaImageHeader(std::string_view text, const std
         return BadVolume(name, absl::StrCat("ElementNumberOfChannels ", Clip(value), " is not 1"));
       }
     } else if (key == "HeaderSize") {
-      if (value != "0") return BadVolume(name, absl::StrCat("HeaderSize ", Clip(value), " is not supported"));
+      if (value != "0")
+        return BadVolume(name, absl::StrCat("HeaderSize ", Clip(value), " is not supported"));
     } else if (key == "ElementDataFile") {
       if (value == "LOCAL") {
         info.data_path = path;
@@ -331,17 +339,19 @@ absl::StatusOr<VolumeInfo> ParseMetaImageHeader(std::string_view text, const std
 absl::Status CheckDims(const VolumeInfo& info, const VolumeReadOptions& options) {
   const auto& d = info.geometry.dims;
   for (int a = 0; a < 3; ++a) {
-    if (d[a] <= 0) return BadVolume(info.name, absl::StrCat("size ", a, " is ", d[a], ", not positive"));
+    if (d[a] <= 0)
+      return BadVolume(info.name, absl::StrCat("size ", a, " is ", d[a], ", not positive"));
   }
   const double voxels = static_cast<double>(d[0]) * d[1] * d[2];
   if (voxels > static_cast<double>(options.max_voxels)) {
-    return BadVolume(info.name, absl::StrCat("sizes ", d[0], " x ", d[1], " x ", d[2], " = ", voxels,
-                                             " voxels, over the limit of ", options.max_voxels));
+    return BadVolume(info.name,
+                     absl::StrCat("sizes ", d[0], " x ", d[1], " x ", d[2], " = ", voxels,
+                                  " voxels, over the limit of ", options.max_voxels));
   }
   if (d[0] * d[1] > options.max_slice_voxels) {
-    return BadVolume(info.name, absl::StrCat("a slice of ", d[0], " x ", d[1],
-                                             " voxels is over the limit of ",
-                                             options.max_slice_voxels));
+    return BadVolume(info.name,
+                     absl::StrCat("a slice of ", d[0], " x ", d[1], " voxels is over the limit of ",
+                                  options.max_slice_voxels));
   }
   if (d[0] < 2 || d[1] < 2 || d[2] < 2) {
     return BadVolume(info.name, absl::StrCat("sizes ", d[0], " x ", d[1], " x ", d[2],

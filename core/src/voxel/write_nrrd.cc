@@ -17,10 +17,14 @@ namespace {
 
 const char* NrrdTypeName(VoxelType type) {
   switch (type) {
-    case VoxelType::kUint8: return "uint8";
-    case VoxelType::kUint16: return "uint16";
-    case VoxelType::kInt16: return "int16";
-    case VoxelType::kFloat32: return "float";
+    case VoxelType::kUint8:
+      return "uint8";
+    case VoxelType::kUint16:
+      return "uint16";
+    case VoxelType::kInt16:
+      return "int16";
+    case VoxelType::kFloat32:
+      return "float";
   }
   return "uint8";
 }
@@ -44,16 +48,26 @@ std::vector<unsigned char> Encode(const VolumeData& volume, size_t begin, size_t
   for (size_t v = begin; v < end; ++v) {
     unsigned char* b = out.data() + (v - begin) * size;
     switch (volume.type) {
-      case VoxelType::kUint8: Put<uint8_t>(volume.values[v], b); break;
-      case VoxelType::kUint16: Put<uint16_t>(volume.values[v], b); break;
-      case VoxelType::kInt16: Put<int16_t>(volume.values[v], b); break;
-      case VoxelType::kFloat32: Put<float>(volume.values[v], b); break;
+      case VoxelType::kUint8:
+        Put<uint8_t>(volume.values[v], b);
+        break;
+      case VoxelType::kUint16:
+        Put<uint16_t>(volume.values[v], b);
+        break;
+      case VoxelType::kInt16:
+        Put<int16_t>(volume.values[v], b);
+        break;
+      case VoxelType::kFloat32:
+        Put<float>(volume.values[v], b);
+        break;
     }
   }
   return out;
 }
 
-std::string Vec(const Eigen::Vector3d& v) { return absl::StrFormat("(%.17g,%.17g,%.17g)", v.x(), v.y(), v.z()); }
+std::string Vec(const Eigen::Vector3d& v) {
+  return absl::StrFormat("(%.17g,%.17g,%.17g)", v.x(), v.y(), v.z());
+}
 
 }  // namespace
 
@@ -61,13 +75,15 @@ absl::Status WriteNrrd(const VolumeData& volume, const std::string& path, bool g
   const auto& d = volume.geometry.dims;
   if (d[0] <= 0 || d[1] <= 0 || d[2] <= 0 ||
       static_cast<int64_t>(volume.values.size()) != volume.geometry.VoxelCount()) {
-    return absl::InvalidArgumentError(absl::StrCat("write_nrrd: \"", path, "\": ", volume.values.size(),
-                                                   " values for sizes ", d[0], " x ", d[1], " x ", d[2]));
+    return absl::InvalidArgumentError(
+        absl::StrCat("write_nrrd: \"", path, "\": ", volume.values.size(), " values for sizes ",
+                     d[0], " x ", d[1], " x ", d[2]));
   }
   const std::string header = absl::StrCat(
-      "NRRD0004\n# meshseg\ntype: ", NrrdTypeName(volume.type), "\ndimension: 3\nspace: 3D-right-handed\n",
-      "sizes: ", d[0], " ", d[1], " ", d[2], "\nspace directions: ", Vec(volume.geometry.axes[0]), " ",
-      Vec(volume.geometry.axes[1]), " ", Vec(volume.geometry.axes[2]),
+      "NRRD0004\n# meshseg\ntype: ", NrrdTypeName(volume.type),
+      "\ndimension: 3\nspace: 3D-right-handed\n", "sizes: ", d[0], " ", d[1], " ", d[2],
+      "\nspace directions: ", Vec(volume.geometry.axes[0]), " ", Vec(volume.geometry.axes[1]), " ",
+      Vec(volume.geometry.axes[2]),
       "\nkinds: domain domain domain\nendian: little\nencoding: ", gzip ? "gzip" : "raw",
       "\nspace origin: ", Vec(volume.geometry.origin), "\n\n");
   const auto fail = [&] {
@@ -88,7 +104,8 @@ absl::Status WriteNrrd(const VolumeData& volume, const std::string& path, bool g
     }
     for (size_t v = 0; ok && v < n; v += slab) {
       const std::vector<unsigned char> bytes = Encode(volume, v, std::min(n, v + slab));
-      ok = gzwrite(gz, bytes.data(), static_cast<unsigned>(bytes.size())) == static_cast<int>(bytes.size());
+      ok = gzwrite(gz, bytes.data(), static_cast<unsigned>(bytes.size())) ==
+           static_cast<int>(bytes.size());
     }
     if (gz != nullptr && gzclose(gz) != Z_OK) ok = false;
   } else {

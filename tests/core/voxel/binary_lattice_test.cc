@@ -13,7 +13,6 @@ namespace {
 
 constexpr double kH = 0.5;
 
-
 TEST(DetectBinaryLattice, FindsTheVoxelGridOfABinarySurface) {
   const VolumeData v =
       testing::SampleSdf(testing::TurnedBox(Eigen::Vector3d(5, 4, 3), 17.0), 36, kH, true);
@@ -28,13 +27,15 @@ TEST(DetectBinaryLattice, FindsTheVoxelGridOfABinarySurface) {
 }
 
 TEST(DetectBinaryLattice, GreyIsoSurfaceIsNotBinary) {
-  const VolumeSurface s = testing::SurfaceOf(testing::SampleSdf(testing::Ball(6.0), 32, kH, false), "ball.nrrd");
+  const VolumeSurface s =
+      testing::SurfaceOf(testing::SampleSdf(testing::Ball(6.0), 32, kH, false), "ball.nrrd");
   EXPECT_FALSE(DetectBinaryLattice(s.mesh.tri).has_value());
 }
 
 TEST(BinaryMeshFeatures, RecoversTheVolumesFeatureVertices) {
   const VolumeSurface s = testing::SurfaceOf(
-      testing::SampleSdf(testing::TurnedBox(Eigen::Vector3d(5, 4, 3), 17.0), 36, kH, true), "box2.nrrd");
+      testing::SampleSdf(testing::TurnedBox(Eigen::Vector3d(5, 4, 3), 17.0), 36, kH, true),
+      "box2.nrrd");
   const std::optional<BinaryLattice> lattice = DetectBinaryLattice(s.mesh.tri);
   ASSERT_TRUE(lattice.has_value());
   const absl::StatusOr<BinaryVertices> features = BinaryMeshFeatures(s.mesh.tri, *lattice);
@@ -55,8 +56,9 @@ TEST(RelaxTerraces, FlattensATurnedBoxFaceWithinItsEdges) {
   // Terraced vertices lie up to ~0.5 h off the true faces; relaxed, the
   // face interiors (more than the opening's reach from the edges) are flat,
   // and every vertex stays on its own grid edge.
-  const Eigen::Matrix3d r = Eigen::AngleAxisd(17.0 * 3.14159265358979 / 180.0,
-                                              Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
+  const Eigen::Matrix3d r =
+      Eigen::AngleAxisd(17.0 * 3.14159265358979 / 180.0, Eigen::Vector3d(1, 2, 3).normalized())
+          .toRotationMatrix();
   double before = 0.0, after = 0.0;
   int count = 0;
   for (size_t v = 0; v < relaxed.size(); ++v) {
@@ -72,7 +74,8 @@ TEST(RelaxTerraces, FlattensATurnedBoxFaceWithinItsEdges) {
     before += dp * dp, after += dr * dr, ++count;
   }
   ASSERT_GT(count, 100);
-  std::cout << "rms to the faces: " << std::sqrt(before / count) << " -> " << std::sqrt(after / count) << "\n";
+  std::cout << "rms to the faces: " << std::sqrt(before / count) << " -> "
+            << std::sqrt(after / count) << "\n";
   EXPECT_LT(std::sqrt(after / count), 0.5 * std::sqrt(before / count));
 }
 

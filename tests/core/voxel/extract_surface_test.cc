@@ -23,13 +23,15 @@ TEST(ExtractSurface, GreyBallIsClosedAndOnTheSphereAtTheOtsuThreshold) {
   EXPECT_FALSE(s->binary);
   EXPECT_NEAR(s->iso, 500.0, 50.0);  // between air 0 and material 1000
   const TriMesh& m = s->mesh.tri;
-  EXPECT_EQ(static_cast<int>(m.n_vertices()) * 2 - static_cast<int>(m.n_faces()), 4);  // closed sphere
+  EXPECT_EQ(static_cast<int>(m.n_vertices()) * 2 - static_cast<int>(m.n_faces()),
+            4);  // closed sphere
   // The ramp is linear in the distance within 1 h of the sphere: the
   // interpolated vertices lie on the sphere where the ramp meets the iso
   // value, up to the distance's curvature along one grid edge.
   const double radius = 6.0 + (0.5 - s->iso / 1000.0) * 2.0 * kH;
   double worst = 0.0;
-  for (auto vh : m.vertices()) worst = std::max(worst, std::abs(ToEigen(m.point(vh)).norm() - radius));
+  for (auto vh : m.vertices())
+    worst = std::max(worst, std::abs(ToEigen(m.point(vh)).norm() - radius));
   EXPECT_LT(worst, 0.02 * kH);
   for (auto f : m.faces()) {  // normals point out
     EXPECT_GT(ToEigen(m.normal(f)).dot(ToEigen(m.point(*m.cfv_iter(f)))), 0.0);
@@ -55,9 +57,11 @@ TEST(ExtractSurface, BinaryBoxMarksFeatureVerticesOnItsEdgesOnly) {
     ++features;
     // Distance to the nearest edge ~ second-largest face distance.
     const Eigen::Vector3d p = ToEigen(s->mesh.tri.point(vh));
-    const Eigen::Matrix3d r = Eigen::AngleAxisd(17.0 * 3.14159265358979 / 180.0,
-                                                Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
-    Eigen::Vector3d q = (Eigen::Vector3d(5.0, 4.0, 3.0) - (r.transpose() * p).cwiseAbs()).cwiseAbs();
+    const Eigen::Matrix3d r =
+        Eigen::AngleAxisd(17.0 * 3.14159265358979 / 180.0, Eigen::Vector3d(1, 2, 3).normalized())
+            .toRotationMatrix();
+    Eigen::Vector3d q =
+        (Eigen::Vector3d(5.0, 4.0, 3.0) - (r.transpose() * p).cwiseAbs()).cwiseAbs();
     std::sort(q.data(), q.data() + 3);
     if (q[1] > 3.5 * kH) ++far_from_edges;
   }
@@ -78,7 +82,8 @@ TEST(ExtractSurface, IsoOutsideTheSamplesIsRefused) {
   const VolumeData v = testing::SampleSdf(testing::Ball(3.0), 16, kH, false);
   const std::string path = ScratchPath("ball_iso.nrrd");
   ASSERT_TRUE(WriteNrrd(v, path).ok());
-  const absl::StatusOr<VolumeSurface> s = ExtractSurface(path, {.read = {}, .mode = VolumeMode::kAuto, .iso = 5000.0});
+  const absl::StatusOr<VolumeSurface> s =
+      ExtractSurface(path, {.read = {}, .mode = VolumeMode::kAuto, .iso = 5000.0});
   ASSERT_FALSE(s.ok());
   EXPECT_THAT(s.status().message(), ::testing::HasSubstr("outside the samples' range"));
 }

@@ -20,9 +20,12 @@ VolumeData Ramp(VoxelType type) {
   v.type = type;
   v.geometry.dims = {5, 4, 3};
   v.geometry.origin = Eigen::Vector3d(1.5, -2.0, 3.25);
-  v.geometry.axes = {Eigen::Vector3d(0.5, 0, 0), Eigen::Vector3d(0, 0.75, 0), Eigen::Vector3d(0, 0, 1.25)};
+  v.geometry.axes = {Eigen::Vector3d(0.5, 0, 0), Eigen::Vector3d(0, 0.75, 0),
+                     Eigen::Vector3d(0, 0, 1.25)};
   for (int x = 0; x < 60; ++x) {
-    v.values.push_back(type == VoxelType::kInt16 ? x * 7 - 200 : type == VoxelType::kFloat32 ? x * 0.5 : x * 3);
+    v.values.push_back(type == VoxelType::kInt16     ? x * 7 - 200
+                       : type == VoxelType::kFloat32 ? x * 0.5
+                                                     : x * 3);
   }
   return v;
 }
@@ -52,10 +55,24 @@ std::string Bytes(const VolumeData& v, bool big_endian) {
   for (double x : v.values) {
     unsigned char b[4];
     switch (v.type) {
-      case VoxelType::kUint8: b[0] = static_cast<uint8_t>(x); break;
-      case VoxelType::kUint16: { uint16_t y = static_cast<uint16_t>(x); std::memcpy(b, &y, 2); break; }
-      case VoxelType::kInt16: { int16_t y = static_cast<int16_t>(x); std::memcpy(b, &y, 2); break; }
-      case VoxelType::kFloat32: { float y = static_cast<float>(x); std::memcpy(b, &y, 4); break; }
+      case VoxelType::kUint8:
+        b[0] = static_cast<uint8_t>(x);
+        break;
+      case VoxelType::kUint16: {
+        uint16_t y = static_cast<uint16_t>(x);
+        std::memcpy(b, &y, 2);
+        break;
+      }
+      case VoxelType::kInt16: {
+        int16_t y = static_cast<int16_t>(x);
+        std::memcpy(b, &y, 2);
+        break;
+      }
+      case VoxelType::kFloat32: {
+        float y = static_cast<float>(x);
+        std::memcpy(b, &y, 4);
+        break;
+      }
     }
     if (big_endian) std::reverse(b, b + size);
     out.append(reinterpret_cast<char*>(b), size);
@@ -65,10 +82,14 @@ std::string Bytes(const VolumeData& v, bool big_endian) {
 
 const char* MetaType(VoxelType t) {
   switch (t) {
-    case VoxelType::kUint8: return "MET_UCHAR";
-    case VoxelType::kUint16: return "MET_USHORT";
-    case VoxelType::kInt16: return "MET_SHORT";
-    case VoxelType::kFloat32: return "MET_FLOAT";
+    case VoxelType::kUint8:
+      return "MET_UCHAR";
+    case VoxelType::kUint16:
+      return "MET_USHORT";
+    case VoxelType::kInt16:
+      return "MET_SHORT";
+    case VoxelType::kFloat32:
+      return "MET_FLOAT";
   }
   return "";
 }
@@ -92,7 +113,8 @@ TEST(ReadVolume, NrrdRoundTripsEveryTypeRawAndGzip) {
   for (VoxelType type : kTypes) {
     for (bool gzip : {false, true}) {
       const VolumeData v = Ramp(type);
-      const std::string path = ScratchPath(std::string("ramp_") + VoxelTypeName(type) + (gzip ? "_gz" : "") + ".nrrd");
+      const std::string path =
+          ScratchPath(std::string("ramp_") + VoxelTypeName(type) + (gzip ? "_gz" : "") + ".nrrd");
       ASSERT_TRUE(WriteNrrd(v, path, gzip).ok());
       const absl::StatusOr<VolumeInfo> info = ReadVolumeInfo(path);
       ASSERT_TRUE(info.ok()) << info.status();
@@ -129,9 +151,10 @@ TEST(ReadVolume, RawTakesItsLayoutFromTheCaller) {
     const VolumeData v = Ramp(type);
     const std::string path = ScratchPath(std::string("ramp_") + VoxelTypeName(type) + ".raw");
     WriteFile(path, Bytes(v, false));
-    const RawVolumeLayout layout{.dims = {5, 4, 3}, .spacing = {0.5, 0.75, 1.25},
-                                 .origin = {1.5, -2.0, 3.25}, .type = type};
-    const absl::StatusOr<VolumeInfo> info = ReadVolumeInfo(path, {.format = std::nullopt, .raw = layout});
+    const RawVolumeLayout layout{
+        .dims = {5, 4, 3}, .spacing = {0.5, 0.75, 1.25}, .origin = {1.5, -2.0, 3.25}, .type = type};
+    const absl::StatusOr<VolumeInfo> info =
+        ReadVolumeInfo(path, {.format = std::nullopt, .raw = layout});
     ASSERT_TRUE(info.ok()) << info.status();
     ExpectSameGeometry(info->geometry, v.geometry);
     EXPECT_EQ(ReadAll(*info), v.values);
@@ -157,15 +180,21 @@ std::string Nrrd(const std::string& fields) {
 TEST(ReadVolume, BadNrrdHeadersNameTheProblem) {
   const std::string data(60, '\1');
   ExpectBad("two_sizes.nrrd", Nrrd("sizes: 5 4\nencoding: raw") + data, "must give 3 sizes");
-  ExpectBad("zero_size.nrrd", Nrrd("sizes: 5 0 3\nencoding: raw") + data, "must be a positive integer");
-  ExpectBad("bzip2.nrrd", Nrrd("sizes: 5 4 3\nencoding: bzip2") + data, "unknown encoding \"bzip2\"");
-  ExpectBad("truncated.nrrd", Nrrd("sizes: 5 4 3\nencoding: raw") + data.substr(0, 50), "truncated data");
+  ExpectBad("zero_size.nrrd", Nrrd("sizes: 5 0 3\nencoding: raw") + data,
+            "must be a positive integer");
+  ExpectBad("bzip2.nrrd", Nrrd("sizes: 5 4 3\nencoding: bzip2") + data,
+            "unknown encoding \"bzip2\"");
+  ExpectBad("truncated.nrrd", Nrrd("sizes: 5 4 3\nencoding: raw") + data.substr(0, 50),
+            "truncated data");
   ExpectBad("too_long.nrrd", Nrrd("sizes: 5 4 3\nencoding: raw") + data + "xx", "wrong sizes");
-  ExpectBad("huge.nrrd", Nrrd("sizes: 1000000 1000000 1000000\nencoding: raw") + data, "over the limit");
+  ExpectBad("huge.nrrd", Nrrd("sizes: 1000000 1000000 1000000\nencoding: raw") + data,
+            "over the limit");
   ExpectBad("double.nrrd", "NRRD0004\ntype: double\ndimension: 3\nsizes: 5 4 3\n\n" + data,
             "unsupported type \"double\"");
-  ExpectBad("flat.nrrd", "NRRD0004\ntype: uint8\ndimension: 2\nsizes: 5 4\n\n", "dimension 2 is not 3");
-  ExpectBad("no_blank.nrrd", "NRRD0004\ntype: uint8\ndimension: 3\nsizes: 5 4 3\n", "no blank line");
+  ExpectBad("flat.nrrd", "NRRD0004\ntype: uint8\ndimension: 2\nsizes: 5 4\n\n",
+            "dimension 2 is not 3");
+  ExpectBad("no_blank.nrrd", "NRRD0004\ntype: uint8\ndimension: 3\nsizes: 5 4 3\n",
+            "no blank line");
   ExpectBad("garbled.nrrd", Nrrd("sizes 5 4 3") + data, "is not \"field: value\"");
   ExpectBad("no_sizes.nrrd", Nrrd("encoding: raw") + data, "gives no sizes");
 }
@@ -189,7 +218,8 @@ TEST(ReadVolume, TruncatedGzipDataFailsAtTheSliceItEnds) {
   for (int k = 0; k < 3 && s.ok(); ++k) s = slices->Next(slice);
   ASSERT_FALSE(s.ok());
   EXPECT_THAT(s.message(), HasSubstr("cut_gzip.nrrd"));
-  EXPECT_THAT(s.message(), ::testing::AnyOf(HasSubstr("truncated data"), HasSubstr("corrupt gzip")));
+  EXPECT_THAT(s.message(),
+              ::testing::AnyOf(HasSubstr("truncated data"), HasSubstr("corrupt gzip")));
 }
 
 TEST(ReadVolume, BadMetaImageHeadersNameTheProblem) {
@@ -205,7 +235,8 @@ TEST(ReadVolume, BadMetaImageHeadersNameTheProblem) {
   ExpectBad("compressed.mha", with("CompressedData = False", "CompressedData = True") + data,
             "unknown encoding");
   ExpectBad("truncated.mha", good + data.substr(0, 10), "truncated data");
-  ExpectBad("huge.mha", with("DimSize = 5 4 3", "DimSize = 1000000 1000000 1000000") + data, "over the limit");
+  ExpectBad("huge.mha", with("DimSize = 5 4 3", "DimSize = 1000000 1000000 1000000") + data,
+            "over the limit");
   ExpectBad("double.mha", with("MET_UCHAR", "MET_DOUBLE") + data, "unsupported ElementType");
   ExpectBad("no_data_line.mha", with("ElementDataFile = LOCAL\n", ""), "no ElementDataFile");
 }
@@ -213,9 +244,12 @@ TEST(ReadVolume, BadMetaImageHeadersNameTheProblem) {
 TEST(ReadVolume, RawWithoutLayoutOrOfTheWrongSizeIsRefused) {
   ExpectBad("no_layout.raw", std::string(60, '\0'), "needs its dims");
   ExpectBad("short.raw", std::string(59, '\0'), "truncated data",
-            {.format = std::nullopt, .raw = RawVolumeLayout{.dims = {5, 4, 3}, .type = VoxelType::kUint8}});
-  ExpectBad("huge.raw", std::string(60, '\0'), "over the limit",
-            {.format = std::nullopt, .raw = RawVolumeLayout{.dims = {1000000, 1000000, 1000000}, .type = VoxelType::kUint8}});
+            {.format = std::nullopt,
+             .raw = RawVolumeLayout{.dims = {5, 4, 3}, .type = VoxelType::kUint8}});
+  ExpectBad(
+      "huge.raw", std::string(60, '\0'), "over the limit",
+      {.format = std::nullopt,
+       .raw = RawVolumeLayout{.dims = {1000000, 1000000, 1000000}, .type = VoxelType::kUint8}});
 }
 
 TEST(ReadVolume, MissingFileIsNotFound) {

@@ -13,10 +13,10 @@ namespace {
 
 constexpr double kH = 0.5;
 
-
 TEST(Simplify, BinaryBoxKeepsEveryFeatureVertexWithinHalfAVoxel) {
-  const VolumeSurface s =
-      testing::SurfaceOf(testing::SampleSdf(testing::TurnedBox(Eigen::Vector3d(5, 4, 3), 17.0), 36, kH, true), "box.nrrd");
+  const VolumeSurface s = testing::SurfaceOf(
+      testing::SampleSdf(testing::TurnedBox(Eigen::Vector3d(5, 4, 3), 17.0), 36, kH, true),
+      "box.nrrd");
   const int64_t target = static_cast<int64_t>(s.mesh.tri.n_faces()) / 10;
   const absl::StatusOr<Simplification> out =
       Simplify(s.mesh.tri, {.target_faces = target, .max_error = 0.5 * kH}, s.feature_vertex);
@@ -33,9 +33,11 @@ TEST(Simplify, BinaryBoxKeepsEveryFeatureVertexWithinHalfAVoxel) {
 }
 
 TEST(Simplify, LabelledFacesKeepTheirLabelAndTheBoundaryStays) {
-  const VolumeSurface s = testing::SurfaceOf(testing::SampleSdf(testing::Ball(6.0), 32, kH, false), "ball.nrrd");
+  const VolumeSurface s =
+      testing::SurfaceOf(testing::SampleSdf(testing::Ball(6.0), 32, kH, false), "ball.nrrd");
   std::vector<int> labels;
-  for (auto f : s.mesh.tri.faces()) labels.push_back(s.mesh.tri.calc_face_centroid(f)[2] > 0.7 ? 1 : 0);
+  for (auto f : s.mesh.tri.faces())
+    labels.push_back(s.mesh.tri.calc_face_centroid(f)[2] > 0.7 ? 1 : 0);
   const absl::StatusOr<Simplification> out =
       Simplify(s.mesh.tri, {.target_faces = static_cast<int64_t>(labels.size()) / 8}, {}, labels);
   ASSERT_TRUE(out.ok()) << out.status();
@@ -51,7 +53,8 @@ TEST(Simplify, LabelledFacesKeepTheirLabelAndTheBoundaryStays) {
 }
 
 TEST(Simplify, MaxErrorAloneStopsTheCollapses) {
-  const VolumeSurface s = testing::SurfaceOf(testing::SampleSdf(testing::Ball(6.0), 32, kH, false), "ball2.nrrd");
+  const VolumeSurface s =
+      testing::SurfaceOf(testing::SampleSdf(testing::Ball(6.0), 32, kH, false), "ball2.nrrd");
   const absl::StatusOr<Simplification> out = Simplify(s.mesh.tri, {.max_error = 0.02 * kH});
   ASSERT_TRUE(out.ok()) << out.status();
   EXPECT_LT(out->mesh.tri.n_faces(), s.mesh.tri.n_faces());
@@ -59,7 +62,8 @@ TEST(Simplify, MaxErrorAloneStopsTheCollapses) {
 }
 
 TEST(Simplify, BadArgumentsAreRefused) {
-  const VolumeSurface s = testing::SurfaceOf(testing::SampleSdf(testing::Ball(3.0), 16, kH, false), "ball3.nrrd");
+  const VolumeSurface s =
+      testing::SurfaceOf(testing::SampleSdf(testing::Ball(3.0), 16, kH, false), "ball3.nrrd");
   EXPECT_EQ(Simplify(s.mesh.tri, {}).status().code(), absl::StatusCode::kInvalidArgument);
   const std::vector<uint8_t> short_flags(3, 0);
   const absl::Status bad = Simplify(s.mesh.tri, {.target_faces = 10}, short_flags).status();
@@ -67,7 +71,8 @@ TEST(Simplify, BadArgumentsAreRefused) {
 }
 
 TEST(Hausdorff, IsZeroToItselfAndSeesAMovedVertex) {
-  const VolumeSurface s = testing::SurfaceOf(testing::SampleSdf(testing::Ball(3.0), 16, kH, false), "ball4.nrrd");
+  const VolumeSurface s =
+      testing::SurfaceOf(testing::SampleSdf(testing::Ball(3.0), 16, kH, false), "ball4.nrrd");
   EXPECT_NEAR(Hausdorff(s.mesh.tri, s.mesh.tri).Max(), 0.0, 1e-12);
   TriMesh moved = s.mesh.tri;
   auto v = *moved.vertices().begin();

@@ -21,9 +21,9 @@ namespace {
 constexpr double kMinAccuracy = 0.98;
 constexpr double kMaxRegionRatio = 1.1;
 constexpr int kTypedFaces = 200;
-constexpr double kRadiusTol = 0.15;     // x h, full cylinders
-constexpr double kNormalTolDeg = 0.3;   // planes
-constexpr double kFullTurn = 0.95;      // angular span of a full cylinder
+constexpr double kRadiusTol = 0.15;    // x h, full cylinders
+constexpr double kNormalTolDeg = 0.3;  // planes
+constexpr double kFullTurn = 0.95;     // angular span of a full cylinder
 
 struct Scored {
   GeneratedPart truth;
@@ -40,7 +40,8 @@ Scored SegmentVolumeOf(const std::string& name, bool binary, double noise = 0.0,
   const absl::StatusOr<VolumeData> volume = GenerateVolume(name, binary, gen);
   EXPECT_TRUE(volume.ok()) << volume.status();
   if (!volume.ok()) return s;
-  const std::string path = testing_files::ScratchPath(name + (binary ? "_binary.nrrd" : "_grey.nrrd"));
+  const std::string path =
+      testing_files::ScratchPath(name + (binary ? "_binary.nrrd" : "_grey.nrrd"));
   EXPECT_TRUE(WriteNrrd(*volume, path, /*gzip=*/true).ok());
   absl::StatusOr<PipelineResult> result = RunPipeline(path, params);
   EXPECT_TRUE(result.ok()) << result.status();
@@ -103,7 +104,8 @@ TEST_P(BinaryVolume, SegmentsLikeTheTrueSurfaces) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Parts, BinaryVolume,
-                         ::testing::Values("test_piece", "small_block", "plate_boss", "stepped_shaft"));
+                         ::testing::Values("test_piece", "small_block", "plate_boss",
+                                           "stepped_shaft"));
 
 // The grey-mesh path's score on the same part: its mesh written to a file,
 // segmented, evaluated on its own ground truth.
@@ -138,7 +140,8 @@ TEST_P(GreyVolume, MatchesTheGreyMeshPath) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Parts, GreyVolume,
-                         ::testing::Values("test_piece", "small_block", "plate_boss", "stepped_shaft"));
+                         ::testing::Values("test_piece", "small_block", "plate_boss",
+                                           "stepped_shaft"));
 
 // Seed 003's own route (QEM simplification, remeshed), measured for the
 // notes; run with --gtest_also_run_disabled_tests (slower: CGAL's remesh).
@@ -149,12 +152,14 @@ TEST_P(BinaryVolumeSimplifyRoute, DISABLED_SegmentsLikeTheTrueSurfaces) {
   params.binary_surface = PipelineParams::BinarySurface::kSimplify;
   const Scored s = SegmentVolumeOf(GetParam(), /*binary=*/true, 0.0, params);
   std::cout << GetParam() << " simplified to " << s.result.simplified_face_count
-            << " faces, Hausdorff " << s.result.simplified_hausdorff << "\n" << s.eval;
+            << " faces, Hausdorff " << s.result.simplified_hausdorff << "\n"
+            << s.eval;
   ExpectBar(s);
 }
 
 INSTANTIATE_TEST_SUITE_P(Parts, BinaryVolumeSimplifyRoute,
-                         ::testing::Values("test_piece", "small_block", "plate_boss", "stepped_shaft"));
+                         ::testing::Values("test_piece", "small_block", "plate_boss",
+                                           "stepped_shaft"));
 
 }  // namespace
 }  // namespace meshseg

@@ -17,12 +17,13 @@ namespace meshseg::testing {
 
 // Samples `sdf` (negative inside) on an n^3 grid of spacing h around the
 // origin: binary = 1 inside, else a grey ramp 0..1000 over 2 h.
-inline VolumeData SampleSdf(const std::function<double(const Eigen::Vector3d&)>& sdf, int n, double h,
-                            bool binary) {
+inline VolumeData SampleSdf(const std::function<double(const Eigen::Vector3d&)>& sdf, int n,
+                            double h, bool binary) {
   VolumeData v;
   v.type = binary ? VoxelType::kUint8 : VoxelType::kUint16;
   v.geometry.dims = {n, n, n};
-  v.geometry.origin = Eigen::Vector3d::Constant(-0.5 * (n - 1) * h) + Eigen::Vector3d(0.13, 0.29, 0.41) * h;
+  v.geometry.origin =
+      Eigen::Vector3d::Constant(-0.5 * (n - 1) * h) + Eigen::Vector3d(0.13, 0.29, 0.41) * h;
   for (int a = 0; a < 3; ++a) v.geometry.axes[a] = h * Eigen::Vector3d::Unit(a);
   for (int k = 0; k < n; ++k) {
     for (int j = 0; j < n; ++j) {
@@ -36,7 +37,8 @@ inline VolumeData SampleSdf(const std::function<double(const Eigen::Vector3d&)>&
 }
 
 // A box of half extents `half`, turned by `degrees` about (1, 2, 3).
-inline std::function<double(const Eigen::Vector3d&)> TurnedBox(const Eigen::Vector3d& half, double degrees) {
+inline std::function<double(const Eigen::Vector3d&)> TurnedBox(const Eigen::Vector3d& half,
+                                                               double degrees) {
   const Eigen::Matrix3d r =
       Eigen::AngleAxisd(degrees * 3.14159265358979 / 180.0, Eigen::Vector3d(1, 2, 3).normalized())
           .toRotationMatrix();
