@@ -9,8 +9,8 @@
 #include "client/commands.h"
 #include "client/volume_args.h"
 #include "meshseg/mesh.h"
-#include "meshseg/point_cloud.h"
 #include "meshseg/pipeline.h"
+#include "meshseg/point_cloud.h"
 #include "meshseg/proto/convert.h"
 #include "meshseg/status_macros.h"
 #include "meshseg/voxel.h"
@@ -135,9 +135,23 @@ absl::Status VolumeInfoOf(const std::string& path, const Args& args, bool json) 
 absl::Status RunInfo(const Argv& argv) {
   MESHSEG_ASSIGN_OR_RETURN(
       const Args args,
-      Args::Parse(argv, {"--format", "--iso", "--volume-mode", "--dims", "--spacing", "--origin", "--type"},
-                  {"--json", kBigEndianSwitch}, 1));
+      Args::Parse(argv,
+                  {"--format", "--iso", "--volume-mode", "--dims", "--spacing", "--origin",
+                   "--type"},
+                  {"--json", "--memory-estimate", kBigEndianSwitch}, 1));
   const std::string& path = args.positional(0);
+  if (args.Has("--memory-estimate")) {  // from the header alone, as admission sees it
+    MESHSEG_ASSIGN_OR_RETURN(const MemoryEstimate e, EstimateJobMemory(path));
+    std::printf(
+        "{\"file\": %s, \"format\": \"%s\", \"point_cloud\": %s, "
+        "\"declared_vertices\": %lld, \"declared_faces\": %lld, \"file_bytes\": %lld, "
+        "\"peak_bytes\": %lld}\n",
+        JsonString(std::filesystem::path(path).filename().string()).c_str(),
+        FileFormatName(e.input.format), e.input.point_cloud ? "true" : "false",
+        (long long)e.input.vertex_count, (long long)e.input.face_count,
+        (long long)e.input.file_bytes, (long long)e.peak_bytes);
+    return absl::OkStatus();
+  }
   MESHSEG_ASSIGN_OR_RETURN(const std::optional<FileFormat> hinted,
                            FormatFromHint(args.Value("--format").value_or("")));
   FileFormat format;

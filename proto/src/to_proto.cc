@@ -2,6 +2,7 @@
 #include <variant>
 
 #include "meshseg/proto/convert.h"
+#include "proto/src/brep_to_proto.h"
 #include "proto/src/topology_to_proto.h"
 
 namespace meshseg {
@@ -115,6 +116,7 @@ v1::SegmentationResult ToProto(const PipelineResult& result) {
   }
   SetTopology(result.topology, result.features, &out);
   out.mutable_point_labels()->Add(result.point_labels.begin(), result.point_labels.end());
+  SetBrep(result, &out);
   return out;
 }
 

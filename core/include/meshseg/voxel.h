@@ -98,6 +98,10 @@ struct VolumeReadOptions {
   int64_t max_voxels = int64_t{1} << 33;
   // Upper bound on one slice (dims[0] * dims[1]).
   int64_t max_slice_voxels = int64_t{1} << 26;
+  // Refuse a header whose samples are in another file (.mhd + data file, NRRD
+  // `data file:`): set where only the one given file may be read (the
+  // service receives one file, and a header must not name server files).
+  bool attached_data_only = false;
 };
 
 // Returns the header of the volume in `path`: geometry, type and where the
@@ -106,7 +110,8 @@ struct VolumeReadOptions {
 // Errors (INVALID_ARGUMENT unless noted), naming the file: NOT_FOUND for a
 // missing file; a malformed header line, a missing or non-positive size,
 // dimension other than 3, an unknown type or encoding, multi-channel data,
-// sizes over the limits, a data file of the wrong size.
+// sizes over the limits, a data file of the wrong size, a separate data file
+// when `attached_data_only`.
 absl::StatusOr<VolumeInfo> ReadVolumeInfo(const std::string& path,
                                           const VolumeReadOptions& options = {});
 

@@ -4,6 +4,7 @@
 #include "meshseg/pipeline.h"
 
 #include <algorithm>
+#include <filesystem>
 #include <optional>
 #include <span>
 #include <utility>
@@ -11,7 +12,9 @@
 #include "absl/strings/str_cat.h"
 #include "meshseg/point_cloud.h"
 #include "meshseg/status_macros.h"
+#include "pipeline/finite_result.h"
 #include "pipeline/input_labels.h"
+#include "pipeline/memory_model.h"
 #include "pipeline/point_labels.h"
 #include "pipeline/refit_regions.h"
 #include "pipeline/remeshed_labels.h"
@@ -29,7 +32,25 @@ absl::Status ValidateParams(const PipelineParams& params) {
     return absl::InvalidArgumentError(
         absl::StrCat("pipeline: max_elements must be positive, got ", params.max_elements));
   }
+  if (params.memory_budget_bytes < 0) {
+    return absl::InvalidArgumentError(absl::StrCat(
+        "pipeline: memory_budget_bytes must be >= 0, got ", params.memory_budget_bytes));
+  }
   return absl::OkStatus();
+}
+
+// Returns OK if the job's estimated peak fits params.memory_budget_bytes.
+absl::Status CheckMemoryBudget(const std::string& input_path, const PipelineParams& params) {
+  if (params.memory_budget_bytes == 0) return absl::OkStatus();
+  MESHSEG_ASSIGN_OR_RETURN(const MemoryEstimate estimate, EstimateJobMemory(input_path, params));
+  if (estimate.peak_bytes <= params.memory_budget_bytes) return absl::OkStatus();
+  const InputSize& in = estimate.input;
+  return absl::ResourceExhaustedError(absl::StrCat(
+      "pipeline: \"", std::filesystem::path(input_path).filename().string(), "\": ",
+      in.point_cloud ? absl::StrCat(in.vertex_count, " points")
+                     : absl::StrCat(in.face_count, " faces, ", in.vertex_count, " vertices"),
+      " declared need an estimated ", estimate.peak_bytes, " bytes, over the memory budget of ",
+      params.memory_budget_bytes));
 }
 
 bool IsPointCloudFormat(FileFormat format) {
@@ -105,6 +126,25 @@ absl::StatusOr<std::vector<int>> SegmentRemeshed(const Mesh& surface, const Mesh
   return labels;
 }
 
+// Writes the STEP file when params ask for one (`labels` one per face of
+// `mesh`, the mesh the topology refers to).
+absl::Status ExportStep(const Mesh& mesh, std::span<const int> labels,
+                        const PipelineParams& params, const RunContext& ctx,
+                        PipelineResult* result) {
+  if (params.step_path.empty()) return absl::OkStatus();
+  BrepParams brep = params.brep;
+  if (!brep.noise_sigma) brep.noise_sigma = result->estimates.noise_sigma;
+  absl::StatusOr<BrepReport> report =
+      WriteStep(mesh, labels, result->regions, result->topology, params.step_path, brep, ctx);
+  if (absl::IsCancelled(report.status())) return report.status();
+  if (report.ok()) {
+    result->brep = *std::move(report);
+  } else {
+    result->brep_error = std::string(report.status().message());
+  }
+  return absl::OkStatus();
+}
+
 // Seed 003 (ALGORITHMS.md S4) for a binary-occupancy surface `mesh` on
 // voxels of size h: its terraces (steps of one voxel on every slanted face)
 // defeat curvature and growing, so it is segmented on a de-terraced surface
@@ -175,6 +215,7 @@ absl::StatusOr<PipelineResult> RunOnVolume(const std::string& input_path,
                           params, ctx, &result)
                       : SegmentMesh(surface->mesh, params, ctx, &result));
   result.face_labels = pipeline_internal::InputFaceLabels(surface->mesh.face_of_input, labels);
+  MESHSEG_RETURN_IF_ERROR(ExportStep(surface->mesh, labels, params, ctx, &result));
   return result;
 }
 
@@ -185,6 +226,7 @@ absl::StatusOr<PipelineResult> RunOnPointCloud(const std::string& input_path,
       PointCloud cloud,
       ReadPointCloud(input_path, {.format = params.format, .max_elements = params.max_elements}));
   ctx.Progress("read", 1.0);
+  MESHSEG_RETURN_IF_ERROR(pipeline_internal::CheckCoordinateRange(cloud.name, cloud.points));
   MESHSEG_ASSIGN_OR_RETURN(Reconstruction reconstruction,
                            Reconstruct(cloud, params.reconstruct, ctx));
   PipelineResult result;
@@ -192,6 +234,8 @@ absl::StatusOr<PipelineResult> RunOnPointCloud(const std::string& input_path,
   result.point_count = static_cast<int64_t>(cloud.points.size());
   MESHSEG_ASSIGN_OR_RETURN(result.face_labels,
                            SegmentMesh(reconstruction.mesh, params, ctx, &result));
+  MESHSEG_RETURN_IF_ERROR(
+      ExportStep(reconstruction.mesh, result.face_labels, params, ctx, &result));
   result.point_labels = pipeline_internal::PointLabels(
       reconstruction.mesh.tri, result.face_labels, cloud.points, reconstruction.is_outlier);
   return result;
@@ -222,6 +266,7 @@ absl::StatusOr<PipelineResult> RunOnMesh(const std::string& input_path,
     absl::StatusOr<std::vector<int>> mesh_labels = SegmentMesh(mesh, exact, ctx, &result);
     if (mesh_labels.ok()) {
       result.face_labels = pipeline_internal::InputFaceLabels(mesh.face_of_input, *mesh_labels);
+      MESHSEG_RETURN_IF_ERROR(ExportStep(mesh, *mesh_labels, params, ctx, &result));
       return result;
     }
     if (!absl::IsFailedPrecondition(mesh_labels.status())) return mesh_labels.status();
@@ -236,15 +281,46 @@ absl::StatusOr<PipelineResult> RunOnMesh(const std::string& input_path,
                            remesh ? SegmentRemeshed(mesh, mesh, edge_length, true, params, ctx, &result)
                                   : SegmentMesh(mesh, params, ctx, &result));
   result.face_labels = pipeline_internal::InputFaceLabels(mesh.face_of_input, mesh_labels);
+  MESHSEG_RETURN_IF_ERROR(ExportStep(mesh, mesh_labels, params, ctx, &result));
   return result;
 }
 
 }  // namespace
 
+absl::StatusOr<MemoryEstimate> EstimateJobMemory(const std::string& input_path,
+                                                 const PipelineParams& params) {
+  MemoryEstimate estimate;
+  std::optional<FileFormat> format = params.format;
+  if (!format) {
+    const absl::StatusOr<FileFormat> detected = DetectFileFormat(input_path);
+    if (detected.ok() && IsVolumeFormat(*detected)) format = *detected;
+  }
+  if (format && IsVolumeFormat(*format)) {  // costed from the volume's header
+    VolumeReadOptions read = params.volume.read;
+    read.format = format;
+    MESHSEG_ASSIGN_OR_RETURN(const VolumeInfo info, ReadVolumeInfo(input_path, read));
+    std::error_code ec;
+    const auto file_bytes = std::filesystem::file_size(input_path, ec);
+    int64_t extra = 0;
+    estimate.input = pipeline_internal::VolumeInputSize(
+        info, params, ec ? 0 : static_cast<int64_t>(file_bytes), &extra);
+    PipelineParams no_remesh = params;  // a volume's surface is not remeshed
+    no_remesh.remesh.mode = RemeshMode::kNever;
+    estimate.peak_bytes =
+        pipeline_internal::PeakBytes(estimate.input, no_remesh) +
+        static_cast<int64_t>(pipeline_internal::kSafetyMargin * static_cast<double>(extra));
+    return estimate;
+  }
+  MESHSEG_ASSIGN_OR_RETURN(estimate.input, ProbeInput(input_path, params.format));
+  estimate.peak_bytes = pipeline_internal::PeakBytes(estimate.input, params);
+  return estimate;
+}
+
 absl::StatusOr<PipelineResult> RunPipeline(const std::string& input_path,
                                            const PipelineParams& params,
                                            const RunContext& ctx) {
   MESHSEG_RETURN_IF_ERROR(ValidateParams(params));
+  MESHSEG_RETURN_IF_ERROR(CheckMemoryBudget(input_path, params));
   ctx.Progress("read", 0.0);
   std::optional<FileFormat> format = params.format;
   if (!format) {
@@ -262,7 +338,11 @@ absl::StatusOr<PipelineResult> RunPipeline(const std::string& input_path,
   }
   absl::StatusOr<PipelineResult> result = point_cloud ? RunOnPointCloud(input_path, params, ctx)
                                                       : RunOnMesh(input_path, params, ctx);
-  if (result.ok()) MESHSEG_RETURN_IF_ERROR(ctx.CheckStop("pipeline"));
+  if (result.ok()) {
+    MESHSEG_RETURN_IF_ERROR(ctx.CheckStop("pipeline"));
+    MESHSEG_RETURN_IF_ERROR(pipeline_internal::CheckResultFinite(
+        std::filesystem::path(input_path).filename().string(), *result));
+  }
   return result;
 }
 

@@ -136,6 +136,13 @@ absl::StatusOr<VolumeInfo> ReadVolumeInfo(const std::string& path,
                                           " is not a volume (nrrd, mha, mhd, raw)"));
     }
   }
+  if (options.attached_data_only && info.data_path != path) {
+    return BadVolume(
+        name, absl::StrCat("its samples are in a separate file \"",
+                           std::filesystem::path(info.data_path).filename().string(),
+                           "\"; only one file is read here: send a .mha (or .mhd with "
+                           "ElementDataFile = LOCAL) or an NRRD with attached data"));
+  }
   MESHSEG_RETURN_IF_ERROR(voxel_internal::CheckDims(info, options));
   MESHSEG_RETURN_IF_ERROR(CheckDataSize(info));
   return info;
