@@ -18,6 +18,7 @@
 #include "pipeline/point_labels.h"
 #include "pipeline/refit_regions.h"
 #include "pipeline/remeshed_labels.h"
+#include "pipeline/separating_planes.h"
 
 namespace meshseg {
 namespace {
@@ -191,6 +192,9 @@ absl::StatusOr<std::vector<int>> SegmentBinary(const Mesh& mesh, const BinaryVer
   // edges' slack): surfaces are fitted on the original, unbiased vertices.
   pipeline_internal::RefitOnInputVertices(mesh.tri, labels, segmentation.estimates.distance_tolerance,
                                           &result->regions);
+  // Planes: the separator of the binary samples, sharper than any fit to
+  // the vertices between them (separating_planes.h).
+  pipeline_internal::RefitPlanesBySeparation(mesh.tri, labels, binary, &result->regions);
   MESHSEG_RETURN_IF_ERROR(DescribeRegions(mesh, labels, result->regions, params, ctx, result));
   result->mesh = MeshStatistics(mesh);
   return labels;
