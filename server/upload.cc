@@ -26,7 +26,8 @@ namespace {
 // A volume's header is read here too: one file is uploaded, so a header
 // whose samples are in another file (.mhd + .raw, detached NRRD) is refused
 // now with what to send instead, not failed later in the job.
-absl::Status CheckFormat(const std::string& path, const PipelineParams& params) {
+absl::Status CheckFormat(const std::string& path, const std::string& file_name,
+                         const PipelineParams& params) {
   FileFormat format;
   if (params.format.has_value()) {
     format = *params.format;
@@ -42,7 +43,12 @@ absl::Status CheckFormat(const std::string& path, const PipelineParams& params) 
   read.format = format;
   read.attached_data_only = true;
   absl::StatusOr<VolumeInfo> info = ReadVolumeInfo(path, read);
-  if (!info.ok()) return absl::InvalidArgumentError(absl::StrCat("upload: ", info.status().message()));
+  if (!info.ok()) {  // the message names the spooled file: give the client's name
+    return absl::InvalidArgumentError(absl::StrCat(
+        "upload: ", absl::StrReplaceAll(info.status().message(),
+                                        {{std::filesystem::path(path).filename().string(),
+                                          file_name}})));
+  }
   return absl::OkStatus();
 }
 
@@ -149,7 +155,7 @@ grpc::Status SegmentationService::Upload(grpc::ServerContext* context,
     scratch = scratch_.ScratchPath(job_id, file_name);
     MESHSEG_RETURN_IF_ERROR(
         ReceiveUpload(context, reader, header, admission_.max_upload_bytes, scratch));
-    MESHSEG_RETURN_IF_ERROR(CheckFormat(scratch, params));
+    MESHSEG_RETURN_IF_ERROR(CheckFormat(scratch, file_name, params));
     MESHSEG_RETURN_IF_ERROR(CheckMemory(scratch, file_name, params, admission_.memory_budget));
 
     record.set_upload_key(UploadKey(job_id, file_name));

@@ -65,7 +65,10 @@ absl::StatusOr<VolumeInfo> RawInfo(const std::string& path, const VolumeReadOpti
   info.name = std::filesystem::path(path).filename().string();
   info.format = FileFormat::kRaw;
   if (!options.raw) {
-    return BadVolume(info.name, "a .raw volume needs its dims, spacing and type (--dims X,Y,Z)");
+    return BadVolume(info.name,
+                     "a .raw volume needs its dims, spacing and type (meshseg: --dims X,Y,Z "
+                     "--spacing SX,SY,SZ --type T; upload: UploadHeader raw_dims, raw_spacing, "
+                     "raw_voxel_type)");
   }
   const RawVolumeLayout& raw = *options.raw;
   info.geometry.dims = raw.dims;
