@@ -30,7 +30,7 @@ struct UploadOptions {
   // Send the file's SHA-256 for the server to check.
   bool checksum = true;
   // A headerless volume's layout: its raw_* fields are sent in the header.
-  v1::UploadHeader raw;
+  v1::UploadHeader raw = {};
   // UploadHeader.step / .step_unit: the server also writes the STEP file.
   bool step = false;
   std::string step_unit = "";

@@ -111,11 +111,11 @@ TEST(VolumeUpload, MetaImageWithASeparateDataFileIsRefusedNamingIt) {
   const VolumeData volume = SmallBlock(/*binary=*/false);
   const std::string dir = FreshDir("files");
   WriteUint16(volume, dir + "/block_data.raw");
-  std::ofstream(dir + "/block.mhd") << "ObjectType = Image\nNDims = 3\nDimSize = "
-                                    << volume.geometry.dims[0] << " " << volume.geometry.dims[1]
-                                    << " " << volume.geometry.dims[2]
-                                    << "\nElementType = MET_USHORT\n"
-                                       "ElementDataFile = block_data.raw\n";
+  std::ofstream(dir + "/block.mhd")
+      << "ObjectType = Image\nNDims = 3\nDimSize = " << volume.geometry.dims[0] << " "
+      << volume.geometry.dims[1] << " " << volume.geometry.dims[2]
+      << "\nElementType = MET_USHORT\n"
+         "ElementDataFile = block_data.raw\n";
   // Offline both files are there and it reads.
   EXPECT_TRUE(ReadVolumeInfo(dir + "/block.mhd").ok());
   const absl::StatusOr<v1::UploadResponse> upload = client.Upload(dir + "/block.mhd");
