@@ -44,8 +44,9 @@ InputSize VolumeInputSize(const VolumeInfo& info, const PipelineParams& params,
   input.vertex_count = input.face_count / 2;
   input.file_bytes = file_bytes;
   double extra = static_cast<double>(kBytesPerSliceVoxel) * d[0] * d[1];
-  const bool maybe_binary = params.volume.mode == VolumeMode::kBinary ||
-                            (params.volume.mode == VolumeMode::kAuto && info.type == VoxelType::kUint8);
+  const VolumeMode mode = params.volume.mode;
+  const bool maybe_binary = mode == VolumeMode::kBinary ||
+                            (mode == VolumeMode::kAuto && info.type == VoxelType::kUint8);
   if (maybe_binary) extra += static_cast<double>(kBinaryBytesPerVoxel) * info.geometry.VoxelCount();
   *extra_bytes = static_cast<int64_t>(std::min(extra, 1e18));
   return input;

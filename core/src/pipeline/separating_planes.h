@@ -15,11 +15,10 @@
 #ifndef MESHSEG_PIPELINE_SEPARATING_PLANES_H_
 #define MESHSEG_PIPELINE_SEPARATING_PLANES_H_
 
+#include <Eigen/Geometry>
 #include <optional>
 #include <span>
 #include <vector>
-
-#include <Eigen/Geometry>
 
 #include "meshseg/mesh.h"
 #include "meshseg/segment.h"
