@@ -88,7 +88,9 @@ void ExpectBar(const Scored& s) {
     if (const auto* plane = std::get_if<Plane>(&truth); plane && p.faces >= kTypedFaces) {
       const auto* fit = std::get_if<Plane>(&r.surface);
       ASSERT_NE(fit, nullptr) << p.name;
-      EXPECT_LE(testing::AxisAngleDeg(fit->normal, plane->normal), kNormalTolDeg) << p.name;
+      const double angle = testing::AxisAngleDeg(fit->normal, plane->normal);
+      std::cout << "  " << p.name << " normal off by " << angle << " deg\n";
+      EXPECT_LE(angle, kNormalTolDeg) << p.name;
     }
   }
 }
