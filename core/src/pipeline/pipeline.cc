@@ -12,6 +12,7 @@
 #include "absl/strings/str_cat.h"
 #include "meshseg/point_cloud.h"
 #include "meshseg/status_macros.h"
+#include "pipeline/binary_types.h"
 #include "pipeline/finite_result.h"
 #include "pipeline/input_labels.h"
 #include "pipeline/memory_model.h"
@@ -190,6 +191,7 @@ absl::StatusOr<std::vector<int>> SegmentBinary(const Mesh& mesh, const BinaryVer
   result->estimates = segmentation.estimates;
   // The relaxation moves curved surfaces by their curvature (up to the
   // edges' slack): surfaces are fitted on the original, unbiased vertices.
+  pipeline_internal::RetypeCoaxialSpheresOnInputVertices(mesh.tri, labels, &result->regions);
   pipeline_internal::RefitOnInputVertices(mesh.tri, labels, segmentation.estimates.distance_tolerance,
                                           &result->regions);
   // Planes: the separator of the binary samples, sharper than any fit to

@@ -25,8 +25,8 @@ Gap GapAlong(const Eigen::Vector3d& n, std::span<const Eigen::Vector3d> inside,
   return {0.5 * (bottom - top), 0.5 * (bottom + top)};
 }
 
-// Interior vertices of every region: all faces around the vertex and around
-// its neighbours carry the region's label; -1 elsewhere.
+}  // namespace
+
 std::vector<int> InteriorRegionOfVertex(const TriMesh& mesh, std::span<const int> face_labels) {
   std::vector<int> ring1(mesh.n_vertices(), -1);
   for (const auto v : mesh.vertices()) {
@@ -51,8 +51,6 @@ std::vector<int> InteriorRegionOfVertex(const TriMesh& mesh, std::span<const int
   }
   return ring2;
 }
-
-}  // namespace
 
 std::optional<SeparatingPlane> MaxMarginPlane(std::span<const Eigen::Vector3d> inside,
                                               std::span<const Eigen::Vector3d> outside,

@@ -39,6 +39,10 @@ std::optional<SeparatingPlane> MaxMarginPlane(std::span<const Eigen::Vector3d> i
                                               std::span<const Eigen::Vector3d> outside,
                                               const Plane& start);
 
+// Per vertex of `mesh`: the region whose label all faces around the vertex
+// and around its neighbours carry (two rings inside the region), else -1.
+std::vector<int> InteriorRegionOfVertex(const TriMesh& mesh, std::span<const int> face_labels);
+
 // Refits every plane region of a binary-occupancy `mesh` (labels one per
 // face) as the MaxMarginPlane of the samples of its interior vertices (those
 // whose faces, and their neighbours' faces, all carry the region's label: a
