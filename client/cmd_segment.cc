@@ -1,6 +1,7 @@
 // meshseg segment INPUT -o RESULT.json [--colored-ply OUT.ply] [--report REPORT.html]
 //   [--step OUT.step [--unit U]]
 //   [--distance-tolerance X] [--angle-tolerance DEG] [--format FMT] [--server HOST:PORT]
+//   [volume flags: client/volume_args.h]
 // In-process by default; with --server the same result comes from the service.
 #include <cstdio>
 #include <filesystem>
@@ -9,12 +10,14 @@
 #include "client/commands.h"
 #include "client/progress.h"
 #include "client/report.h"
+#include "client/volume_args.h"
 #include "meshseg/mesh.h"
 #include "meshseg/pipeline.h"
 #include "meshseg/point_cloud.h"
 #include "meshseg/proto/convert.h"
 #include "meshseg/proto/result_json.h"
 #include "meshseg/status_macros.h"
+#include "meshseg/voxel.h"
 
 namespace meshseg::cli {
 namespace {
@@ -26,12 +29,12 @@ struct StepRequest {
 };
 
 absl::StatusOr<v1::SegmentationResult> SegmentOffline(const std::string& path,
-                                                      const v1::SegmentOptions& options,
-                                                      const std::string& format_hint,
+                                                      const UploadOptions& options,
                                                       const StepRequest& step,
                                                       ProgressPrinter& progress) {
-  MESHSEG_ASSIGN_OR_RETURN(PipelineParams params, FromProto(options));
-  MESHSEG_ASSIGN_OR_RETURN(params.format, FormatFromHint(format_hint));
+  MESHSEG_ASSIGN_OR_RETURN(PipelineParams params, FromProto(options.segment));
+  MESHSEG_ASSIGN_OR_RETURN(params.format, FormatFromHint(options.format_hint));
+  MESHSEG_RETURN_IF_ERROR(RawLayoutFromProto(options.raw, &params));
   params.step_path = step.path;
   params.brep.length_unit = step.unit;
   RunContext ctx;
@@ -64,7 +67,24 @@ absl::StatusOr<v1::SegmentationResult> SegmentOnServer(const Args& args, const s
 // a point cloud (whose result has point labels) as its points, one colour per
 // point, as the reconstructed mesh is not part of the result.
 absl::Status WriteColored(const std::string& input, const std::optional<FileFormat>& format,
-                          const v1::SegmentationResult& result, const std::string& out) {
+                          const UploadOptions& options, const v1::SegmentationResult& result,
+                          const std::string& out) {
+  if (result.has_volume()) {  // the surface extracted from the volume
+    MESHSEG_ASSIGN_OR_RETURN(PipelineParams params, FromProto(options.segment));
+    MESHSEG_RETURN_IF_ERROR(RawLayoutFromProto(options.raw, &params));
+    params.volume.read.format = format;
+    const absl::StatusOr<VolumeSurface> surface = ExtractSurface(input, params.volume);
+    if (!surface.ok()) return surface.status();
+    if (surface->mesh.face_of_input.size() != static_cast<std::size_t>(result.face_labels_size())) {
+      return absl::InternalError("colored ply: the volume's surface differs from the result's");
+    }
+    std::vector<int> labels(surface->mesh.tri.n_faces(), -1);
+    for (std::size_t i = 0; i < surface->mesh.face_of_input.size(); ++i) {
+      const int f = surface->mesh.face_of_input[i];
+      if (f >= 0) labels[f] = result.face_labels(static_cast<int>(i));
+    }
+    return WriteColoredPly(surface->mesh.tri, labels, out);
+  }
   if (result.point_labels_size() > 0) {
     MESHSEG_ASSIGN_OR_RETURN(const PointCloud cloud, ReadPointCloud(input, {.format = format}));
     const std::vector<int> labels(result.point_labels().begin(), result.point_labels().end());
@@ -91,12 +111,13 @@ absl::Status WriteColored(const std::string& input, const std::optional<FileForm
 }  // namespace
 
 absl::Status RunSegment(const Argv& argv) {
-  MESHSEG_ASSIGN_OR_RETURN(const Args args,
-                           Args::Parse(argv,
-                                       {"-o", "--colored-ply", "--distance-tolerance",
-                                        "--angle-tolerance", "--format", "--server", "--report",
-                                        "--step", "--unit"},
-                                       {}, 1));
+  MESHSEG_ASSIGN_OR_RETURN(
+      const Args args,
+      Args::Parse(argv,
+                  {"-o", "--colored-ply", "--distance-tolerance", "--angle-tolerance", "--format",
+                   "--server", "--report", "--step", "--unit", "--iso", "--volume-mode", "--dims",
+                   "--spacing", "--origin", "--type"},
+                  {kBigEndianSwitch}, 1));
   const std::string& input = args.positional(0);
   const std::optional<std::string> out = args.Value("-o");
   if (!out) return absl::InvalidArgumentError("-o RESULT.json is required");
@@ -107,6 +128,7 @@ absl::Status RunSegment(const Argv& argv) {
   MESHSEG_ASSIGN_OR_RETURN(const std::optional<double> angle, args.Double("--angle-tolerance"));
   if (dist) options.segment.set_distance_tolerance(*dist);
   if (angle) options.segment.set_angle_tolerance_deg(*angle);
+  MESHSEG_RETURN_IF_ERROR(VolumeOptionsFromArgs(args, &options));
   // Same validation on both paths (the server repeats it).
   MESHSEG_RETURN_IF_ERROR(FromProto(options.segment).status());
   MESHSEG_ASSIGN_OR_RETURN(const std::optional<FileFormat> format,
@@ -119,14 +141,13 @@ absl::Status RunSegment(const Argv& argv) {
   }
   ProgressPrinter progress;
   absl::StatusOr<v1::SegmentationResult> result =
-      args.Has("--server")
-          ? SegmentOnServer(args, input, options, step, progress)
-          : SegmentOffline(input, options.segment, options.format_hint, step, progress);
+      args.Has("--server") ? SegmentOnServer(args, input, options, step, progress)
+                           : SegmentOffline(input, options, step, progress);
   if (!result.ok()) return result.status();
   MESHSEG_ASSIGN_OR_RETURN(const std::string json, ResultJson(*result));
   MESHSEG_RETURN_IF_ERROR(WriteTextFile(*out, json));
   if (const std::optional<std::string> ply = args.Value("--colored-ply")) {
-    MESHSEG_RETURN_IF_ERROR(WriteColored(input, format, *result, *ply));
+    MESHSEG_RETURN_IF_ERROR(WriteColored(input, format, options, *result, *ply));
   }
   if (const std::optional<std::string> report = args.Value("--report")) {
     MESHSEG_RETURN_IF_ERROR(WriteHtmlReport(*report,

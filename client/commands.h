@@ -32,6 +32,7 @@ absl::Status RunResult(const Argv& argv);
 absl::Status RunCancel(const Argv& argv);
 absl::Status RunReport(const Argv& argv);
 absl::Status RunBrep(const Argv& argv);
+absl::Status RunSimplify(const Argv& argv);
 
 // The server of a job command: --server, else $MESHSEG_SERVER.
 // Errors (INVALID_ARGUMENT): neither is set.

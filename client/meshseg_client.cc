@@ -75,6 +75,7 @@ absl::StatusOr<v1::UploadResponse> MeshsegClient::Upload(const std::string& path
 
   v1::UploadRequest request;
   v1::UploadHeader* header = request.mutable_header();
+  header->MergeFrom(options.raw);
   header->set_file_name(std::filesystem::path(path).filename().string());
   header->set_format_hint(options.format_hint);
   header->set_total_size(static_cast<int64_t>(size));

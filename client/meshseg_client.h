@@ -29,6 +29,8 @@ struct UploadOptions {
   std::size_t chunk_bytes = std::size_t{1} << 20;
   // Send the file's SHA-256 for the server to check.
   bool checksum = true;
+  // A headerless volume's layout: its raw_* fields are sent in the header.
+  v1::UploadHeader raw = {};
   // UploadHeader.step / .step_unit: the server also writes the STEP file.
   bool step = false;
   std::string step_unit = "";

@@ -20,6 +20,7 @@ PACKAGES=(
   # FoundationClasses ... DataExchange need all five -dev packages.
   libocct-foundation-dev libocct-modeling-data-dev libocct-modeling-algorithms-dev
   libocct-ocaf-dev libocct-visualization-dev libocct-data-exchange-dev
+  zlib1g-dev
 )
 
 SUDO=""

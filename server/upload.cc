@@ -11,6 +11,7 @@
 #include "meshseg/proto/convert.h"
 #include "meshseg/proto/grpc_status.h"
 #include "meshseg/status_macros.h"
+#include "meshseg/voxel.h"
 #include "server/log.h"
 #include "server/metrics.h"
 #include "server/receive_upload.h"
@@ -22,11 +23,43 @@ namespace {
 
 // Returns OK if the spooled file is in a format the pipeline reads: the
 // hint if given, else by extension and content.
-absl::Status CheckFormat(const std::string& path, const PipelineParams& params) {
-  if (params.format.has_value()) return absl::OkStatus();
-  absl::StatusOr<FileFormat> format = DetectFileFormat(path);
-  if (!format.ok()) return absl::InvalidArgumentError(absl::StrCat("upload: ", format.status().message()));
+// A volume's header is read here too: one file is uploaded, so a header
+// whose samples are in another file (.mhd + .raw, detached NRRD) is refused
+// now with what to send instead, not failed later in the job.
+absl::Status CheckFormat(const std::string& path, const std::string& file_name,
+                         const PipelineParams& params) {
+  FileFormat format;
+  if (params.format.has_value()) {
+    format = *params.format;
+  } else {
+    absl::StatusOr<FileFormat> detected = DetectFileFormat(path);
+    if (!detected.ok()) {
+      return absl::InvalidArgumentError(absl::StrCat("upload: ", detected.status().message()));
+    }
+    format = *detected;
+  }
+  if (!IsVolumeFormat(format)) return absl::OkStatus();
+  VolumeReadOptions read = params.volume.read;
+  read.format = format;
+  read.attached_data_only = true;
+  absl::StatusOr<VolumeInfo> info = ReadVolumeInfo(path, read);
+  if (!info.ok()) {  // the message names the spooled file: give the client's name
+    return absl::InvalidArgumentError(absl::StrCat(
+        "upload: ", absl::StrReplaceAll(info.status().message(),
+                                        {{std::filesystem::path(path).filename().string(),
+                                          file_name}})));
+  }
   return absl::OkStatus();
+}
+
+// The header's raw_* fields (a headerless .raw volume's layout), kept in the
+// job record for the worker.
+void StoreRawLayout(const v1::UploadHeader& header, v1::UploadHeader* layout) {
+  *layout->mutable_raw_dims() = header.raw_dims();
+  *layout->mutable_raw_spacing() = header.raw_spacing();
+  layout->set_raw_voxel_type(header.raw_voxel_type());
+  *layout->mutable_raw_origin() = header.raw_origin();
+  layout->set_raw_big_endian(header.raw_big_endian());
 }
 
 // Returns OK if the job in `path` can ever run under `budget` bytes (0 = not
@@ -102,6 +135,7 @@ grpc::Status SegmentationService::Upload(grpc::ServerContext* context,
     }
     MESHSEG_ASSIGN_OR_RETURN(PipelineParams params, FromProto(header.options()));
     MESHSEG_ASSIGN_OR_RETURN(params.format, FormatFromHint(header.format_hint()));
+    MESHSEG_RETURN_IF_ERROR(RawLayoutFromProto(header, &params));
     // Refuse before receiving the data (also when the queue is unreachable).
     MESHSEG_ASSIGN_OR_RETURN(const int waiting, queue_.Size());
     if (waiting >= queue_.Capacity()) {
@@ -121,7 +155,7 @@ grpc::Status SegmentationService::Upload(grpc::ServerContext* context,
     scratch = scratch_.ScratchPath(job_id, file_name);
     MESHSEG_RETURN_IF_ERROR(
         ReceiveUpload(context, reader, header, admission_.max_upload_bytes, scratch));
-    MESHSEG_RETURN_IF_ERROR(CheckFormat(scratch, params));
+    MESHSEG_RETURN_IF_ERROR(CheckFormat(scratch, file_name, params));
     MESHSEG_RETURN_IF_ERROR(CheckMemory(scratch, file_name, params, admission_.memory_budget));
 
     record.set_upload_key(UploadKey(job_id, file_name));
@@ -137,6 +171,7 @@ grpc::Status SegmentationService::Upload(grpc::ServerContext* context,
     record.set_format_hint(header.format_hint());
     record.set_step(header.step());
     record.set_step_unit(header.step_unit());
+    StoreRawLayout(header, record.mutable_raw_layout());
     MESHSEG_ASSIGN_OR_RETURN(const std::string created, store_.Create(record));
     if (created != job_id) {  // the same request completed meanwhile: its job stands
       (void)blobs_.Remove(record.upload_key());

@@ -114,6 +114,8 @@ absl::Status WorkerPool::Execute(const RunSpec& spec, JobOutput& output) {
   const std::string& job_id = spec.record.job().job_id();
   MESHSEG_ASSIGN_OR_RETURN(PipelineParams params, FromProto(spec.record.options()));
   MESHSEG_ASSIGN_OR_RETURN(params.format, FormatFromHint(spec.record.format_hint()));
+  MESHSEG_RETURN_IF_ERROR(RawLayoutFromProto(spec.record.raw_layout(), &params));
+  params.volume.read.attached_data_only = true;  // read only the uploaded file
   if (spec.record.step()) {
     params.step_path = scratch_.ScratchPath(job_id, "result.step");
     if (!spec.record.step_unit().empty()) params.brep.length_unit = spec.record.step_unit();

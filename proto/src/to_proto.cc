@@ -96,6 +96,24 @@ v1::SegmentationResult ToProto(const PipelineResult& result) {
   e->set_remesh_edge_length(result.remesh_edge_length);
   e->set_remesh_face_count(result.remesh_face_count);
   e->set_remesh_fine_edge_length(result.remesh_fine_edge_length);
+  e->set_simplified_face_count(result.simplified_face_count);
+  e->set_simplified_hausdorff(result.simplified_hausdorff);
+  out.set_binary_occupancy(result.binary_occupancy);
+  if (result.from_volume) {
+    v1::VolumeSource* v = out.mutable_volume();
+    const VolumeGeometry& g = result.volume.geometry;
+    v->mutable_dims()->Add(g.dims.begin(), g.dims.end());
+    const Eigen::Vector3d spacing = g.Spacing();
+    v->mutable_spacing()->set_x(spacing.x());
+    v->mutable_spacing()->set_y(spacing.y());
+    v->mutable_spacing()->set_z(spacing.z());
+    v->mutable_origin()->set_x(g.origin.x());
+    v->mutable_origin()->set_y(g.origin.y());
+    v->mutable_origin()->set_z(g.origin.z());
+    v->set_voxel_type(VoxelTypeName(result.volume.type));
+    v->set_format(FileFormatName(result.volume.format));
+    v->set_iso_value(result.iso_value);
+  }
   SetTopology(result.topology, result.features, &out);
   out.mutable_point_labels()->Add(result.point_labels.begin(), result.point_labels.end());
   SetBrep(result, &out);

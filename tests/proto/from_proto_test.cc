@@ -87,5 +87,47 @@ TEST(FormatFromHint, KnowsEveryFormatInAnyCase) {
   EXPECT_THAT(bad.status().message(), HasSubstr("step"));
 }
 
+TEST(FormatFromHint, KnowsTheVolumeFormats) {
+  EXPECT_EQ(**FormatFromHint("nrrd"), FileFormat::kNrrd);
+  EXPECT_EQ(**FormatFromHint("MHA"), FileFormat::kMha);
+  EXPECT_EQ(**FormatFromHint("mhd"), FileFormat::kMhd);
+  EXPECT_EQ(**FormatFromHint("raw"), FileFormat::kRaw);
+}
+
+TEST(FromProto, ReadsTheVolumeOptions) {
+  v1::SegmentOptions o;
+  o.set_iso_value(1500.0);
+  o.set_volume_mode("binary");
+  const absl::StatusOr<PipelineParams> p = FromProto(o);
+  ASSERT_TRUE(p.ok()) << p.status();
+  EXPECT_EQ(p->volume.iso, 1500.0);
+  EXPECT_EQ(p->volume.mode, VolumeMode::kBinary);
+  o.set_volume_mode("fuzzy");
+  EXPECT_THAT(FromProto(o).status().message(), HasSubstr("volume_mode \"fuzzy\""));
+  o.set_volume_mode("");
+  o.set_iso_value(std::numeric_limits<double>::quiet_NaN());
+  EXPECT_THAT(FromProto(o).status().message(), HasSubstr("iso_value"));
+}
+
+TEST(RawLayoutFromProto, TakesTheHeadersRawFieldsAndRefusesBadOnes) {
+  v1::UploadHeader h;
+  PipelineParams params;
+  ASSERT_TRUE(RawLayoutFromProto(h, &params).ok());
+  EXPECT_FALSE(params.volume.read.raw.has_value());  // none given
+  for (int64_t d : {64, 32, 16}) h.add_raw_dims(d);
+  for (double s : {0.5, 0.5, 1.0}) h.add_raw_spacing(s);
+  h.set_raw_voxel_type("int16");
+  ASSERT_TRUE(RawLayoutFromProto(h, &params).ok());
+  ASSERT_TRUE(params.volume.read.raw.has_value());
+  EXPECT_EQ(params.volume.read.raw->dims[1], 32);
+  EXPECT_EQ(params.volume.read.raw->spacing.z(), 1.0);
+  EXPECT_EQ(params.volume.read.raw->type, VoxelType::kInt16);
+  h.set_raw_voxel_type("double");
+  EXPECT_THAT(RawLayoutFromProto(h, &params).message(), HasSubstr("voxel type \"double\""));
+  h.set_raw_voxel_type("uint8");
+  h.add_raw_dims(8);
+  EXPECT_THAT(RawLayoutFromProto(h, &params).message(), HasSubstr("4 dims given, need 3"));
+}
+
 }  // namespace
 }  // namespace meshseg

@@ -25,6 +25,7 @@
 #include "meshseg/run_context.h"
 #include "meshseg/segment.h"
 #include "meshseg/topology.h"
+#include "meshseg/voxel.h"
 
 namespace meshseg {
 
@@ -39,6 +40,22 @@ struct PipelineParams {
   SegmentParams segment;
   TopologyParams topology;
   FeatureParams features;
+  // Volumes (NRRD, MetaImage, raw): reading and iso-surface (voxel.h).
+  VolumeParams volume;
+  // How binary-occupancy surfaces (binary volumes, terraced marching-cubes
+  // meshes) lose their terraces before segmentation; both keep seed 003's
+  // feature vertices and fit the surfaces on the original vertices.
+  enum class BinarySurface {
+    kRelax,     // RelaxTerraces on the full surface (voxel.h)
+    kSimplify,  // seed 003's QEM simplification, remeshed (remesh.h)
+  };
+  BinarySurface binary_surface = BinarySurface::kRelax;
+  // kRelax: seed 003's feature vertices stay put while the rest relax.
+  bool binary_relax_keeps_features = true;
+  // kSimplify: at most this share of the faces, and a quadric error of at
+  // most this many voxels (seed 003: 0.5-0.6 voxel).
+  double binary_face_share = 0.1;
+  double binary_max_error_voxels = 0.5;
   // Upper bound on declared vertex/face counts of the input.
   int64_t max_elements = 200'000'000;
   // When set, the B-rep of the result is written there as STEP (brep.h);
@@ -78,6 +95,18 @@ struct PipelineResult {
   // (brep unset) why it wrote nothing; the segmentation stands either way.
   std::optional<BrepReport> brep;
   std::string brep_error;
+  // Volume input: the volume's header and the iso value used; face_labels
+  // and the mesh statistics are those of the extracted surface.
+  bool from_volume = false;
+  VolumeInfo volume;
+  double iso_value = 0.0;
+  // Binary occupancy (a binary volume, or a mesh detected as terraced
+  // marching-cubes output): segmented on the seed 003 simplification of this
+  // many faces, whose Hausdorff distance to the full surface is given; labels
+  // refer to the full-resolution faces.
+  bool binary_occupancy = false;
+  int64_t simplified_face_count = 0;
+  double simplified_hausdorff = 0.0;
 };
 
 // A job's predicted peak resident memory, from the size its input declares
@@ -95,8 +124,11 @@ struct MemoryEstimate {
 absl::StatusOr<MemoryEstimate> EstimateJobMemory(const std::string& input_path,
                                                  const PipelineParams& params = {});
 
-// Returns the segmentation of the mesh or point cloud in `input_path`.
-// A point cloud is first reconstructed into a watertight mesh (Reconstruct).
+// Returns the segmentation of the mesh, point cloud or volume in
+// `input_path`. A point cloud is first reconstructed into a watertight mesh
+// (Reconstruct); a volume's surface is extracted (ExtractSurface). Binary
+// occupancy surfaces go through seed 003: feature voxels, QEM simplification,
+// segmentation of its remesh, labels mapped back to the full surface.
 // Errors: those of ReadMesh / ReadPointCloud, Reconstruct, EstimateCurvature,
 // Segment, ExtractTopology and RecognizeFeatures; RESOURCE_EXHAUSTED, before
 // the input is read, when params.memory_budget_bytes is set and the job's

@@ -29,6 +29,7 @@
 
 #include "meshseg/mesh.h"
 #include "meshseg/pipeline.h"
+#include "meshseg/voxel.h"
 
 namespace meshseg::pipeline_internal {
 
@@ -46,6 +47,25 @@ int64_t CostedFaces(const InputSize& input);
 
 // Returns the predicted peak resident bytes of RunPipeline on `input`.
 int64_t PeakBytes(const InputSize& input, const PipelineParams& params);
+
+// Volumes (#33): the surface's faces are not in the header. Marching cubes
+// puts about 1.5 triangles on every voxel face of surface (measured: the
+// 498 x 340 x 246 test_piece grid, box surface 7.5e5 voxel faces, gave
+// 1.16e6 triangles); a part's surface is costed at twice its bounding box's
+// (holes, pockets): faces = 2 * 1.5 * 2 (nx ny + ny nz + nx nz), i.e. 6 per
+// face of the box product. Samples stream two slices at a time (16 B per
+// slice voxel).
+// A volume that may be binary (mode binary, or auto with 8-bit samples,
+// the usual occupancy type) adds seed 003's 15 B per voxel (occupancy and
+// the morphology's masks and distance map, voxel.h).
+inline constexpr int64_t kVolumeFacesPerBoxFace = 6;
+inline constexpr int64_t kBytesPerSliceVoxel = 16;
+inline constexpr int64_t kBinaryBytesPerVoxel = 15;
+
+// Returns the InputSize a volume is costed as (faces and vertices of its
+// expected surface, file bytes) and, in `extra_bytes`, its voxel terms.
+InputSize VolumeInputSize(const VolumeInfo& info, const PipelineParams& params,
+                          int64_t file_bytes, int64_t* extra_bytes);
 
 }  // namespace meshseg::pipeline_internal
 

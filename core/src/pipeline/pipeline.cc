@@ -3,19 +3,23 @@
 // to the faces or points of the input file.
 #include "meshseg/pipeline.h"
 
+#include <algorithm>
 #include <filesystem>
+#include <optional>
 #include <span>
 #include <utility>
 
 #include "absl/strings/str_cat.h"
 #include "meshseg/point_cloud.h"
 #include "meshseg/status_macros.h"
+#include "pipeline/binary_types.h"
 #include "pipeline/finite_result.h"
 #include "pipeline/input_labels.h"
 #include "pipeline/memory_model.h"
 #include "pipeline/point_labels.h"
 #include "pipeline/refit_regions.h"
 #include "pipeline/remeshed_labels.h"
+#include "pipeline/separating_planes.h"
 
 namespace meshseg {
 namespace {
@@ -88,16 +92,19 @@ absl::StatusOr<std::vector<int>> SegmentMesh(const Mesh& mesh, const PipelinePar
 // A CAD tessellation (meshseg/remesh.h): segments an isotropic remesh, then
 // labels the faces and vertices of `mesh` from it and extracts boundaries and
 // features on `mesh` itself, so curve vertex ids are ids of the input.
-absl::StatusOr<std::vector<int>> SegmentRemeshed(const Mesh& mesh, double edge_length,
+// `surface` is what is remeshed: `mesh` itself, or (binary occupancy) its
+// de-terraced simplification, whose vertices are not on `mesh`'s facets.
+absl::StatusOr<std::vector<int>> SegmentRemeshed(const Mesh& surface, const Mesh& mesh,
+                                                 double edge_length, bool on_facets,
                                                  const PipelineParams& params,
                                                  const RunContext& ctx, PipelineResult* result) {
   RemeshStats remesh;
   MESHSEG_ASSIGN_OR_RETURN(const Mesh fine,
-                           IsotropicRemesh(mesh, edge_length, params.remesh, ctx, &remesh));
+                           IsotropicRemesh(surface, edge_length, params.remesh, ctx, &remesh));
   MESHSEG_ASSIGN_OR_RETURN(CurvatureField curvature,
                            EstimateCurvature(fine, params.curvature, ctx));
   SegmentParams segment = params.segment;
-  segment.on_facets = true;  // the remesh's vertices lie on the input's facets
+  segment.on_facets = on_facets;  // the remesh's vertices lie on the input's facets
   MESHSEG_ASSIGN_OR_RETURN(Segmentation segmentation, Segment(fine, curvature, segment, ctx));
   const double tolerance = segmentation.estimates.distance_tolerance;
   std::vector<int> labels =
@@ -106,7 +113,7 @@ absl::StatusOr<std::vector<int>> SegmentRemeshed(const Mesh& mesh, double edge_l
   result->regions = std::move(segmentation.regions);
   pipeline_internal::CompactRegions(&labels, &result->vertex_labels, &result->regions);
   pipeline_internal::RefitOnInputVertices(mesh.tri, labels, tolerance, &result->regions);
-  if (pipeline_internal::RelabelFacesOffTheirSurface(
+  if (on_facets && pipeline_internal::RelabelFacesOffTheirSurface(
           mesh.tri, result->regions, kExactCorner * MeanEdgeLength(mesh.tri), &labels) > 0) {
     result->vertex_labels = pipeline_internal::VertexLabelsFromFaces(mesh.tri, labels);
     pipeline_internal::CompactRegions(&labels, &result->vertex_labels, &result->regions);
@@ -140,6 +147,84 @@ absl::Status ExportStep(const Mesh& mesh, std::span<const int> labels,
   return absl::OkStatus();
 }
 
+// Seed 003 (ALGORITHMS.md S4) for a binary-occupancy surface `mesh` on
+// voxels of size h: its terraces (steps of one voxel on every slanted face)
+// defeat curvature and growing, so it is segmented on a de-terraced surface
+// (PipelineParams::BinarySurface) that keeps the feature vertices; labels
+// and surfaces come back to the full surface's own faces and vertices.
+absl::StatusOr<std::vector<int>> SegmentBinary(const Mesh& mesh, const BinaryVertices& binary,
+                                               double h, const PipelineParams& params,
+                                               const RunContext& ctx, PipelineResult* result) {
+  result->binary_occupancy = true;
+  if (params.binary_surface == PipelineParams::BinarySurface::kSimplify) {
+    const SimplifyParams simplify{
+        .target_faces = std::max<int64_t>(
+            1000, static_cast<int64_t>(params.binary_face_share * mesh.tri.n_faces())),
+        .max_error = params.binary_max_error_voxels * h};
+    absl::StatusOr<Simplification> simple = Simplify(mesh.tri, simplify, binary.feature, {}, ctx);
+    if (!simple.ok()) return simple.status();
+    result->simplified_face_count = static_cast<int64_t>(simple->mesh.tri.n_faces());
+    result->simplified_hausdorff = simple->hausdorff.Max();
+    return SegmentRemeshed(simple->mesh, mesh, MeanEdgeLength(mesh.tri), /*on_facets=*/false, params,
+                           ctx, result);
+  }
+  // The relaxed surface has the input's faces and vertex ids.
+  Mesh relaxed;
+  relaxed.tri = mesh.tri;
+  BinaryVertices free = binary;
+  if (!params.binary_relax_keeps_features) std::fill(free.feature.begin(), free.feature.end(), 0);
+  const std::vector<Eigen::Vector3d> moved = RelaxTerraces(mesh.tri, free);
+  for (auto v : relaxed.tri.vertices()) {
+    const Eigen::Vector3d& p = moved[v.idx()];
+    relaxed.tri.set_point(v, TriMesh::Point(p.x(), p.y(), p.z()));
+  }
+  relaxed.tri.update_normals();
+  relaxed.face_of_input = mesh.face_of_input;
+  relaxed.name = mesh.name;
+  MESHSEG_ASSIGN_OR_RETURN(CurvatureField curvature,
+                           EstimateCurvature(relaxed, params.curvature, ctx));
+  MESHSEG_ASSIGN_OR_RETURN(Segmentation segmentation,
+                           Segment(relaxed, curvature, params.segment, ctx));
+  std::vector<int> labels = std::move(segmentation.face_labels);
+  result->vertex_labels = std::move(segmentation.vertex_labels);
+  result->regions = std::move(segmentation.regions);
+  result->estimates = segmentation.estimates;
+  // The relaxation moves curved surfaces by their curvature (up to the
+  // edges' slack): surfaces are fitted on the original, unbiased vertices.
+  pipeline_internal::RetypeCoaxialSpheresOnInputVertices(mesh.tri, labels, &result->regions);
+  pipeline_internal::RefitOnInputVertices(mesh.tri, labels, segmentation.estimates.distance_tolerance,
+                                          &result->regions);
+  // Planes: the separator of the binary samples, sharper than any fit to
+  // the vertices between them (separating_planes.h).
+  pipeline_internal::RefitPlanesBySeparation(mesh.tri, labels, binary, &result->regions);
+  MESHSEG_RETURN_IF_ERROR(DescribeRegions(mesh, labels, result->regions, params, ctx, result));
+  result->mesh = MeshStatistics(mesh);
+  return labels;
+}
+
+absl::StatusOr<PipelineResult> RunOnVolume(const std::string& input_path,
+                                           const PipelineParams& params, const RunContext& ctx) {
+  VolumeParams volume = params.volume;
+  if (params.format) volume.read.format = params.format;
+  const absl::StatusOr<VolumeSurface> surface = ExtractSurface(input_path, volume, ctx);
+  if (!surface.ok()) return surface.status();
+  PipelineResult result;
+  result.from_volume = true;
+  result.volume = surface->info;
+  result.iso_value = surface->iso;
+  const double h = surface->info.geometry.Spacing().minCoeff();
+  MESHSEG_ASSIGN_OR_RETURN(
+      const std::vector<int> labels,
+      surface->binary
+          ? SegmentBinary(surface->mesh,
+                          {surface->feature_vertex, surface->edge_inside, surface->edge_outside}, h,
+                          params, ctx, &result)
+                      : SegmentMesh(surface->mesh, params, ctx, &result));
+  result.face_labels = pipeline_internal::InputFaceLabels(surface->mesh.face_of_input, labels);
+  MESHSEG_RETURN_IF_ERROR(ExportStep(surface->mesh, labels, params, ctx, &result));
+  return result;
+}
+
 absl::StatusOr<PipelineResult> RunOnPointCloud(const std::string& input_path,
                                                const PipelineParams& params,
                                                const RunContext& ctx) {
@@ -169,6 +254,15 @@ absl::StatusOr<PipelineResult> RunOnMesh(const std::string& input_path,
       ReadMesh(input_path, {.format = params.format, .max_elements = params.max_elements}));
   ctx.Progress("read", 1.0);
   PipelineResult result;
+  if (const std::optional<BinaryLattice> lattice = DetectBinaryLattice(mesh.tri)) {
+    MESHSEG_ASSIGN_OR_RETURN(const BinaryVertices binary,
+                             BinaryMeshFeatures(mesh.tri, *lattice, params.volume));
+    MESHSEG_ASSIGN_OR_RETURN(
+        const std::vector<int> labels,
+        SegmentBinary(mesh, binary, lattice->spacing.minCoeff(), params, ctx, &result));
+    result.face_labels = pipeline_internal::InputFaceLabels(mesh.face_of_input, labels);
+    return result;
+  }
   const TessellationShape shape = Assess(mesh, params.remesh);
   if (params.remesh.mode == RemeshMode::kAuto && shape.too_fine_to_remesh) {
     // A remesh at the face budget would lose what the export resolves (thin
@@ -190,7 +284,7 @@ absl::StatusOr<PipelineResult> RunOnMesh(const std::string& input_path,
                                  ? params.remesh.target_edge_length
                                  : shape.target_edge_length;
   MESHSEG_ASSIGN_OR_RETURN(const std::vector<int> mesh_labels,
-                           remesh ? SegmentRemeshed(mesh, edge_length, params, ctx, &result)
+                           remesh ? SegmentRemeshed(mesh, mesh, edge_length, true, params, ctx, &result)
                                   : SegmentMesh(mesh, params, ctx, &result));
   result.face_labels = pipeline_internal::InputFaceLabels(mesh.face_of_input, mesh_labels);
   MESHSEG_RETURN_IF_ERROR(ExportStep(mesh, mesh_labels, params, ctx, &result));
@@ -202,6 +296,27 @@ absl::StatusOr<PipelineResult> RunOnMesh(const std::string& input_path,
 absl::StatusOr<MemoryEstimate> EstimateJobMemory(const std::string& input_path,
                                                  const PipelineParams& params) {
   MemoryEstimate estimate;
+  std::optional<FileFormat> format = params.format;
+  if (!format) {
+    const absl::StatusOr<FileFormat> detected = DetectFileFormat(input_path);
+    if (detected.ok() && IsVolumeFormat(*detected)) format = *detected;
+  }
+  if (format && IsVolumeFormat(*format)) {  // costed from the volume's header
+    VolumeReadOptions read = params.volume.read;
+    read.format = format;
+    MESHSEG_ASSIGN_OR_RETURN(const VolumeInfo info, ReadVolumeInfo(input_path, read));
+    std::error_code ec;
+    const auto file_bytes = std::filesystem::file_size(input_path, ec);
+    int64_t extra = 0;
+    estimate.input = pipeline_internal::VolumeInputSize(
+        info, params, ec ? 0 : static_cast<int64_t>(file_bytes), &extra);
+    PipelineParams no_remesh = params;  // a volume's surface is not remeshed
+    no_remesh.remesh.mode = RemeshMode::kNever;
+    estimate.peak_bytes =
+        pipeline_internal::PeakBytes(estimate.input, no_remesh) +
+        static_cast<int64_t>(pipeline_internal::kSafetyMargin * static_cast<double>(extra));
+    return estimate;
+  }
   MESHSEG_ASSIGN_OR_RETURN(estimate.input, ProbeInput(input_path, params.format));
   estimate.peak_bytes = pipeline_internal::PeakBytes(estimate.input, params);
   return estimate;
@@ -213,6 +328,16 @@ absl::StatusOr<PipelineResult> RunPipeline(const std::string& input_path,
   MESHSEG_RETURN_IF_ERROR(ValidateParams(params));
   MESHSEG_RETURN_IF_ERROR(CheckMemoryBudget(input_path, params));
   ctx.Progress("read", 0.0);
+  std::optional<FileFormat> format = params.format;
+  if (!format) {
+    const absl::StatusOr<FileFormat> detected = DetectFileFormat(input_path);
+    if (detected.ok() && IsVolumeFormat(*detected)) format = *detected;
+  }
+  if (format && IsVolumeFormat(*format)) {
+    absl::StatusOr<PipelineResult> result = RunOnVolume(input_path, params, ctx);
+    if (result.ok()) MESHSEG_RETURN_IF_ERROR(ctx.CheckStop("pipeline"));
+    return result;
+  }
   bool point_cloud = params.format && IsPointCloudFormat(*params.format);
   if (!params.format || *params.format == FileFormat::kPly) {
     MESHSEG_ASSIGN_OR_RETURN(point_cloud, IsPointCloudFile(input_path));

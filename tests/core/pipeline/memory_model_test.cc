@@ -14,6 +14,7 @@
 
 #include "absl/strings/str_cat.h"
 #include "meshseg/pipeline.h"
+#include "meshseg/voxel.h"
 #include "scratch_dir.h"
 
 namespace meshseg::pipeline_internal {
@@ -92,6 +93,37 @@ TEST(RunPipeline, AJobWithinTheBudgetRuns) {
   EXPECT_TRUE(r.ok()) << r.status();
   params.memory_budget_bytes = -1;
   EXPECT_EQ(RunPipeline(path, params).status().code(), absl::StatusCode::kInvalidArgument);
+}
+
+// A volume is costed from its header: the surface its grid's box can hold,
+// two slices, and seed 003's bytes per voxel when it may be binary (8-bit
+// samples in auto mode, or binary mode), not when read as grey.
+TEST(EstimateJobMemory, CostsAVolumeFromItsHeader) {
+  VolumeData v;
+  v.type = VoxelType::kUint8;
+  v.geometry.dims = {40, 30, 20};
+  v.values.assign(40 * 30 * 20, 0.0);
+  v.values[0] = 1.0;
+  const std::string path = testing_files::ScratchPath("costed.nrrd");
+  ASSERT_TRUE(WriteNrrd(v, path).ok());
+  const absl::StatusOr<MemoryEstimate> maybe_binary = EstimateJobMemory(path);
+  ASSERT_TRUE(maybe_binary.ok()) << maybe_binary.status();
+  EXPECT_EQ(maybe_binary->input.format, FileFormat::kNrrd);
+  EXPECT_EQ(maybe_binary->input.face_count,
+            kVolumeFacesPerBoxFace * (40 * 30 + 30 * 20 + 40 * 20));
+  PipelineParams grey;
+  grey.volume.mode = VolumeMode::kGrey;
+  const absl::StatusOr<MemoryEstimate> as_grey = EstimateJobMemory(path, grey);
+  ASSERT_TRUE(as_grey.ok()) << as_grey.status();
+  EXPECT_NEAR(static_cast<double>(maybe_binary->peak_bytes - as_grey->peak_bytes),
+              kSafetyMargin * kBinaryBytesPerVoxel * 40 * 30 * 20, 2.0);
+  // A header that names a missing data file is an error, not a guess.
+  std::ofstream(testing_files::ScratchPath("detached.nhdr"))
+      << "NRRD0004\ntype: uint8\ndimension: 3\nsizes: 4 4 4\nencoding: raw\n"
+         "data file: missing.raw\n\n";
+  PipelineParams nrrd;
+  nrrd.format = FileFormat::kNrrd;
+  EXPECT_FALSE(EstimateJobMemory(testing_files::ScratchPath("detached.nhdr"), nrrd).ok());
 }
 
 }  // namespace

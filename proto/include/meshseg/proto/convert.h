@@ -13,6 +13,7 @@
 #include "meshseg/mesh.h"
 #include "meshseg/pipeline.h"
 #include "meshseg/v1/segmentation.pb.h"
+#include "meshseg/v1/service.pb.h"
 
 namespace meshseg {
 
@@ -39,6 +40,19 @@ absl::StatusOr<PipelineResult> FromProto(const v1::SegmentationResult& result);
 // "stl", "obj", "off", "ply", "xyz", "pwn" (any case).
 // Errors (INVALID_ARGUMENT): any other hint.
 absl::StatusOr<std::optional<FileFormat>> FormatFromHint(std::string_view hint);
+
+// Sets params->volume.read.raw from the header's raw_* fields (a headerless
+// .raw volume); leaves it unset when none is given.
+// Errors (INVALID_ARGUMENT): as RawLayout.
+absl::Status RawLayoutFromProto(const v1::UploadHeader& header, PipelineParams* params);
+
+// Returns the layout of a headerless volume: 3 dims, 3 or no spacings, 3 or
+// no origin coordinates, a voxel type name (voxel.h VoxelTypeName).
+// Errors (INVALID_ARGUMENT): wrong counts or an unknown type.
+absl::StatusOr<RawVolumeLayout> RawLayout(const std::vector<int64_t>& dims,
+                                          const std::vector<double>& spacing,
+                                          const std::vector<double>& origin,
+                                          const std::string& voxel_type, bool big_endian);
 
 }  // namespace meshseg
 

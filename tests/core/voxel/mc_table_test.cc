@@ -1,11 +1,11 @@
-#include "generate/mc_table.h"
+#include "voxel/mc_table.h"
 
 #include <map>
 #include <utility>
 
 #include <gtest/gtest.h>
 
-namespace meshseg::generate_internal {
+namespace meshseg::voxel_internal {
 namespace {
 
 int CrossingEdgeCount(int mask) {
@@ -60,4 +60,4 @@ TEST(BuildMcTable, ComplementaryCasesWithoutAmbiguityAreReversed) {
 }
 
 }  // namespace
-}  // namespace meshseg::generate_internal
+}  // namespace meshseg::voxel_internal

@@ -1,11 +1,11 @@
-#include "generate/mc_table.h"
+#include "voxel/mc_table.h"
 
 #include <cassert>
 #include <utility>
 
 #include <Eigen/Geometry>
 
-namespace meshseg::generate_internal {
+namespace meshseg::voxel_internal {
 namespace {
 
 Eigen::Vector3d CornerPosition(int c) { return Eigen::Vector3d(c & 1, (c >> 1) & 1, (c >> 2) & 1); }
@@ -100,4 +100,4 @@ McTable BuildMcTable() {
   return table;
 }
 
-}  // namespace meshseg::generate_internal
+}  // namespace meshseg::voxel_internal
