@@ -1,6 +1,7 @@
 // meshseg segment INPUT -o RESULT.json [--colored-ply OUT.ply] [--report REPORT.html]
-//   [--step OUT.step [--unit U]]
-//   [--distance-tolerance X] [--angle-tolerance DEG] [--format FMT] [--server HOST:PORT]
+//   [--step OUT.step [--unit U]] [--include-mesh] [--length-unit U]
+//   [--distance-tolerance X] [--angle-tolerance DEG] [--format FMT]
+//   [--server HOST:PORT [--request-id ID]]
 // In-process by default; with --server the same result comes from the service.
 #include <cstdio>
 #include <filesystem>
@@ -26,14 +27,16 @@ struct StepRequest {
 };
 
 absl::StatusOr<v1::SegmentationResult> SegmentOffline(const std::string& path,
-                                                      const v1::SegmentOptions& options,
-                                                      const std::string& format_hint,
+                                                      const UploadOptions& options,
                                                       const StepRequest& step,
                                                       ProgressPrinter& progress) {
-  MESHSEG_ASSIGN_OR_RETURN(PipelineParams params, FromProto(options));
-  MESHSEG_ASSIGN_OR_RETURN(params.format, FormatFromHint(format_hint));
+  MESHSEG_ASSIGN_OR_RETURN(PipelineParams params, FromProto(options.segment));
+  MESHSEG_ASSIGN_OR_RETURN(params.format, FormatFromHint(options.format_hint));
   params.step_path = step.path;
-  params.brep.length_unit = step.unit;
+  MESHSEG_ASSIGN_OR_RETURN(params.brep.length_unit,
+                           StepUnitFromWire(step.unit, options.length_unit));
+  params.include_mesh = options.include_mesh;
+  params.length_unit = options.length_unit;
   RunContext ctx;
   ctx.on_progress = [&](std::string_view stage, double f) { progress.Update(stage, f); };
   MESHSEG_ASSIGN_OR_RETURN(const PipelineResult result, RunPipeline(path, params, ctx));
@@ -95,8 +98,8 @@ absl::Status RunSegment(const Argv& argv) {
                            Args::Parse(argv,
                                        {"-o", "--colored-ply", "--distance-tolerance",
                                         "--angle-tolerance", "--format", "--server", "--report",
-                                        "--step", "--unit"},
-                                       {}, 1));
+                                        "--step", "--unit", "--length-unit", "--request-id"},
+                                       {"--include-mesh"}, 1));
   const std::string& input = args.positional(0);
   const std::optional<std::string> out = args.Value("-o");
   if (!out) return absl::InvalidArgumentError("-o RESULT.json is required");
@@ -112,16 +115,24 @@ absl::Status RunSegment(const Argv& argv) {
   MESHSEG_ASSIGN_OR_RETURN(const std::optional<FileFormat> format,
                            FormatFromHint(options.format_hint));
 
-  const StepRequest step{args.Value("--step").value_or(""),
-                         args.Value("--unit").value_or(BrepParams{}.length_unit)};
+  options.include_mesh = args.Has("--include-mesh");
+  options.length_unit = args.Value("--length-unit").value_or("");
+  options.request_id = args.Value("--request-id").value_or("");
+  // --unit empty: the STEP file takes --length-unit, else millimetres.
+  const StepRequest step{args.Value("--step").value_or(""), args.Value("--unit").value_or("")};
   if (step.path.empty() && args.Has("--unit")) {
     return absl::InvalidArgumentError("--unit needs --step OUT.step");
   }
+  if (args.Has("--request-id") && !args.Has("--server")) {
+    return absl::InvalidArgumentError(
+        "--request-id needs --server HOST:PORT (it makes a server upload idempotent)");
+  }
+  // Checked here as the server checks them, before any work.
+  MESHSEG_RETURN_IF_ERROR(StepUnitFromWire(step.unit, options.length_unit).status());
   ProgressPrinter progress;
   absl::StatusOr<v1::SegmentationResult> result =
-      args.Has("--server")
-          ? SegmentOnServer(args, input, options, step, progress)
-          : SegmentOffline(input, options.segment, options.format_hint, step, progress);
+      args.Has("--server") ? SegmentOnServer(args, input, options, step, progress)
+                           : SegmentOffline(input, options, step, progress);
   if (!result.ok()) return result.status();
   MESHSEG_ASSIGN_OR_RETURN(const std::string json, ResultJson(*result));
   MESHSEG_RETURN_IF_ERROR(WriteTextFile(*out, json));

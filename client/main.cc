@@ -24,6 +24,8 @@ constexpr char kUsage[] =
     "  cancel JOB --server HOST:PORT\n"
     "  report RESULT.json [MESH] -o REPORT.html [--format FMT]\n"
     "(segment also takes --report REPORT.html)\n"
+    "(segment also takes --step OUT.step [--unit U], --include-mesh, --length-unit U,\n"
+    " and with --server --request-id ID)\n"
     "  brep RESULT.json MESH -o OUT.step [--unit mm|cm|m|in|...]\n"
     "(--server defaults to $MESHSEG_SERVER)\n"
     "Commands with --server also take --tls-ca CA.pem (TLS; the server's CA),\n"
