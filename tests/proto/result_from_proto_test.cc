@@ -119,7 +119,7 @@ TEST(ResultFromProto, MeshGeometryAndLengthUnitRoundTrip) {
   };
   const absl::StatusOr<std::string> json = ResultJson(ToProto(r));
   ASSERT_TRUE(json.ok()) << json.status();
-  EXPECT_THAT(*json, HasSubstr("\"length_unit\": \"in\""));
+  EXPECT_THAT(*json, HasSubstr("\"length_unit\":\"in\""));
   const absl::StatusOr<v1::SegmentationResult> message = ParseResultJson(*json);
   ASSERT_TRUE(message.ok()) << message.status();
   EXPECT_EQ(message->mesh_geometry().vertices_size(), 12);
