@@ -94,12 +94,12 @@ absl::Status WriteColored(const std::string& input, const std::optional<FileForm
 }  // namespace
 
 absl::Status RunSegment(const Argv& argv) {
-  MESHSEG_ASSIGN_OR_RETURN(const Args args,
-                           Args::Parse(argv,
-                                       {"-o", "--colored-ply", "--distance-tolerance",
-                                        "--angle-tolerance", "--format", "--server", "--report",
-                                        "--step", "--unit", "--length-unit", "--request-id"},
-                                       {"--include-mesh"}, 1));
+  MESHSEG_ASSIGN_OR_RETURN(
+      const Args args,
+      Args::Parse(argv,
+                  {"-o", "--colored-ply", "--distance-tolerance", "--angle-tolerance", "--format",
+                   "--server", "--report", "--step", "--unit", "--length-unit", "--request-id"},
+                  {"--include-mesh"}, 1));
   const std::string& input = args.positional(0);
   const std::optional<std::string> out = args.Value("-o");
   if (!out) return absl::InvalidArgumentError("-o RESULT.json is required");

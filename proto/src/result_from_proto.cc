@@ -95,8 +95,8 @@ absl::StatusOr<PipelineResult> FromProto(const v1::SegmentationResult& result) {
   out.from_point_cloud = result.point_labels_size() > 0;
   out.point_count = result.point_labels_size();
   if (result.has_mesh_geometry()) {
-    MESHSEG_ASSIGN_OR_RETURN(out.mesh_geometry,
-                             MeshGeometryFromProto(result.mesh_geometry(), result.face_labels_size()));
+    MESHSEG_ASSIGN_OR_RETURN(out.mesh_geometry, MeshGeometryFromProto(result.mesh_geometry(),
+                                                                      result.face_labels_size()));
   }
   out.length_unit = result.length_unit();
   return out;

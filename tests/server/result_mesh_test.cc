@@ -100,8 +100,7 @@ TEST(ResultMesh, IncludeMeshReturnsTheMeshCurveAndCornerIdsIndex) {
   testing_files::WriteStlBinary(box, path);
   TestServer server;
   MeshsegClient client = server.Client();
-  const absl::StatusOr<v1::SegmentationResult> r =
-      client.Segment(path, {.include_mesh = true});
+  const absl::StatusOr<v1::SegmentationResult> r = client.Segment(path, {.include_mesh = true});
   ASSERT_TRUE(r.ok()) << r.status();
   ASSERT_TRUE(r->has_mesh_geometry());
   const v1::MeshGeometry& g = r->mesh_geometry();
@@ -116,11 +115,11 @@ TEST(ResultMesh, IncludeMeshReturnsTheMeshCurveAndCornerIdsIndex) {
     std::set<std::array<float, 3>> returned, written;
     for (int i = 0; i < 3; ++i) {
       const Eigen::Vector3d p = Vertex(g, g.faces(3 * t + i));
-      returned.insert({static_cast<float>(p.x()), static_cast<float>(p.y()),
-                       static_cast<float>(p.z())});
+      returned.insert(
+          {static_cast<float>(p.x()), static_cast<float>(p.y()), static_cast<float>(p.z())});
       const Eigen::Vector3d q = box.v[box.f[facet][i]];
-      written.insert({static_cast<float>(q.x()), static_cast<float>(q.y()),
-                      static_cast<float>(q.z())});
+      written.insert(
+          {static_cast<float>(q.x()), static_cast<float>(q.y()), static_cast<float>(q.z())});
     }
     EXPECT_EQ(returned, written) << "triangle " << t << " vs facet " << facet;
   }
@@ -158,8 +157,7 @@ TEST(ResultMesh, IncludeMeshOfAPointCloudReturnsTheReconstructedMesh) {
   testing_files::WriteXyz(testing_files::SplitBox(16, {2.0, 1.5, 1.0}), path);
   TestServer server;
   MeshsegClient client = server.Client();
-  const absl::StatusOr<v1::SegmentationResult> r =
-      client.Segment(path, {.include_mesh = true});
+  const absl::StatusOr<v1::SegmentationResult> r = client.Segment(path, {.include_mesh = true});
   ASSERT_TRUE(r.ok()) << r.status();
   const v1::MeshGeometry& g = r->mesh_geometry();
   EXPECT_EQ(g.vertices_size(), 3 * r->mesh().vertex_count());

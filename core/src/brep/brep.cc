@@ -38,8 +38,8 @@ constexpr double kCornerMove = 3.0;
 
 absl::Status ValidateParams(const BrepParams& p) {
   if (brep_internal::StepUnitName(p.length_unit).empty()) {
-    return absl::InvalidArgumentError(absl::StrCat(
-        "brep: length_unit \"", p.length_unit, "\" is not one of ", LengthUnitList()));
+    return absl::InvalidArgumentError(
+        absl::StrCat("brep: length_unit \"", p.length_unit, "\" is not one of ", LengthUnitList()));
   }
   if (p.noise_sigma && !(*p.noise_sigma >= 0.0 && std::isfinite(*p.noise_sigma))) {
     return absl::InvalidArgumentError(

@@ -122,4 +122,3 @@ absl::Status WriteStepFile(const TopoDS_Shape& shape,
 }
 
 }  // namespace meshseg::brep_internal
-

@@ -54,9 +54,11 @@ absl::Status ValidateParams(const PipelineParams& params) {
 
 // Copies the mesh the result's ids refer to into `result` when params ask
 // for it; `face_of_input` as Mesh::face_of_input (empty: a reconstruction).
-void AttachMesh(const Mesh& mesh, std::span<const int> face_of_input,
-                const PipelineParams& params, PipelineResult* result) {
-  if (params.include_mesh) result->mesh_geometry = pipeline_internal::GeometryOf(mesh.tri, face_of_input);
+void AttachMesh(const Mesh& mesh, std::span<const int> face_of_input, const PipelineParams& params,
+                PipelineResult* result) {
+  if (params.include_mesh) {
+    result->mesh_geometry = pipeline_internal::GeometryOf(mesh.tri, face_of_input);
+  }
 }
 
 // Returns OK if the job's estimated peak fits params.memory_budget_bytes.

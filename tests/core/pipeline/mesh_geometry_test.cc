@@ -6,13 +6,12 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>  // cross()
 #include <algorithm>
 #include <array>
 #include <fstream>
 #include <string>
 #include <vector>
-
-#include <Eigen/Geometry>  // cross()
 
 #include "scratch_dir.h"
 
@@ -23,8 +22,8 @@ using ::testing::ElementsAre;
 
 // A unit cube as six outward quads, with a degenerate triangle (a repeated
 // index, dropped while loading) as input face 2.
-constexpr std::array<std::array<double, 3>, 8> kCorners = {{
-    {0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}}};
+constexpr std::array<std::array<double, 3>, 8> kCorners = {
+    {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}}};
 const std::vector<std::vector<int>> kInputFaces = {
     {0, 3, 2, 1}, {4, 5, 6, 7}, {0, 0, 1}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
 
