@@ -112,6 +112,7 @@ grpc::Status SegmentationService::Upload(grpc::ServerContext* context,
     }
     MESHSEG_ASSIGN_OR_RETURN(PipelineParams params, FromProto(header.options()));
     MESHSEG_ASSIGN_OR_RETURN(params.format, FormatFromHint(header.format_hint()));
+    params.include_mesh = header.include_mesh();  // the estimate pays for the returned mesh
     // Refuse before receiving the data (also when the queue is unreachable).
     MESHSEG_ASSIGN_OR_RETURN(const int waiting, queue_.Size());
     if (waiting >= queue_.Capacity()) {
