@@ -63,30 +63,4 @@ absl::StatusOr<std::optional<FileFormat>> FormatFromHint(std::string_view hint) 
       "format hint \"", std::string(hint.substr(0, 64)), "\" is not one of stl, obj, off, ply, xyz, pwn"));
 }
 
-absl::StatusOr<std::string> LengthUnitFromWire(std::string_view field, std::string_view unit) {
-  if (unit.empty()) return std::string();
-  std::string canonical = CanonicalLengthUnit(unit);
-  if (canonical.empty()) {
-    return absl::InvalidArgumentError(absl::StrCat(std::string(field), " \"",
-                                                   std::string(unit.substr(0, 64)),
-                                                   "\" is not one of ", LengthUnitList()));
-  }
-  return canonical;
-}
-
-absl::StatusOr<std::string> StepUnitFromWire(std::string_view step_unit,
-                                             std::string_view length_unit) {
-  MESHSEG_ASSIGN_OR_RETURN(const std::string step, LengthUnitFromWire("step_unit", step_unit));
-  MESHSEG_ASSIGN_OR_RETURN(const std::string length,
-                           LengthUnitFromWire("length_unit", length_unit));
-  if (!step.empty() && !length.empty() && step != length) {
-    return absl::InvalidArgumentError(
-        absl::StrCat("step_unit \"", step, "\" is not length_unit \"", length,
-                     "\": the STEP file's coordinates are written unscaled, in the input's unit"));
-  }
-  if (!step.empty()) return step;
-  if (!length.empty()) return length;
-  return BrepParams{}.length_unit;
-}
-
 }  // namespace meshseg
