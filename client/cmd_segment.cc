@@ -1,7 +1,7 @@
 // meshseg segment INPUT -o RESULT.json [--colored-ply OUT.ply] [--report REPORT.html]
-//   [--step OUT.step [--unit U]]
-//   [--distance-tolerance X] [--angle-tolerance DEG] [--format FMT] [--server HOST:PORT]
-//   [volume flags: client/volume_args.h]
+//   [--step OUT.step [--unit U]] [--include-mesh] [--length-unit U]
+//   [--distance-tolerance X] [--angle-tolerance DEG] [--format FMT]
+//   [--server HOST:PORT [--request-id ID]] [volume flags: client/volume_args.h]
 // In-process by default; with --server the same result comes from the service.
 #include <cstdio>
 #include <filesystem>
@@ -36,7 +36,10 @@ absl::StatusOr<v1::SegmentationResult> SegmentOffline(const std::string& path,
   MESHSEG_ASSIGN_OR_RETURN(params.format, FormatFromHint(options.format_hint));
   MESHSEG_RETURN_IF_ERROR(RawLayoutFromProto(options.raw, &params));
   params.step_path = step.path;
-  params.brep.length_unit = step.unit;
+  MESHSEG_ASSIGN_OR_RETURN(params.brep.length_unit,
+                           StepUnitFromWire(step.unit, options.length_unit));
+  params.include_mesh = options.include_mesh;
+  params.length_unit = options.length_unit;
   RunContext ctx;
   ctx.on_progress = [&](std::string_view stage, double f) { progress.Update(stage, f); };
   MESHSEG_ASSIGN_OR_RETURN(const PipelineResult result, RunPipeline(path, params, ctx));
@@ -115,9 +118,9 @@ absl::Status RunSegment(const Argv& argv) {
       const Args args,
       Args::Parse(argv,
                   {"-o", "--colored-ply", "--distance-tolerance", "--angle-tolerance", "--format",
-                   "--server", "--report", "--step", "--unit", "--iso", "--volume-mode", "--dims",
-                   "--spacing", "--origin", "--type"},
-                  {kBigEndianSwitch}, 1));
+                   "--server", "--report", "--step", "--unit", "--length-unit", "--request-id",
+                   "--iso", "--volume-mode", "--dims", "--spacing", "--origin", "--type"},
+                  {"--include-mesh", kBigEndianSwitch}, 1));
   const std::string& input = args.positional(0);
   const std::optional<std::string> out = args.Value("-o");
   if (!out) return absl::InvalidArgumentError("-o RESULT.json is required");
@@ -134,11 +137,20 @@ absl::Status RunSegment(const Argv& argv) {
   MESHSEG_ASSIGN_OR_RETURN(const std::optional<FileFormat> format,
                            FormatFromHint(options.format_hint));
 
-  const StepRequest step{args.Value("--step").value_or(""),
-                         args.Value("--unit").value_or(BrepParams{}.length_unit)};
+  options.include_mesh = args.Has("--include-mesh");
+  options.length_unit = args.Value("--length-unit").value_or("");
+  options.request_id = args.Value("--request-id").value_or("");
+  // --unit empty: the STEP file takes --length-unit, else millimetres.
+  const StepRequest step{args.Value("--step").value_or(""), args.Value("--unit").value_or("")};
   if (step.path.empty() && args.Has("--unit")) {
     return absl::InvalidArgumentError("--unit needs --step OUT.step");
   }
+  if (args.Has("--request-id") && !args.Has("--server")) {
+    return absl::InvalidArgumentError(
+        "--request-id needs --server HOST:PORT (it makes a server upload idempotent)");
+  }
+  // Checked here as the server checks them, before any work.
+  MESHSEG_RETURN_IF_ERROR(StepUnitFromWire(step.unit, options.length_unit).status());
   ProgressPrinter progress;
   absl::StatusOr<v1::SegmentationResult> result =
       args.Has("--server") ? SegmentOnServer(args, input, options, step, progress)

@@ -25,6 +25,8 @@ constexpr char kUsage[] =
     "  cancel JOB --server HOST:PORT\n"
     "  report RESULT.json [MESH] -o REPORT.html [--format FMT]\n"
     "(segment also takes --report REPORT.html)\n"
+    "(segment also takes --step OUT.step [--unit U], --include-mesh, --length-unit U,\n"
+    " and with --server --request-id ID)\n"
     "  brep RESULT.json MESH -o OUT.step [--unit mm|cm|m|in|...]\n"
     "  simplify IN -o OUT (--target-faces N | --max-error E) [--regions RESULT.json]\n"
     "volumes (nrrd, mha, mhd, raw) go through info and segment; options:\n"

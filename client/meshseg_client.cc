@@ -83,6 +83,8 @@ absl::StatusOr<v1::UploadResponse> MeshsegClient::Upload(const std::string& path
   header->set_step(options.step);
   header->set_step_unit(options.step_unit);
   header->set_request_id(options.request_id);
+  header->set_include_mesh(options.include_mesh);
+  header->set_length_unit(options.length_unit);
   if (options.checksum) {
     MESHSEG_ASSIGN_OR_RETURN(*header->mutable_sha256(), FileSha256(path));
   }

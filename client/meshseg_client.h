@@ -36,6 +36,10 @@ struct UploadOptions {
   std::string step_unit = "";
   // UploadHeader.request_id: a retry with the same id gets the same job.
   std::string request_id = "";
+  // UploadHeader.include_mesh: the result carries the mesh its ids index.
+  bool include_mesh = false;
+  // UploadHeader.length_unit: the coordinates' unit, echoed in the result.
+  std::string length_unit = "";
 };
 
 // How to reach a server that uses TLS or bearer tokens (server/credentials.h).

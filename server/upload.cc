@@ -98,6 +98,15 @@ absl::Status CheckRequestId(const std::string& id) {
                                                  id.size(), " characters"));
 }
 
+// Returns OK if the header's length_unit and step_unit are known units that
+// agree (StepUnitFromWire); the message names the field, value and units.
+absl::Status CheckUnits(const v1::UploadHeader& header) {
+  const absl::StatusOr<std::string> unit =
+      StepUnitFromWire(header.step_unit(), header.length_unit());
+  if (unit.ok()) return absl::OkStatus();
+  return absl::Status(unit.status().code(), absl::StrCat("upload: ", unit.status().message()));
+}
+
 }  // namespace
 
 grpc::Status SegmentationService::Upload(grpc::ServerContext* context,
@@ -123,6 +132,7 @@ grpc::Status SegmentationService::Upload(grpc::ServerContext* context,
     const v1::UploadHeader& header = first.header();
     MESHSEG_RETURN_IF_ERROR(CheckUploadHeader(header, admission_.max_upload_bytes));
     MESHSEG_RETURN_IF_ERROR(CheckRequestId(header.request_id()));
+    MESHSEG_RETURN_IF_ERROR(CheckUnits(header));
     // A retry of an upload that created a job: answer with that job and
     // leave the data unread.
     MESHSEG_ASSIGN_OR_RETURN(const std::optional<std::string> earlier,
@@ -136,6 +146,7 @@ grpc::Status SegmentationService::Upload(grpc::ServerContext* context,
     MESHSEG_ASSIGN_OR_RETURN(PipelineParams params, FromProto(header.options()));
     MESHSEG_ASSIGN_OR_RETURN(params.format, FormatFromHint(header.format_hint()));
     MESHSEG_RETURN_IF_ERROR(RawLayoutFromProto(header, &params));
+    params.include_mesh = header.include_mesh();  // the estimate pays for the returned mesh
     // Refuse before receiving the data (also when the queue is unreachable).
     MESHSEG_ASSIGN_OR_RETURN(const int waiting, queue_.Size());
     if (waiting >= queue_.Capacity()) {
@@ -172,6 +183,8 @@ grpc::Status SegmentationService::Upload(grpc::ServerContext* context,
     record.set_step(header.step());
     record.set_step_unit(header.step_unit());
     StoreRawLayout(header, record.mutable_raw_layout());
+    record.set_include_mesh(header.include_mesh());
+    record.set_length_unit(header.length_unit());
     MESHSEG_ASSIGN_OR_RETURN(const std::string created, store_.Create(record));
     if (created != job_id) {  // the same request completed meanwhile: its job stands
       (void)blobs_.Remove(record.upload_key());

@@ -116,9 +116,12 @@ absl::Status WorkerPool::Execute(const RunSpec& spec, JobOutput& output) {
   MESHSEG_ASSIGN_OR_RETURN(params.format, FormatFromHint(spec.record.format_hint()));
   MESHSEG_RETURN_IF_ERROR(RawLayoutFromProto(spec.record.raw_layout(), &params));
   params.volume.read.attached_data_only = true;  // read only the uploaded file
+  params.include_mesh = spec.record.include_mesh();
+  params.length_unit = spec.record.length_unit();
   if (spec.record.step()) {
     params.step_path = scratch_.ScratchPath(job_id, "result.step");
-    if (!spec.record.step_unit().empty()) params.brep.length_unit = spec.record.step_unit();
+    MESHSEG_ASSIGN_OR_RETURN(params.brep.length_unit,
+                             StepUnitFromWire(spec.record.step_unit(), spec.record.length_unit()));
   }
   MESHSEG_ASSIGN_OR_RETURN(const std::unique_ptr<LocalBlob> upload,
                            blobs_.Open(spec.record.upload_key()));

@@ -6,6 +6,7 @@
 #include "absl/strings/str_cat.h"
 #include "meshseg/proto/convert.h"
 #include "meshseg/status_macros.h"
+#include "proto/src/mesh_geometry_proto.h"
 #include "proto/src/topology_from_proto.h"
 
 namespace meshseg {
@@ -93,6 +94,11 @@ absl::StatusOr<PipelineResult> FromProto(const v1::SegmentationResult& result) {
   out.point_labels.assign(result.point_labels().begin(), result.point_labels().end());
   out.from_point_cloud = result.point_labels_size() > 0;
   out.point_count = result.point_labels_size();
+  if (result.has_mesh_geometry()) {
+    MESHSEG_ASSIGN_OR_RETURN(out.mesh_geometry, MeshGeometryFromProto(result.mesh_geometry(),
+                                                                      result.face_labels_size()));
+  }
+  out.length_unit = result.length_unit();
   return out;
 }
 

@@ -3,6 +3,7 @@
 
 #include "meshseg/proto/convert.h"
 #include "proto/src/brep_to_proto.h"
+#include "proto/src/mesh_geometry_proto.h"
 #include "proto/src/topology_to_proto.h"
 
 namespace meshseg {
@@ -117,6 +118,8 @@ v1::SegmentationResult ToProto(const PipelineResult& result) {
   SetTopology(result.topology, result.features, &out);
   out.mutable_point_labels()->Add(result.point_labels.begin(), result.point_labels.end());
   SetBrep(result, &out);
+  if (result.mesh_geometry) SetMeshGeometry(*result.mesh_geometry, out.mutable_mesh_geometry());
+  out.set_length_unit(result.length_unit);
   return out;
 }
 

@@ -77,6 +77,33 @@ TEST(FromProto, RefusesEveryOptionOutsideItsRangeNamingFieldAndRange) {
   }
 }
 
+TEST(LengthUnitFromWire, KnowsTheStepUnitsInAnyCaseAndNamesAnUnknownOne) {
+  EXPECT_EQ(*LengthUnitFromWire("length_unit", ""), "");
+  EXPECT_EQ(*LengthUnitFromWire("length_unit", "MM"), "mm");
+  EXPECT_EQ(*LengthUnitFromWire("length_unit", "uin"), "uin");
+  const absl::Status bad = LengthUnitFromWire("length_unit", "furlong").status();
+  EXPECT_TRUE(absl::IsInvalidArgument(bad)) << bad;
+  EXPECT_EQ(bad.message(),
+            "length_unit \"furlong\" is not one of mm, cm, m, km, in, ft, mi, mil, um, uin");
+}
+
+TEST(StepUnitFromWire, StepUnitThenLengthUnitThenMillimetres) {
+  EXPECT_EQ(*StepUnitFromWire("", ""), "mm");
+  EXPECT_EQ(*StepUnitFromWire("", "In"), "in");
+  EXPECT_EQ(*StepUnitFromWire("CM", ""), "cm");
+  EXPECT_EQ(*StepUnitFromWire("cm", "CM"), "cm");
+  absl::Status bad = StepUnitFromWire("parsec", "mm").status();
+  EXPECT_TRUE(absl::IsInvalidArgument(bad)) << bad;
+  EXPECT_THAT(bad.message(), HasSubstr("step_unit \"parsec\" is not one of mm,"));
+  bad = StepUnitFromWire("mm", "yd").status();
+  EXPECT_THAT(bad.message(), HasSubstr("length_unit \"yd\" is not one of mm,"));
+  // Coordinates are written unscaled: a STEP unit other than the input's
+  // would scale the part.
+  bad = StepUnitFromWire("in", "mm").status();
+  EXPECT_TRUE(absl::IsInvalidArgument(bad)) << bad;
+  EXPECT_THAT(bad.message(), HasSubstr("step_unit \"in\" is not length_unit \"mm\""));
+}
+
 TEST(FormatFromHint, KnowsEveryFormatInAnyCase) {
   EXPECT_FALSE(FormatFromHint("")->has_value());
   EXPECT_EQ(**FormatFromHint("STL"), FileFormat::kStl);

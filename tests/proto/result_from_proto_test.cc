@@ -107,6 +107,46 @@ TEST(ResultFromProto, InvalidMessagesNameTheProblem) {
   EXPECT_THAT(s.message(), HasSubstr("curve 0"));
 }
 
+// The mesh the ids index and the length unit survive the JSON round trip;
+// ids outside the mesh or the input faces are refused, naming them.
+TEST(ResultFromProto, MeshGeometryAndLengthUnitRoundTrip) {
+  PipelineResult r = Sample();
+  r.length_unit = "in";
+  r.mesh_geometry = MeshGeometry{
+      .vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0.25}, {1, 1, 0}},
+      .faces = {{0, 1, 2}, {2, 1, 3}},
+      .input_face = {0, 4},
+  };
+  const absl::StatusOr<std::string> json = ResultJson(ToProto(r));
+  ASSERT_TRUE(json.ok()) << json.status();
+  EXPECT_THAT(*json, HasSubstr("\"length_unit\":\"in\""));
+  const absl::StatusOr<v1::SegmentationResult> message = ParseResultJson(*json);
+  ASSERT_TRUE(message.ok()) << message.status();
+  EXPECT_EQ(message->mesh_geometry().vertices_size(), 12);
+  const absl::StatusOr<PipelineResult> back = FromProto(*message);
+  ASSERT_TRUE(back.ok()) << back.status();
+  EXPECT_EQ(back->length_unit, "in");
+  ASSERT_TRUE(back->mesh_geometry.has_value());
+  EXPECT_EQ(back->mesh_geometry->vertices, r.mesh_geometry->vertices);
+  EXPECT_EQ(back->mesh_geometry->faces, r.mesh_geometry->faces);
+  EXPECT_EQ(back->mesh_geometry->input_face, r.mesh_geometry->input_face);
+  EXPECT_FALSE(FromProto(ToProto(Sample()))->mesh_geometry.has_value()) << "only when asked";
+
+  v1::SegmentationResult m = ToProto(r);
+  m.mutable_mesh_geometry()->set_faces(4, 9);
+  absl::Status bad = FromProto(m).status();
+  EXPECT_TRUE(absl::IsInvalidArgument(bad)) << bad;
+  EXPECT_THAT(bad.message(), HasSubstr("face 1 has vertex id 9, outside [0, 4)"));
+  m = ToProto(r);
+  m.mutable_mesh_geometry()->set_input_faces(1, 5);  // 5 input faces
+  bad = FromProto(m).status();
+  EXPECT_THAT(bad.message(), HasSubstr("face 1 has input face 5, outside [0, 5)"));
+  m = ToProto(r);
+  m.mutable_mesh_geometry()->add_vertices(1.0);
+  bad = FromProto(m).status();
+  EXPECT_THAT(bad.message(), HasSubstr("3 numbers per element"));
+}
+
 TEST(ParseResultJson, MalformedJsonIsInvalidArgument) {
   const absl::Status s = ParseResultJson("{\"regions\": [ {\"id\": ").status();
   EXPECT_TRUE(absl::IsInvalidArgument(s)) << s;

@@ -140,6 +140,15 @@ std::vector<HostileUpload> Cases(const std::string& box_obj) {
       {"distance tolerance negative", "a.obj", box_obj, call, C::kInvalidArgument,
        "distance_tolerance must be in (0, 100], got -1", Send::kNormal,
        [](v1::UploadHeader& h) { h.mutable_options()->set_distance_tolerance(-1); }},
+      {"unknown step unit", "a.obj", box_obj, call, C::kInvalidArgument,
+       "step_unit \"furlong\" is not one of mm, cm", Send::kNormal,
+       [](v1::UploadHeader& h) {
+         h.set_step(true);
+         h.set_step_unit("furlong");
+       }},
+      {"unknown length unit", "a.obj", box_obj, call, C::kInvalidArgument,
+       "length_unit \"yard\" is not one of mm, cm", Send::kNormal,
+       [](v1::UploadHeader& h) { h.set_length_unit("yard"); }},
       {"unknown content", "blob.bin", std::string("\x01\x02\x03garbage\x7f", 11), call,
        C::kInvalidArgument, "unknown format"},
       // Lying or truncated headers, every format.

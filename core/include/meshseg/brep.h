@@ -21,6 +21,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "absl/status/statusor.h"
@@ -82,6 +83,14 @@ struct BrepReport {
   std::string length_unit;  // declared in the file (BrepParams::length_unit)
   int64_t step_size = 0;    // bytes written
 };
+
+// Returns `unit` as BrepParams::length_unit names it (lowercase) when it is
+// one of the length units a STEP file can declare, in any case ("MM" ->
+// "mm"); "" for any other string.
+std::string CanonicalLengthUnit(std::string_view unit);
+
+// The units CanonicalLengthUnit knows, for messages: "mm, cm, m, ...".
+std::string LengthUnitList();
 
 // Writes the B-rep of the segmented `mesh` to `path` (STEP AP214, faces named
 // "region <id> <type>") and returns what was built.

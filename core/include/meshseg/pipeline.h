@@ -9,6 +9,7 @@
 #ifndef MESHSEG_PIPELINE_H_
 #define MESHSEG_PIPELINE_H_
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -65,6 +66,26 @@ struct PipelineParams {
   // Peak memory the job may take, in bytes; 0 = no limit. A job whose
   // EstimateJobMemory exceeds it is refused before its input is read.
   int64_t memory_budget_bytes = 0;
+  // Copy the mesh the result's ids refer to into PipelineResult::mesh_geometry.
+  bool include_mesh = false;
+  // The length unit of the input's coordinates, echoed in the result: ""
+  // (unspecified: model units) or one of CanonicalLengthUnit's (brep.h), any
+  // case. With step_path set, brep.length_unit must name the same unit
+  // (coordinates are written unscaled).
+  std::string length_unit;
+};
+
+// The mesh the result's vertex ids (vertex_labels, curves, corners) and mesh
+// faces refer to: the input as loaded (STL welded, polygons fan-triangulated,
+// dropped faces left out; also when it was segmented on a remesh), or the
+// mesh reconstructed from a point cloud.
+struct MeshGeometry {
+  std::vector<Eigen::Vector3d> vertices;
+  // Vertex ids, in each face's winding order (the input's).
+  std::vector<std::array<int, 3>> faces;
+  // One per face: the input face it came from (a polygon's triangles share
+  // one). Empty for a point cloud, whose faces are all reconstructed.
+  std::vector<int> input_face;
 };
 
 struct PipelineResult {
@@ -107,6 +128,10 @@ struct PipelineResult {
   bool binary_occupancy = false;
   int64_t simplified_face_count = 0;
   double simplified_hausdorff = 0.0;
+  // Set when PipelineParams::include_mesh is.
+  std::optional<MeshGeometry> mesh_geometry;
+  // PipelineParams::length_unit, lowercase ("" = unspecified).
+  std::string length_unit;
 };
 
 // A job's predicted peak resident memory, from the size its input declares
@@ -134,7 +159,9 @@ absl::StatusOr<MemoryEstimate> EstimateJobMemory(const std::string& input_path,
 // the input is read, when params.memory_budget_bytes is set and the job's
 // EstimateJobMemory exceeds it (the message gives both); INVALID_ARGUMENT
 // for coordinates beyond +-1e75 (their fourth powers overflow the fits);
-// INTERNAL if a number of the result is not finite; CANCELLED on stop.
+// INTERNAL if a number of the result is not finite; CANCELLED on stop;
+// INVALID_ARGUMENT for a length_unit CanonicalLengthUnit does not know, or
+// one that is not the STEP file's (brep.length_unit) when step_path is set.
 absl::StatusOr<PipelineResult> RunPipeline(const std::string& input_path,
                                            const PipelineParams& params = {},
                                            const RunContext& ctx = {});

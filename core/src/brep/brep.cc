@@ -4,6 +4,7 @@
 #include "meshseg/brep.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <map>
@@ -37,9 +38,8 @@ constexpr double kCornerMove = 3.0;
 
 absl::Status ValidateParams(const BrepParams& p) {
   if (brep_internal::StepUnitName(p.length_unit).empty()) {
-    return absl::InvalidArgumentError(absl::StrCat(
-        "brep: length_unit \"", p.length_unit,
-        "\" is not one of mm, cm, m, km, in, ft, mi, mil, um, uin"));
+    return absl::InvalidArgumentError(
+        absl::StrCat("brep: length_unit \"", p.length_unit, "\" is not one of ", LengthUnitList()));
   }
   if (p.noise_sigma && !(*p.noise_sigma >= 0.0 && std::isfinite(*p.noise_sigma))) {
     return absl::InvalidArgumentError(
@@ -239,5 +239,14 @@ absl::StatusOr<BrepReport> WriteStep(const Mesh& mesh, std::span<const int> face
     return absl::InternalError(absl::StrCat("brep: OpenCASCADE failed: ", e.GetMessageString()));
   }
 }
+
+std::string CanonicalLengthUnit(std::string_view unit) {
+  std::string lower(unit);
+  if (brep_internal::StepUnitName(lower).empty()) return "";
+  for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return lower;
+}
+
+std::string LengthUnitList() { return brep_internal::StepUnitList(); }
 
 }  // namespace meshseg

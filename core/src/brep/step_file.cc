@@ -70,15 +70,20 @@ std::string StepUnitName(const std::string& unit) {
   return "";
 }
 
+std::string StepUnitList() {
+  std::string list;
+  for (const auto& [name, step] : kUnits) absl::StrAppend(&list, list.empty() ? "" : ", ", name);
+  return list;
+}
+
 absl::Status WriteStepFile(const TopoDS_Shape& shape,
                            const std::function<std::string(const TopoDS_Face&)>& face_name,
                            const std::string& unit, const std::string& product_name,
                            const std::string& path) {
   const std::string step_unit = StepUnitName(unit);
   if (step_unit.empty()) {
-    return absl::InvalidArgumentError(absl::StrCat("brep: length unit \"", unit,
-                                                   "\" is not one of mm, cm, m, km, in, ft, mi, "
-                                                   "mil, um, uin"));
+    return absl::InvalidArgumentError(
+        absl::StrCat("brep: length unit \"", unit, "\" is not one of ", StepUnitList()));
   }
   std::lock_guard<std::mutex> lock(WriterMutex());
   // OpenCASCADE's default messenger prints the transfer statistics to

@@ -17,6 +17,9 @@ namespace meshseg::brep_internal {
 // or "" for an unknown one.
 std::string StepUnitName(const std::string& unit);
 
+// The units StepUnitName knows, as BrepParams names them: "mm, cm, m, ...".
+std::string StepUnitList();
+
 // Writes `shape` to `path` with its coordinates as they are, declared in
 // `unit` (BrepParams::length_unit), each face named by `face_name` (an empty
 // name leaves the face unnamed).

@@ -24,6 +24,10 @@ int64_t PeakBytes(const InputSize& input, const PipelineParams& params) {
                static_cast<double>(std::max<int64_t>(params.remesh.max_faces, 0));
     }
   }
+  if (params.include_mesh) {
+    bytes += static_cast<double>(kBytesPerReturnedFace) *
+             static_cast<double>(input.point_cloud ? input.vertex_count : CostedFaces(input));
+  }
   bytes *= kSafetyMargin;
   constexpr double kMax = static_cast<double>(std::numeric_limits<int64_t>::max());
   return bytes >= kMax ? std::numeric_limits<int64_t>::max()

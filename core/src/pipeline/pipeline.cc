@@ -16,6 +16,7 @@
 #include "pipeline/finite_result.h"
 #include "pipeline/input_labels.h"
 #include "pipeline/memory_model.h"
+#include "pipeline/mesh_geometry.h"
 #include "pipeline/point_labels.h"
 #include "pipeline/refit_regions.h"
 #include "pipeline/remeshed_labels.h"
@@ -38,7 +39,30 @@ absl::Status ValidateParams(const PipelineParams& params) {
     return absl::InvalidArgumentError(absl::StrCat(
         "pipeline: memory_budget_bytes must be >= 0, got ", params.memory_budget_bytes));
   }
+  if (params.length_unit.empty()) return absl::OkStatus();
+  const std::string unit = CanonicalLengthUnit(params.length_unit);
+  if (unit.empty()) {
+    return absl::InvalidArgumentError(absl::StrCat("pipeline: length_unit \"",
+                                                   params.length_unit.substr(0, 64),
+                                                   "\" is not one of ", LengthUnitList()));
+  }
+  // The STEP file declares its unit over unscaled coordinates: any other
+  // unit than the input's would scale the part.
+  if (!params.step_path.empty() && CanonicalLengthUnit(params.brep.length_unit) != unit) {
+    return absl::InvalidArgumentError(absl::StrCat(
+        "pipeline: the STEP file's length unit \"", params.brep.length_unit.substr(0, 64),
+        "\" is not the input's length_unit \"", unit, "\" (coordinates are written unscaled)"));
+  }
   return absl::OkStatus();
+}
+
+// Copies the mesh the result's ids refer to into `result` when params ask
+// for it; `face_of_input` as Mesh::face_of_input (empty: a reconstruction).
+void AttachMesh(const Mesh& mesh, std::span<const int> face_of_input, const PipelineParams& params,
+                PipelineResult* result) {
+  if (params.include_mesh) {
+    result->mesh_geometry = pipeline_internal::GeometryOf(mesh.tri, face_of_input);
+  }
 }
 
 // Returns OK if the job's estimated peak fits params.memory_budget_bytes.
@@ -244,6 +268,7 @@ absl::StatusOr<PipelineResult> RunOnPointCloud(const std::string& input_path,
       ExportStep(reconstruction.mesh, result.face_labels, params, ctx, &result));
   result.point_labels = pipeline_internal::PointLabels(
       reconstruction.mesh.tri, result.face_labels, cloud.points, reconstruction.is_outlier);
+  AttachMesh(reconstruction.mesh, {}, params, &result);
   return result;
 }
 
@@ -273,6 +298,7 @@ absl::StatusOr<PipelineResult> RunOnMesh(const std::string& input_path,
     if (mesh_labels.ok()) {
       result.face_labels = pipeline_internal::InputFaceLabels(mesh.face_of_input, *mesh_labels);
       MESHSEG_RETURN_IF_ERROR(ExportStep(mesh, *mesh_labels, params, ctx, &result));
+      AttachMesh(mesh, mesh.face_of_input, params, &result);
       return result;
     }
     if (!absl::IsFailedPrecondition(mesh_labels.status())) return mesh_labels.status();
@@ -288,6 +314,7 @@ absl::StatusOr<PipelineResult> RunOnMesh(const std::string& input_path,
                                   : SegmentMesh(mesh, params, ctx, &result));
   result.face_labels = pipeline_internal::InputFaceLabels(mesh.face_of_input, mesh_labels);
   MESHSEG_RETURN_IF_ERROR(ExportStep(mesh, mesh_labels, params, ctx, &result));
+  AttachMesh(mesh, mesh.face_of_input, params, &result);
   return result;
 }
 
@@ -345,6 +372,7 @@ absl::StatusOr<PipelineResult> RunPipeline(const std::string& input_path,
   absl::StatusOr<PipelineResult> result = point_cloud ? RunOnPointCloud(input_path, params, ctx)
                                                       : RunOnMesh(input_path, params, ctx);
   if (result.ok()) {
+    result->length_unit = CanonicalLengthUnit(params.length_unit);
     MESHSEG_RETURN_IF_ERROR(ctx.CheckStop("pipeline"));
     MESHSEG_RETURN_IF_ERROR(pipeline_internal::CheckResultFinite(
         std::filesystem::path(input_path).filename().string(), *result));

@@ -38,6 +38,17 @@ TEST(PeakBytes, GrowsByTheMeasuredCostPerFaceAndPoint) {
             static_cast<int64_t>(kSafetyMargin * (kBaseBytes + kBytesPerPoint * 100'000)));
 }
 
+TEST(PeakBytes, PaysForTheReturnedMeshOnlyWhenAskedFor) {
+  const InputSize mesh{.format = FileFormat::kPly, .vertex_count = 500, .face_count = 10'000};
+  PipelineParams with_mesh;
+  with_mesh.include_mesh = true;
+  EXPECT_EQ(PeakBytes(mesh, with_mesh) - PeakBytes(mesh, {}),
+            static_cast<int64_t>(kSafetyMargin * kBytesPerReturnedFace * 10'000));
+  const InputSize cloud{.format = FileFormat::kXyz, .point_cloud = true, .vertex_count = 7'000};
+  EXPECT_EQ(PeakBytes(cloud, with_mesh) - PeakBytes(cloud, {}),
+            static_cast<int64_t>(kSafetyMargin * kBytesPerReturnedFace * 7'000));
+}
+
 TEST(PeakBytes, PaysForDeclaredVerticesAndNeverOverflows) {
   const InputSize vertices{.format = FileFormat::kOff, .vertex_count = 1'000'000, .face_count = 1};
   EXPECT_EQ(CostedFaces(vertices), 2'000'000);

@@ -7,6 +7,7 @@
 #define MESHSEG_PROTO_CONVERT_H_
 
 #include <optional>
+#include <string>
 #include <string_view>
 
 #include "absl/status/statusor.h"
@@ -30,10 +31,12 @@ absl::StatusOr<PipelineParams> FromProto(const v1::SegmentOptions& options);
 
 // Returns the core form of a result message (the inverse of ToProto; the
 // features are not read back): labels, regions, estimates and topology,
-// RegionTopology::patch_count from the loops.
+// RegionTopology::patch_count from the loops, the mesh geometry when present
+// and the length unit.
 // Errors (INVALID_ARGUMENT): a region without surface type or parameters, a
 // quadric without 10 coefficients, ids that are not their index, references
-// to regions, curves or corners that do not exist.
+// to regions, curves or corners that do not exist, mesh geometry whose ids
+// are out of range.
 absl::StatusOr<PipelineResult> FromProto(const v1::SegmentationResult& result);
 
 // Returns the format a wire format hint names: "" = unset (detect),
@@ -53,6 +56,18 @@ absl::StatusOr<RawVolumeLayout> RawLayout(const std::vector<int64_t>& dims,
                                           const std::vector<double>& spacing,
                                           const std::vector<double>& origin,
                                           const std::string& voxel_type, bool big_endian);
+// Returns an upload's length unit (UploadHeader.length_unit) in lowercase,
+// "" for none. Errors (INVALID_ARGUMENT): a unit CanonicalLengthUnit
+// (brep.h) does not know, naming `field`, the value and the units allowed.
+absl::StatusOr<std::string> LengthUnitFromWire(std::string_view field, std::string_view unit);
+
+// Returns the unit a STEP file declares for an upload: `step_unit` when set,
+// else `length_unit`, else BrepParams' default ("mm").
+// Errors (INVALID_ARGUMENT): either unit unknown (as LengthUnitFromWire,
+// fields "step_unit" and "length_unit"); both set to different units (the
+// STEP file's coordinates are written unscaled).
+absl::StatusOr<std::string> StepUnitFromWire(std::string_view step_unit,
+                                             std::string_view length_unit);
 
 }  // namespace meshseg
 
