@@ -1,0 +1,46 @@
+// The exact-facet criterion: when a facet of an exact tessellation belongs
+// to a surface.
+//
+// A CAD exporter tessellates each face of a B-rep with facets whose corners
+// it computes on the face's surface; the facets are chords of the surface,
+// under it by their sag. So a facet f is consistent with a surface S iff
+//  (1) its three corners lie on S within the tolerance tau (the rounding of
+//      the file's numbers, exact_tolerance.h);
+//  (2) its plane is a chord plane of S over it: the angle between f's normal
+//      and S's normal at the foot of f's centroid is at most the angle by
+//      which S's normal turns from there to f's corners (the spread), plus
+//      the angle tau leaves f's own normal (atan(2 tau / h), h the facet's
+//      least height);
+//  (3) its centroid lies under S by no more than a chord plane of that
+//      spread can reach: tau + r tan(spread / 2), r the farthest corner from
+//      the centroid;
+//  (4) the spread is under kMaxSpreadDeg: a facet over which the surface
+//      turns by a right angle approximates nothing of it.
+// On a plane the spread is 0, and (2)-(3) say that f lies in it. A facet of
+// an annular end face whose corners all lie on the rim circle has them on
+// the cylinder too, but its normal is along the axis, at 90 degrees to
+// every normal of the cylinder: (2) keeps it off. A flat face cutting a
+// cylinder along two rulings is a chord plane of it; it passes (1)-(3) and
+// is kept off by (4) when it spans more than a right angle, else only by
+// the competition of explanations in exact_facets.h.
+#ifndef MESHSEG_SRC_SEGMENT_FACET_ON_SURFACE_H_
+#define MESHSEG_SRC_SEGMENT_FACET_ON_SURFACE_H_
+
+#include "meshseg/surface.h"
+#include "segment/facet_mesh.h"
+
+namespace meshseg::segment_internal {
+
+inline constexpr double kMaxSpreadDeg = 45.0;
+
+// True if facet f of `fm` is consistent with `surface` (in fm's frame)
+// within `tau`, as above.
+bool FacetOnSurface(const FacetMesh& fm, int f, const Surface& surface, double tau);
+
+// True if every corner of facet f lies within `tau` of `surface`: test (1)
+// alone, for a quick rejection.
+bool CornersOnSurface(const FacetMesh& fm, int f, const Surface& surface, double tau);
+
+}  // namespace meshseg::segment_internal
+
+#endif  // MESHSEG_SRC_SEGMENT_FACET_ON_SURFACE_H_
