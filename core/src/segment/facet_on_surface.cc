@@ -41,7 +41,9 @@ bool FacetOnSurface(const FacetMesh& fm, int f, const Surface& surface, double t
   }
   if (!(spread < kMaxSpreadDeg * kPi / 180.0)) return false;  // (4)
   const double height = 2.0 * fm.area[f] / longest;
-  const double own = std::atan2(2.0 * tau, height);
+  // Corners at depths differing by up to the facet's sag (and tau each)
+  // tilt its plane by as much over its least height.
+  const double own = std::atan2(2.0 * (tau + std::abs(foot.distance)), height);
   const double tilt = std::min(AngleBetween(n, foot.normal), AngleBetween(-n, foot.normal));
   if (!(tilt <= spread + own)) return false;                           // (2)
   return std::abs(foot.distance) <= tau + reach * std::tan(0.5 * spread);  // (3)

@@ -9,8 +9,9 @@
 //  (2) its plane is a chord plane of S over it: the angle between f's normal
 //      and S's normal at the foot of f's centroid is at most the angle by
 //      which S's normal turns from there to f's corners (the spread), plus
-//      the angle tau leaves f's own normal (atan(2 tau / h), h the facet's
-//      least height);
+//      the tilt that corners at depths differing by up to the facet's sag
+//      (the centroid's distance to S) and tau give its plane over its least
+//      height h: atan(2 (tau + sag) / h);
 //  (3) its centroid lies under S by no more than a chord plane of that
 //      spread can reach: tau + r tan(spread / 2), r the farthest corner from
 //      the centroid;
