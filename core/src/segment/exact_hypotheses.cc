@@ -225,7 +225,7 @@ std::optional<Hypothesis> PlaneAt(const FacetMesh& fm, int f, double tau) {
 }
 
 std::optional<Hypothesis> CurvedAt(const FacetMesh& fm, int f, double tau) {
-  for (const int corners : {kSeedCorners, kNearBorderSeedCorners}) {
+  for (const int corners : kSeedCorners) {
     std::optional<Hypothesis> h = CurvedFit(fm, SeedGroup(fm, f, corners), tau);
     if (!h) continue;
     Grow(fm, tau, &*h);
@@ -252,7 +252,7 @@ bool ExplainedLocally(const FacetMesh& fm, int f, double tau) {
   for (const int g : fm.across[f]) {
     if (g >= 0 && CornersOnSurface(fm, g, plane, tau)) return true;
   }
-  for (const int corners : {kSeedCorners, kNearBorderSeedCorners}) {
+  for (const int corners : kSeedCorners) {
     if (CurvedFit(fm, SeedGroup(fm, f, corners), tau)) return true;
   }
   return false;

@@ -41,13 +41,12 @@ inline constexpr int kSpareCorners = 3;
 std::optional<Hypothesis> PlaneAt(const FacetMesh& fm, int f, double tau);
 
 // The first curved type that fits the facets around f exactly (f and the
-// facets nearest it over edges at less than kSeedCreaseDeg, kSeedCorners
-// distinct corners of them, twice a torus's parameters; then
-// kNearBorderSeedCorners, for a seed beside its face's border), grown;
-// nullopt if none holds evidence.
+// facets nearest it over edges at less than kSeedCreaseDeg, with
+// kSeedCorners distinct corners, twice a torus's parameters; then fewer,
+// down to a cylinder's least evidence, for a seed beside its face's border
+// or on a small face), grown; nullopt if none holds evidence.
 std::optional<Hypothesis> CurvedAt(const FacetMesh& fm, int f, double tau);
-inline constexpr int kSeedCorners = 16;
-inline constexpr int kNearBorderSeedCorners = 10;
+inline constexpr int kSeedCorners[] = {16, 12, 8};
 inline constexpr double kSeedCreaseDeg = 60.0;
 
 // True if facet f has a neighbour across an edge that lies in its plane

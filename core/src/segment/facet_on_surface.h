@@ -16,14 +16,16 @@
 //      spread can reach: tau + r tan(spread / 2), r the farthest corner from
 //      the centroid;
 //  (4) the spread is under kMaxSpreadDeg: a facet over which the surface
-//      turns by a right angle approximates nothing of it.
+//      turns by a half turn or more approximates nothing of it. (CAD fans on
+//      small holes do span 100-180 degrees: abc_00007974_5.obj's r 0.5
+//      cylinders.)
 // On a plane the spread is 0, and (2)-(3) say that f lies in it. A facet of
 // an annular end face whose corners all lie on the rim circle has them on
 // the cylinder too, but its normal is along the axis, at 90 degrees to
 // every normal of the cylinder: (2) keeps it off. A flat face cutting a
 // cylinder along two rulings is a chord plane of it; it passes (1)-(3) and
-// is kept off by (4) when it spans more than a right angle, else only by
-// the competition of explanations in exact_facets.h.
+// is kept off by (4) when it spans a half turn, else only by the
+// competition of explanations in exact_facets.h.
 #ifndef MESHSEG_SRC_SEGMENT_FACET_ON_SURFACE_H_
 #define MESHSEG_SRC_SEGMENT_FACET_ON_SURFACE_H_
 
@@ -32,7 +34,7 @@
 
 namespace meshseg::segment_internal {
 
-inline constexpr double kMaxSpreadDeg = 45.0;
+inline constexpr double kMaxSpreadDeg = 90.0;
 
 // True if facet f of `fm` is consistent with `surface` (in fm's frame)
 // within `tau`, as above.
