@@ -1,5 +1,6 @@
 // meshseg segment INPUT -o RESULT.json [--colored-ply OUT.ply]
 //   [--distance-tolerance X] [--angle-tolerance DEG] [--format FMT] [--server HOST:PORT]
+//   [--path exact|scan] [--exact-tolerance X]
 // In-process by default; with --server the same result comes from the service.
 #include <cstdio>
 
@@ -72,7 +73,7 @@ absl::Status RunSegment(const Argv& argv) {
       const Args args,
       Args::Parse(argv,
                   {"-o", "--colored-ply", "--distance-tolerance", "--angle-tolerance", "--format",
-                   "--server"},
+                   "--server", "--path", "--exact-tolerance"},
                   {}, 1));
   const std::string& input = args.positional(0);
   const std::optional<std::string> out = args.Value("-o");
@@ -84,6 +85,18 @@ absl::Status RunSegment(const Argv& argv) {
   MESHSEG_ASSIGN_OR_RETURN(const std::optional<double> angle, args.Double("--angle-tolerance"));
   if (dist) options.segment.set_distance_tolerance(*dist);
   if (angle) options.segment.set_angle_tolerance_deg(*angle);
+  if (const std::optional<std::string> path = args.Value("--path")) {
+    if (*path == "exact") {
+      options.segment.set_segmentation_path(v1::SEGMENTATION_PATH_EXACT_FACETS);
+    } else if (*path == "scan") {
+      options.segment.set_segmentation_path(v1::SEGMENTATION_PATH_SCAN);
+    } else {
+      return absl::InvalidArgumentError(
+          absl::StrCat("--path must be exact or scan, got \"", *path, "\""));
+    }
+  }
+  MESHSEG_ASSIGN_OR_RETURN(const std::optional<double> exact_tol, args.Double("--exact-tolerance"));
+  if (exact_tol) options.segment.set_exact_tolerance(*exact_tol);
   // Same validation on both paths (the server repeats it).
   MESHSEG_RETURN_IF_ERROR(FromProto(options.segment).status());
   MESHSEG_ASSIGN_OR_RETURN(const std::optional<FileFormat> format,

@@ -19,7 +19,7 @@ namespace {
 
 // A CAD export's vertices lie on their surfaces to rounding: a face whose
 // corners miss its region's refitted surface by more than this, in l_avg of
-// the input (the exact-facet path's kExactTolerance), may belong next door.
+// the input, may belong next door.
 constexpr double kExactCorner = 1e-4;
 
 absl::Status ValidateParams(const PipelineParams& params) {
@@ -28,6 +28,21 @@ absl::Status ValidateParams(const PipelineParams& params) {
         absl::StrCat("pipeline: max_elements must be positive, got ", params.max_elements));
   }
   return absl::OkStatus();
+}
+
+// Each region of `result` a surface of its own (the remeshed path does not
+// join them).
+void OwnSurfaces(PipelineResult* result) {
+  result->surfaces.clear();
+  for (Region& r : result->regions) {
+    r.surface_id = r.id;
+    result->surfaces.push_back({.id = r.id,
+                                .type = r.type,
+                                .surface = r.surface,
+                                .regions = {r.id},
+                                .rms_distance = r.rms_distance,
+                                .max_distance = r.max_distance});
+  }
 }
 
 bool IsPointCloudFormat(FileFormat format) {
@@ -54,12 +69,33 @@ absl::StatusOr<std::vector<int>> SegmentMesh(const Mesh& mesh, const PipelinePar
   result->mesh = MeshStatistics(mesh);
   MESHSEG_ASSIGN_OR_RETURN(CurvatureField curvature,
                            EstimateCurvature(mesh, params.curvature, ctx));
-  MESHSEG_ASSIGN_OR_RETURN(Segmentation segmentation,
-                           Segment(mesh, curvature, params.segment, ctx));
+  SegmentParams segment = params.segment;
+  segment.exact = ExactMode::kNever;  // the caller has decided
+  MESHSEG_ASSIGN_OR_RETURN(Segmentation segmentation, Segment(mesh, curvature, segment, ctx));
   MESHSEG_RETURN_IF_ERROR(
       DescribeRegions(mesh, segmentation.face_labels, segmentation.regions, params, ctx, result));
   result->vertex_labels = std::move(segmentation.vertex_labels);
   result->regions = std::move(segmentation.regions);
+  result->surfaces = std::move(segmentation.surfaces);
+  result->estimates = segmentation.estimates;
+  return std::move(segmentation.face_labels);
+}
+
+// An exact tessellation (meshseg/segment.h: SegmentExactFacets), facet by
+// facet on the input itself: no curvature, no remesh.
+absl::StatusOr<std::vector<int>> SegmentExact(const Mesh& mesh, const Exactness& exactness,
+                                              const PipelineParams& params, const RunContext& ctx,
+                                              PipelineResult* result) {
+  result->mesh = MeshStatistics(mesh);
+  SegmentParams segment = params.segment;
+  segment.exact_tolerance = exactness.tolerance;
+  MESHSEG_ASSIGN_OR_RETURN(Segmentation segmentation, SegmentExactFacets(mesh, segment, ctx));
+  segmentation.estimates.exact_share = exactness.share;
+  MESHSEG_RETURN_IF_ERROR(
+      DescribeRegions(mesh, segmentation.face_labels, segmentation.regions, params, ctx, result));
+  result->vertex_labels = std::move(segmentation.vertex_labels);
+  result->regions = std::move(segmentation.regions);
+  result->surfaces = std::move(segmentation.surfaces);
   result->estimates = segmentation.estimates;
   return std::move(segmentation.face_labels);
 }
@@ -76,6 +112,7 @@ absl::StatusOr<std::vector<int>> SegmentRemeshed(const Mesh& mesh, double edge_l
   MESHSEG_ASSIGN_OR_RETURN(CurvatureField curvature,
                            EstimateCurvature(fine, params.curvature, ctx));
   SegmentParams segment = params.segment;
+  segment.exact = ExactMode::kNever;  // the remesh's vertices lie on chords, under the surface
   segment.on_facets = true;  // the remesh's vertices lie on the input's facets
   MESHSEG_ASSIGN_OR_RETURN(Segmentation segmentation, Segment(fine, curvature, segment, ctx));
   const double tolerance = segmentation.estimates.distance_tolerance;
@@ -91,9 +128,11 @@ absl::StatusOr<std::vector<int>> SegmentRemeshed(const Mesh& mesh, double edge_l
     pipeline_internal::CompactRegions(&labels, &result->vertex_labels, &result->regions);
     pipeline_internal::RefitOnInputVertices(mesh.tri, labels, tolerance, &result->regions);
   }
+  OwnSurfaces(result);
   MESHSEG_RETURN_IF_ERROR(DescribeRegions(mesh, labels, result->regions, params, ctx, result));
   result->mesh = MeshStatistics(mesh);
   result->estimates = segmentation.estimates;
+  result->estimates.path = SegmentationPath::kRemeshed;
   result->remesh_edge_length = edge_length;
   result->remesh_face_count = static_cast<int64_t>(fine.tri.n_faces());
   result->remesh_fine_edge_length = remesh.fine_edge_length;
@@ -126,20 +165,19 @@ absl::StatusOr<PipelineResult> RunOnMesh(const std::string& input_path,
       ReadMesh(input_path, {.format = params.format, .max_elements = params.max_elements}));
   ctx.Progress("read", 1.0);
   PipelineResult result;
-  const TessellationShape shape = Assess(mesh, params.remesh);
-  if (params.remesh.mode == RemeshMode::kAuto && shape.too_fine_to_remesh) {
-    // A remesh at the face budget would lose what the export resolves (thin
-    // walls, small holes): the input is segmented facet by facet, if exact.
-    PipelineParams exact = params;
-    exact.segment.exact_facets = true;
-    absl::StatusOr<std::vector<int>> mesh_labels = SegmentMesh(mesh, exact, ctx, &result);
-    if (mesh_labels.ok()) {
-      result.face_labels = pipeline_internal::InputFaceLabels(mesh.face_of_input, *mesh_labels);
+  // An exact tessellation is segmented facet by facet, as read; the share
+  // of exact facets is reported either way (estimates.exact_share).
+  Exactness exactness;
+  if (params.segment.exact != ExactMode::kNever && params.remesh.mode != RemeshMode::kAlways) {
+    exactness = EstimateExactness(mesh, params.segment.exact_tolerance);
+    if (exactness.exact || params.segment.exact == ExactMode::kAlways) {
+      MESHSEG_ASSIGN_OR_RETURN(const std::vector<int> labels,
+                               SegmentExact(mesh, exactness, params, ctx, &result));
+      result.face_labels = pipeline_internal::InputFaceLabels(mesh.face_of_input, labels);
       return result;
     }
-    if (!absl::IsFailedPrecondition(mesh_labels.status())) return mesh_labels.status();
-    result = PipelineResult{};
   }
+  const TessellationShape shape = Assess(mesh, params.remesh);
   const bool remesh = params.remesh.mode == RemeshMode::kAlways ||
                       (params.remesh.mode == RemeshMode::kAuto && shape.cad_like);
   const double edge_length = params.remesh.target_edge_length > 0.0
@@ -149,6 +187,8 @@ absl::StatusOr<PipelineResult> RunOnMesh(const std::string& input_path,
                            remesh ? SegmentRemeshed(mesh, edge_length, params, ctx, &result)
                                   : SegmentMesh(mesh, params, ctx, &result));
   result.face_labels = pipeline_internal::InputFaceLabels(mesh.face_of_input, mesh_labels);
+  result.estimates.exact_tolerance = exactness.tolerance;
+  result.estimates.exact_share = exactness.share;
   return result;
 }
 
