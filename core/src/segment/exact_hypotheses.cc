@@ -145,17 +145,20 @@ void Grow(const FacetMesh& fm, double tau, Hypothesis* h) {
   }
 }
 
-// f and the facets around it, smoothest first (the next is the one across
-// the flattest edge from the group: along a narrow band rather than over
-// into the face beside it), over edges at less than kSeedCreaseDeg, until
-// they hold `corners` distinct corners (or kMaxSeedFacets facets).
-std::vector<int> SeedGroup(const FacetMesh& fm, int f, int corners) {
+// f and the facets around it over edges at less than kSeedCreaseDeg, until
+// they hold `corners` distinct corners (or kMaxSeedFacets facets): in
+// rings (breadth first: a compact patch), or smoothest first (the next is
+// the one across the flattest edge from the group: along a narrow band
+// rather than over into the face beside it, but along the rulings of a
+// finely tessellated cylinder, where a ring is better).
+std::vector<int> SeedGroup(const FacetMesh& fm, int f, int corners, bool smoothest_first) {
   const double crease = kSeedCreaseDeg * kPi / 180.0;
   std::vector<int> group;
   std::vector<int> seen;
-  using Entry = std::pair<double, int>;  // (dihedral, facet)
+  using Entry = std::pair<double, int>;  // (order key, facet)
   std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> next;
   next.emplace(0.0, f);
+  double order = 0.0;
   while (!next.empty()) {
     const int g = next.top().second;
     next.pop();
@@ -169,11 +172,21 @@ std::vector<int> SeedGroup(const FacetMesh& fm, int f, int corners) {
       if (h < 0 || fm.normal[h].isZero()) continue;
       const double angle = Dihedral(fm, g, h);
       if (angle < crease && std::find(group.begin(), group.end(), h) == group.end()) {
-        next.emplace(angle, h);
+        next.emplace(smoothest_first ? angle : (order += 1.0), h);
       }
     }
   }
   return group;
+}
+
+// The seed groups tried, in order: (corners, smoothest first).
+std::vector<std::pair<int, bool>> SeedShapes() {
+  std::vector<std::pair<int, bool>> shapes;
+  for (const int corners : kSeedCorners) {
+    shapes.emplace_back(corners, false);
+    shapes.emplace_back(corners, true);
+  }
+  return shapes;
 }
 
 // The first curved type that fits `group` exactly with every facet of it on
@@ -225,8 +238,8 @@ std::optional<Hypothesis> PlaneAt(const FacetMesh& fm, int f, double tau) {
 }
 
 std::optional<Hypothesis> CurvedAt(const FacetMesh& fm, int f, double tau) {
-  for (const int corners : kSeedCorners) {
-    std::optional<Hypothesis> h = CurvedFit(fm, SeedGroup(fm, f, corners), tau);
+  for (const auto [corners, smoothest_first] : SeedShapes()) {
+    std::optional<Hypothesis> h = CurvedFit(fm, SeedGroup(fm, f, corners, smoothest_first), tau);
     if (!h) continue;
     Grow(fm, tau, &*h);
     // A narrow seed can leave a simpler type undecided (a cone of a small
@@ -252,8 +265,18 @@ bool ExplainedLocally(const FacetMesh& fm, int f, double tau) {
   for (const int g : fm.across[f]) {
     if (g >= 0 && CornersOnSurface(fm, g, plane, tau)) return true;
   }
-  for (const int corners : kSeedCorners) {
-    if (CurvedFit(fm, SeedGroup(fm, f, corners), tau)) return true;
+  for (const auto [corners, smoothest_first] : SeedShapes()) {
+    if (CurvedFit(fm, SeedGroup(fm, f, corners, smoothest_first), tau)) return true;
+  }
+  // A facet at its face's border: the facets around a neighbour may fit
+  // where its own do not.
+  for (const int g : fm.across[f]) {
+    if (g < 0 || fm.normal[g].isZero()) continue;
+    for (const auto [corners, smoothest_first] : SeedShapes()) {
+      const std::optional<Hypothesis> h =
+          CurvedFit(fm, SeedGroup(fm, g, corners, smoothest_first), tau);
+      if (h && FacetOnSurface(fm, f, h->surface, tau)) return true;
+    }
   }
   return false;
 }

@@ -41,8 +41,9 @@ inline constexpr int kSpareCorners = 3;
 std::optional<Hypothesis> PlaneAt(const FacetMesh& fm, int f, double tau);
 
 // The first curved type that fits the facets around f exactly (f and the
-// facets nearest it over edges at less than kSeedCreaseDeg, with
-// kSeedCorners distinct corners, twice a torus's parameters; then fewer,
+// facets nearest it over edges at less than kSeedCreaseDeg, in rings or
+// smoothest first, with kSeedCorners distinct corners, twice a torus's
+// parameters; then fewer,
 // down to a cylinder's least evidence, for a seed beside its face's border
 // or on a small face), grown; nullopt if none holds evidence.
 std::optional<Hypothesis> CurvedAt(const FacetMesh& fm, int f, double tau);
@@ -50,8 +51,11 @@ inline constexpr int kSeedCorners[] = {16, 12, 8};
 inline constexpr double kSeedCreaseDeg = 60.0;
 
 // True if facet f has a neighbour across an edge that lies in its plane
-// (within tau) or the facets around it fit a curved type exactly: the local
-// test behind the share of exact facets (exactness.h). No growing.
+// (within tau), or the facets around it or around a neighbour fit a curved
+// type exactly with f on it: the local test behind the share of exact
+// facets (meshseg/segment.h: EstimateExactness). A sampled voxel surface
+// (marching cubes) fails it at the facets that cut across the edges
+// between its surfaces; a CAD tessellation has none. No growing.
 bool ExplainedLocally(const FacetMesh& fm, int f, double tau);
 
 }  // namespace meshseg::segment_internal

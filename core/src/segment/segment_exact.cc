@@ -21,7 +21,7 @@ using segment_internal::ExactRegion;
 using segment_internal::FacetMesh;
 
 // Facets sampled (every k-th) for the share of exact facets.
-constexpr int kExactnessSample = 1500;
+constexpr int kExactnessSample = 1000;
 
 // The given tolerance, else the one from the rounding of `mesh`'s own
 // coordinates (as read: fm's are moved, and no longer round).
