@@ -163,7 +163,8 @@ absl::StatusOr<Segmentation> Segment(const Mesh& mesh, const CurvatureField& cur
 Exactness EstimateExactness(const Mesh& mesh, std::optional<double> tolerance = std::nullopt);
 
 // Returns the facet-by-facet segmentation of `mesh` (the exact path above;
-// curvature is not needed). estimates.path is kExactFacets.
+// curvature is not needed). estimates.path is kExactFacets; exact_share is
+// left 0 (EstimateExactness measures it).
 // Errors: INVALID_ARGUMENT for bad params or a mesh without faces;
 // CANCELLED when ctx requests a stop.
 absl::StatusOr<Segmentation> SegmentExactFacets(const Mesh& mesh, const SegmentParams& params = {},

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 #include <optional>
 #include <queue>
 #include <tuple>
@@ -33,7 +34,25 @@ double Dihedral(const FacetMesh& fm, int f, int g) {
   return std::atan2(fm.normal[f].cross(fm.normal[g]).norm(), fm.normal[f].dot(fm.normal[g]));
 }
 
-// Every facet's hypotheses: seeds in facet order, skipping facets a
+// Facets in the order they seed: the flattest among their neighbours
+// first (the inside of a face before its border, where the facets around a
+// seed reach into the next face), then by index.
+std::vector<int> SeedOrder(const FacetMesh& fm) {
+  const int n = fm.facet_count();
+  std::vector<float> sharpest(n, 0.0f);
+  for (int f = 0; f < n; ++f) {
+    for (const int g : fm.across[f]) {
+      if (g >= 0) sharpest[f] = std::max(sharpest[f], static_cast<float>(Dihedral(fm, f, g)));
+    }
+  }
+  std::vector<int> order(n);
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(),
+                   [&](int a, int b) { return sharpest[a] < sharpest[b]; });
+  return order;
+}
+
+// Every facet's hypotheses: seeds in SeedOrder, skipping facets a
 // hypothesis already holds; each seed gives its plane, and, unless that
 // plane holds all its smooth neighbours, the first curved type that fits
 // around it.
@@ -43,10 +62,12 @@ absl::StatusOr<std::vector<Hypothesis>> Hypotheses(const FacetMesh& fm, double t
   const double crease = kSeedCreaseDeg * kPi / 180.0;
   std::vector<char> covered(n, 0);
   std::vector<Hypothesis> out;
-  for (int f = 0; f < n; ++f) {
-    if (f % kStopCheckStride == 0) {
+  const std::vector<int> order = SeedOrder(fm);
+  for (int k = 0; k < n; ++k) {
+    const int f = order[k];
+    if (k % kStopCheckStride == 0) {
       MESHSEG_RETURN_IF_ERROR(ctx.CheckStop("segment"));
-      ctx.Progress("segment", 0.8 * f / n);
+      ctx.Progress("segment", 0.8 * k / n);
     }
     if (covered[f]) continue;
     covered[f] = 1;

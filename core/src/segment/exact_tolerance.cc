@@ -11,7 +11,7 @@ namespace {
 
 // At most this many coordinates are read for the representation (every
 // k-th vertex): the format is one for the whole file.
-constexpr std::size_t kMaxSampled = 30000;
+constexpr std::size_t kMaxSampled = 3000;
 constexpr int kMaxDecimalDigits = 15;
 
 // The fewest significant decimal digits that print `x` so it reads back

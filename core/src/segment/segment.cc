@@ -75,9 +75,15 @@ absl::StatusOr<Segmentation> Segment(const Mesh& mesh, const CurvatureField& cur
         "\" has ", mesh.tri.n_vertices()));
   }
   MESHSEG_RETURN_IF_ERROR(ctx.CheckStop("segment"));
-  if (params.exact == ExactMode::kAlways ||
-      (params.exact == ExactMode::kAuto && EstimateExactness(mesh, params.exact_tolerance).exact)) {
-    return SegmentExactFacets(mesh, params, ctx);
+  if (params.exact != ExactMode::kNever) {
+    const Exactness exactness = params.exact == ExactMode::kAuto
+                                    ? EstimateExactness(mesh, params.exact_tolerance)
+                                    : Exactness{};
+    if (params.exact == ExactMode::kAlways || exactness.exact) {
+      MESHSEG_ASSIGN_OR_RETURN(Segmentation seg, SegmentExactFacets(mesh, params, ctx));
+      seg.estimates.exact_share = exactness.share;
+      return seg;
+    }
   }
   const SegmentEstimates estimates = EstimateNoise(curvature, MeanEdgeLength(mesh.tri), params);
   SegmentContext c = MakeSegmentContext(mesh.tri, curvature, estimates, params.alpha, ctx);

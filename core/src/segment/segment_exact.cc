@@ -144,7 +144,6 @@ absl::StatusOr<Segmentation> SegmentExactFacets(const Mesh& mesh, const SegmentP
   MESHSEG_RETURN_IF_ERROR(ctx.CheckStop("segment"));
   const FacetMesh fm = segment_internal::BuildFacetMesh(mesh.tri);
   const double tau = Tolerance(mesh.tri, fm, params.exact_tolerance);
-  const Exactness exactness = Measure(fm, tau);
   MESHSEG_ASSIGN_OR_RETURN(const segment_internal::ExactFacets exact,
                            segment_internal::SegmentFacets(fm, tau, ctx));
   Segmentation seg = Assemble(mesh, fm, exact, tau);
@@ -153,8 +152,7 @@ absl::StatusOr<Segmentation> SegmentExactFacets(const Mesh& mesh, const SegmentP
   seg.estimates.distance_tolerance = tau;
   seg.estimates.angle_tolerance_deg = exact.angular_step * 180.0 / 3.14159265358979323846;
   seg.estimates.path = SegmentationPath::kExactFacets;
-  seg.estimates.exact_tolerance = tau;
-  seg.estimates.exact_share = exactness.share;
+  seg.estimates.exact_tolerance = tau;  // exact_share: measured by the caller
   ctx.Progress("segment", 1.0);
   return seg;
 }
