@@ -55,8 +55,33 @@ double CoordinateResolution(const std::vector<Eigen::Vector3d>& positions) {
   return resolution;
 }
 
-double ExactTolerance(const std::vector<Eigen::Vector3d>& positions, double diagonal) {
-  return std::max(kRoundingSpan * CoordinateResolution(positions), kModellerAccuracy * diagonal);
+double PlanarityFloor(const FacetMesh& fm) {
+  constexpr int kMaxFacets = 20000;
+  const int n = fm.facet_count();
+  const int stride = std::max(1, n / kMaxFacets);
+  const double loosest = kLoosestExact * fm.diagonal;
+  std::vector<double> d;
+  for (int f = 0; f < n; f += stride) {
+    if (fm.normal[f].isZero()) continue;
+    const Eigen::Vector3d& p = fm.points[fm.corners[f][0]];
+    for (const int g : fm.across[f]) {
+      if (g < 0) continue;
+      for (const int v : fm.corners[g]) {
+        const double dist = std::abs(fm.normal[f].dot(fm.points[v] - p));
+        if (dist < loosest) d.push_back(dist);
+      }
+    }
+  }
+  if (static_cast<int>(d.size()) < kMinFloorSamples) return 0.0;
+  const auto k = d.begin() + static_cast<std::ptrdiff_t>(kFloorQuantile * (d.size() - 1));
+  std::nth_element(d.begin(), k, d.end());
+  return *k;
+}
+
+double ExactTolerance(const std::vector<Eigen::Vector3d>& positions, double diagonal,
+                      double floor) {
+  return std::max({kRoundingSpan * CoordinateResolution(positions), kModellerAccuracy * diagonal,
+                   kFloorSpan * floor});
 }
 
 }  // namespace meshseg::segment_internal

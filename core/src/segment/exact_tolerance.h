@@ -14,6 +14,8 @@
 
 #include <Eigen/Core>
 
+#include "segment/facet_mesh.h"
+
 namespace meshseg::segment_internal {
 
 // The spacing of the representable values at the largest coordinate,
@@ -25,15 +27,39 @@ double CoordinateResolution(const std::vector<Eigen::Vector3d>& positions);
 // of its three coordinates rounds by at most one resolution, and the
 // surface, fitted to such vertices, is off by as much again.
 inline constexpr double kRoundingSpan = 8.0;
-// No tolerance below this fraction of the bounding-box diagonal: a
-// modeller's own accuracy (OpenCASCADE's Precision::Confusion is 1e-7 mm on
-// parts of 10-1000 mm; gmsh's tessellations of STEP files hold to 1e-9 of
-// the diagonal, SOURCES.md) rather than the file's.
-inline constexpr double kModellerAccuracy = 1e-8;
+// No tolerance below this fraction of the bounding-box diagonal: float32,
+// the STL format's own numbers, rounds at 6e-8 of a coordinate, and a file
+// may carry that rounding under more digits (ABC's STL in metres, scaled to
+// millimetres and printed with 9 digits); a modeller's own accuracy
+// (OpenCASCADE's Precision::Confusion, 1e-7 mm) is finer still on parts of
+// 1 mm and more. The surfaces of a part are never this close without being
+// one.
+inline constexpr double kModellerAccuracy = 1e-7;
+
+// A file can be rounder than its numbers say: a float32 STL in metres
+// scaled to millimetres and printed with 9 digits carries float32's
+// rounding, not the 9 digits'. The rounding the corners do carry shows where
+// facets meet in a plane: the distance of a neighbour's far corner from a
+// facet's plane is the rounding there (and a sag or a crease elsewhere, far
+// larger). The floor is the kFloorQuantile of those distances under
+// kLoosestExact of the diagonal (the loosest rounding a file of exact
+// vertices can have), taken once kMinFloorSamples of them are found.
+inline constexpr double kLoosestExact = 1e-5;
+inline constexpr double kFloorQuantile = 0.9;
+inline constexpr int kMinFloorSamples = 20;
+// The floor is a corner's rounding; a fit through such corners is off by as
+// much again, and a corner from the fit by twice that.
+inline constexpr double kFloorSpan = 4.0;
+
+// Returns the rounding floor of `fm` (model units; 0 when too few facets
+// meet in a plane).
+double PlanarityFloor(const FacetMesh& fm);
 
 // Returns the tolerance tau, model units, for `positions` (absolute
-// coordinates, as read) of a part with bounding-box `diagonal`.
-double ExactTolerance(const std::vector<Eigen::Vector3d>& positions, double diagonal);
+// coordinates, as read) of a part with bounding-box `diagonal` and rounding
+// floor `floor`: the largest of the three bounds above.
+double ExactTolerance(const std::vector<Eigen::Vector3d>& positions, double diagonal,
+                      double floor);
 
 }  // namespace meshseg::segment_internal
 

@@ -30,7 +30,8 @@ double Tolerance(const TriMesh& mesh, const FacetMesh& fm, std::optional<double>
   std::vector<Eigen::Vector3d> positions;
   positions.reserve(mesh.n_vertices());
   for (const auto v : mesh.vertices()) positions.push_back(ToEigen(mesh.point(v)));
-  return segment_internal::ExactTolerance(positions, fm.diagonal);
+  return segment_internal::ExactTolerance(positions, fm.diagonal,
+                                          segment_internal::PlanarityFloor(fm));
 }
 
 Exactness Measure(const FacetMesh& fm, double tolerance) {
