@@ -1,9 +1,11 @@
-#include "segment/exact_facets.h"
+#include "meshseg/segment.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <numbers>
 #include <string>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -12,9 +14,8 @@
 
 #include "meshseg/curvature.h"
 #include "meshseg/generate.h"
-#include "segment/estimate_noise.h"
 
-namespace meshseg::segment_internal {
+namespace meshseg {
 namespace {
 
 constexpr double kLength = 20.0;
@@ -89,78 +90,62 @@ std::vector<Eigen::Vector2d> RoundedSquare(double side, double radius, int steps
   return profile;
 }
 
-struct ExactRun {
-  CurvatureField field;
-  SegmentEstimates estimates;
-  FaceRegions regions;
-};
+// The exact-facet segmentation of `mesh`, regions by type.
+Segmentation SegmentExact(const Mesh& mesh) {
+  absl::StatusOr<Segmentation> seg = SegmentExactFacets(mesh);
+  EXPECT_TRUE(seg.ok()) << seg.status();
+  return seg.ok() ? *std::move(seg) : Segmentation{};
+}
 
-ExactRun SegmentExact(const Mesh& mesh) {
-  ExactRun run;
-  absl::StatusOr<CurvatureField> field = EstimateCurvature(mesh);
-  EXPECT_TRUE(field.ok()) << field.status();
-  run.field = *std::move(field);
-  run.estimates = EstimateNoise(run.field, MeanEdgeLength(mesh.tri), {});
-  const RunContext ctx;
-  const SegmentContext c = MakeSegmentContext(mesh.tri, run.field, run.estimates, 0.9, ctx);
-  absl::StatusOr<FaceRegions> regions = SegmentExactFacets(c, mesh.tri);
-  EXPECT_TRUE(regions.ok()) << regions.status();
-  run.regions = *std::move(regions);
-  return run;
+int FacesOf(const Segmentation& seg, int region) {
+  return static_cast<int>(std::count(seg.face_labels.begin(), seg.face_labels.end(), region));
 }
 
 // A half round in 8 facets on a flat bottom: one exact cylinder (all 16 side
 // triangles of the arc) and three planes. The bottom's corners lie on the
-// cylinder too; its normal, at 90° to the cylinder's there, keeps it out.
+// cylinder too; its normal, at 90 degrees to the cylinder's there, keeps it
+// out (facet_on_surface.h, test 2).
 TEST(SegmentExactFacets, FindsTheCylinderOfACoarseHalfRound) {
-  const Mesh mesh = ArcPrism(2.0, 9, 180.0);
-  const ExactRun run = SegmentExact(mesh);
-  ASSERT_EQ(run.regions.regions.size(), 4u);
+  const Segmentation seg = SegmentExact(ArcPrism(2.0, 9, 180.0));
+  ASSERT_EQ(seg.regions.size(), 4u);
   int cylinders = 0;
-  for (std::size_t r = 0; r < run.regions.regions.size(); ++r) {
-    const RegionState& region = run.regions.regions[r];
+  for (const Region& region : seg.regions) {
     if (const auto* cyl = std::get_if<Cylinder>(&region.surface)) {
       ++cylinders;
       EXPECT_EQ(region.type, SurfaceType::kCylinder);
-      EXPECT_NEAR(cyl->radius, 2.0, 1e-6);
-      EXPECT_NEAR(std::abs(cyl->axis_direction.x()), 1.0, 1e-9);
-      EXPECT_EQ(std::count(run.regions.face_labels.begin(), run.regions.face_labels.end(),
-                           static_cast<int>(r)),
-                16);
+      EXPECT_NEAR(cyl->radius, 2.0, 1e-9);
+      EXPECT_NEAR(std::abs(cyl->axis_direction.x()), 1.0, 1e-12);
+      EXPECT_EQ(FacesOf(seg, region.id), 16);
     } else {
       EXPECT_EQ(region.type, SurfaceType::kPlane);
     }
   }
   EXPECT_EQ(cylinders, 1);
+  EXPECT_EQ(seg.estimates.path, SegmentationPath::kExactFacets);
 }
 
 // A half round in 18 facets of 10 degrees, one of them with a vertex on its
-// cap edge 0.0076 under the arc (tray_bottom_1002.stl's slot ends and holes
-// are so): one cylinder still holds all 37 side triangles.
+// cap edge 0.0076 under the arc (a CAD tessellator adds such vertices to
+// meet the next face): one cylinder still holds all 37 side triangles.
 TEST(SegmentExactFacets, AFacetWithAVertexOnItsChordStaysOnTheCylinder) {
-  const Mesh mesh = ArcPrism(2.0, 19, 180.0, /*chord_facet=*/8);
-  const ExactRun run = SegmentExact(mesh);
+  const Segmentation seg = SegmentExact(ArcPrism(2.0, 19, 180.0, /*chord_facet=*/8));
   int cylinders = 0;
-  for (std::size_t r = 0; r < run.regions.regions.size(); ++r) {
-    const RegionState& region = run.regions.regions[r];
+  for (const Region& region : seg.regions) {
     if (region.type != SurfaceType::kCylinder) continue;
     ++cylinders;
-    EXPECT_NEAR(std::get<Cylinder>(region.surface).radius, 2.0, 1e-6);
-    EXPECT_EQ(std::count(run.regions.face_labels.begin(), run.regions.face_labels.end(),
-                         static_cast<int>(r)),
-              37);
+    EXPECT_NEAR(std::get<Cylinder>(region.surface).radius, 2.0, 1e-9);
+    EXPECT_EQ(FacesOf(seg, region.id), 37);
   }
   EXPECT_EQ(cylinders, 1);
-  EXPECT_EQ(run.regions.regions.size(), 4u);  // the cylinder, two caps, the flat bottom
+  EXPECT_EQ(seg.regions.size(), 4u);  // the cylinder, two caps, the flat bottom
 }
 
 // A flat side between the last facets of two equal rounds is an isosceles
-// trapezoid in section, and so lies on a circle exactly: tray_bottom_1002.stl
-// read in micrometres got a slot side as a cylinder of radius 46 mm with its
-// rounds' end facets, when the fit through them happened to converge. Each
-// round keeps its facets, and the sides are planes. (Side, round radius,
-// facets per round: all four gave such a cylinder before seeds stepping
-// evenly around their axis went first.)
+// trapezoid in section, and so lies on a circle exactly: the corners of the
+// side and of the rounds' last facets fit one large cylinder. Each round
+// explains more corners and takes its facets first; the side is then
+// explained as well by a plane as by what is left of that cylinder, and the
+// plane is simpler (exact_facets.h).
 struct RoundedSquareCase {
   const char* name;
   double side;
@@ -174,17 +159,14 @@ class SegmentExactRoundedSquare : public ::testing::TestWithParam<RoundedSquareC
 
 TEST_P(SegmentExactRoundedSquare, FlatSidesBetweenRoundsStayPlanes) {
   const RoundedSquareCase& square = GetParam();
-  const Mesh mesh = ProfilePrism(RoundedSquare(square.side, square.radius, square.steps));
-  const ExactRun run = SegmentExact(mesh);
+  const Segmentation seg =
+      SegmentExact(ProfilePrism(RoundedSquare(square.side, square.radius, square.steps)));
   int cylinders = 0, planes = 0;
-  for (std::size_t r = 0; r < run.regions.regions.size(); ++r) {
-    const RegionState& region = run.regions.regions[r];
-    const auto faces = std::count(run.regions.face_labels.begin(), run.regions.face_labels.end(),
-                                  static_cast<int>(r));
+  for (const Region& region : seg.regions) {
     if (region.type == SurfaceType::kCylinder) {
       ++cylinders;
-      EXPECT_NEAR(std::get<Cylinder>(region.surface).radius, square.radius, 1e-6);
-      EXPECT_EQ(faces, 2 * square.steps);
+      EXPECT_NEAR(std::get<Cylinder>(region.surface).radius, square.radius, 1e-9);
+      EXPECT_EQ(FacesOf(seg, region.id), 2 * square.steps);
     } else {
       ++planes;
       EXPECT_EQ(region.type, SurfaceType::kPlane);
@@ -192,6 +174,8 @@ TEST_P(SegmentExactRoundedSquare, FlatSidesBetweenRoundsStayPlanes) {
   }
   EXPECT_EQ(cylinders, 4);
   EXPECT_EQ(planes, 6);  // four sides, two caps
+  // The four rounds are four surfaces; opposite sides are not coplanar.
+  EXPECT_EQ(seg.surfaces.size(), 10u);
 }
 
 INSTANTIATE_TEST_SUITE_P(Squares, SegmentExactRoundedSquare,
@@ -203,42 +187,98 @@ INSTANTIATE_TEST_SUITE_P(Squares, SegmentExactRoundedSquare,
 
 // A pentagonal prism's sides meet at 72 degrees: seven planes, no cylinder.
 TEST(SegmentExactFacets, KeepsThePlanesOfAPentagonalPrism) {
-  const Mesh mesh = ArcPrism(2.0, 5, 360.0);
-  const ExactRun run = SegmentExact(mesh);
-  ASSERT_EQ(run.regions.regions.size(), 7u);
-  for (const RegionState& region : run.regions.regions) {
-    EXPECT_EQ(region.type, SurfaceType::kPlane);
+  const Segmentation seg = SegmentExact(ArcPrism(2.0, 5, 360.0));
+  ASSERT_EQ(seg.regions.size(), 7u);
+  for (const Region& region : seg.regions) EXPECT_EQ(region.type, SurfaceType::kPlane);
+}
+
+// A round bar whose end discs are fans from one rim vertex: every corner of
+// every disc facet lies on the cylinder (the rim circle), and the disc
+// facets are chords of it in section. Their normal is along the axis, at 90
+// degrees to every normal of the cylinder: the discs stay planes.
+TEST(SegmentExactFacets, DiscFacetsWithAllCornersOnTheRimStayPlanes) {
+  constexpr int kCount = 24;
+  std::vector<Eigen::Vector3d> v;
+  for (const double x : {0.0, kLength}) {
+    for (int i = 0; i < kCount; ++i) {
+      const double a = 2.0 * std::numbers::pi * i / kCount;
+      v.emplace_back(x, 3.0 * std::cos(a), 3.0 * std::sin(a));
+    }
+  }
+  std::vector<std::array<int, 3>> f;
+  for (int i = 0; i < kCount; ++i) {
+    const int j = (i + 1) % kCount;
+    f.push_back({i, j, kCount + j});
+    f.push_back({i, kCount + j, kCount + i});
+  }
+  for (int i = 1; i + 1 < kCount; ++i) {
+    f.push_back({0, i + 1, i});
+    f.push_back({kCount, kCount + i, kCount + i + 1});
+  }
+  absl::StatusOr<Mesh> mesh = BuildMesh(std::move(v), f, "bar");
+  ASSERT_TRUE(mesh.ok()) << mesh.status();
+  const Segmentation seg = SegmentExact(*mesh);
+  ASSERT_EQ(seg.regions.size(), 3u);
+  for (const Region& region : seg.regions) {
+    if (region.type == SurfaceType::kCylinder) {
+      EXPECT_EQ(FacesOf(seg, region.id), 2 * kCount);
+      EXPECT_NEAR(std::get<Cylinder>(region.surface).radius, 3.0, 1e-9);
+    } else {
+      EXPECT_EQ(region.type, SurfaceType::kPlane);
+      EXPECT_EQ(FacesOf(seg, region.id), kCount - 2);
+    }
   }
 }
 
-// Asked to segment facet by facet (SegmentParams::exact_facets), a noisy
-// mesh is refused by name: nearly every face is a plane of its own.
-TEST(SegmentExactFacets, RefusesAMeshThatIsNotExact) {
+// A noisy generated part is no exact tessellation: no facet lies exactly in
+// a neighbour's plane or on a surface fitted around it.
+TEST(EstimateExactness, ANoisyMeshIsNotExact) {
   absl::StatusOr<GeneratedPart> part =
       GeneratePart("small_block", {.voxel_size = 1.0, .noise = 0.05});
   ASSERT_TRUE(part.ok()) << part.status();
-  absl::StatusOr<CurvatureField> field = EstimateCurvature(part->mesh);
-  ASSERT_TRUE(field.ok()) << field.status();
-  SegmentParams params;
-  params.exact_facets = true;
-  const absl::StatusOr<Segmentation> seg = Segment(part->mesh, *field, params);
-  ASSERT_EQ(seg.status().code(), absl::StatusCode::kFailedPrecondition) << seg.status();
-  EXPECT_NE(seg.status().message().find("\"" + part->mesh.name + "\" is not an exact tessellation"),
-            std::string::npos)
-      << seg.status();
+  const Exactness e = EstimateExactness(part->mesh);
+  EXPECT_FALSE(e.exact);
+  EXPECT_LT(e.share, 0.05);
 }
 
-// Dense meshes keep the curvature-seeded path: a noise-free generated part
-// is exact, but few of its vertices are sharp. (abc_00007974_5.obj, the
-// case this path is for, is in tests/core/pipeline/real_files_test.cc.)
-TEST(IsCoarseExact, OnlyForCoarseExactMeshes) {
+// A noise-free voxel surface has its vertices on the surfaces, but facets
+// cut across every edge between them: under the share of a CAD
+// tessellation, so it stays on the scan path.
+TEST(EstimateExactness, ANoiseFreeVoxelSurfaceIsNotATessellation) {
   absl::StatusOr<GeneratedPart> part = GeneratePart("small_block", {.noise = 0.0});
   ASSERT_TRUE(part.ok()) << part.status();
-  absl::StatusOr<CurvatureField> field = EstimateCurvature(part->mesh);
-  ASSERT_TRUE(field.ok()) << field.status();
-  const SegmentEstimates estimates = EstimateNoise(*field, MeanEdgeLength(part->mesh.tri), {});
-  EXPECT_FALSE(IsCoarseExact(*field, estimates));
+  const Exactness e = EstimateExactness(part->mesh);
+  EXPECT_FALSE(e.exact) << e.share;
+}
+
+// The same prism in micrometres, metres and far from the origin: the
+// tolerance follows the coordinates, the segmentation does not change.
+TEST(SegmentExactFacets, UnitsAndOffsetsGiveTheSameRegions) {
+  const Mesh mesh = ProfilePrism(RoundedSquare(7.5, 2.54, 9));
+  const Segmentation base = SegmentExact(mesh);
+  for (const auto& [scale, shift] : {std::pair{1000.0, Eigen::Vector3d(0, 0, 0)},
+                                     std::pair{0.001, Eigen::Vector3d(0, 0, 0)},
+                                     std::pair{1.0, Eigen::Vector3d(2e4, -1.5e4, 3e4)}}) {
+    std::vector<Eigen::Vector3d> v;
+    for (const auto vh : mesh.tri.vertices()) v.push_back(scale * ToEigen(mesh.tri.point(vh)) + shift);
+    std::vector<std::array<int, 3>> f;
+    for (const auto fh : mesh.tri.faces()) {
+      std::array<int, 3> t{};
+      int k = 0;
+      for (const auto vh : mesh.tri.fv_range(fh)) t[k++] = vh.idx();
+      f.push_back(t);
+    }
+    absl::StatusOr<Mesh> moved = BuildMesh(std::move(v), f, "moved");
+    ASSERT_TRUE(moved.ok()) << moved.status();
+    const Segmentation seg = SegmentExact(*moved);
+    EXPECT_EQ(seg.face_labels, base.face_labels) << "scale " << scale;
+    for (const Region& r : seg.regions) {
+      if (const auto* c = std::get_if<Cylinder>(&r.surface)) {
+        EXPECT_NEAR(c->radius, 2.54 * scale, 1e-7 * scale) << "scale " << scale;
+      }
+    }
+  }
 }
 
 }  // namespace
-}  // namespace meshseg::segment_internal
+}  // namespace meshseg
