@@ -1,7 +1,10 @@
 #include "segment/facet_on_surface.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <limits>
+#include <variant>
 
 #include <Eigen/Geometry>
 
@@ -14,6 +17,24 @@ constexpr double kPi = 3.14159265358979323846;
 
 double AngleBetween(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
   return std::atan2(a.cross(b).norm(), a.dot(b));
+}
+
+// The largest principal curvature of `surface` at the corners `p` (a cone:
+// cos(half angle) over the least distance from its axis); 0 for a plane or
+// a quadric.
+double LargestCurvature(const Surface& surface, const std::array<Eigen::Vector3d, 3>& p) {
+  if (const auto* c = std::get_if<Cylinder>(&surface)) return 1.0 / c->radius;
+  if (const auto* s = std::get_if<Sphere>(&surface)) return 1.0 / s->radius;
+  if (const auto* t = std::get_if<Torus>(&surface)) return 1.0 / t->minor_radius;
+  if (const auto* c = std::get_if<Cone>(&surface)) {
+    double rho = std::numeric_limits<double>::infinity();
+    for (const Eigen::Vector3d& x : p) {
+      const Eigen::Vector3d d = x - c->apex;
+      rho = std::min(rho, (d - d.dot(c->axis_direction) * c->axis_direction).norm());
+    }
+    return rho > 0.0 ? std::cos(c->half_angle) / rho : std::numeric_limits<double>::infinity();
+  }
+  return 0.0;
 }
 
 }  // namespace
@@ -45,8 +66,20 @@ bool FacetOnSurface(const FacetMesh& fm, int f, const Surface& surface, double t
   // tilt its plane by as much over its least height.
   const double own = std::atan2(2.0 * (tau + std::abs(foot.distance)), height);
   const double tilt = std::min(AngleBetween(n, foot.normal), AngleBetween(-n, foot.normal));
-  if (!(tilt <= spread + own)) return false;                           // (2)
-  return std::abs(foot.distance) <= tau + reach * std::tan(0.5 * spread);  // (3)
+  if (!(tilt <= spread + own)) return false;  // (2)
+  if (std::holds_alternative<Quadric>(surface)) return true;
+  // (3): a point within `reach` of corners on a surface of curvature at most
+  // kappa lies under it by at most the sag of a sphere of radius 1/kappa.
+  const std::array<Eigen::Vector3d, 3> corners = {fm.points[fm.corners[f][0]],
+                                                  fm.points[fm.corners[f][1]],
+                                                  fm.points[fm.corners[f][2]]};
+  const double kappa = LargestCurvature(surface, corners);
+  double sag = 0.0;
+  if (kappa > 0.0) {
+    const double r = 1.0 / kappa;
+    sag = reach >= r ? r : r - std::sqrt(r * r - reach * reach);
+  }
+  return std::abs(foot.distance) <= tau + sag;
 }
 
 }  // namespace meshseg::segment_internal

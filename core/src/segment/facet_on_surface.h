@@ -12,9 +12,9 @@
 //      the tilt that corners at depths differing by up to the facet's sag
 //      (the centroid's distance to S) and tau give its plane over its least
 //      height h: atan(2 (tau + sag) / h);
-//  (3) its centroid lies under S by no more than a chord plane of that
-//      spread can reach: tau + r tan(spread / 2), r the farthest corner from
-//      the centroid;
+//  (3) its centroid lies under S by no more than a point within r of
+//      corners on S can: tau + the sag of a sphere of S's largest curvature
+//      over r (r the farthest corner from the centroid);
 //  (4) the spread is under kMaxSpreadDeg: a facet over which the surface
 //      turns by a half turn or more approximates nothing of it. (CAD fans on
 //      small holes do span 100-180 degrees: abc_00007974_5.obj's r 0.5
@@ -22,7 +22,9 @@
 // On a plane the spread is 0, and (2)-(3) say that f lies in it. A facet of
 // an annular end face whose corners all lie on the rim circle has them on
 // the cylinder too, but its normal is along the axis, at 90 degrees to
-// every normal of the cylinder: (2) keeps it off. A flat face cutting a
+// every normal of the cylinder: (2) keeps it off, and (3) where a sliver of
+// a fan tilts its allowance in (2) up, its centroid lying deep inside the
+// rim, far under the cylinder's sag over the facet. A flat face cutting a
 // cylinder along two rulings is a chord plane of it; it passes (1)-(3) and
 // is kept off by (4) when it spans a half turn, else only by the
 // competition of explanations in exact_facets.h.

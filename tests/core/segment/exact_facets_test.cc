@@ -218,7 +218,11 @@ TEST(SegmentExactFacets, DiscFacetsWithAllCornersOnTheRimStayPlanes) {
   absl::StatusOr<Mesh> mesh = BuildMesh(std::move(v), f, "bar");
   ASSERT_TRUE(mesh.ok()) << mesh.status();
   const Segmentation seg = SegmentExact(*mesh);
-  ASSERT_EQ(seg.regions.size(), 3u);
+  std::string regions;
+  for (const Region& r : seg.regions) {
+    regions += std::string(" ") + SurfaceTypeName(r.type) + ":" + std::to_string(r.face_count);
+  }
+  ASSERT_EQ(seg.regions.size(), 3u) << regions;
   for (const Region& region : seg.regions) {
     if (region.type == SurfaceType::kCylinder) {
       EXPECT_EQ(FacesOf(seg, region.id), 2 * kCount);
