@@ -2,7 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <array>
+#include <map>
 #include <numeric>
+#include <utility>
+#include <variant>
 
 #include "meshseg/fit.h"
 #include "segment/exact_hypotheses.h"
@@ -32,6 +36,38 @@ bool AllOn(const FacetMesh& fm, const std::vector<int>& corners, const Surface& 
   return true;
 }
 
+// A coarse key of a surface's parameters (direction with its sign made
+// canonical, offset or radius, at kKeyStep of the diagonal or radians):
+// surfaces that can coincide share it, or lie one step apart, so pairs are
+// only tried within a key and its neighbours.
+constexpr double kKeyStep = 1e-3;
+
+std::array<long long, 3> KeyOf(const Surface& s, double diagonal) {
+  auto q = [&](double x, double unit) { return std::llround(x / (kKeyStep * unit)); };
+  auto canonical = [](Eigen::Vector3d d) {
+    const int k = d.cwiseAbs().maxCoeff() == std::abs(d.x()) ? 0 : (d.cwiseAbs().maxCoeff() == std::abs(d.y()) ? 1 : 2);
+    return d[k] < 0.0 ? Eigen::Vector3d(-d) : d;
+  };
+  if (const auto* p = std::get_if<Plane>(&s)) {
+    const Eigen::Vector3d n = canonical(p->normal);
+    return {q(n.x(), 1.0), q(n.y(), 1.0), q(n.dot(p->point), diagonal)};
+  }
+  if (const auto* c = std::get_if<Cylinder>(&s)) {
+    const Eigen::Vector3d a = canonical(c->axis_direction);
+    return {q(a.x(), 1.0), q(a.y(), 1.0), q(c->radius, diagonal)};
+  }
+  if (const auto* c = std::get_if<Cone>(&s)) {
+    return {q(c->apex.x(), diagonal), q(c->apex.y(), diagonal), q(c->half_angle, 1.0)};
+  }
+  if (const auto* c = std::get_if<Sphere>(&s)) {
+    return {q(c->center.x(), diagonal), q(c->center.y(), diagonal), q(c->radius, diagonal)};
+  }
+  if (const auto* c = std::get_if<Torus>(&s)) {
+    return {q(c->center.x(), diagonal), q(c->major_radius, diagonal), q(c->minor_radius, diagonal)};
+  }
+  return {0, 0, 0};
+}
+
 int Find(std::vector<int>& parent, int x) {
   while (parent[x] != x) x = parent[x] = parent[parent[x]];
   return x;
@@ -47,19 +83,38 @@ std::vector<SharedSurface> GroupSharedSurfaces(const FacetMesh& fm,
   for (int r = 0; r < n; ++r) corners[r] = CornersOf(fm, regions[r].facets);
   std::vector<int> parent(n);
   std::iota(parent.begin(), parent.end(), 0);
-  for (int a = 0; a < n; ++a) {
-    if (regions[a].type == SurfaceType::kFreeform) continue;
-    for (int b = 0; b < a; ++b) {
-      if (regions[b].type != regions[a].type || Find(parent, a) == Find(parent, b)) continue;
-      const Surface& sa = regions[a].surface;
-      const Surface& sb = regions[b].surface;
-      if (!AllOn(fm, corners[b], sa, tau, kQuickCorners) ||
-          !AllOn(fm, corners[a], sb, tau, kQuickCorners) ||
-          !AllOn(fm, corners[b], sa, tau, kMaxCheckedCorners) ||
-          !AllOn(fm, corners[a], sb, tau, kMaxCheckedCorners)) {
-        continue;
+  std::map<std::pair<int, std::array<long long, 3>>, std::vector<int>> by_key;
+  for (int r = 0; r < n; ++r) {
+    if (regions[r].type == SurfaceType::kFreeform) continue;
+    by_key[{static_cast<int>(regions[r].type), KeyOf(regions[r].surface, fm.diagonal)}].push_back(r);
+  }
+  auto try_join = [&](int a, int b) {
+    if (regions[b].type != regions[a].type || Find(parent, a) == Find(parent, b)) return;
+    const Surface& sa = regions[a].surface;
+    const Surface& sb = regions[b].surface;
+    if (!AllOn(fm, corners[b], sa, tau, kQuickCorners) ||
+        !AllOn(fm, corners[a], sb, tau, kQuickCorners) ||
+        !AllOn(fm, corners[b], sa, tau, kMaxCheckedCorners) ||
+        !AllOn(fm, corners[a], sb, tau, kMaxCheckedCorners)) {
+      return;
+    }
+    parent[Find(parent, a)] = Find(parent, b);
+  };
+  for (const auto& [key, members] : by_key) {
+    for (int d0 = -1; d0 <= 1; ++d0) {
+      for (int d1 = -1; d1 <= 1; ++d1) {
+        for (int d2 = -1; d2 <= 1; ++d2) {
+          const auto near = by_key.find(
+              {key.first, {key.second[0] + d0, key.second[1] + d1, key.second[2] + d2}});
+          if (near == by_key.end() || near->first < key) continue;
+          for (const int a : members) {
+            for (const int b : near->second) {
+              if (near->first == key && b <= a) continue;
+              try_join(a, b);
+            }
+          }
+        }
       }
-      parent[Find(parent, a)] = Find(parent, b);
     }
   }
   std::vector<std::vector<int>> groups(n);
