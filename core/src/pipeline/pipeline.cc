@@ -62,6 +62,20 @@ absl::Status DescribeRegions(const Mesh& mesh, std::span<const int> labels,
   return absl::OkStatus();
 }
 
+// Boundaries and features of `segmentation` (of `mesh`) into `result`, with
+// its regions, surfaces and estimates; returns its labels per mesh face.
+absl::StatusOr<std::vector<int>> TakeSegmentation(const Mesh& mesh, Segmentation segmentation,
+                                                  const PipelineParams& params,
+                                                  const RunContext& ctx, PipelineResult* result) {
+  MESHSEG_RETURN_IF_ERROR(
+      DescribeRegions(mesh, segmentation.face_labels, segmentation.regions, params, ctx, result));
+  result->vertex_labels = std::move(segmentation.vertex_labels);
+  result->regions = std::move(segmentation.regions);
+  result->surfaces = std::move(segmentation.surfaces);
+  result->estimates = segmentation.estimates;
+  return std::move(segmentation.face_labels);
+}
+
 // Segments `mesh` and fills everything of `result` but the labels; returns
 // the labels per mesh face.
 absl::StatusOr<std::vector<int>> SegmentMesh(const Mesh& mesh, const PipelineParams& params,
@@ -72,13 +86,7 @@ absl::StatusOr<std::vector<int>> SegmentMesh(const Mesh& mesh, const PipelinePar
   SegmentParams segment = params.segment;
   segment.exact = ExactMode::kNever;  // the caller has decided
   MESHSEG_ASSIGN_OR_RETURN(Segmentation segmentation, Segment(mesh, curvature, segment, ctx));
-  MESHSEG_RETURN_IF_ERROR(
-      DescribeRegions(mesh, segmentation.face_labels, segmentation.regions, params, ctx, result));
-  result->vertex_labels = std::move(segmentation.vertex_labels);
-  result->regions = std::move(segmentation.regions);
-  result->surfaces = std::move(segmentation.surfaces);
-  result->estimates = segmentation.estimates;
-  return std::move(segmentation.face_labels);
+  return TakeSegmentation(mesh, std::move(segmentation), params, ctx, result);
 }
 
 // An exact tessellation (meshseg/segment.h: SegmentExactFacets), facet by
@@ -91,13 +99,7 @@ absl::StatusOr<std::vector<int>> SegmentExact(const Mesh& mesh, const Exactness&
   segment.exact_tolerance = exactness.tolerance;
   MESHSEG_ASSIGN_OR_RETURN(Segmentation segmentation, SegmentExactFacets(mesh, segment, ctx));
   segmentation.estimates.exact_share = exactness.share;
-  MESHSEG_RETURN_IF_ERROR(
-      DescribeRegions(mesh, segmentation.face_labels, segmentation.regions, params, ctx, result));
-  result->vertex_labels = std::move(segmentation.vertex_labels);
-  result->regions = std::move(segmentation.regions);
-  result->surfaces = std::move(segmentation.surfaces);
-  result->estimates = segmentation.estimates;
-  return std::move(segmentation.face_labels);
+  return TakeSegmentation(mesh, std::move(segmentation), params, ctx, result);
 }
 
 // A CAD tessellation (meshseg/remesh.h): segments an isotropic remesh, then

@@ -1,5 +1,6 @@
 #include "segment/exact_facets.h"
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 #include <numeric>
@@ -7,8 +8,6 @@
 #include <queue>
 #include <tuple>
 #include <utility>
-
-#include <Eigen/Geometry>
 
 #include "meshseg/fit.h"
 #include "meshseg/status_macros.h"
@@ -20,37 +19,19 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 constexpr int kStopCheckStride = 1024;
 
-int Simplicity(SurfaceType type) {
-  switch (type) {
-  case SurfaceType::kPlane:
-    return 0;
-  case SurfaceType::kCylinder:
-    return 1;
-  case SurfaceType::kCone:
-    return 2;
-  case SurfaceType::kSphere:
-    return 3;
-  default:
-    return 4;
-  }
-}
-
-double Dihedral(const FacetMesh &fm, int f, int g) {
-  return std::atan2(fm.normal[f].cross(fm.normal[g]).norm(),
-                    fm.normal[f].dot(fm.normal[g]));
+double Dihedral(const FacetMesh& fm, int f, int g) {
+  return std::atan2(fm.normal[f].cross(fm.normal[g]).norm(), fm.normal[f].dot(fm.normal[g]));
 }
 
 // Facets in the order they seed: the flattest among their neighbours
 // first (the inside of a face before its border, where the facets around a
 // seed reach into the next face), then by index.
-std::vector<int> SeedOrder(const FacetMesh &fm) {
+std::vector<int> SeedOrder(const FacetMesh& fm) {
   const int n = fm.facet_count();
   std::vector<float> sharpest(n, 0.0f);
   for (int f = 0; f < n; ++f) {
     for (const int g : fm.across[f]) {
-      if (g >= 0)
-        sharpest[f] =
-            std::max(sharpest[f], static_cast<float>(Dihedral(fm, f, g)));
+      if (g >= 0) sharpest[f] = std::max(sharpest[f], static_cast<float>(Dihedral(fm, f, g)));
     }
   }
   std::vector<int> order(n);
@@ -64,8 +45,8 @@ std::vector<int> SeedOrder(const FacetMesh &fm) {
 // hypothesis already holds; each seed gives its plane, and, unless that
 // plane holds all its smooth neighbours, the first curved type that fits
 // around it.
-absl::StatusOr<std::vector<Hypothesis>>
-Hypotheses(const FacetMesh &fm, double tau, const RunContext &ctx) {
+absl::StatusOr<std::vector<Hypothesis>> Hypotheses(const FacetMesh& fm, double tau,
+                                                   const RunContext& ctx) {
   const int n = fm.facet_count();
   const double crease = kSeedCreaseDeg * kPi / 180.0;
   std::vector<char> covered(n, 0);
@@ -77,28 +58,22 @@ Hypotheses(const FacetMesh &fm, double tau, const RunContext &ctx) {
       MESHSEG_RETURN_IF_ERROR(ctx.CheckStop("segment"));
       ctx.Progress("segment", 0.8 * k / n);
     }
-    if (covered[f])
-      continue;
+    if (covered[f]) continue;
     covered[f] = 1;
     std::optional<Hypothesis> plane = PlaneAt(fm, f, tau);
     bool flat_around = plane.has_value();
     if (plane) {
       for (const int g : fm.across[f]) {
-        if (g < 0 || fm.normal[g].isZero() || Dihedral(fm, f, g) >= crease)
-          continue;
+        if (g < 0 || fm.normal[g].isZero() || Dihedral(fm, f, g) >= crease) continue;
         flat_around =
-            flat_around &&
-            std::binary_search(plane->support.begin(), plane->support.end(), g);
+            flat_around && std::binary_search(plane->support.begin(), plane->support.end(), g);
       }
-      for (const int g : plane->support)
-        covered[g] = 1;
+      for (const int g : plane->support) covered[g] = 1;
       out.push_back(*std::move(plane));
     }
-    if (flat_around)
-      continue;
+    if (flat_around) continue;
     if (std::optional<Hypothesis> curved = CurvedAt(fm, f, tau)) {
-      for (const int g : curved->support)
-        covered[g] = 1;
+      for (const int g : curved->support) covered[g] = 1;
       out.push_back(*std::move(curved));
     }
   }
@@ -106,26 +81,21 @@ Hypotheses(const FacetMesh &fm, double tau, const RunContext &ctx) {
 }
 
 // The edge-connected pieces of `facets` (sorted).
-std::vector<std::vector<int>> Pieces(const FacetMesh &fm,
-                                     const std::vector<int> &facets) {
+std::vector<std::vector<int>> Pieces(const FacetMesh& fm, const std::vector<int>& facets) {
   std::vector<std::vector<int>> pieces;
   std::vector<char> seen(facets.size(), 0);
   auto index = [&](int g) {
     const auto it = std::lower_bound(facets.begin(), facets.end(), g);
-    return it != facets.end() && *it == g
-               ? static_cast<int>(it - facets.begin())
-               : -1;
+    return it != facets.end() && *it == g ? static_cast<int>(it - facets.begin()) : -1;
   };
   for (std::size_t i = 0; i < facets.size(); ++i) {
-    if (seen[i])
-      continue;
+    if (seen[i]) continue;
     seen[i] = 1;
     std::vector<int> piece = {facets[i]};
     for (std::size_t k = 0; k < piece.size(); ++k) {
       for (const int g : fm.across[piece[k]]) {
         const int j = g < 0 ? -1 : index(g);
-        if (j < 0 || seen[j])
-          continue;
+        if (j < 0 || seen[j]) continue;
         seen[j] = 1;
         piece.push_back(g);
       }
@@ -138,21 +108,18 @@ std::vector<std::vector<int>> Pieces(const FacetMesh &fm,
 
 // The lazy greedy cover (exact_facets.h): returns the owner region of each
 // facet (-1 = none) and appends the regions.
-std::vector<int> Claim(const FacetMesh &fm,
-                       const std::vector<Hypothesis> &hypotheses,
-                       std::vector<ExactRegion> *regions) {
+std::vector<int> Claim(const FacetMesh& fm, const std::vector<Hypothesis>& hypotheses,
+                       std::vector<ExactRegion>* regions) {
   std::vector<int> owner(fm.facet_count(), -1);
   std::vector<int> stamp(fm.points.size(), -1);
   int stamp_id = 0;
-  auto free_corners = [&](const Hypothesis &h) {
+  auto free_corners = [&](const Hypothesis& h) {
     ++stamp_id;
     int count = 0;
     for (const int f : h.support) {
-      if (owner[f] >= 0)
-        continue;
+      if (owner[f] >= 0) continue;
       for (const int v : fm.corners[f]) {
-        if (stamp[v] != stamp_id)
-          stamp[v] = stamp_id, ++count;
+        if (stamp[v] != stamp_id) stamp[v] = stamp_id, ++count;
       }
     }
     return count;
@@ -167,26 +134,21 @@ std::vector<int> Claim(const FacetMesh &fm,
   while (!queue.empty()) {
     const auto [key, simplicity, minus_index] = queue.top();
     queue.pop();
-    const Hypothesis &h = hypotheses[-minus_index];
+    const Hypothesis& h = hypotheses[-minus_index];
     const int now = free_corners(h);
     if (now < key) {
-      if (now > 0)
-        queue.emplace(now, simplicity, minus_index);
+      if (now > 0) queue.emplace(now, simplicity, minus_index);
       continue;
     }
     std::vector<int> free;
     for (const int f : h.support) {
-      if (owner[f] < 0)
-        free.push_back(f);
+      if (owner[f] < 0) free.push_back(f);
     }
-    for (std::vector<int> &piece : Pieces(fm, free)) {
-      if (!HoldsEvidence(fm, h.type, piece))
-        continue;
+    for (std::vector<int>& piece : Pieces(fm, free)) {
+      if (!HoldsEvidence(fm, h.type, piece)) continue;
       const int id = static_cast<int>(regions->size());
-      for (const int f : piece)
-        owner[f] = id;
-      regions->push_back(
-          {.type = h.type, .surface = h.surface, .facets = std::move(piece)});
+      for (const int f : piece) owner[f] = id;
+      regions->push_back({.type = h.type, .surface = h.surface, .facets = std::move(piece)});
     }
   }
   return owner;
@@ -194,16 +156,14 @@ std::vector<int> Claim(const FacetMesh &fm,
 
 // The largest dihedral angle between edge neighbours inside one curved
 // region: the tessellation's angular step.
-double AngularStep(const FacetMesh &fm, const std::vector<int> &owner,
-                   const std::vector<ExactRegion> &regions) {
+double AngularStep(const FacetMesh& fm, const std::vector<int>& owner,
+                   const std::vector<ExactRegion>& regions) {
   double step = 0.0;
-  for (const ExactRegion &r : regions) {
-    if (r.type == SurfaceType::kPlane)
-      continue;
+  for (const ExactRegion& r : regions) {
+    if (r.type == SurfaceType::kPlane) continue;
     for (const int f : r.facets) {
       for (const int g : fm.across[f]) {
-        if (g >= 0 && owner[g] == owner[f])
-          step = std::max(step, Dihedral(fm, f, g));
+        if (g >= 0 && owner[g] == owner[f]) step = std::max(step, Dihedral(fm, f, g));
       }
     }
   }
@@ -212,12 +172,11 @@ double AngularStep(const FacetMesh &fm, const std::vector<int> &owner,
 
 // Facets no hypothesis took: pieces over edges no sharper than `step`; a
 // piece of one facet is a plane, a larger one FREEFORM.
-void FreeformRegions(const FacetMesh &fm, double step, std::vector<int> *owner,
-                     std::vector<ExactRegion> *regions) {
+void FreeformRegions(const FacetMesh& fm, double step, std::vector<int>* owner,
+                     std::vector<ExactRegion>* regions) {
   const int n = fm.facet_count();
   for (int f = 0; f < n; ++f) {
-    if ((*owner)[f] >= 0 || fm.normal[f].isZero())
-      continue;
+    if ((*owner)[f] >= 0 || fm.normal[f].isZero()) continue;
     const int id = static_cast<int>(regions->size());
     std::vector<int> piece = {f};
     (*owner)[f] = id;
@@ -232,9 +191,8 @@ void FreeformRegions(const FacetMesh &fm, double step, std::vector<int> *owner,
       }
     }
     std::sort(piece.begin(), piece.end());
-    ExactRegion region{.type = SurfaceType::kPlane,
-                       .surface = Plane{fm.Centroid(f), fm.normal[f]},
-                       .facets = {}};
+    ExactRegion region{
+        .type = SurfaceType::kPlane, .surface = Plane{fm.Centroid(f), fm.normal[f]}, .facets = {}};
     if (piece.size() > 1) {
       region.type = SurfaceType::kFreeform;
       std::vector<Eigen::Vector3d> points, normals;
@@ -242,8 +200,7 @@ void FreeformRegions(const FacetMesh &fm, double step, std::vector<int> *owner,
         points.push_back(fm.Centroid(g));
         normals.push_back(fm.normal[g]);
       }
-      const FitResult quadric =
-          FitQuadric({.points = points, .normals = normals, .weights = {}});
+      const FitResult quadric = FitQuadric({.points = points, .normals = normals, .weights = {}});
       region.surface = quadric.ok() ? quadric.surface : Surface{Quadric{}};
     }
     region.facets = std::move(piece);
@@ -251,8 +208,7 @@ void FreeformRegions(const FacetMesh &fm, double step, std::vector<int> *owner,
   }
   // A degenerate facet joins the region of a neighbour.
   for (int f = 0; f < n; ++f) {
-    if ((*owner)[f] >= 0)
-      continue;
+    if ((*owner)[f] >= 0) continue;
     for (const int g : fm.across[f]) {
       if (g >= 0 && (*owner)[g] >= 0) {
         (*owner)[f] = (*owner)[g];
@@ -262,26 +218,23 @@ void FreeformRegions(const FacetMesh &fm, double step, std::vector<int> *owner,
     }
     if ((*owner)[f] < 0) {
       (*owner)[f] = static_cast<int>(regions->size());
-      regions->push_back(ExactRegion{
-          .type = SurfaceType::kPlane, .surface = Plane{}, .facets = {f}});
+      regions->push_back(
+          ExactRegion{.type = SurfaceType::kPlane, .surface = Plane{}, .facets = {f}});
     }
   }
 }
 
-} // namespace
+}  // namespace
 
-absl::StatusOr<ExactFacets> SegmentFacets(const FacetMesh &fm, double tau,
-                                          const RunContext &ctx) {
-  MESHSEG_ASSIGN_OR_RETURN(const std::vector<Hypothesis> hypotheses,
-                           Hypotheses(fm, tau, ctx));
+absl::StatusOr<ExactFacets> SegmentFacets(const FacetMesh& fm, double tau, const RunContext& ctx) {
+  MESHSEG_ASSIGN_OR_RETURN(const std::vector<Hypothesis> hypotheses, Hypotheses(fm, tau, ctx));
   ExactFacets out;
   std::vector<int> owner = Claim(fm, hypotheses, &out.regions);
   MESHSEG_RETURN_IF_ERROR(ctx.CheckStop("segment"));
   out.angular_step = AngularStep(fm, owner, out.regions);
   // Each analytic region refitted on all of its corners.
-  for (ExactRegion &r : out.regions) {
-    if (const std::optional<Surface> refit =
-            FitExactly(fm, r.type, r.facets, tau)) {
+  for (ExactRegion& r : out.regions) {
+    if (const std::optional<Surface> refit = FitExactly(fm, r.type, r.facets, tau)) {
       r.surface = *refit;
     }
   }
@@ -290,4 +243,4 @@ absl::StatusOr<ExactFacets> SegmentFacets(const FacetMesh &fm, double tau,
   return out;
 }
 
-} // namespace meshseg::segment_internal
+}  // namespace meshseg::segment_internal

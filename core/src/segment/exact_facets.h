@@ -33,15 +33,15 @@ namespace meshseg::segment_internal {
 
 struct ExactRegion {
   SurfaceType type = SurfaceType::kPlane;
-  Surface surface; // in the FacetMesh's frame; a FREEFORM region: a quadric for
-                   // display
+  Surface surface;  // in the FacetMesh's frame; a FREEFORM region: a quadric for
+                    // display
   std::vector<int> facets;
 };
 
 struct ExactFacets {
-  std::vector<int> face_labels; // one per facet, into `regions`
+  std::vector<int> face_labels;  // one per facet, into `regions`
   std::vector<ExactRegion> regions;
-  double angular_step = 0.0; // radians; the freeform smoothness bound used
+  double angular_step = 0.0;  // radians; the freeform smoothness bound used
 };
 
 // Without curved regions, the angular step is taken as OpenCASCADE's default
@@ -50,9 +50,8 @@ inline constexpr double kDefaultAngularStep = 0.5;
 
 // Segments `fm` with tolerance `tau` as above.
 // Errors: CANCELLED on stop.
-absl::StatusOr<ExactFacets> SegmentFacets(const FacetMesh &fm, double tau,
-                                          const RunContext &ctx);
+absl::StatusOr<ExactFacets> SegmentFacets(const FacetMesh& fm, double tau, const RunContext& ctx);
 
-} // namespace meshseg::segment_internal
+}  // namespace meshseg::segment_internal
 
-#endif // MESHSEG_SRC_SEGMENT_EXACT_FACETS_H_
+#endif  // MESHSEG_SRC_SEGMENT_EXACT_FACETS_H_

@@ -1,13 +1,12 @@
 #include "segment/exact_hypotheses.h"
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 #include <functional>
 #include <queue>
 #include <unordered_map>
 #include <utility>
-
-#include <Eigen/Geometry>
 
 #include "meshseg/fit.h"
 #include "segment/facet_on_surface.h"
@@ -27,46 +26,29 @@ constexpr std::size_t kMaxSeedFacets = 48;
 // An exact fit iterates to the rounding of the numbers; from the initial
 // fit of exact corners it converges in under ten steps, and a group that
 // needs more lies on no surface of the type.
-const FitParams kExactFit{
-    .max_iterations = 25, .relative_tolerance = 1e-15, .refine = true};
-
-int Simplicity(SurfaceType type) {
-  switch (type) {
-  case SurfaceType::kPlane:
-    return 0;
-  case SurfaceType::kCylinder:
-    return 1;
-  case SurfaceType::kCone:
-    return 2;
-  case SurfaceType::kSphere:
-    return 3;
-  default:
-    return 4;
-  }
-}
+const FitParams kExactFit{.max_iterations = 25, .relative_tolerance = 1e-15, .refine = true};
 
 int ParameterCount(SurfaceType type) {
   switch (type) {
-  case SurfaceType::kPlane:
-    return 3;
-  case SurfaceType::kCylinder:
-    return 5;
-  case SurfaceType::kCone:
-    return 6;
-  case SurfaceType::kSphere:
-    return 4;
-  case SurfaceType::kTorus:
-    return 8;
-  default:
-    return 10;
+    case SurfaceType::kPlane:
+      return 3;
+    case SurfaceType::kCylinder:
+      return 5;
+    case SurfaceType::kCone:
+      return 6;
+    case SurfaceType::kSphere:
+      return 4;
+    case SurfaceType::kTorus:
+      return 8;
+    default:
+      return 10;
   }
 }
 
 // The distinct corners of `facets` with the area-weighted normals of the
 // facets around each (in the group), every k-th if more than kMaxFitCorners.
-void CornersOf(const FacetMesh &fm, std::span<const int> facets,
-               std::vector<Eigen::Vector3d> *points,
-               std::vector<Eigen::Vector3d> *normals) {
+void FitCornersOf(const FacetMesh& fm, std::span<const int> facets,
+                  std::vector<Eigen::Vector3d>* points, std::vector<Eigen::Vector3d>* normals) {
   std::unordered_map<int, int> slot;
   std::vector<Eigen::Vector3d> sum;
   std::vector<int> order;
@@ -80,65 +62,55 @@ void CornersOf(const FacetMesh &fm, std::span<const int> facets,
       sum[it->second] += fm.area[f] * fm.normal[f];
     }
   }
-  const std::size_t stride = std::max<std::size_t>(
-      1, (order.size() + kMaxFitCorners - 1) / kMaxFitCorners);
+  const std::size_t stride =
+      std::max<std::size_t>(1, (order.size() + kMaxFitCorners - 1) / kMaxFitCorners);
   points->clear();
   normals->clear();
   for (std::size_t i = 0; i < order.size(); i += stride) {
     points->push_back(fm.points[order[i]]);
     const double n = sum[i].norm();
-    normals->push_back(n > 0.0 ? Eigen::Vector3d(sum[i] / n)
-                               : Eigen::Vector3d::UnitZ());
+    normals->push_back(n > 0.0 ? Eigen::Vector3d(sum[i] / n) : Eigen::Vector3d::UnitZ());
   }
 }
 
-int DistinctCorners(const FacetMesh &fm, std::span<const int> facets) {
+int DistinctCorners(const FacetMesh& fm, std::span<const int> facets) {
   std::vector<int> v;
   v.reserve(3 * facets.size());
-  for (const int f : facets)
-    v.insert(v.end(), fm.corners[f].begin(), fm.corners[f].end());
+  for (const int f : facets) v.insert(v.end(), fm.corners[f].begin(), fm.corners[f].end());
   std::sort(v.begin(), v.end());
   return static_cast<int>(std::unique(v.begin(), v.end()) - v.begin());
 }
 
-int DistinctNormals(const FacetMesh &fm, std::span<const int> facets,
-                    int enough) {
+int DistinctNormals(const FacetMesh& fm, std::span<const int> facets, int enough) {
   std::vector<Eigen::Vector3d> seen;
   for (const int f : facets) {
-    const Eigen::Vector3d &n = fm.normal[f];
-    if (n.isZero())
-      continue;
-    const bool known =
-        std::any_of(seen.begin(), seen.end(), [&](const Eigen::Vector3d &m) {
-          return std::atan2(n.cross(m).norm(), n.dot(m)) < kDistinctNormal;
-        });
-    if (!known)
-      seen.push_back(n);
-    if (static_cast<int>(seen.size()) >= enough)
-      break;
+    const Eigen::Vector3d& n = fm.normal[f];
+    if (n.isZero()) continue;
+    const bool known = std::any_of(seen.begin(), seen.end(), [&](const Eigen::Vector3d& m) {
+      return std::atan2(n.cross(m).norm(), n.dot(m)) < kDistinctNormal;
+    });
+    if (!known) seen.push_back(n);
+    if (static_cast<int>(seen.size()) >= enough) break;
   }
   return static_cast<int>(seen.size());
 }
 
-double Dihedral(const FacetMesh &fm, int f, int g) {
-  const Eigen::Vector3d &a = fm.normal[f];
-  const Eigen::Vector3d &b = fm.normal[g];
+double Dihedral(const FacetMesh& fm, int f, int g) {
+  const Eigen::Vector3d& a = fm.normal[f];
+  const Eigen::Vector3d& b = fm.normal[g];
   return std::atan2(a.cross(b).norm(), a.dot(b));
 }
 
 // The facets edge-connected to `seed` that meet the criterion for `surface`
 // (the seed's own facets are taken as given), sorted.
-std::vector<int> Support(const FacetMesh &fm, const Surface &surface,
-                         std::span<const int> seed, double tau,
-                         std::vector<char> *mark) {
+std::vector<int> Support(const FacetMesh& fm, const Surface& surface, std::span<const int> seed,
+                         double tau, std::vector<char>* mark) {
   std::vector<int> out(seed.begin(), seed.end());
-  for (const int f : out)
-    (*mark)[f] = 1;
+  for (const int f : out) (*mark)[f] = 1;
   for (std::size_t k = 0; k < out.size(); ++k) {
     for (const int g : fm.across[out[k]]) {
-      if (g < 0 || (*mark)[g])
-        continue;
-      (*mark)[g] = 1; // tried; reset below
+      if (g < 0 || (*mark)[g]) continue;
+      (*mark)[g] = 1;  // tried; reset below
       if (FacetOnSurface(fm, g, surface, tau)) {
         out.push_back(g);
       } else {
@@ -148,8 +120,7 @@ std::vector<int> Support(const FacetMesh &fm, const Surface &surface,
   }
   for (std::size_t k = 0; k < out.size(); ++k) {
     for (const int g : fm.across[out[k]]) {
-      if (g >= 0)
-        (*mark)[g] = 0;
+      if (g >= 0) (*mark)[g] = 0;
     }
     (*mark)[out[k]] = 0;
   }
@@ -159,18 +130,15 @@ std::vector<int> Support(const FacetMesh &fm, const Surface &surface,
 
 // Grows `h` from its support, refitting on what it holds, until it stops
 // growing or the refit no longer fits within tau.
-void Grow(const FacetMesh &fm, double tau, Hypothesis *h) {
+void Grow(const FacetMesh& fm, double tau, Hypothesis* h) {
   std::vector<char> mark(fm.facet_count(), 0);
   for (int round = 0; round < kMaxGrowRounds; ++round) {
     std::vector<int> grown = Support(fm, h->surface, h->support, tau, &mark);
     const bool same = grown.size() == h->support.size();
     h->support = std::move(grown);
-    if (same && round > 0)
-      break;
-    const std::optional<Surface> refit =
-        FitExactly(fm, h->type, h->support, tau);
-    if (!refit)
-      break;
+    if (same && round > 0) break;
+    const std::optional<Surface> refit = FitExactly(fm, h->type, h->support, tau);
+    if (!refit) break;
     h->surface = *refit;
   }
 }
@@ -181,34 +149,27 @@ void Grow(const FacetMesh &fm, double tau, Hypothesis *h) {
 // the one across the flattest edge from the group: along a narrow band
 // rather than over into the face beside it, but along the rulings of a
 // finely tessellated cylinder, where a ring is better).
-std::vector<int> SeedGroup(const FacetMesh &fm, int f, int corners,
-                           bool smoothest_first) {
+std::vector<int> SeedGroup(const FacetMesh& fm, int f, int corners, bool smoothest_first) {
   const double crease = kSeedCreaseDeg * kPi / 180.0;
   std::vector<int> group;
   std::vector<int> seen;
-  using Entry = std::pair<double, int>; // (order key, facet)
+  using Entry = std::pair<double, int>;  // (order key, facet)
   std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> next;
   next.emplace(0.0, f);
   double order = 0.0;
   while (!next.empty()) {
     const int g = next.top().second;
     next.pop();
-    if (std::find(group.begin(), group.end(), g) != group.end())
-      continue;
+    if (std::find(group.begin(), group.end(), g) != group.end()) continue;
     group.push_back(g);
     for (const int v : fm.corners[g]) {
-      if (std::find(seen.begin(), seen.end(), v) == seen.end())
-        seen.push_back(v);
+      if (std::find(seen.begin(), seen.end(), v) == seen.end()) seen.push_back(v);
     }
-    if (static_cast<int>(seen.size()) >= corners ||
-        group.size() >= kMaxSeedFacets)
-      break;
+    if (static_cast<int>(seen.size()) >= corners || group.size() >= kMaxSeedFacets) break;
     for (const int h : fm.across[g]) {
-      if (h < 0 || fm.normal[h].isZero())
-        continue;
+      if (h < 0 || fm.normal[h].isZero()) continue;
       const double angle = Dihedral(fm, g, h);
-      if (angle < crease &&
-          std::find(group.begin(), group.end(), h) == group.end()) {
+      if (angle < crease && std::find(group.begin(), group.end(), h) == group.end()) {
         next.emplace(smoothest_first ? angle : (order += 1.0), h);
       }
     }
@@ -228,15 +189,13 @@ std::vector<std::pair<int, bool>> SeedShapes() {
 
 // The first curved type that fits `group` exactly with every facet of it on
 // the surface, if the group holds evidence for it.
-std::optional<Hypothesis> CurvedFit(const FacetMesh &fm,
-                                    const std::vector<int> &group, double tau) {
-  for (const SurfaceType type : {SurfaceType::kCylinder, SurfaceType::kCone,
-                                 SurfaceType::kSphere, SurfaceType::kTorus}) {
-    if (!HoldsEvidence(fm, type, group))
-      continue;
+std::optional<Hypothesis> CurvedFit(const FacetMesh& fm, const std::vector<int>& group,
+                                    double tau) {
+  for (const SurfaceType type :
+       {SurfaceType::kCylinder, SurfaceType::kCone, SurfaceType::kSphere, SurfaceType::kTorus}) {
+    if (!HoldsEvidence(fm, type, group)) continue;
     const std::optional<Surface> fit = FitExactly(fm, type, group, tau);
-    if (!fit)
-      continue;
+    if (!fit) continue;
     if (!std::all_of(group.begin(), group.end(),
                      [&](int g) { return FacetOnSurface(fm, g, *fit, tau); })) {
       continue;
@@ -248,91 +207,75 @@ std::optional<Hypothesis> CurvedFit(const FacetMesh &fm,
   return std::nullopt;
 }
 
-} // namespace
+}  // namespace
 
-std::optional<Surface> FitExactly(const FacetMesh &fm, SurfaceType type,
+std::optional<Surface> FitExactly(const FacetMesh& fm, SurfaceType type,
                                   std::span<const int> facets, double tau) {
   std::vector<Eigen::Vector3d> points, normals;
-  CornersOf(fm, facets, &points, &normals);
-  const FitResult fit = FitOfType(
-      type, {.points = points, .normals = normals, .weights = {}}, kExactFit);
-  if (!fit.ok() || !(fit.max_distance <= tau))
-    return std::nullopt;
+  FitCornersOf(fm, facets, &points, &normals);
+  const FitResult fit =
+      FitOfType(type, {.points = points, .normals = normals, .weights = {}}, kExactFit);
+  if (!fit.ok() || !(fit.max_distance <= tau)) return std::nullopt;
   return fit.surface;
 }
 
-bool HoldsEvidence(const FacetMesh &fm, SurfaceType type,
-                   std::span<const int> facets) {
-  if (type == SurfaceType::kPlane)
-    return DistinctCorners(fm, facets) >= 4;
+bool HoldsEvidence(const FacetMesh& fm, SurfaceType type, std::span<const int> facets) {
+  if (type == SurfaceType::kPlane) return DistinctCorners(fm, facets) >= 4;
   return DistinctNormals(fm, facets, kMinCurvedFacets) >= kMinCurvedFacets &&
          DistinctCorners(fm, facets) >= ParameterCount(type) + kSpareCorners;
 }
 
-std::optional<Hypothesis> PlaneAt(const FacetMesh &fm, int f, double tau) {
-  if (fm.normal[f].isZero())
-    return std::nullopt;
-  Hypothesis h{.type = SurfaceType::kPlane,
-               .surface = Plane{fm.Centroid(f), fm.normal[f]},
-               .support = {f}};
+std::optional<Hypothesis> PlaneAt(const FacetMesh& fm, int f, double tau) {
+  if (fm.normal[f].isZero()) return std::nullopt;
+  Hypothesis h{
+      .type = SurfaceType::kPlane, .surface = Plane{fm.Centroid(f), fm.normal[f]}, .support = {f}};
   Grow(fm, tau, &h);
-  if (!HoldsEvidence(fm, h.type, h.support))
-    return std::nullopt;
+  if (!HoldsEvidence(fm, h.type, h.support)) return std::nullopt;
   return h;
 }
 
-std::optional<Hypothesis> CurvedAt(const FacetMesh &fm, int f, double tau) {
+std::optional<Hypothesis> CurvedAt(const FacetMesh& fm, int f, double tau) {
   for (const auto [corners, smoothest_first] : SeedShapes()) {
-    std::optional<Hypothesis> h =
-        CurvedFit(fm, SeedGroup(fm, f, corners, smoothest_first), tau);
-    if (!h)
-      continue;
+    std::optional<Hypothesis> h = CurvedFit(fm, SeedGroup(fm, f, corners, smoothest_first), tau);
+    if (!h) continue;
     Grow(fm, tau, &*h);
     // A narrow seed can leave a simpler type undecided (a cone of a small
     // angle through a few rulings of a cylinder); the grown support decides.
     for (const SurfaceType simpler :
          {SurfaceType::kCylinder, SurfaceType::kCone, SurfaceType::kSphere}) {
-      if (Simplicity(simpler) >= Simplicity(h->type))
-        break;
-      if (const std::optional<Surface> fit =
-              FitExactly(fm, simpler, h->support, tau)) {
+      if (Simplicity(simpler) >= Simplicity(h->type)) break;
+      if (const std::optional<Surface> fit = FitExactly(fm, simpler, h->support, tau)) {
         h->type = simpler;
         h->surface = *fit;
         Grow(fm, tau, &*h);
         break;
       }
     }
-    if (HoldsEvidence(fm, h->type, h->support))
-      return h;
+    if (HoldsEvidence(fm, h->type, h->support)) return h;
   }
   return std::nullopt;
 }
 
-bool ExplainedLocally(const FacetMesh &fm, int f, double tau) {
-  if (fm.normal[f].isZero())
-    return false;
+bool ExplainedLocally(const FacetMesh& fm, int f, double tau) {
+  if (fm.normal[f].isZero()) return false;
   const Plane plane{fm.Centroid(f), fm.normal[f]};
   for (const int g : fm.across[f]) {
-    if (g >= 0 && CornersOnSurface(fm, g, plane, tau))
-      return true;
+    if (g >= 0 && CornersOnSurface(fm, g, plane, tau)) return true;
   }
   for (const auto [corners, smoothest_first] : SeedShapes()) {
-    if (CurvedFit(fm, SeedGroup(fm, f, corners, smoothest_first), tau))
-      return true;
+    if (CurvedFit(fm, SeedGroup(fm, f, corners, smoothest_first), tau)) return true;
   }
   // A facet at its face's border: the facets around a neighbour may fit
   // where its own do not.
   for (const int g : fm.across[f]) {
-    if (g < 0 || fm.normal[g].isZero())
-      continue;
+    if (g < 0 || fm.normal[g].isZero()) continue;
     for (const auto [corners, smoothest_first] : SeedShapes()) {
       const std::optional<Hypothesis> h =
           CurvedFit(fm, SeedGroup(fm, g, corners, smoothest_first), tau);
-      if (h && FacetOnSurface(fm, f, h->surface, tau))
-        return true;
+      if (h && FacetOnSurface(fm, f, h->surface, tau)) return true;
     }
   }
   return false;
 }
 
-} // namespace meshseg::segment_internal
+}  // namespace meshseg::segment_internal

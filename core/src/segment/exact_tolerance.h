@@ -10,9 +10,8 @@
 #ifndef MESHSEG_SRC_SEGMENT_EXACT_TOLERANCE_H_
 #define MESHSEG_SRC_SEGMENT_EXACT_TOLERANCE_H_
 
-#include <vector>
-
 #include <Eigen/Core>
+#include <vector>
 
 #include "segment/facet_mesh.h"
 
@@ -21,7 +20,7 @@ namespace meshseg::segment_internal {
 // The spacing of the representable values at the largest coordinate,
 // for the finest representation that holds every coordinate exactly:
 // float32, a decimal of k significant digits (k <= 15), else double.
-double CoordinateResolution(const std::vector<Eigen::Vector3d> &positions);
+double CoordinateResolution(const std::vector<Eigen::Vector3d>& positions);
 
 // A vertex within kRoundingSpan resolutions of a surface lies on it: each
 // of its three coordinates rounds by at most one resolution, and the
@@ -53,14 +52,13 @@ inline constexpr double kFloorSpan = 4.0;
 
 // Returns the rounding floor of `fm` (model units; 0 when too few facets
 // meet in a plane).
-double PlanarityFloor(const FacetMesh &fm);
+double PlanarityFloor(const FacetMesh& fm);
 
 // Returns the tolerance tau, model units, for `positions` (absolute
 // coordinates, as read) of a part with bounding-box `diagonal` and rounding
 // floor `floor`: the largest of the three bounds above.
-double ExactTolerance(const std::vector<Eigen::Vector3d> &positions,
-                      double diagonal, double floor);
+double ExactTolerance(const std::vector<Eigen::Vector3d>& positions, double diagonal, double floor);
 
-} // namespace meshseg::segment_internal
+}  // namespace meshseg::segment_internal
 
-#endif // MESHSEG_SRC_SEGMENT_EXACT_TOLERANCE_H_
+#endif  // MESHSEG_SRC_SEGMENT_EXACT_TOLERANCE_H_

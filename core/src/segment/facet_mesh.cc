@@ -1,18 +1,17 @@
 #include "segment/facet_mesh.h"
 
+#include <Eigen/Geometry>
+#include <algorithm>
 #include <limits>
 #include <type_traits>
 #include <variant>
 
-#include <Eigen/Geometry>
-
 namespace meshseg::segment_internal {
 
-FacetMesh BuildFacetMesh(const TriMesh &mesh) {
+FacetMesh BuildFacetMesh(const TriMesh& mesh) {
   FacetMesh fm;
   const int n_vertices = static_cast<int>(mesh.n_vertices());
-  Eigen::Vector3d lo =
-      Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
+  Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
   Eigen::Vector3d hi = -lo;
   for (const auto v : mesh.vertices()) {
     const Eigen::Vector3d p = ToEigen(mesh.point(v));
@@ -24,8 +23,7 @@ FacetMesh BuildFacetMesh(const TriMesh &mesh) {
     fm.diagonal = (hi - lo).norm();
   }
   fm.points.resize(n_vertices);
-  for (const auto v : mesh.vertices())
-    fm.points[v.idx()] = ToEigen(mesh.point(v)) - fm.origin;
+  for (const auto v : mesh.vertices()) fm.points[v.idx()] = ToEigen(mesh.point(v)) - fm.origin;
   const int n_faces = static_cast<int>(mesh.n_faces());
   fm.corners.resize(n_faces);
   fm.across.resize(n_faces);
@@ -34,25 +32,32 @@ FacetMesh BuildFacetMesh(const TriMesh &mesh) {
   for (const auto f : mesh.faces()) {
     int k = 0;
     for (const auto h : mesh.fh_range(f)) {
-      if (k == 3)
-        break;
+      if (k == 3) break;
       fm.corners[f.idx()][k] = mesh.from_vertex_handle(h).idx();
       const auto g = mesh.opposite_face_handle(h);
       fm.across[f.idx()][k] = g.is_valid() ? g.idx() : -1;
       ++k;
     }
-    const std::array<int, 3> &c = fm.corners[f.idx()];
-    const Eigen::Vector3d cross = (fm.points[c[1]] - fm.points[c[0]])
-                                      .cross(fm.points[c[2]] - fm.points[c[0]]);
+    const std::array<int, 3>& c = fm.corners[f.idx()];
+    const Eigen::Vector3d cross =
+        (fm.points[c[1]] - fm.points[c[0]]).cross(fm.points[c[2]] - fm.points[c[0]]);
     const double norm = cross.norm();
     fm.area[f.idx()] = 0.5 * norm;
-    fm.normal[f.idx()] =
-        norm > 0.0 ? Eigen::Vector3d(cross / norm) : Eigen::Vector3d::Zero();
+    fm.normal[f.idx()] = norm > 0.0 ? Eigen::Vector3d(cross / norm) : Eigen::Vector3d::Zero();
   }
   return fm;
 }
 
-Surface Translated(const Surface &surface, const Eigen::Vector3d &shift) {
+std::vector<int> CornersOf(const FacetMesh& fm, const std::vector<int>& facets) {
+  std::vector<int> v;
+  v.reserve(3 * facets.size());
+  for (const int f : facets) v.insert(v.end(), fm.corners[f].begin(), fm.corners[f].end());
+  std::sort(v.begin(), v.end());
+  v.erase(std::unique(v.begin(), v.end()), v.end());
+  return v;
+}
+
+Surface Translated(const Surface& surface, const Eigen::Vector3d& shift) {
   return std::visit(
       [&](auto s) -> Surface {
         using T = std::decay_t<decltype(s)>;
@@ -62,20 +67,18 @@ Surface Translated(const Surface &surface, const Eigen::Vector3d &shift) {
           s.axis_origin += shift;
         } else if constexpr (std::is_same_v<T, Cone>) {
           s.apex += shift;
-        } else if constexpr (std::is_same_v<T, Sphere> ||
-                             std::is_same_v<T, Torus>) {
+        } else if constexpr (std::is_same_v<T, Sphere> || std::is_same_v<T, Torus>) {
           s.center += shift;
         } else {
           // f(x - shift): expand the linear and constant terms.
-          const auto &c = s.c;
+          const auto& c = s.c;
           const double x = shift.x(), y = shift.y(), z = shift.z();
           Quadric q = s;
           q.c[6] = c[6] - 2 * c[0] * x - c[3] * y - c[5] * z;
           q.c[7] = c[7] - 2 * c[1] * y - c[3] * x - c[4] * z;
           q.c[8] = c[8] - 2 * c[2] * z - c[4] * y - c[5] * x;
-          q.c[9] = c[9] + c[0] * x * x + c[1] * y * y + c[2] * z * z +
-                   c[3] * x * y + c[4] * y * z + c[5] * z * x - c[6] * x -
-                   c[7] * y - c[8] * z;
+          q.c[9] = c[9] + c[0] * x * x + c[1] * y * y + c[2] * z * z + c[3] * x * y + c[4] * y * z +
+                   c[5] * z * x - c[6] * x - c[7] * y - c[8] * z;
           return q;
         }
         return s;
@@ -83,4 +86,4 @@ Surface Translated(const Surface &surface, const Eigen::Vector3d &shift) {
       surface);
 }
 
-} // namespace meshseg::segment_internal
+}  // namespace meshseg::segment_internal

@@ -5,10 +5,9 @@
 #ifndef MESHSEG_SRC_SEGMENT_FACET_MESH_H_
 #define MESHSEG_SRC_SEGMENT_FACET_MESH_H_
 
+#include <Eigen/Core>
 #include <array>
 #include <vector>
-
-#include <Eigen/Core>
 
 #include "meshseg/mesh.h"
 #include "meshseg/surface.h"
@@ -16,32 +15,32 @@
 namespace meshseg::segment_internal {
 
 struct FacetMesh {
-  Eigen::Vector3d origin =
-      Eigen::Vector3d::Zero();             // subtracted from every position
-  std::vector<Eigen::Vector3d> points;     // per vertex, minus origin
-  std::vector<std::array<int, 3>> corners; // per facet
+  Eigen::Vector3d origin = Eigen::Vector3d::Zero();  // subtracted from every position
+  std::vector<Eigen::Vector3d> points;               // per vertex, minus origin
+  std::vector<std::array<int, 3>> corners;           // per facet
   // Per facet, the facet across the edge from corner k to corner k+1; -1 at
   // a border.
   std::vector<std::array<int, 3>> across;
-  std::vector<Eigen::Vector3d> normal; // unit; zero for a degenerate facet
+  std::vector<Eigen::Vector3d> normal;  // unit; zero for a degenerate facet
   std::vector<double> area;
-  double diagonal = 0.0; // of the bounding box
+  double diagonal = 0.0;  // of the bounding box
 
   int facet_count() const { return static_cast<int>(corners.size()); }
   Eigen::Vector3d Centroid(int f) const {
-    return (points[corners[f][0]] + points[corners[f][1]] +
-            points[corners[f][2]]) /
-           3.0;
+    return (points[corners[f][0]] + points[corners[f][1]] + points[corners[f][2]]) / 3.0;
   }
 };
 
+// Returns the distinct corners of `facets`, sorted.
+std::vector<int> CornersOf(const FacetMesh& fm, const std::vector<int>& facets);
+
 // Returns `mesh` as a FacetMesh.
-FacetMesh BuildFacetMesh(const TriMesh &mesh);
+FacetMesh BuildFacetMesh(const TriMesh& mesh);
 
 // Returns `surface` moved by `shift` (a FacetMesh surface back into the
 // input's frame: shift = origin).
-Surface Translated(const Surface &surface, const Eigen::Vector3d &shift);
+Surface Translated(const Surface& surface, const Eigen::Vector3d& shift);
 
-} // namespace meshseg::segment_internal
+}  // namespace meshseg::segment_internal
 
-#endif // MESHSEG_SRC_SEGMENT_FACET_MESH_H_
+#endif  // MESHSEG_SRC_SEGMENT_FACET_MESH_H_

@@ -40,14 +40,12 @@ inline constexpr double kMaxSpreadDeg = 90.0;
 
 // True if facet f of `fm` is consistent with `surface` (in fm's frame)
 // within `tau`, as above.
-bool FacetOnSurface(const FacetMesh &fm, int f, const Surface &surface,
-                    double tau);
+bool FacetOnSurface(const FacetMesh& fm, int f, const Surface& surface, double tau);
 
 // True if every corner of facet f lies within `tau` of `surface`: test (1)
 // alone, for a quick rejection.
-bool CornersOnSurface(const FacetMesh &fm, int f, const Surface &surface,
-                      double tau);
+bool CornersOnSurface(const FacetMesh& fm, int f, const Surface& surface, double tau);
 
-} // namespace meshseg::segment_internal
+}  // namespace meshseg::segment_internal
 
-#endif // MESHSEG_SRC_SEGMENT_FACET_ON_SURFACE_H_
+#endif  // MESHSEG_SRC_SEGMENT_FACET_ON_SURFACE_H_

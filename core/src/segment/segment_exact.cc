@@ -17,6 +17,7 @@
 namespace meshseg {
 namespace {
 
+using segment_internal::CornersOf;
 using segment_internal::ExactRegion;
 using segment_internal::FacetMesh;
 
@@ -27,19 +28,16 @@ constexpr double kMaxMissedShare = 5.0;
 
 // The given tolerance, else the one from the rounding of `mesh`'s own
 // coordinates (as read: fm's are moved, and no longer round).
-double Tolerance(const TriMesh &mesh, const FacetMesh &fm,
-                 std::optional<double> given) {
-  if (given)
-    return *given;
+double Tolerance(const TriMesh& mesh, const FacetMesh& fm, std::optional<double> given) {
+  if (given) return *given;
   std::vector<Eigen::Vector3d> positions;
   positions.reserve(mesh.n_vertices());
-  for (const auto v : mesh.vertices())
-    positions.push_back(ToEigen(mesh.point(v)));
+  for (const auto v : mesh.vertices()) positions.push_back(ToEigen(mesh.point(v)));
   return segment_internal::ExactTolerance(positions, fm.diagonal,
                                           segment_internal::PlanarityFloor(fm));
 }
 
-Exactness Measure(const FacetMesh &fm, double tolerance) {
+Exactness Measure(const FacetMesh& fm, double tolerance) {
   Exactness e;
   e.tolerance = tolerance;
   const int n = fm.facet_count();
@@ -47,8 +45,8 @@ Exactness Measure(const FacetMesh &fm, double tolerance) {
   // A mesh far from exact is known as such long before the sample ends
   // (each unexplained facet costs the most fits): sampling stops at
   // kMaxMissedShare of it missed.
-  const int missed_limit = static_cast<int>(
-      kMaxMissedShare * (1.0 - kMinExactShare) * kExactnessSample);
+  const int missed_limit =
+      static_cast<int>(kMaxMissedShare * (1.0 - kMinExactShare) * kExactnessSample);
   double explained = 0.0, total = 0.0;
   int missed = 0;
   for (int f = 0; f < n && missed <= missed_limit; f += stride) {
@@ -65,8 +63,8 @@ Exactness Measure(const FacetMesh &fm, double tolerance) {
 }
 
 // Distances of `corners` to `surface` into rms and max.
-void Distances(const FacetMesh &fm, const std::vector<int> &corners,
-               const Surface &surface, double *rms, double *max) {
+void Distances(const FacetMesh& fm, const std::vector<int>& corners, const Surface& surface,
+               double* rms, double* max) {
   double sum2 = 0.0;
   *max = 0.0;
   for (const int v : corners) {
@@ -74,25 +72,13 @@ void Distances(const FacetMesh &fm, const std::vector<int> &corners,
     sum2 += d * d;
     *max = std::max(*max, d);
   }
-  *rms = corners.empty()
-             ? 0.0
-             : std::sqrt(sum2 / static_cast<double>(corners.size()));
-}
-
-std::vector<int> CornersOf(const FacetMesh &fm,
-                           const std::vector<int> &facets) {
-  std::vector<int> v;
-  for (const int f : facets)
-    v.insert(v.end(), fm.corners[f].begin(), fm.corners[f].end());
-  std::sort(v.begin(), v.end());
-  v.erase(std::unique(v.begin(), v.end()), v.end());
-  return v;
+  *rms = corners.empty() ? 0.0 : std::sqrt(sum2 / static_cast<double>(corners.size()));
 }
 
 // The Segmentation of `exact`: regions renumbered by first facet, vertices
 // labelled with a facet around them, surfaces in the input's frame.
-Segmentation Assemble(const Mesh &mesh, const FacetMesh &fm,
-                      const segment_internal::ExactFacets &exact, double tau) {
+Segmentation Assemble(const Mesh& mesh, const FacetMesh& fm,
+                      const segment_internal::ExactFacets& exact, double tau) {
   const int n_regions = static_cast<int>(exact.regions.size());
   std::vector<int> new_id(n_regions, -1);
   std::vector<int> old_of;
@@ -103,74 +89,63 @@ Segmentation Assemble(const Mesh &mesh, const FacetMesh &fm,
     }
   }
   std::vector<ExactRegion> regions;
-  for (const int old : old_of)
-    regions.push_back(exact.regions[old]);
+  for (const int old : old_of) regions.push_back(exact.regions[old]);
   std::vector<int> surface_of_region;
   const std::vector<SharedSurface> shared =
-      segment_internal::GroupSharedSurfaces(fm, regions, tau,
-                                            &surface_of_region);
+      segment_internal::GroupSharedSurfaces(fm, regions, tau, &surface_of_region);
 
   Segmentation seg;
   seg.face_labels.resize(exact.face_labels.size());
   for (std::size_t f = 0; f < exact.face_labels.size(); ++f) {
-    seg.face_labels[f] =
-        exact.face_labels[f] < 0 ? -1 : new_id[exact.face_labels[f]];
+    seg.face_labels[f] = exact.face_labels[f] < 0 ? -1 : new_id[exact.face_labels[f]];
   }
   seg.vertex_labels.assign(mesh.tri.n_vertices(), -1);
   for (std::size_t f = 0; f < seg.face_labels.size(); ++f) {
     for (const int v : fm.corners[f]) {
-      if (seg.vertex_labels[v] < 0)
-        seg.vertex_labels[v] = seg.face_labels[f];
+      if (seg.vertex_labels[v] < 0) seg.vertex_labels[v] = seg.face_labels[f];
     }
   }
   for (std::size_t r = 0; r < regions.size(); ++r) {
     Region region;
     region.id = static_cast<int>(r);
     region.type = regions[r].type;
-    region.surface =
-        segment_internal::Translated(regions[r].surface, fm.origin);
+    region.surface = segment_internal::Translated(regions[r].surface, fm.origin);
     region.face_count = static_cast<int64_t>(regions[r].facets.size());
-    for (const int f : regions[r].facets)
-      region.area += fm.area[f];
+    for (const int f : regions[r].facets) region.area += fm.area[f];
     const std::vector<int> corners = CornersOf(fm, regions[r].facets);
     region.vertex_count = static_cast<int64_t>(corners.size());
-    Distances(fm, corners, regions[r].surface, &region.rms_distance,
-              &region.max_distance);
+    Distances(fm, corners, regions[r].surface, &region.rms_distance, &region.max_distance);
     region.surface_id = surface_of_region[r];
     seg.regions.push_back(std::move(region));
   }
   for (SharedSurface s : shared) {
     std::vector<int> facets;
     for (const int r : s.regions) {
-      facets.insert(facets.end(), regions[r].facets.begin(),
-                    regions[r].facets.end());
+      facets.insert(facets.end(), regions[r].facets.begin(), regions[r].facets.end());
     }
-    Distances(fm, CornersOf(fm, facets), s.surface, &s.rms_distance,
-              &s.max_distance);
+    Distances(fm, CornersOf(fm, facets), s.surface, &s.rms_distance, &s.max_distance);
     s.surface = segment_internal::Translated(s.surface, fm.origin);
     seg.surfaces.push_back(std::move(s));
   }
   return seg;
 }
 
-} // namespace
+}  // namespace
 
-Exactness EstimateExactness(const Mesh &mesh, std::optional<double> tolerance) {
+Exactness EstimateExactness(const Mesh& mesh, std::optional<double> tolerance) {
   const FacetMesh fm = segment_internal::BuildFacetMesh(mesh.tri);
   return Measure(fm, Tolerance(mesh.tri, fm, tolerance));
 }
 
-absl::StatusOr<Segmentation> SegmentExactFacets(const Mesh &mesh,
-                                                const SegmentParams &params,
-                                                const RunContext &ctx) {
+absl::StatusOr<Segmentation> SegmentExactFacets(const Mesh& mesh, const SegmentParams& params,
+                                                const RunContext& ctx) {
   if (mesh.tri.n_faces() == 0) {
-    return absl::InvalidArgumentError(
-        absl::StrCat("segment: \"", mesh.name, "\" has no faces"));
+    return absl::InvalidArgumentError(absl::StrCat("segment: \"", mesh.name, "\" has no faces"));
   }
-  if (params.exact_tolerance && !(*params.exact_tolerance > 0.0 &&
-                                  std::isfinite(*params.exact_tolerance))) {
-    return absl::InvalidArgumentError(absl::StrCat(
-        "segment: exact_tolerance must be > 0, got ", *params.exact_tolerance));
+  if (params.exact_tolerance &&
+      !(*params.exact_tolerance > 0.0 && std::isfinite(*params.exact_tolerance))) {
+    return absl::InvalidArgumentError(
+        absl::StrCat("segment: exact_tolerance must be > 0, got ", *params.exact_tolerance));
   }
   MESHSEG_RETURN_IF_ERROR(ctx.CheckStop("segment"));
   const FacetMesh fm = segment_internal::BuildFacetMesh(mesh.tri);
@@ -181,12 +156,11 @@ absl::StatusOr<Segmentation> SegmentExactFacets(const Mesh &mesh,
   seg.estimates.mean_edge_length = MeanEdgeLength(mesh.tri);
   seg.estimates.noise_sigma = 0.0;
   seg.estimates.distance_tolerance = tau;
-  seg.estimates.angle_tolerance_deg =
-      exact.angular_step * 180.0 / 3.14159265358979323846;
+  seg.estimates.angle_tolerance_deg = exact.angular_step * 180.0 / 3.14159265358979323846;
   seg.estimates.path = SegmentationPath::kExactFacets;
-  seg.estimates.exact_tolerance = tau; // exact_share: measured by the caller
+  seg.estimates.exact_tolerance = tau;  // exact_share: measured by the caller
   ctx.Progress("segment", 1.0);
   return seg;
 }
 
-} // namespace meshseg
+}  // namespace meshseg

@@ -19,11 +19,10 @@ namespace meshseg::segment_internal {
 // Returns the surfaces of `regions` (surfaces in fm's frame; members
 // ascending) and sets surface_of_region (one per region; a FREEFORM region
 // is a surface of its own).
-std::vector<SharedSurface>
-GroupSharedSurfaces(const FacetMesh &fm,
-                    const std::vector<ExactRegion> &regions, double tau,
-                    std::vector<int> *surface_of_region);
+std::vector<SharedSurface> GroupSharedSurfaces(const FacetMesh& fm,
+                                               const std::vector<ExactRegion>& regions, double tau,
+                                               std::vector<int>* surface_of_region);
 
-} // namespace meshseg::segment_internal
+}  // namespace meshseg::segment_internal
 
-#endif // MESHSEG_SRC_SEGMENT_SHARED_SURFACES_H_
+#endif  // MESHSEG_SRC_SEGMENT_SHARED_SURFACES_H_

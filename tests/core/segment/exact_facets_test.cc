@@ -1,5 +1,6 @@
-#include "meshseg/segment.h"
+#include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -9,11 +10,9 @@
 #include <variant>
 #include <vector>
 
-#include <Eigen/Geometry>
-#include <gtest/gtest.h>
-
 #include "meshseg/curvature.h"
 #include "meshseg/generate.h"
+#include "meshseg/segment.h"
 
 namespace meshseg {
 namespace {
@@ -26,17 +25,14 @@ constexpr double kLength = 20.0;
 // With `chord_facet` >= 0, that side facet has a vertex in the middle of its
 // edge on the x = 0 cap, on the chord under the arc, in three triangles: a
 // CAD tessellator adds such a vertex to meet the cap's triangulation.
-Mesh ProfilePrism(const std::vector<Eigen::Vector2d> &profile,
-                  int chord_facet = -1) {
+Mesh ProfilePrism(const std::vector<Eigen::Vector2d>& profile, int chord_facet = -1) {
   const int count = static_cast<int>(profile.size());
   std::vector<Eigen::Vector3d> v;
   for (const double x : {0.0, kLength}) {
-    for (const Eigen::Vector2d &p : profile)
-      v.emplace_back(x, p.x(), p.y());
+    for (const Eigen::Vector2d& p : profile) v.emplace_back(x, p.x(), p.y());
   }
   Eigen::Vector3d centre = Eigen::Vector3d::Zero();
-  for (int i = 0; i < count; ++i)
-    centre += v[i] / count;
+  for (int i = 0; i < count; ++i) centre += v[i] / count;
   v.push_back(centre);
   v.push_back(centre + Eigen::Vector3d(kLength, 0, 0));
   const int c0 = 2 * count;
@@ -68,47 +64,40 @@ Mesh ProfilePrism(const std::vector<Eigen::Vector2d> &profile,
 // `arc_deg`, closed by the chord when arc_deg < 360.
 Mesh ArcPrism(double radius, int count, double arc_deg, int chord_facet = -1) {
   const bool closed = arc_deg >= 360.0;
-  const double step =
-      arc_deg / (closed ? count : count - 1) * std::numbers::pi / 180.0;
+  const double step = arc_deg / (closed ? count : count - 1) * std::numbers::pi / 180.0;
   std::vector<Eigen::Vector2d> profile;
   for (int i = 0; i < count; ++i) {
-    profile.emplace_back(radius * std::cos(i * step),
-                         radius * std::sin(i * step));
+    profile.emplace_back(radius * std::cos(i * step), radius * std::sin(i * step));
   }
   return ProfilePrism(profile, chord_facet);
 }
 
 // A square of side `side` with its corners rounded by `radius` in `steps`
 // facets each; the first side facet is the flat bottom side.
-std::vector<Eigen::Vector2d> RoundedSquare(double side, double radius,
-                                           int steps) {
+std::vector<Eigen::Vector2d> RoundedSquare(double side, double radius, int steps) {
   const double inner = side / 2 - radius;
   std::vector<Eigen::Vector2d> profile = {{-inner, -side / 2}};
   const Eigen::Vector2d centres[] = {
       {inner, -inner}, {inner, inner}, {-inner, inner}, {-inner, -inner}};
   for (int k = 0; k < 4; ++k) {
     for (int j = 0; j <= steps; ++j) {
-      if (k == 3 && j == steps)
-        break; // the first point
-      const double a =
-          (k - 1 + static_cast<double>(j) / steps) * std::numbers::pi / 2;
-      profile.push_back(centres[k] +
-                        radius * Eigen::Vector2d(std::cos(a), std::sin(a)));
+      if (k == 3 && j == steps) break;  // the first point
+      const double a = (k - 1 + static_cast<double>(j) / steps) * std::numbers::pi / 2;
+      profile.push_back(centres[k] + radius * Eigen::Vector2d(std::cos(a), std::sin(a)));
     }
   }
   return profile;
 }
 
 // The exact-facet segmentation of `mesh`, regions by type.
-Segmentation SegmentExact(const Mesh &mesh) {
+Segmentation SegmentExact(const Mesh& mesh) {
   absl::StatusOr<Segmentation> seg = SegmentExactFacets(mesh);
   EXPECT_TRUE(seg.ok()) << seg.status();
   return seg.ok() ? *std::move(seg) : Segmentation{};
 }
 
-int FacesOf(const Segmentation &seg, int region) {
-  return static_cast<int>(
-      std::count(seg.face_labels.begin(), seg.face_labels.end(), region));
+int FacesOf(const Segmentation& seg, int region) {
+  return static_cast<int>(std::count(seg.face_labels.begin(), seg.face_labels.end(), region));
 }
 
 // A half round in 8 facets on a flat bottom: one exact cylinder (all 16 side
@@ -119,8 +108,8 @@ TEST(SegmentExactFacets, FindsTheCylinderOfACoarseHalfRound) {
   const Segmentation seg = SegmentExact(ArcPrism(2.0, 9, 180.0));
   ASSERT_EQ(seg.regions.size(), 4u);
   int cylinders = 0;
-  for (const Region &region : seg.regions) {
-    if (const auto *cyl = std::get_if<Cylinder>(&region.surface)) {
+  for (const Region& region : seg.regions) {
+    if (const auto* cyl = std::get_if<Cylinder>(&region.surface)) {
       ++cylinders;
       EXPECT_EQ(region.type, SurfaceType::kCylinder);
       EXPECT_NEAR(cyl->radius, 2.0, 1e-9);
@@ -142,20 +131,17 @@ TEST(SegmentExactFacets, FindsTheCylinderOfACoarseHalfRound) {
 // the cylinder in two (tray_bottom_1002.stl's holes in four). The flat facet
 // (its coplanar triangles) is what must be judged, by its outline's corners
 // (issue 31 note: left to do).
-TEST(SegmentExactFacets,
-     DISABLED_AFacetWithAVertexOnItsChordStaysOnTheCylinder) {
-  const Segmentation seg =
-      SegmentExact(ArcPrism(2.0, 19, 180.0, /*chord_facet=*/8));
+TEST(SegmentExactFacets, DISABLED_AFacetWithAVertexOnItsChordStaysOnTheCylinder) {
+  const Segmentation seg = SegmentExact(ArcPrism(2.0, 19, 180.0, /*chord_facet=*/8));
   int cylinders = 0;
-  for (const Region &region : seg.regions) {
-    if (region.type != SurfaceType::kCylinder)
-      continue;
+  for (const Region& region : seg.regions) {
+    if (region.type != SurfaceType::kCylinder) continue;
     ++cylinders;
     EXPECT_NEAR(std::get<Cylinder>(region.surface).radius, 2.0, 1e-9);
     EXPECT_EQ(FacesOf(seg, region.id), 37);
   }
   EXPECT_EQ(cylinders, 1);
-  EXPECT_EQ(seg.regions.size(), 4u); // the cylinder, two caps, the flat bottom
+  EXPECT_EQ(seg.regions.size(), 4u);  // the cylinder, two caps, the flat bottom
 }
 
 // A flat side between the last facets of two equal rounds is an isosceles
@@ -165,29 +151,25 @@ TEST(SegmentExactFacets,
 // explained as well by a plane as by what is left of that cylinder, and the
 // plane is simpler (exact_facets.h).
 struct RoundedSquareCase {
-  const char *name;
+  const char* name;
   double side;
   double radius;
   int steps;
 };
 
-void PrintTo(const RoundedSquareCase &square, std::ostream *os) {
-  *os << square.name;
-}
+void PrintTo(const RoundedSquareCase& square, std::ostream* os) { *os << square.name; }
 
-class SegmentExactRoundedSquare
-    : public ::testing::TestWithParam<RoundedSquareCase> {};
+class SegmentExactRoundedSquare : public ::testing::TestWithParam<RoundedSquareCase> {};
 
 TEST_P(SegmentExactRoundedSquare, FlatSidesBetweenRoundsStayPlanes) {
-  const RoundedSquareCase &square = GetParam();
-  const Segmentation seg = SegmentExact(
-      ProfilePrism(RoundedSquare(square.side, square.radius, square.steps)));
+  const RoundedSquareCase& square = GetParam();
+  const Segmentation seg =
+      SegmentExact(ProfilePrism(RoundedSquare(square.side, square.radius, square.steps)));
   int cylinders = 0, planes = 0;
-  for (const Region &region : seg.regions) {
+  for (const Region& region : seg.regions) {
     if (region.type == SurfaceType::kCylinder) {
       ++cylinders;
-      EXPECT_NEAR(std::get<Cylinder>(region.surface).radius, square.radius,
-                  1e-9);
+      EXPECT_NEAR(std::get<Cylinder>(region.surface).radius, square.radius, 1e-9);
       EXPECT_EQ(FacesOf(seg, region.id), 2 * square.steps);
     } else {
       ++planes;
@@ -195,7 +177,7 @@ TEST_P(SegmentExactRoundedSquare, FlatSidesBetweenRoundsStayPlanes) {
     }
   }
   EXPECT_EQ(cylinders, 4);
-  EXPECT_EQ(planes, 6); // four sides, two caps
+  EXPECT_EQ(planes, 6);  // four sides, two caps
   // The four rounds are four surfaces; opposite sides are not coplanar.
   EXPECT_EQ(seg.surfaces.size(), 10u);
 }
@@ -204,19 +186,17 @@ TEST_P(SegmentExactRoundedSquare, FlatSidesBetweenRoundsStayPlanes) {
 // are left out: a cylinder of r 32.8 through a side and the rounds' last
 // facets explains more corners than a round of 3 facets, and takes them
 // (issue 31 note: left to do).
-INSTANTIATE_TEST_SUITE_P(
-    Squares, SegmentExactRoundedSquare,
-    ::testing::Values(RoundedSquareCase{"slot_like", 7.5, 2.54, 9},
-                      RoundedSquareCase{"fine_rounds", 5.0, 2.0, 18},
-                      RoundedSquareCase{"small_rounds", 12.0, 1.0, 9}),
-    [](const auto &info) { return std::string(info.param.name); });
+INSTANTIATE_TEST_SUITE_P(Squares, SegmentExactRoundedSquare,
+                         ::testing::Values(RoundedSquareCase{"slot_like", 7.5, 2.54, 9},
+                                           RoundedSquareCase{"fine_rounds", 5.0, 2.0, 18},
+                                           RoundedSquareCase{"small_rounds", 12.0, 1.0, 9}),
+                         [](const auto& info) { return std::string(info.param.name); });
 
 // A pentagonal prism's sides meet at 72 degrees: seven planes, no cylinder.
 TEST(SegmentExactFacets, KeepsThePlanesOfAPentagonalPrism) {
   const Segmentation seg = SegmentExact(ArcPrism(2.0, 5, 360.0));
   ASSERT_EQ(seg.regions.size(), 7u);
-  for (const Region &region : seg.regions)
-    EXPECT_EQ(region.type, SurfaceType::kPlane);
+  for (const Region& region : seg.regions) EXPECT_EQ(region.type, SurfaceType::kPlane);
 }
 
 // A round bar whose end discs are fans from one rim vertex: every corner of
@@ -250,12 +230,11 @@ TEST(SegmentExactFacets, DISABLED_DiscFacetsWithAllCornersOnTheRimStayPlanes) {
   ASSERT_TRUE(mesh.ok()) << mesh.status();
   const Segmentation seg = SegmentExact(*mesh);
   std::string regions;
-  for (const Region &r : seg.regions) {
-    regions += std::string(" ") + SurfaceTypeName(r.type) + ":" +
-               std::to_string(r.face_count);
+  for (const Region& r : seg.regions) {
+    regions += std::string(" ") + SurfaceTypeName(r.type) + ":" + std::to_string(r.face_count);
   }
   ASSERT_EQ(seg.regions.size(), 3u) << regions;
-  for (const Region &region : seg.regions) {
+  for (const Region& region : seg.regions) {
     if (region.type == SurfaceType::kCylinder) {
       EXPECT_EQ(FacesOf(seg, region.id), 2 * kCount);
       EXPECT_NEAR(std::get<Cylinder>(region.surface).radius, 3.0, 1e-9);
@@ -281,8 +260,7 @@ TEST(EstimateExactness, ANoisyMeshIsNotExact) {
 // cut across every edge between them: under the share of a CAD
 // tessellation, so it stays on the scan path.
 TEST(EstimateExactness, ANoiseFreeVoxelSurfaceIsNotATessellation) {
-  absl::StatusOr<GeneratedPart> part =
-      GeneratePart("small_block", {.noise = 0.0});
+  absl::StatusOr<GeneratedPart> part = GeneratePart("small_block", {.noise = 0.0});
   ASSERT_TRUE(part.ok()) << part.status();
   const Exactness e = EstimateExactness(part->mesh);
   EXPECT_FALSE(e.exact) << e.share;
@@ -293,9 +271,8 @@ TEST(EstimateExactness, ANoiseFreeVoxelSurfaceIsNotATessellation) {
 TEST(SegmentExactFacets, UnitsAndOffsetsGiveTheSameRegions) {
   const Mesh mesh = ProfilePrism(RoundedSquare(7.5, 2.54, 9));
   const Segmentation base = SegmentExact(mesh);
-  for (const auto &[scale, shift] :
-       {std::pair{1000.0, Eigen::Vector3d(0, 0, 0)},
-        std::pair{0.001, Eigen::Vector3d(0, 0, 0)},
+  for (const auto& [scale, shift] :
+       {std::pair{1000.0, Eigen::Vector3d(0, 0, 0)}, std::pair{0.001, Eigen::Vector3d(0, 0, 0)},
         std::pair{1.0, Eigen::Vector3d(2e4, -1.5e4, 3e4)}}) {
     std::vector<Eigen::Vector3d> v;
     for (const auto vh : mesh.tri.vertices())
@@ -304,21 +281,20 @@ TEST(SegmentExactFacets, UnitsAndOffsetsGiveTheSameRegions) {
     for (const auto fh : mesh.tri.faces()) {
       std::array<int, 3> t{};
       int k = 0;
-      for (const auto vh : mesh.tri.fv_range(fh))
-        t[k++] = vh.idx();
+      for (const auto vh : mesh.tri.fv_range(fh)) t[k++] = vh.idx();
       f.push_back(t);
     }
     absl::StatusOr<Mesh> moved = BuildMesh(std::move(v), f, "moved");
     ASSERT_TRUE(moved.ok()) << moved.status();
     const Segmentation seg = SegmentExact(*moved);
     EXPECT_EQ(seg.face_labels, base.face_labels) << "scale " << scale;
-    for (const Region &r : seg.regions) {
-      if (const auto *c = std::get_if<Cylinder>(&r.surface)) {
+    for (const Region& r : seg.regions) {
+      if (const auto* c = std::get_if<Cylinder>(&r.surface)) {
         EXPECT_NEAR(c->radius, 2.54 * scale, 1e-7 * scale) << "scale " << scale;
       }
     }
   }
 }
 
-} // namespace
-} // namespace meshseg
+}  // namespace
+}  // namespace meshseg
