@@ -11,6 +11,7 @@ PACKAGES=(
   libtbb-dev libcgal-dev libboost-graph-dev libnanoflann-dev
   libhiredis-dev redis-server
   libssl-dev
+  nodejs
 )
 
 SUDO=""
@@ -22,6 +23,12 @@ for p in "${PACKAGES[@]}"; do
     missing+=("$p")
   fi
 done
+
+# npm (deploy/ validation): Debian's package, unless the installed node
+# already ships it (NodeSource's nodejs does, and conflicts with Debian's npm).
+if ! command -v npm >/dev/null 2>&1; then
+  missing+=(npm)
+fi
 
 if [ ${#missing[@]} -eq 0 ]; then
   echo "setup: all ${#PACKAGES[@]} packages already installed"

@@ -12,7 +12,9 @@ grpc::Status SegmentationService::CancelJob(grpc::ServerContext* /*context*/,
   if (!outcome.ok()) return ToGrpcStatus(outcome.status());
   if (*outcome == JobStore::CancelOutcome::kWasQueued) {
     queue_.Remove(id);
-    spool_.RemoveJob(id);
+    if (absl::StatusOr<v1::Job> job = store_.Get(id); job.ok()) {
+      (void)blobs_.Remove(UploadKey(id, job->file_name()));
+    }
   }
   Log("job_cancel_requested",
       {{"job", id},

@@ -34,8 +34,10 @@ grpc::Status SegmentationService::GetResult(grpc::ServerContext* context,
         absl::StrCat("result: chunk_size must be >= 0, got ", request->chunk_size())));
   }
 
-  std::ifstream in(spool_.ResultPath(job->job_id()), std::ios::binary);
-  if (!in) {  // expired between Get() and here
+  const absl::StatusOr<std::unique_ptr<LocalBlob>> blob = blobs_.Open(ResultKey(job->job_id()));
+  std::ifstream in;
+  if (blob.ok()) in.open((*blob)->path(), std::ios::binary);
+  if (!blob.ok() || !in.is_open()) {  // expired between Get() and here
     return ToGrpcStatus(absl::NotFoundError(
         absl::StrCat("result: job \"", job->job_id(), "\" result expired")));
   }

@@ -1,3 +1,4 @@
+#include "meshseg/proto/grpc_status.h"
 #include "server/service.h"
 
 namespace meshseg::server {
@@ -5,7 +6,9 @@ namespace meshseg::server {
 grpc::Status SegmentationService::ListJobs(grpc::ServerContext* /*context*/,
                                            const v1::ListJobsRequest* /*request*/,
                                            v1::ListJobsResponse* response) {
-  for (v1::Job& job : store_.List()) *response->add_jobs() = std::move(job);
+  absl::StatusOr<std::vector<v1::Job>> jobs = store_.List();
+  if (!jobs.ok()) return ToGrpcStatus(jobs.status());
+  for (v1::Job& job : *jobs) *response->add_jobs() = std::move(job);
   return grpc::Status::OK;
 }
 

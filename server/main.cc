@@ -19,14 +19,28 @@ const meshseg::server::ServerOptions kDefaults;
 }  // namespace
 
 ABSL_FLAG(std::string, listen, kDefaults.listen, "HOST:PORT to listen on; port 0 = ephemeral");
-ABSL_FLAG(int, workers, kDefaults.workers, "worker threads running jobs; 0 = one per core");
+ABSL_FLAG(std::string, role, "all",
+          "all (accept and run jobs), api (accept uploads, serve jobs and results) or worker "
+          "(run jobs only); api and worker need --queue redis://...");
+ABSL_FLAG(int, workers, kDefaults.workers,
+          "worker threads running jobs; 0 = one per CPU of the container's cgroup quota");
 ABSL_FLAG(int, queue_capacity, kDefaults.queue_capacity,
           "max jobs waiting; further uploads get RESOURCE_EXHAUSTED");
 ABSL_FLAG(int64_t, max_upload_bytes, kDefaults.max_upload_bytes, "max bytes of one upload");
 ABSL_FLAG(std::string, spool_dir, kDefaults.spool_dir,
-          "uploads and results, one folder per job (job-* folders are cleared at start)");
+          "embedded mode: every job's upload, record and result, recovered at start; Redis "
+          "mode: local scratch. One server per spool (locked)");
+ABSL_FLAG(std::string, queue, kDefaults.queue,
+          "empty = embedded (one process); redis://HOST:PORT[/DB] = shared Redis Stream queue "
+          "and job records, for any number of api and worker replicas");
+ABSL_FLAG(std::string, blob_dir, kDefaults.blob_dir,
+          "Redis mode: folder every replica reaches (shared volume) for uploads and results");
+ABSL_FLAG(int, max_attempts, kDefaults.max_attempts,
+          "a job whose worker died this many times ends FAILED");
+ABSL_FLAG(absl::Duration, claim_after, kDefaults.claim_after,
+          "Redis mode: a job whose worker stopped heartbeating this long is taken over");
 ABSL_FLAG(absl::Duration, result_ttl, kDefaults.result_ttl,
-          "how long a finished job and its result are kept, e.g. 1h, 30m");
+          "how long a finished job and its result are kept, e.g. 24h, 30m");
 ABSL_FLAG(absl::Duration, shutdown_grace, kDefaults.shutdown_grace,
           "on SIGTERM/SIGINT, how long running jobs may take before they are cancelled");
 
@@ -64,6 +78,17 @@ int main(int argc, char** argv) {
   pthread_sigmask(SIG_BLOCK, &signals, nullptr);
 
   meshseg::server::ServerOptions options;
+  absl::StatusOr<meshseg::server::Role> role =
+      meshseg::server::ParseRole(absl::GetFlag(FLAGS_role));
+  if (!role.ok()) {
+    std::fprintf(stderr, "meshseg-server: %s\n", std::string(role.status().message()).c_str());
+    return 1;
+  }
+  options.role = *role;
+  options.queue = absl::GetFlag(FLAGS_queue);
+  options.blob_dir = absl::GetFlag(FLAGS_blob_dir);
+  options.max_attempts = absl::GetFlag(FLAGS_max_attempts);
+  options.claim_after = absl::GetFlag(FLAGS_claim_after);
   options.listen = absl::GetFlag(FLAGS_listen);
   options.workers = absl::GetFlag(FLAGS_workers);
   options.queue_capacity = absl::GetFlag(FLAGS_queue_capacity);

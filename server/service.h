@@ -12,6 +12,7 @@
 #include <cstdint>
 
 #include "meshseg/v1/service.grpc.pb.h"
+#include "server/blob_store.h"
 #include "server/job_queue.h"
 #include "server/job_store.h"
 #include "server/spool.h"
@@ -21,9 +22,14 @@ namespace meshseg::server {
 class SegmentationService final : public v1::Segmentation::Service {
  public:
   // All references must outlive the service.
-  SegmentationService(JobStore& store, JobQueue& queue, const Spool& spool,
+  // `scratch` holds uploads while they arrive, before they are put in `blobs`.
+  SegmentationService(JobStore& store, JobQueue& queue, BlobStore& blobs, const Spool& scratch,
                       int64_t max_upload_bytes)
-      : store_(store), queue_(queue), spool_(spool), max_upload_bytes_(max_upload_bytes) {}
+      : store_(store),
+        queue_(queue),
+        blobs_(blobs),
+        scratch_(scratch),
+        max_upload_bytes_(max_upload_bytes) {}
 
   // From now on Upload answers UNAVAILABLE (shutting down).
   void StopAccepting() { accepting_ = false; }
@@ -45,7 +51,8 @@ class SegmentationService final : public v1::Segmentation::Service {
  private:
   JobStore& store_;
   JobQueue& queue_;
-  const Spool& spool_;
+  BlobStore& blobs_;
+  const Spool& scratch_;
   const int64_t max_upload_bytes_;
   std::atomic<bool> accepting_ = true;
 };

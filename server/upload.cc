@@ -1,7 +1,9 @@
 #include <algorithm>
 #include <filesystem>
+#include <system_error>
 
 #include "absl/strings/str_cat.h"
+#include "absl/time/clock.h"
 #include "meshseg/mesh.h"
 #include "meshseg/proto/convert.h"
 #include "meshseg/proto/grpc_status.h"
@@ -9,6 +11,7 @@
 #include "server/log.h"
 #include "server/receive_upload.h"
 #include "server/service.h"
+#include "server/spool.h"
 
 namespace meshseg::server {
 namespace {
@@ -30,6 +33,8 @@ grpc::Status SegmentationService::Upload(grpc::ServerContext* context,
   // The steps after the header, as one Status-returning function so each
   // failure path cleans up the same way.
   std::string job_id;
+  std::string scratch;
+  JobRecord record;
   const auto accept = [&]() -> absl::Status {
     if (!accepting_) return absl::UnavailableError("upload: server is shutting down");
     v1::UploadRequest first;
@@ -44,21 +49,32 @@ grpc::Status SegmentationService::Upload(grpc::ServerContext* context,
     MESHSEG_RETURN_IF_ERROR(CheckUploadHeader(header, max_upload_bytes_));
     MESHSEG_ASSIGN_OR_RETURN(PipelineParams params, FromProto(header.options()));
     MESHSEG_ASSIGN_OR_RETURN(params.format, FormatFromHint(header.format_hint()));
-    if (queue_.Size() >= queue_.Capacity()) {  // refuse before receiving the data
+    // Refuse before receiving the data (also when the queue is unreachable).
+    MESHSEG_ASSIGN_OR_RETURN(const int waiting, queue_.Size());
+    if (waiting >= queue_.Capacity()) {
       return absl::ResourceExhaustedError(
           absl::StrCat("upload: job queue full (", queue_.Capacity(), " jobs waiting)"));
     }
 
-    job_id = store_.NewId();
-    MESHSEG_ASSIGN_OR_RETURN(const std::string path, spool_.CreateJob(job_id, header.file_name()));
-    MESHSEG_RETURN_IF_ERROR(ReceiveUpload(context, reader, header, max_upload_bytes_, path));
-    MESHSEG_RETURN_IF_ERROR(CheckFormat(path, params));
+    job_id = NewJobId();
+    const std::string file_name = SafeFileName(header.file_name());
+    scratch = scratch_.ScratchPath(job_id, file_name);
+    MESHSEG_RETURN_IF_ERROR(ReceiveUpload(context, reader, header, max_upload_bytes_, scratch));
+    MESHSEG_RETURN_IF_ERROR(CheckFormat(scratch, params));
 
-    store_.Add(job_id, std::filesystem::path(path).filename().string(), header.total_size(),
-               path, std::move(params));
+    record.set_upload_key(UploadKey(job_id, file_name));
+    MESHSEG_RETURN_IF_ERROR(blobs_.Put(record.upload_key(), scratch));
+    v1::Job& job = *record.mutable_job();
+    job.set_job_id(job_id);
+    job.set_file_name(file_name);
+    job.set_upload_size(header.total_size());
+    job.set_created_unix_ms(absl::ToUnixMillis(absl::Now()));
+    *record.mutable_options() = header.options();
+    record.set_format_hint(header.format_hint());
+    MESHSEG_RETURN_IF_ERROR(store_.Create(record));
     // Logged before the push: a free worker may log job_started at once.
     Log("job_queued", {{"job", job_id},
-                       {"file", path.substr(path.find_last_of('/') + 1)},
+                       {"file", file_name},
                        {"bytes", absl::StrCat(header.total_size())},
                        {"peer", context->peer()}});
     if (absl::Status pushed = queue_.Push(job_id); !pushed.ok()) {
@@ -73,7 +89,9 @@ grpc::Status SegmentationService::Upload(grpc::ServerContext* context,
 
   const absl::Status status = accept();
   if (!status.ok()) {
-    if (!job_id.empty()) spool_.RemoveJob(job_id);
+    std::error_code ec;
+    if (!scratch.empty()) std::filesystem::remove(scratch, ec);
+    if (!record.upload_key().empty()) (void)blobs_.Remove(record.upload_key());
     Log("upload_rejected", {{"code", absl::StatusCodeToString(status.code())},
                             {"error", std::string(status.message())},
                             {"peer", context->peer()}});

@@ -1,5 +1,6 @@
 #include "absl/strings/str_cat.h"
 #include "absl/strings/str_format.h"
+#include "absl/time/clock.h"
 #include "meshseg/proto/grpc_status.h"
 #include "server/service.h"
 
@@ -8,6 +9,9 @@ namespace {
 
 // How often a watcher with no news checks whether its client went away.
 constexpr absl::Duration kPollInterval = absl::Milliseconds(100);
+// How often it reads the job although no change was signalled (a missed
+// notification costs at most this much delay).
+constexpr absl::Duration kRereadInterval = absl::Seconds(2);
 
 bool SameEvent(const v1::Job& a, const v1::Job& b) {
   return a.state() == b.state() && a.queue_position() == b.queue_position() &&
@@ -41,8 +45,22 @@ grpc::Status SegmentationService::WatchJob(grpc::ServerContext* context,
                                            grpc::ServerWriter<v1::JobEvent>* writer) {
   v1::Job last;
   bool first = true;
+  int64_t seen = 0;
+  absl::Time next_read = absl::InfinitePast();
   while (true) {
+    // The store is read only when it signals a change (or rarely, as a
+    // safety net), never on every wake-up: in Redis mode a read is a round
+    // trip.
     const int64_t generation = store_.generation();
+    if (!first && generation == seen && absl::Now() < next_read) {
+      store_.AwaitChange(seen, kPollInterval);
+      if (context->IsCancelled()) {
+        return ToGrpcStatus(absl::CancelledError("watch: client went away or deadline passed"));
+      }
+      continue;
+    }
+    seen = generation;
+    next_read = absl::Now() + kRereadInterval;
     absl::StatusOr<v1::Job> job = store_.Get(request->job_id());
     if (!job.ok()) return ToGrpcStatus(job.status());  // unknown, or expired meanwhile
     if (first || !SameEvent(*job, last)) {
@@ -56,7 +74,7 @@ grpc::Status SegmentationService::WatchJob(grpc::ServerContext* context,
       first = false;
     }
     if (IsTerminal(last.state())) return grpc::Status::OK;
-    store_.AwaitChange(generation, kPollInterval);
+    store_.AwaitChange(seen, kPollInterval);
     if (context->IsCancelled()) {
       return ToGrpcStatus(absl::CancelledError("watch: client went away or deadline passed"));
     }

@@ -1,16 +1,26 @@
 // File: worker_pool.h
 // -----------------------------------------------------------------------------
-// N threads that take job ids from the queue and run them: the runner
-// (RunPipeline) on the spooled upload with the job's stop token and a progress
-// callback, then the result written to the spool, the upload removed, the
-// job finished in the store, one log line.
+// N threads that take jobs from the queue and run them: start the attempt in
+// the job store, the runner (RunPipeline) on the upload with the job's stop
+// token and a progress callback, the result put in the blob store, the job
+// finished in the store, the upload removed, the queue told, one log line
+// per step. A job stopped by a shutdown is released (queued again), not
+// cancelled. When the store cannot be reached the worker retries with
+// backoff; it never drops an outcome and never spins.
+//
+// Test-only hook: if the environment variable MESHSEG_TEST_ABORT_ON_FILE
+// names a job's file name, the worker process calls abort() when it starts
+// that job (a "poison" input that kills its worker, for the recovery tests).
+// Unset in production; never set it outside tests.
 #ifndef MESHSEG_SERVER_WORKER_POOL_H_
 #define MESHSEG_SERVER_WORKER_POOL_H_
 
+#include <stop_token>
 #include <string>
 #include <thread>
 #include <vector>
 
+#include "server/blob_store.h"
 #include "server/job_queue.h"
 #include "server/job_store.h"
 #include "server/server_options.h"
@@ -21,25 +31,33 @@ namespace meshseg::server {
 class WorkerPool {
  public:
   // Starts `workers` threads. All references must outlive the pool.
-  WorkerPool(int workers, JobQueue& queue, JobStore& store, const Spool& spool,
-             JobRunner runner);
+  WorkerPool(int workers, int max_attempts, JobQueue& queue, JobStore& store, BlobStore& blobs,
+             const Spool& scratch, JobRunner runner);
   // Joins the threads; the queue must have been closed.
   ~WorkerPool();
 
   WorkerPool(const WorkerPool&) = delete;
   WorkerPool& operator=(const WorkerPool&) = delete;
 
-  // Waits for every thread to return (after JobQueue::Close()).
+  // Waits for every thread to return (after JobQueue::Close()). Calls that
+  // retry an unreachable store give up once `give_up` is requested.
   void Join();
+  void GiveUpRetries() { give_up_.request_stop(); }
 
  private:
   void Loop();
-  void Run(const std::string& job_id);
+  void Run(const Lease& lease);
+  // Runs the started job; returns its outcome and fills `output`.
+  absl::Status Execute(const RunSpec& spec, JobOutput& output);
 
+  const int max_attempts_;
   JobQueue& queue_;
   JobStore& store_;
-  const Spool& spool_;
+  BlobStore& blobs_;
+  const Spool& scratch_;
   JobRunner runner_;
+  std::string abort_on_file_;  // the test-only hook, empty = off
+  std::stop_source give_up_;
   std::vector<std::thread> threads_;
 };
 
