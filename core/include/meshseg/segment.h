@@ -130,7 +130,10 @@ struct SegmentEstimates {
 struct Exactness {
   double tolerance = 0.0;  // model units
   double share = 0.0;      // in [0, 1]
-  bool exact = false;      // share >= kMinExactShare
+  // The sag of a facet of the mesh's mean edge on a sphere as wide as the
+  // part (its bounding-box diagonal), in tolerances (kMinResolvedSag).
+  double resolved_sag = 0.0;
+  bool exact = false;  // share >= kMinExactShare and resolved_sag >= kMinResolvedSag
 };
 // A scan's facets miss every surface by its noise (share 0); a CAD export's
 // each lie on the surface of their face (measured on the 18 labelled CAD
@@ -139,6 +142,18 @@ struct Exactness {
 // cutting across every edge between its surfaces (0.93-0.97 at the default
 // voxel sizes).
 inline constexpr double kMinExactShare = 0.98;
+// The exact path types a face by how its facets bend, so it needs the
+// bending to stand above the tolerance: a face that curves by less than tau
+// over a facet is a plane to it, and any type fits a few of its facets. A
+// part's faces curve at radii up to its own size; where the facets sag by
+// less than tau on such a radius (a dense mesh whose coordinates carry few
+// digits), its gently curved faces would come out as sprays of planes and
+// small cylinders, and the share above says nothing (every facet has a
+// neighbour "in its plane"). Such a mesh takes the scan path, which fits
+// surfaces over many facets. Measured (resolved_sag): the 18 labelled CAD
+// meshes and the CAD exports of shared/data 20-8000, fandisk.off (6
+// significant digits, 13K facets) 0.24.
+inline constexpr double kMinResolvedSag = 1.0;
 
 struct Segmentation {
   std::vector<int> face_labels;    // one per mesh face; region id or -1

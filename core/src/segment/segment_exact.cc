@@ -37,7 +37,8 @@ double Tolerance(const TriMesh& mesh, const FacetMesh& fm, std::optional<double>
                                           segment_internal::PlanarityFloor(fm));
 }
 
-Exactness Measure(const FacetMesh& fm, double tolerance) {
+// `mean_edge`: the mean edge length of the mesh.
+Exactness Measure(const FacetMesh& fm, double tolerance, double mean_edge) {
   Exactness e;
   e.tolerance = tolerance;
   const int n = fm.facet_count();
@@ -58,7 +59,10 @@ Exactness Measure(const FacetMesh& fm, double tolerance) {
     }
   }
   e.share = total > 0.0 ? explained / total : 0.0;
-  e.exact = e.share >= kMinExactShare;
+  e.resolved_sag = tolerance > 0.0 && fm.diagonal > 0.0
+                       ? mean_edge * mean_edge / (8.0 * fm.diagonal * tolerance)
+                       : 0.0;
+  e.exact = e.share >= kMinExactShare && e.resolved_sag >= kMinResolvedSag;
   return e;
 }
 
@@ -134,7 +138,7 @@ Segmentation Assemble(const Mesh& mesh, const FacetMesh& fm,
 
 Exactness EstimateExactness(const Mesh& mesh, std::optional<double> tolerance) {
   const FacetMesh fm = segment_internal::BuildFacetMesh(mesh.tri);
-  return Measure(fm, Tolerance(mesh.tri, fm, tolerance));
+  return Measure(fm, Tolerance(mesh.tri, fm, tolerance), MeanEdgeLength(mesh.tri));
 }
 
 absl::StatusOr<Segmentation> SegmentExactFacets(const Mesh& mesh, const SegmentParams& params,

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <map>
 #include <numbers>
 #include <string>
 #include <utility>
@@ -264,6 +265,47 @@ TEST(EstimateExactness, ANoiseFreeVoxelSurfaceIsNotATessellation) {
   ASSERT_TRUE(part.ok()) << part.status();
   const Exactness e = EstimateExactness(part->mesh);
   EXPECT_FALSE(e.exact) << e.share;
+}
+
+// A unit sphere tessellated by `levels` halvings of an octahedron's edges,
+// its coordinates rounded to `decimals` decimal places.
+Mesh FineSphere(int levels, int decimals) {
+  std::vector<Eigen::Vector3d> v = {{1, 0, 0},  {-1, 0, 0}, {0, 1, 0},
+                                    {0, -1, 0}, {0, 0, 1},  {0, 0, -1}};
+  std::vector<std::array<int, 3>> f = {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4},
+                                       {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}};
+  for (int level = 0; level < levels; ++level) {
+    std::map<std::pair<int, int>, int> middle;
+    const auto mid = [&](int a, int b) {
+      const auto key = std::minmax(a, b);
+      const auto [it, added] = middle.try_emplace(key, static_cast<int>(v.size()));
+      if (added) v.push_back((v[a] + v[b]).normalized());
+      return it->second;
+    };
+    std::vector<std::array<int, 3>> finer;
+    for (const auto& [a, b, c] : f) {
+      const int ab = mid(a, b), bc = mid(b, c), ca = mid(c, a);
+      finer.insert(finer.end(), {{a, ab, ca}, {ab, b, bc}, {ca, bc, c}, {ab, bc, ca}});
+    }
+    f = std::move(finer);
+  }
+  const double unit = std::pow(10.0, decimals);
+  for (Eigen::Vector3d& p : v) p = (p * unit).array().round() / unit;
+  absl::StatusOr<Mesh> mesh = BuildMesh(std::move(v), f, "sphere");
+  EXPECT_TRUE(mesh.ok()) << mesh.status();
+  return *std::move(mesh);
+}
+
+// A fine sphere (8192 facets, edges of 0.025) whose coordinates carry 10
+// decimals is exact; with 4 decimals its facets sag by less than the
+// rounding on a sphere as wide as the part, so the neighbour "in a facet's
+// plane" says nothing, and it takes the scan path.
+TEST(EstimateExactness, ADenseMeshRoundedCoarserThanItsFacetsSagIsNotExact) {
+  const Exactness fine = EstimateExactness(FineSphere(5, 10));
+  EXPECT_TRUE(fine.exact) << fine.share << " " << fine.resolved_sag;
+  const Exactness coarse = EstimateExactness(FineSphere(5, 4));
+  EXPECT_LT(coarse.resolved_sag, kMinResolvedSag);
+  EXPECT_FALSE(coarse.exact) << coarse.share;
 }
 
 // The same prism in micrometres, metres and far from the origin: the
