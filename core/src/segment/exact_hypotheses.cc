@@ -1,6 +1,8 @@
 #include "segment/exact_hypotheses.h"
 
+#include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
+#include <Eigen/QR>
 #include <algorithm>
 #include <cmath>
 #include <functional>
@@ -207,6 +209,116 @@ std::optional<Hypothesis> CurvedFit(const FacetMesh& fm, const std::vector<int>&
   return std::nullopt;
 }
 
+// The axis a cylinder's chord facets give: each facet of a strip between
+// two rulings contains the ruling direction, so its normal is perpendicular
+// to the axis; the axis is the direction least along the facets' normals
+// (area-weighted). Also returns `tilt`, the largest |n . axis| over the
+// facets (0 for strips, small for a fine tessellation whose triangles cut
+// across the rulings).
+Eigen::Vector3d ChordAxis(const FacetMesh& fm, std::span<const int> facets, double* tilt) {
+  Eigen::Matrix3d scatter = Eigen::Matrix3d::Zero();
+  for (const int f : facets) scatter += fm.area[f] * fm.normal[f] * fm.normal[f].transpose();
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(scatter);
+  const Eigen::Vector3d axis = eigen.eigenvectors().col(0);
+  *tilt = 0.0;
+  for (const int f : facets) *tilt = std::max(*tilt, std::abs(fm.normal[f].dot(axis)));
+  return axis;
+}
+
+// The cylinder about `axis` through `points`: the circle through their
+// projections across the axis (algebraic least squares); nullopt if the
+// points are degenerate or any misses it by more than tau.
+std::optional<Surface> CylinderAbout(const Eigen::Vector3d& axis,
+                                     const std::vector<Eigen::Vector3d>& points, double tau) {
+  const Eigen::Vector3d u = axis.unitOrthogonal();
+  const Eigen::Vector3d v = axis.cross(u);
+  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+  for (const Eigen::Vector3d& p : points) mean += p / static_cast<double>(points.size());
+  Eigen::MatrixXd a(points.size(), 3);
+  Eigen::VectorXd b(points.size());
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const double x = (points[i] - mean).dot(u), y = (points[i] - mean).dot(v);
+    a.row(static_cast<Eigen::Index>(i)) << 2.0 * x, 2.0 * y, 1.0;
+    b(static_cast<Eigen::Index>(i)) = x * x + y * y;
+  }
+  const Eigen::Vector3d c = a.colPivHouseholderQr().solve(b);
+  const double r2 = c(2) + c(0) * c(0) + c(1) * c(1);
+  if (!(r2 > 0.0) || !std::isfinite(r2)) return std::nullopt;
+  const Cylinder cylinder{
+      .axis_origin = mean + c(0) * u + c(1) * v, .axis_direction = axis, .radius = std::sqrt(r2)};
+  for (const Eigen::Vector3d& p : points) {
+    if (!(std::abs(SignedDistance(cylinder, p)) <= tau)) return std::nullopt;
+  }
+  return Surface{cylinder};
+}
+
+// A cylinder or cone grown from facet f one neighbour at a time, each kept
+// only if the group still fits the type exactly with every facet on it: the
+// seed of a coarse round (a few strips of 15 degrees or more, rim to rim),
+// whose facets meet tangent neighbours (a blend, a flat side) across
+// flatter edges than their own, so that rings and smoothest-first groups
+// reach over into the next face before they hold a round's evidence. Each
+// neighbour of f (or of a facet in f's plane) across a bend is tried as the
+// first: two strips fix a cylinder, and a wrong first bend fits nothing
+// further.
+std::optional<Hypothesis> StripsAt(const FacetMesh& fm, int f, double tau) {
+  const double crease = kSeedCreaseDeg * kPi / 180.0;
+  // f and the facets in its plane around it, then the bends out of them.
+  std::vector<int> flat = {f};
+  std::vector<int> bends;
+  for (std::size_t k = 0; k < flat.size() && flat.size() < kMaxSeedFacets; ++k) {
+    for (const int h : fm.across[flat[k]]) {
+      if (h < 0 || fm.normal[h].isZero() || std::find(flat.begin(), flat.end(), h) != flat.end())
+        continue;
+      const double angle = Dihedral(fm, flat[k], h);
+      if (angle < kDistinctNormal) {
+        flat.push_back(h);
+      } else if (angle < crease && std::find(bends.begin(), bends.end(), h) == bends.end()) {
+        bends.push_back(h);
+      }
+    }
+  }
+  for (const SurfaceType type : {SurfaceType::kCylinder, SurfaceType::kCone}) {
+    for (const int first : bends) {
+      std::vector<int> group = flat;
+      group.push_back(first);
+      std::optional<Surface> fit = FitExactly(fm, type, group, tau);
+      if (!fit) continue;
+      std::vector<int> tried = group;
+      for (std::size_t k = 0; k < group.size() && group.size() < kMaxSeedFacets; ++k) {
+        for (const int h : fm.across[group[k]]) {
+          if (h < 0 || fm.normal[h].isZero() || Dihedral(fm, group[k], h) >= crease ||
+              std::find(tried.begin(), tried.end(), h) != tried.end()) {
+            continue;
+          }
+          tried.push_back(h);
+          group.push_back(h);
+          const std::optional<Surface> next = FitExactly(fm, type, group, tau);
+          // Without evidence yet the fit is one of many through the
+          // corners (three rulings lie on cylinders of any tilt): the
+          // corners decide; with it, the criterion on every facet.
+          if (next && (!HoldsEvidence(fm, type, group) ||
+                       std::all_of(group.begin(), group.end(),
+                                   [&](int g) { return FacetOnSurface(fm, g, *next, tau); }))) {
+            fit = next;
+          } else {
+            group.pop_back();
+          }
+        }
+      }
+      if (!HoldsEvidence(fm, type, group) || !std::all_of(group.begin(), group.end(), [&](int g) {
+            return FacetOnSurface(fm, g, *fit, tau);
+          })) {
+        continue;
+      }
+      Hypothesis h{.type = type, .surface = *fit, .support = group};
+      std::sort(h.support.begin(), h.support.end());
+      return h;
+    }
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
 std::optional<Surface> FitExactly(const FacetMesh& fm, SurfaceType type,
@@ -215,8 +327,23 @@ std::optional<Surface> FitExactly(const FacetMesh& fm, SurfaceType type,
   FitCornersOf(fm, facets, &points, &normals);
   const FitResult fit =
       FitOfType(type, {.points = points, .normals = normals, .weights = {}}, kExactFit);
-  if (!fit.ok() || !(fit.max_distance <= tau)) return std::nullopt;
-  return fit.surface;
+  const bool fits = fit.ok() && fit.max_distance <= tau;
+  if (type != SurfaceType::kCylinder)
+    return fits ? std::optional<Surface>(fit.surface) : std::nullopt;
+  // Corners on few rims lie on many cylinders (rim to rim strips: corners at
+  // two heights only, and a cylinder of any tilt through them). The surface
+  // is one whose axis is as perpendicular to the facets' normals as they
+  // allow: a fit whose axis they tilt from by more than twice their least
+  // tilt (ChordAxis) is another cylinder through the corners.
+  double least_tilt = 0.0;
+  const Eigen::Vector3d axis = ChordAxis(fm, facets, &least_tilt);
+  if (fits) {
+    const Eigen::Vector3d& fitted = std::get<Cylinder>(fit.surface).axis_direction;
+    double tilt = 0.0;
+    for (const int f : facets) tilt = std::max(tilt, std::abs(fm.normal[f].dot(fitted)));
+    if (tilt <= 2.0 * least_tilt + kDistinctNormal) return fit.surface;
+  }
+  return CylinderAbout(axis, points, tau);
 }
 
 bool HoldsEvidence(const FacetMesh& fm, SurfaceType type, std::span<const int> facets) {
@@ -252,6 +379,10 @@ std::optional<Hypothesis> CurvedAt(const FacetMesh& fm, int f, double tau) {
       }
     }
     if (HoldsEvidence(fm, h->type, h->support)) return h;
+  }
+  if (std::optional<Hypothesis> h = StripsAt(fm, f, tau)) {
+    Grow(fm, tau, &*h);
+    return h;
   }
   return std::nullopt;
 }
