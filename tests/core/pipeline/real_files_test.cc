@@ -175,15 +175,29 @@ TEST(SegmentReal, TrayBottomIsSegmentedFacetByFacet) {
 
 // plate_holes.stl (SOURCES.md): five holes of r 3.3782, four under 82°
 // countersinks, one under a counterbore of r 5.5563 whose floor is at
-// z 6.35; an exact export, segmented facet by facet.
+// z 6.35; an exact export, segmented facet by facet. Its vertical corners
+// are rounds of r 25.4 (15-degree strips from z 6.35 to the top), its
+// bottom edges rounds of r 6.35, blended at the corners by tori
+// (19.05, 6.35): 29 surfaces in all, as the scan path found them on main.
 void ExpectPlateHoles(const PipelineResult& result, double scale) {
   EXPECT_EQ(result.estimates.path, SegmentationPath::kExactFacets);
-  int holes = 0, counterbores = 0, countersinks = 0;
+  EXPECT_EQ(result.regions.size(), 29u);
+  int holes = 0, counterbores = 0, countersinks = 0, corner_rounds = 0, edge_rounds = 0, tori = 0;
   for (const Region& r : result.regions) {
+    EXPECT_NE(r.type, SurfaceType::kFreeform) << "region " << r.id;
     if (const auto* c = std::get_if<Cylinder>(&r.surface);
         c != nullptr && std::abs(c->axis_direction.z()) > 1.0 - 1e-6) {
       if (std::abs(c->radius - 3.3782 * scale) < 0.01 * scale) ++holes;
       if (std::abs(c->radius - 5.5563 * scale) < 0.01 * scale) ++counterbores;
+      if (std::abs(c->radius - 25.4 * scale) < 0.01 * scale) ++corner_rounds;
+    } else if (c != nullptr && std::abs(c->radius - 6.35 * scale) < 0.01 * scale) {
+      EXPECT_LT(std::abs(c->axis_direction.z()), 1e-6) << "region " << r.id;
+      ++edge_rounds;
+    }
+    if (const auto* t = std::get_if<Torus>(&r.surface)) {
+      EXPECT_NEAR(t->major_radius, 19.05 * scale, 0.01 * scale) << "region " << r.id;
+      EXPECT_NEAR(t->minor_radius, 6.35 * scale, 0.01 * scale) << "region " << r.id;
+      ++tori;
     }
     if (const auto* c = std::get_if<Cone>(&r.surface)) {
       EXPECT_NEAR(std::abs(c->axis_direction.z()), 1.0, 1e-6) << "region " << r.id;
@@ -197,6 +211,9 @@ void ExpectPlateHoles(const PipelineResult& result, double scale) {
   EXPECT_EQ(holes, 5);
   EXPECT_EQ(counterbores, 1);
   EXPECT_EQ(countersinks, 4);
+  EXPECT_EQ(corner_rounds, 4);
+  EXPECT_EQ(edge_rounds, 4);
+  EXPECT_EQ(tori, 4);
 }
 
 TEST(SegmentReal, PlateHolesAreCylindersUnderConesAndACounterbore) {
