@@ -48,8 +48,9 @@ int ParameterCount(SurfaceType type) {
 }
 
 // The distinct corners of `facets` with the area-weighted normals of the
-// facets around each (in the group), every k-th if more than kMaxFitCorners.
-void FitCornersOf(const FacetMesh& fm, std::span<const int> facets,
+// facets around each (in the group), every k-th if more than kMaxFitCorners;
+// corners on a chord (facet_mesh.h: OnChord within tau) left out.
+void FitCornersOf(const FacetMesh& fm, std::span<const int> facets, double tau,
                   std::vector<Eigen::Vector3d>* points, std::vector<Eigen::Vector3d>* normals) {
   std::unordered_map<int, int> slot;
   std::vector<Eigen::Vector3d> sum;
@@ -69,6 +70,7 @@ void FitCornersOf(const FacetMesh& fm, std::span<const int> facets,
   points->clear();
   normals->clear();
   for (std::size_t i = 0; i < order.size(); i += stride) {
+    if (OnChord(fm, order[i], tau)) continue;  // under a curved surface, by its sag
     points->push_back(fm.points[order[i]]);
     const double n = sum[i].norm();
     normals->push_back(n > 0.0 ? Eigen::Vector3d(sum[i] / n) : Eigen::Vector3d::UnitZ());
@@ -324,7 +326,7 @@ std::optional<Hypothesis> StripsAt(const FacetMesh& fm, int f, double tau) {
 std::optional<Surface> FitExactly(const FacetMesh& fm, SurfaceType type,
                                   std::span<const int> facets, double tau) {
   std::vector<Eigen::Vector3d> points, normals;
-  FitCornersOf(fm, facets, &points, &normals);
+  FitCornersOf(fm, facets, tau, &points, &normals);
   const FitResult fit =
       FitOfType(type, {.points = points, .normals = normals, .weights = {}}, kExactFit);
   const bool fits = fit.ok() && fit.max_distance <= tau;

@@ -8,6 +8,42 @@
 
 namespace meshseg::segment_internal {
 
+namespace {
+
+// A vertex strictly inside a segment between two of its neighbours, not at
+// its ends' tenth of it (a vertex put on an edge, not a corner of a fan).
+constexpr double kChordInside = 0.1;
+
+// fm->chord_ends and chord_offset (facet_mesh.h).
+void FindChordVertices(const TriMesh& mesh, FacetMesh* fm) {
+  const int n = static_cast<int>(fm->points.size());
+  fm->chord_ends.assign(n, {-1, -1});
+  fm->chord_offset.assign(n, std::numeric_limits<double>::infinity());
+  std::vector<int> ring;
+  for (const auto v : mesh.vertices()) {
+    ring.clear();
+    for (const auto w : mesh.vv_range(v)) ring.push_back(w.idx());
+    const Eigen::Vector3d& p = fm->points[v.idx()];
+    for (std::size_t i = 0; i < ring.size(); ++i) {
+      for (std::size_t j = i + 1; j < ring.size(); ++j) {
+        const Eigen::Vector3d& a = fm->points[ring[i]];
+        const Eigen::Vector3d ab = fm->points[ring[j]] - a;
+        const double length2 = ab.squaredNorm();
+        if (!(length2 > 0.0)) continue;
+        const double t = (p - a).dot(ab) / length2;
+        if (t < kChordInside || t > 1.0 - kChordInside) continue;
+        const double offset = (a + t * ab - p).norm();
+        if (offset < fm->chord_offset[v.idx()]) {
+          fm->chord_offset[v.idx()] = offset;
+          fm->chord_ends[v.idx()] = {ring[i], ring[j]};
+        }
+      }
+    }
+  }
+}
+
+}  // namespace
+
 FacetMesh BuildFacetMesh(const TriMesh& mesh) {
   FacetMesh fm;
   const int n_vertices = static_cast<int>(mesh.n_vertices());
@@ -45,6 +81,7 @@ FacetMesh BuildFacetMesh(const TriMesh& mesh) {
     fm.area[f.idx()] = 0.5 * norm;
     fm.normal[f.idx()] = norm > 0.0 ? Eigen::Vector3d(cross / norm) : Eigen::Vector3d::Zero();
   }
+  FindChordVertices(mesh, &fm);
   return fm;
 }
 

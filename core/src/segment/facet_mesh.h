@@ -24,12 +24,25 @@ struct FacetMesh {
   std::vector<Eigen::Vector3d> normal;  // unit; zero for a degenerate facet
   std::vector<double> area;
   double diagonal = 0.0;  // of the bounding box
+  // Per vertex, the two edge neighbours whose segment passes nearest it
+  // with the vertex between them ({-1, -1} if none), and that distance: a
+  // vertex a tessellator put on an edge of a flat facet to meet the next
+  // face (a T-junction made conforming) lies on that edge's chord, under a
+  // curved surface by its sag, and is judged by the chord's ends
+  // (facet_on_surface.h).
+  std::vector<std::array<int, 2>> chord_ends;
+  std::vector<double> chord_offset;
 
   int facet_count() const { return static_cast<int>(corners.size()); }
   Eigen::Vector3d Centroid(int f) const {
     return (points[corners[f][0]] + points[corners[f][1]] + points[corners[f][2]]) / 3.0;
   }
 };
+
+// True if vertex v lies within `tau` of the chord between its chord_ends.
+inline bool OnChord(const FacetMesh& fm, int v, double tau) {
+  return fm.chord_ends[v][0] >= 0 && fm.chord_offset[v] <= tau;
+}
 
 // Returns the distinct corners of `facets`, sorted.
 std::vector<int> CornersOf(const FacetMesh& fm, const std::vector<int>& facets);

@@ -38,6 +38,14 @@ double LargestCurvature(const Surface& surface, const std::array<Eigen::Vector3d
 
 }  // namespace
 
+bool ChordOnSurface(const FacetMesh& fm, int v, const Surface& surface, double tau) {
+  if (!OnChord(fm, v, tau)) return false;
+  for (const int end : fm.chord_ends[v]) {
+    if (!(std::abs(SignedDistance(surface, fm.points[end])) <= tau)) return false;
+  }
+  return true;
+}
+
 bool CornersOnSurface(const FacetMesh& fm, int f, const Surface& surface, double tau) {
   for (const int v : fm.corners[f]) {
     if (!(std::abs(SignedDistance(surface, fm.points[v])) <= tau)) return false;
@@ -54,7 +62,9 @@ bool FacetOnSurface(const FacetMesh& fm, int f, const Surface& surface, double t
   for (int k = 0; k < 3; ++k) {
     const Eigen::Vector3d& p = fm.points[fm.corners[f][k]];
     const Projection pr = Project(surface, p, foot.normal);
-    if (!(std::abs(pr.distance) <= tau)) return false;  // (1)
+    if (!(std::abs(pr.distance) <= tau) && !ChordOnSurface(fm, fm.corners[f][k], surface, tau)) {
+      return false;  // (1)
+    }
     spread = std::max(spread, AngleBetween(pr.normal, foot.normal));
     reach = std::max(reach, (p - centroid).norm());
     longest = std::max(longest, (fm.points[fm.corners[f][(k + 1) % 3]] - p).norm());

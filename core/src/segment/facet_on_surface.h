@@ -5,7 +5,10 @@
 // it computes on the face's surface; the facets are chords of the surface,
 // under it by their sag. So a facet f is consistent with a surface S iff
 //  (1) its three corners lie on S within the tolerance tau (the rounding of
-//      the file's numbers, exact_tolerance.h);
+//      the file's numbers, exact_tolerance.h), or on a chord of S: a corner
+//      a tessellator put on an edge of a flat facet to meet the next face
+//      lies on the segment between two of its neighbours (within tau), and
+//      counts as on S when both ends of it are;
 //  (2) its plane is a chord plane of S over it: the angle between f's normal
 //      and S's normal at the foot of f's centroid is at most the angle by
 //      which S's normal turns from there to f's corners (the spread), plus
@@ -42,8 +45,12 @@ inline constexpr double kMaxSpreadDeg = 90.0;
 // within `tau`, as above.
 bool FacetOnSurface(const FacetMesh& fm, int f, const Surface& surface, double tau);
 
+// True if vertex v lies on a chord of `surface` (test (1) above): within
+// `tau` of the segment between its chord_ends, both within `tau` of it.
+bool ChordOnSurface(const FacetMesh& fm, int v, const Surface& surface, double tau);
+
 // True if every corner of facet f lies within `tau` of `surface`: test (1)
-// alone, for a quick rejection.
+// alone (without chords), for a quick rejection.
 bool CornersOnSurface(const FacetMesh& fm, int f, const Surface& surface, double tau);
 
 }  // namespace meshseg::segment_internal

@@ -20,6 +20,7 @@ namespace {
 using segment_internal::CornersOf;
 using segment_internal::ExactRegion;
 using segment_internal::FacetMesh;
+using segment_internal::OnChord;
 
 // Facets sampled (every k-th) for the share of exact facets.
 constexpr int kExactnessSample = 1000;
@@ -66,17 +67,22 @@ Exactness Measure(const FacetMesh& fm, double tolerance, double mean_edge) {
   return e;
 }
 
-// Distances of `corners` to `surface` into rms and max.
+// Distances of `corners` to `surface` into rms and max; corners on a chord
+// (facet_mesh.h: OnChord within tau) lie under it by its sag, and are left
+// out.
 void Distances(const FacetMesh& fm, const std::vector<int>& corners, const Surface& surface,
-               double* rms, double* max) {
+               double tau, double* rms, double* max) {
   double sum2 = 0.0;
   *max = 0.0;
+  int count = 0;
   for (const int v : corners) {
+    if (OnChord(fm, v, tau)) continue;
+    ++count;
     const double d = std::abs(SignedDistance(surface, fm.points[v]));
     sum2 += d * d;
     *max = std::max(*max, d);
   }
-  *rms = corners.empty() ? 0.0 : std::sqrt(sum2 / static_cast<double>(corners.size()));
+  *rms = count == 0 ? 0.0 : std::sqrt(sum2 / count);
 }
 
 // The Segmentation of `exact`: regions renumbered by first facet, vertices
@@ -118,7 +124,7 @@ Segmentation Assemble(const Mesh& mesh, const FacetMesh& fm,
     for (const int f : regions[r].facets) region.area += fm.area[f];
     const std::vector<int> corners = CornersOf(fm, regions[r].facets);
     region.vertex_count = static_cast<int64_t>(corners.size());
-    Distances(fm, corners, regions[r].surface, &region.rms_distance, &region.max_distance);
+    Distances(fm, corners, regions[r].surface, tau, &region.rms_distance, &region.max_distance);
     region.surface_id = surface_of_region[r];
     seg.regions.push_back(std::move(region));
   }
@@ -127,7 +133,7 @@ Segmentation Assemble(const Mesh& mesh, const FacetMesh& fm,
     for (const int r : s.regions) {
       facets.insert(facets.end(), regions[r].facets.begin(), regions[r].facets.end());
     }
-    Distances(fm, CornersOf(fm, facets), s.surface, &s.rms_distance, &s.max_distance);
+    Distances(fm, CornersOf(fm, facets), s.surface, tau, &s.rms_distance, &s.max_distance);
     s.surface = segment_internal::Translated(s.surface, fm.origin);
     seg.surfaces.push_back(std::move(s));
   }
