@@ -126,13 +126,11 @@ TEST(SegmentExactFacets, FindsTheCylinderOfACoarseHalfRound) {
 
 // A half round in 18 facets of 10 degrees, one of them with a vertex on its
 // cap edge 0.0076 under the arc (a CAD tessellator adds such vertices to
-// meet the next face): one cylinder still holds all 37 side triangles.
-// DISABLED: the criterion asks every corner of a triangle to lie on the
-// surface, and a vertex on a chord does not; the triangles around it split
-// the cylinder in two (tray_bottom_1002.stl's holes in four). The flat facet
-// (its coplanar triangles) is what must be judged, by its outline's corners
-// (issue 31 note: left to do).
-TEST(SegmentExactFacets, DISABLED_AFacetWithAVertexOnItsChordStaysOnTheCylinder) {
+// meet the next face): one cylinder still holds all 37 side triangles, the
+// vertex judged by the ends of its chord (facet_on_surface.h, test 1). Before
+// that, the triangles around it split the cylinder in two
+// (tray_bottom_1002.stl's holes in four).
+TEST(SegmentExactFacets, AFacetWithAVertexOnItsChordStaysOnTheCylinder) {
   const Segmentation seg = SegmentExact(ArcPrism(2.0, 19, 180.0, /*chord_facet=*/8));
   int cylinders = 0;
   for (const Region& region : seg.regions) {
