@@ -14,13 +14,21 @@ namespace {
 constexpr std::size_t kMaxSampled = 3000;
 constexpr int kMaxDecimalDigits = 15;
 
+// A number within this many units in its last place of a short decimal is
+// that decimal carried through a unit conversion: x 1000 or x 0.001 is not
+// exact in binary, and moves a decimal off its nearest double by an ulp or
+// two.
+constexpr double kConversionUlps = 4.0;
+
 // The fewest significant decimal digits that print `x` so it reads back
-// exactly; kMaxDecimalDigits + 1 if none up to kMaxDecimalDigits.
+// within kConversionUlps of it; kMaxDecimalDigits + 1 if none up to
+// kMaxDecimalDigits.
 int DecimalDigits(double x) {
   char text[40];
+  const double ulps = kConversionUlps * std::abs(x) * std::numeric_limits<double>::epsilon();
   for (int k = 1; k <= kMaxDecimalDigits; ++k) {
     std::snprintf(text, sizeof(text), "%.*g", k, x);
-    if (std::strtod(text, nullptr) == x) return k;
+    if (std::abs(std::strtod(text, nullptr) - x) <= ulps) return k;
   }
   return kMaxDecimalDigits + 1;
 }
