@@ -12,6 +12,7 @@
 #include "meshseg/fit.h"
 #include "meshseg/status_macros.h"
 #include "segment/exact_hypotheses.h"
+#include "segment/facet_on_surface.h"
 
 namespace meshseg::segment_internal {
 namespace {
@@ -170,6 +171,43 @@ double AngularStep(const FacetMesh& fm, const std::vector<int>& owner,
   return step > 0.0 ? step : kDefaultAngularStep;
 }
 
+// A facet no hypothesis took whose corners all lie on the surface of a
+// region across one of its edges (within tau, or on a chord of it) joins
+// that region: it fails the chord criterion there (a sliver spanning a rim)
+// but holds no evidence of a surface of its own, its corners fixing only
+// its own plane. Of several such neighbours, the one sharing the most edges
+// with it; repeated while facets join.
+void JoinNeighbours(const FacetMesh& fm, double tau, std::vector<int>* owner,
+                    std::vector<ExactRegion>* regions) {
+  const int n = fm.facet_count();
+  for (bool joined = true; joined;) {
+    joined = false;
+    for (int f = 0; f < n; ++f) {
+      if ((*owner)[f] >= 0 || fm.normal[f].isZero()) continue;
+      int best = -1, best_edges = 0;
+      for (const int g : fm.across[f]) {
+        const int r = g < 0 ? -1 : (*owner)[g];
+        if (r < 0 || (*regions)[r].type == SurfaceType::kFreeform) continue;
+        const int edges = static_cast<int>(
+            std::count_if(fm.across[f].begin(), fm.across[f].end(),
+                          [&](int h) { return h >= 0 && (*owner)[h] == r; }));
+        if (edges <= best_edges) continue;
+        const Surface& surface = (*regions)[r].surface;
+        const bool on = std::all_of(fm.corners[f].begin(), fm.corners[f].end(), [&](int v) {
+          return std::abs(SignedDistance(surface, fm.points[v])) <= tau ||
+                 ChordOnSurface(fm, v, surface, tau);
+        });
+        if (on) best = r, best_edges = edges;
+      }
+      if (best < 0) continue;
+      (*owner)[f] = best;
+      (*regions)[best].facets.push_back(f);
+      joined = true;
+    }
+  }
+  for (ExactRegion& r : *regions) std::sort(r.facets.begin(), r.facets.end());
+}
+
 // Facets no hypothesis took: pieces over edges no sharper than `step`; a
 // piece of one facet is a plane, a larger one FREEFORM.
 void FreeformRegions(const FacetMesh& fm, double step, std::vector<int>* owner,
@@ -238,6 +276,7 @@ absl::StatusOr<ExactFacets> SegmentFacets(const FacetMesh& fm, double tau, const
       r.surface = *refit;
     }
   }
+  JoinNeighbours(fm, tau, &owner, &out.regions);
   FreeformRegions(fm, out.angular_step, &owner, &out.regions);
   out.face_labels = std::move(owner);
   return out;
