@@ -7,6 +7,7 @@
 #include "absl/strings/str_format.h"
 #include "client/commands.h"
 #include "meshseg/mesh.h"
+#include "meshseg/pipeline.h"
 #include "meshseg/point_cloud.h"
 #include "meshseg/status_macros.h"
 
@@ -98,8 +99,21 @@ absl::Status CloudInfo(const std::string& path, FileFormat format, bool json) {
 }  // namespace
 
 absl::Status RunInfo(const Argv& argv) {
-  MESHSEG_ASSIGN_OR_RETURN(const Args args, Args::Parse(argv, {}, {"--json"}, 1));
+  MESHSEG_ASSIGN_OR_RETURN(const Args args,
+                           Args::Parse(argv, {}, {"--json", "--memory-estimate"}, 1));
   const std::string& path = args.positional(0);
+  if (args.Has("--memory-estimate")) {  // from the header alone, as admission sees it
+    MESHSEG_ASSIGN_OR_RETURN(const MemoryEstimate e, EstimateJobMemory(path));
+    std::printf(
+        "{\"file\": %s, \"format\": \"%s\", \"point_cloud\": %s, "
+        "\"declared_vertices\": %lld, \"declared_faces\": %lld, \"file_bytes\": %lld, "
+        "\"peak_bytes\": %lld}\n",
+        JsonString(std::filesystem::path(path).filename().string()).c_str(),
+        FileFormatName(e.input.format), e.input.point_cloud ? "true" : "false",
+        (long long)e.input.vertex_count, (long long)e.input.face_count,
+        (long long)e.input.file_bytes, (long long)e.peak_bytes);
+    return absl::OkStatus();
+  }
   MESHSEG_ASSIGN_OR_RETURN(const FileFormat format, DetectFileFormat(path));
   MESHSEG_ASSIGN_OR_RETURN(const bool cloud, IsPointCloudFile(path));
   return cloud ? CloudInfo(path, format, args.Has("--json"))

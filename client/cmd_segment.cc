@@ -1,8 +1,10 @@
-// meshseg segment INPUT -o RESULT.json [--colored-ply OUT.ply]
+// meshseg segment INPUT -o RESULT.json [--colored-ply OUT.ply] [--report REPORT.html]
+//   [--step OUT.step [--unit U]]
 //   [--distance-tolerance X] [--angle-tolerance DEG] [--format FMT] [--server HOST:PORT]
 //   [--path exact|scan] [--exact-tolerance X]
 // In-process by default; with --server the same result comes from the service.
 #include <cstdio>
+#include <filesystem>
 
 #include "absl/strings/str_cat.h"
 #include "client/commands.h"
@@ -18,12 +20,21 @@
 namespace meshseg::cli {
 namespace {
 
+// The STEP file asked for with --step (and its --unit), or none.
+struct StepRequest {
+  std::string path;
+  std::string unit;
+};
+
 absl::StatusOr<v1::SegmentationResult> SegmentOffline(const std::string& path,
                                                       const v1::SegmentOptions& options,
-                                                      const std::string& format_hint) {
+                                                      const std::string& format_hint,
+                                                      const StepRequest& step,
+                                                      ProgressPrinter& progress) {
   MESHSEG_ASSIGN_OR_RETURN(PipelineParams params, FromProto(options));
   MESHSEG_ASSIGN_OR_RETURN(params.format, FormatFromHint(format_hint));
-  ProgressPrinter progress;
+  params.step_path = step.path;
+  params.brep.length_unit = step.unit;
   RunContext ctx;
   ctx.on_progress = [&](std::string_view stage, double f) { progress.Update(stage, f); };
   MESHSEG_ASSIGN_OR_RETURN(const PipelineResult result, RunPipeline(path, params, ctx));
@@ -31,11 +42,23 @@ absl::StatusOr<v1::SegmentationResult> SegmentOffline(const std::string& path,
   return ToProto(result);
 }
 
+// The server's result; with a StepRequest the server writes the STEP file
+// too and it is fetched to `step.path` (when one was written).
 absl::StatusOr<v1::SegmentationResult> SegmentOnServer(const Args& args, const std::string& path,
-                                                       const UploadOptions& options) {
+                                                       UploadOptions options,
+                                                       const StepRequest& step,
+                                                       ProgressPrinter& progress) {
   MESHSEG_ASSIGN_OR_RETURN(MeshsegClient client, ConnectFromArgs(args));
-  ProgressPrinter progress;
-  return client.Segment(path, options, [&](const v1::JobEvent& e) { progress.Event(e); });
+  options.step = !step.path.empty();
+  options.step_unit = step.unit;
+  v1::Job job;
+  absl::StatusOr<v1::SegmentationResult> result =
+      client.Segment(path, options, [&](const v1::JobEvent& e) { progress.Event(e); }, &job);
+  progress.Finish();
+  if (result.ok() && options.step && job.step_size() > 0) {
+    MESHSEG_RETURN_IF_ERROR(client.SaveStep(job.job_id(), step.path));
+  }
+  return result;
 }
 
 // Writes the input coloured by region: a mesh with one colour per input face;
@@ -69,12 +92,12 @@ absl::Status WriteColored(const std::string& input, const std::optional<FileForm
 }  // namespace
 
 absl::Status RunSegment(const Argv& argv) {
-  MESHSEG_ASSIGN_OR_RETURN(
-      const Args args,
-      Args::Parse(argv,
-                  {"-o", "--colored-ply", "--distance-tolerance", "--angle-tolerance", "--format",
-                   "--server", "--path", "--exact-tolerance"},
-                  {}, 1));
+  MESHSEG_ASSIGN_OR_RETURN(const Args args,
+                           Args::Parse(argv,
+                                       {"-o", "--colored-ply", "--distance-tolerance",
+                                        "--angle-tolerance", "--format", "--server", "--report",
+                                        "--step", "--unit", "--path", "--exact-tolerance"},
+                                       {}, 1));
   const std::string& input = args.positional(0);
   const std::optional<std::string> out = args.Value("-o");
   if (!out) return absl::InvalidArgumentError("-o RESULT.json is required");
@@ -102,18 +125,39 @@ absl::Status RunSegment(const Argv& argv) {
   MESHSEG_ASSIGN_OR_RETURN(const std::optional<FileFormat> format,
                            FormatFromHint(options.format_hint));
 
+  const StepRequest step{args.Value("--step").value_or(""),
+                         args.Value("--unit").value_or(BrepParams{}.length_unit)};
+  if (step.path.empty() && args.Has("--unit")) {
+    return absl::InvalidArgumentError("--unit needs --step OUT.step");
+  }
+  ProgressPrinter progress;
   absl::StatusOr<v1::SegmentationResult> result =
-      args.Has("--server") ? SegmentOnServer(args, input, options)
-                           : SegmentOffline(input, options.segment, options.format_hint);
+      args.Has("--server")
+          ? SegmentOnServer(args, input, options, step, progress)
+          : SegmentOffline(input, options.segment, options.format_hint, step, progress);
   if (!result.ok()) return result.status();
   MESHSEG_ASSIGN_OR_RETURN(const std::string json, ResultJson(*result));
   MESHSEG_RETURN_IF_ERROR(WriteTextFile(*out, json));
   if (const std::optional<std::string> ply = args.Value("--colored-ply")) {
     MESHSEG_RETURN_IF_ERROR(WriteColored(input, format, *result, *ply));
   }
+  if (const std::optional<std::string> report = args.Value("--report")) {
+    MESHSEG_RETURN_IF_ERROR(WriteHtmlReport(*report,
+                                            std::filesystem::path(input).filename().string(),
+                                            *result, input, format, progress.Timings()));
+    std::printf("wrote %s\n", report->c_str());
+  }
   std::fputs(RegionTable(*result).c_str(), stdout);
   std::fputs(TopologySummary(*result).c_str(), stdout);
   std::printf("wrote %s\n", out->c_str());
+  if (!step.path.empty()) {
+    std::fputs(BrepSummary(result->brep()).c_str(), stdout);
+    if (!result->brep().error().empty()) {
+      return absl::FailedPreconditionError(
+          absl::StrCat("no STEP file written: ", result->brep().error()));
+    }
+    std::printf("wrote %s\n", step.path.c_str());
+  }
   return absl::OkStatus();
 }
 

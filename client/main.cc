@@ -11,7 +11,7 @@ namespace {
 
 constexpr char kUsage[] =
     "usage: meshseg <command> ...\n"
-    "  info FILE [--json]\n"
+    "  info FILE [--json] [--memory-estimate]\n"
     "  generate PART -o FILE [--voxel-size H] [--noise S] [--ground-truth GT.json]\n"
     "  convert IN OUT\n"
     "  reconstruct CLOUD -o MESH.ply [--format FMT]\n"
@@ -23,7 +23,13 @@ constexpr char kUsage[] =
     "  watch JOB --server HOST:PORT\n"
     "  result JOB -o RESULT.json --server HOST:PORT\n"
     "  cancel JOB --server HOST:PORT\n"
-    "(--server defaults to $MESHSEG_SERVER)\n";
+    "  report RESULT.json [MESH] -o REPORT.html [--format FMT]\n"
+    "(segment also takes --report REPORT.html)\n"
+    "  brep RESULT.json MESH -o OUT.step [--unit mm|cm|m|in|...]\n"
+    "(--server defaults to $MESHSEG_SERVER)\n"
+    "Commands with --server also take --tls-ca CA.pem (TLS; the server's CA),\n"
+    "--tls-cert CERT.pem --tls-key KEY.pem (mutual TLS) and --token TOKEN\n"
+    "(default $MESHSEG_TOKEN; sent as \"authorization: Bearer TOKEN\").\n";
 
 }  // namespace
 
@@ -35,6 +41,8 @@ int main(int argc, char** argv) {
       {"jobs", meshseg::cli::RunJobs},       {"status", meshseg::cli::RunStatus},
       {"watch", meshseg::cli::RunWatch},     {"result", meshseg::cli::RunResult},
       {"cancel", meshseg::cli::RunCancel},  {"reconstruct", meshseg::cli::RunReconstruct},
+      {"report", meshseg::cli::RunReport},
+      {"brep", meshseg::cli::RunBrep},
   };
   if (argc < 2 || std::string(argv[1]) == "help" || std::string(argv[1]) == "--help") {
     std::fputs(kUsage, argc < 2 ? stderr : stdout);

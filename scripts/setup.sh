@@ -11,7 +11,15 @@ PACKAGES=(
   libtbb-dev libcgal-dev libboost-graph-dev libnanoflann-dev
   libhiredis-dev redis-server
   libssl-dev
+  python3 python3-grpcio python3-protobuf python3-pil chromium openssl
+  time
   nodejs
+  prometheus
+  clang-14 libclang-rt-14-dev
+  # brep stage (STEP export): OpenCASCADE 7.6; the CMake config's components
+  # FoundationClasses ... DataExchange need all five -dev packages.
+  libocct-foundation-dev libocct-modeling-data-dev libocct-modeling-algorithms-dev
+  libocct-ocaf-dev libocct-visualization-dev libocct-data-exchange-dev
 )
 
 SUDO=""

@@ -47,6 +47,8 @@ class BlobStore {
 std::string UploadKey(const std::string& job_id, const std::string& safe_file_name);
 // A name no upload can take: SafeFileName never starts with '#'.
 std::string ResultKey(const std::string& job_id);
+// The job's STEP file (UploadHeader.step).
+std::string StepKey(const std::string& job_id);
 
 }  // namespace meshseg::server
 

@@ -80,6 +80,8 @@ std::string UploadKey(const std::string& job_id, const std::string& safe_file_na
 
 std::string ResultKey(const std::string& job_id) { return absl::StrCat(job_id, "/#result.pb"); }
 
+std::string StepKey(const std::string& job_id) { return absl::StrCat(job_id, "/#result.step"); }
+
 absl::Status SyncDir(const std::string& dir) {
   const int fd = open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
   if (fd < 0) return SysError("open folder", dir);

@@ -28,6 +28,11 @@ v1::JobState TerminalState(const absl::Status& status) {
   return v1::JOB_STATE_FAILED;
 }
 
+absl::Status JobNotFound(const std::string& id) {
+  return absl::NotFoundError(
+      absl::StrCat("job \"", id.substr(0, 64), "\" not found (unknown or expired)"));
+}
+
 std::string GaveUpMessage(int attempts, int max_attempts) {
   return absl::StrCat("worker died ", attempts, " times running this job (--max-attempts ",
                       max_attempts, "); not run again");

@@ -20,6 +20,7 @@
 #include "absl/status/statusor.h"
 #include "absl/time/time.h"
 #include "meshseg/v1/service.pb.h"
+#include "server/job_changes.h"
 #include "server/job_record.pb.h"
 #include "server/running_jobs.h"
 
@@ -40,8 +41,10 @@ struct RunSpec {
 // What a finished job produced (SUCCEEDED only).
 struct JobOutput {
   int64_t result_size = 0;
+  std::string result_sha256 = "";  // lowercase hex
   int64_t face_count = 0;
   int region_count = 0;
+  int64_t step_size = 0;  // bytes of the job's STEP file; 0 = none
 };
 
 class JobStore {
@@ -49,8 +52,17 @@ class JobStore {
   virtual ~JobStore() = default;
 
   // Records a new QUEUED job (record.job holds id, file name, sizes, created
-  // time). Errors: UNAVAILABLE (store unreachable), INTERNAL (not written).
-  virtual absl::Status Create(JobRecord record) = 0;
+  // time, tenant, request id) and returns its id; or, when record.job has a
+  // request_id and a job of the same tenant with that request_id is still
+  // known, records nothing and returns that job's id (atomically: two
+  // uploads with one request id never both create a job).
+  // Errors: UNAVAILABLE (store unreachable), INTERNAL (not written).
+  virtual absl::StatusOr<std::string> Create(JobRecord record) = 0;
+
+  // Returns the id of the known job of `tenant` created with `request_id`,
+  // or nullopt. Errors: UNAVAILABLE.
+  virtual absl::StatusOr<std::optional<std::string>> FindRequest(
+      const std::string& tenant, const std::string& request_id) const = 0;
 
   // Forgets `id` (a job that could not be queued).
   virtual void Remove(const std::string& id) = 0;
@@ -106,12 +118,22 @@ class JobStore {
   // The jobs running in this process (to stop them on shutdown).
   RunningJobs& running() { return running_; }
 
+  // Per-job change notification, for watchers of one job (WatchJob): the
+  // store bumps a job on each of its changes, and the watchers of queued
+  // jobs when the queue moves.
+  JobChanges& job_changes() { return job_changes_; }
+
  protected:
   RunningJobs running_;
+  JobChanges job_changes_;
 };
 
 // The terminal state a job ends in with `status`.
 v1::JobState TerminalState(const absl::Status& status);
+
+// The NOT_FOUND of a job id that is unknown, expired, or another tenant's
+// (one message for all three: an id's existence is not revealed).
+absl::Status JobNotFound(const std::string& id);
 
 // The message of a job given up after `attempts` starts (of `max_attempts`).
 std::string GaveUpMessage(int attempts, int max_attempts);

@@ -4,17 +4,13 @@
 #include <utility>
 
 #include "absl/strings/str_cat.h"
+#include "meshseg/proto/grpc_status.h"
 #include "server/log.h"
 
 namespace meshseg::server {
 namespace {
 
 int64_t NowUnixMs() { return absl::ToUnixMillis(absl::Now()); }
-
-absl::Status NotFound(const std::string& id) {
-  return absl::NotFoundError(
-      absl::StrCat("job \"", id.substr(0, 64), "\" not found (unknown or expired)"));
-}
 
 }  // namespace
 
@@ -55,27 +51,47 @@ LocalJobStore::Recovery LocalJobStore::Recover(absl::Time cutoff) {
     const std::string id = job.job_id();
     jobs_[id] = std::move(record);
   }
-  Changed();
+  job_changes_.BumpAll();
+  changes_.Bump();
   return out;
 }
 
-absl::Status LocalJobStore::Create(JobRecord record) {
+std::optional<std::string> LocalJobStore::FindRequestLocked(const std::string& tenant,
+                                                            const std::string& request_id) const {
+  if (request_id.empty()) return std::nullopt;
+  for (const auto& [id, record] : jobs_) {
+    if (record.job().request_id() == request_id && record.job().tenant() == tenant) return id;
+  }
+  return std::nullopt;
+}
+
+absl::StatusOr<std::optional<std::string>> LocalJobStore::FindRequest(
+    const std::string& tenant, const std::string& request_id) const {
+  absl::ReaderMutexLock lock(&mu_);
+  return FindRequestLocked(tenant, request_id);
+}
+
+absl::StatusOr<std::string> LocalJobStore::Create(JobRecord record) {
   absl::MutexLock lock(&mu_);
+  if (std::optional<std::string> existing =
+          FindRequestLocked(record.job().tenant(), record.job().request_id())) {
+    return *existing;
+  }
   record.set_format_version(kRecordFormat);
   record.set_sequence(next_sequence_++);
   record.mutable_job()->set_state(v1::JOB_STATE_QUEUED);
   if (absl::Status s = spool_.WriteRecord(record); !s.ok()) return s;
   const std::string id = record.job().job_id();
   jobs_[id] = std::move(record);
-  Changed();
-  return absl::OkStatus();
+  Changed(id, /*queue_moved=*/false);
+  return id;
 }
 
 void LocalJobStore::Remove(const std::string& id) {
   absl::MutexLock lock(&mu_);
   jobs_.erase(id);
   spool_.RemoveJob(id);
-  Changed();
+  Changed(id, /*queue_moved=*/true);
 }
 
 v1::Job LocalJobStore::View(const JobRecord& record) const {
@@ -87,7 +103,7 @@ v1::Job LocalJobStore::View(const JobRecord& record) const {
 absl::StatusOr<v1::Job> LocalJobStore::Get(const std::string& id) const {
   absl::ReaderMutexLock lock(&mu_);
   const auto it = jobs_.find(id);
-  if (it == jobs_.end()) return NotFound(id);
+  if (it == jobs_.end()) return JobNotFound(id);
   return View(it->second);
 }
 
@@ -117,8 +133,7 @@ absl::StatusOr<JobStore::Started> LocalJobStore::Start(const std::string& id, in
   if (job.attempts() >= max_attempts) {
     job.set_state(v1::JOB_STATE_FAILED);
     job.set_finished_unix_ms(NowUnixMs());
-    job.set_error_code(static_cast<int>(absl::StatusCode::kAborted));
-    job.set_error_message(GaveUpMessage(job.attempts(), max_attempts));
+    SetJobError(absl::AbortedError(GaveUpMessage(job.attempts(), max_attempts)), &job);
     out.outcome = StartOutcome::kGaveUp;
     out.spec.record = record;
   } else {
@@ -130,7 +145,7 @@ absl::StatusOr<JobStore::Started> LocalJobStore::Start(const std::string& id, in
   }
   // Durable before the job runs: a crash during the run counts this attempt.
   Persist(record);
-  Changed();
+  Changed(id, /*queue_moved=*/true);
   return out;
 }
 
@@ -141,7 +156,7 @@ void LocalJobStore::Progress(const std::string& id, std::string_view stage, doub
   v1::Job& job = *it->second.mutable_job();
   job.set_stage(std::string(stage));
   job.set_fraction(std::clamp(fraction, 0.0, 1.0));
-  Changed();
+  Changed(id, /*queue_moved=*/false);
 }
 
 JobRecord* LocalJobStore::RunningRecord(const std::string& id) {
@@ -162,14 +177,15 @@ absl::Status LocalJobStore::Finish(const std::string& id, const absl::Status& st
   if (status.ok()) {
     job.set_fraction(1.0);
     job.set_result_size(output.result_size);
+    job.set_result_sha256(output.result_sha256);
     job.set_face_count(output.face_count);
     job.set_region_count(output.region_count);
+    job.set_step_size(output.step_size);
   } else {
-    job.set_error_code(static_cast<int>(status.code()));
-    job.set_error_message(std::string(status.message()));
+    SetJobError(status, &job);
   }
   Persist(*record);
-  Changed();
+  Changed(id, /*queue_moved=*/false);
   return absl::OkStatus();
 }
 
@@ -185,7 +201,7 @@ absl::Status LocalJobStore::Release(const std::string& id) {
   job.clear_fraction();
   job.clear_started_unix_ms();
   Persist(*record);
-  Changed();
+  Changed(id, /*queue_moved=*/true);
   return absl::OkStatus();
 }
 
@@ -193,7 +209,7 @@ absl::StatusOr<JobStore::CancelOutcome> LocalJobStore::Cancel(const std::string&
                                                               std::string_view reason) {
   absl::MutexLock lock(&mu_);
   const auto it = jobs_.find(id);
-  if (it == jobs_.end()) return NotFound(id);
+  if (it == jobs_.end()) return JobNotFound(id);
   v1::Job& job = *it->second.mutable_job();
   if (IsTerminal(job.state())) {
     return absl::FailedPreconditionError(
@@ -205,10 +221,9 @@ absl::StatusOr<JobStore::CancelOutcome> LocalJobStore::Cancel(const std::string&
   }
   job.set_state(v1::JOB_STATE_CANCELLED);
   job.set_finished_unix_ms(NowUnixMs());
-  job.set_error_code(static_cast<int>(absl::StatusCode::kCancelled));
-  job.set_error_message(std::string(reason));
+  SetJobError(absl::CancelledError(std::string(reason)), &job);
   Persist(it->second);
-  Changed();
+  Changed(id, /*queue_moved=*/true);
   return CancelOutcome::kWasQueued;
 }
 
@@ -226,7 +241,8 @@ std::vector<std::string> LocalJobStore::Expire(absl::Time cutoff) {
       ++it;
     }
   }
-  if (!expired.empty()) Changed();
+  for (const std::string& id : expired) job_changes_.Bump(id);
+  if (!expired.empty()) changes_.Bump();
   return expired;
 }
 

@@ -33,7 +33,9 @@ class LocalJobStore final : public JobStore {
   // QUEUED with their attempts kept. Logs each skipped folder.
   Recovery Recover(absl::Time cutoff);
 
-  absl::Status Create(JobRecord record) override;
+  absl::StatusOr<std::string> Create(JobRecord record) override;
+  absl::StatusOr<std::optional<std::string>> FindRequest(
+      const std::string& tenant, const std::string& request_id) const override;
   void Remove(const std::string& id) override;
   absl::StatusOr<v1::Job> Get(const std::string& id) const override;
   absl::StatusOr<std::vector<v1::Job>> List() const override;
@@ -54,7 +56,17 @@ class LocalJobStore final : public JobStore {
   void Persist(const JobRecord& record) const;
   // The record of `id` if it is RUNNING, else nullptr.
   JobRecord* RunningRecord(const std::string& id) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
-  void Changed() { changes_.Bump(); }
+  // `id` changed; `queue_moved`: a job entered or left the queue's front
+  // part, so queued jobs' positions changed.
+  void Changed(const std::string& id, bool queue_moved) {
+    changes_.Bump();
+    job_changes_.Bump(id);
+    if (queue_moved) job_changes_.BumpQueued();
+  }
+  // The id of the job of `tenant` created with `request_id`, or nullopt.
+  std::optional<std::string> FindRequestLocked(const std::string& tenant,
+                                               const std::string& request_id) const
+      ABSL_SHARED_LOCKS_REQUIRED(mu_);
 
   const JobQueue& queue_;
   const Spool& spool_;

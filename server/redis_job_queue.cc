@@ -15,6 +15,7 @@
 #include "absl/strings/str_format.h"
 #include "absl/strings/str_split.h"
 #include "server/log.h"
+#include "server/metrics.h"
 
 namespace meshseg::server {
 namespace {
@@ -104,6 +105,7 @@ absl::StatusOr<std::optional<Lease>> RedisJobQueue::TryPop() {
         Log("job_reclaimed", {{"job", lease->job_id},
                               {"entry", lease->entry},
                               {"idle_over", absl::FormatDuration(claim_after_)}});
+        Metrics::Global().JobClaimed();
         return lease;
       }
     }

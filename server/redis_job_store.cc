@@ -4,6 +4,7 @@
 
 #include "absl/strings/numbers.h"
 #include "absl/strings/str_cat.h"
+#include "meshseg/proto/grpc_status.h"
 #include "server/log.h"
 
 namespace meshseg::server {
@@ -19,12 +20,36 @@ constexpr absl::Duration kRecheck = absl::Milliseconds(500);
 std::string Key(const std::string& id) { return absl::StrCat("meshseg:job:", id); }
 std::string Now() { return absl::StrCat(absl::ToUnixMillis(absl::Now())); }
 
-// KEYS: job hash, jobs index, events. ARGV: record, created ms, id.
+// KEYS: job hash, jobs index, events, request key ("" = none). ARGV: record,
+// created ms, id. Returns the id of the job that stands for the upload: a
+// known job that claimed the request key, else the new one.
 constexpr char kCreate[] = R"(
-redis.call('HSET', KEYS[1], 'record', ARGV[1], 'state', 1, 'attempts', 0)
+if KEYS[4] ~= '' then
+  local existing = redis.call('GET', KEYS[4])
+  if existing and redis.call('EXISTS', 'meshseg:job:' .. existing) == 1 then return existing end
+  redis.call('SET', KEYS[4], ARGV[3])
+end
+redis.call('HSET', KEYS[1], 'record', ARGV[1], 'state', 1, 'attempts', 0, 'request_key', KEYS[4])
 redis.call('ZADD', KEYS[2], ARGV[2], ARGV[3])
 redis.call('PUBLISH', KEYS[3], ARGV[3])
+return ARGV[3])";
+
+// KEYS: job hash, jobs index. ARGV: id. Forgets the job and the request key
+// it claimed (if the key still names it).
+constexpr char kRemove[] = R"(
+local request_key = redis.call('HGET', KEYS[1], 'request_key')
+if request_key and request_key ~= '' and redis.call('GET', request_key) == ARGV[1] then
+  redis.call('DEL', request_key)
+end
+redis.call('DEL', KEYS[1])
+redis.call('ZREM', KEYS[2], ARGV[1])
 return 1)";
+
+// The key of a tenant's request id (tenants hold no ':', so the pair is
+// unambiguous).
+std::string RequestKey(const std::string& tenant, const std::string& request_id) {
+  return request_id.empty() ? "" : absl::StrCat("meshseg:request:", tenant, ":", request_id);
+}
 
 // KEYS: job hash, finished index, events. ARGV: max attempts, now, id.
 // Returns {outcome (0 not runnable, 1 run, 2 gave up), attempts, record}.
@@ -62,12 +87,12 @@ redis.call('PUBLISH', KEYS[2], ARGV[1])
 return 1)";
 
 // KEYS: job hash, finished index, events. ARGV: id, state, now, code,
-// message, result size, faces, regions.
+// message, result size, faces, regions, STEP size, result sha256.
 constexpr char kFinish[] = R"(
 if redis.call('HGET', KEYS[1], 'state') ~= '2' then return 0 end
 redis.call('HSET', KEYS[1], 'state', ARGV[2], 'finished_ms', ARGV[3], 'error_code', ARGV[4],
   'error_message', ARGV[5], 'result_size', ARGV[6], 'face_count', ARGV[7],
-  'region_count', ARGV[8])
+  'region_count', ARGV[8], 'step_size', ARGV[9], 'result_sha256', ARGV[10])
 if ARGV[2] == '3' then redis.call('HSET', KEYS[1], 'fraction', 1) end
 redis.call('HDEL', KEYS[1], 'cancel')
 redis.call('ZADD', KEYS[2], ARGV[3], ARGV[1])
@@ -111,11 +136,6 @@ absl::StatusOr<RedisValue> Eval(RedisPool& pool, const char* script, std::vector
   return pool.Command(command);
 }
 
-absl::Status NotFound(const std::string& id) {
-  return absl::NotFoundError(
-      absl::StrCat("job \"", id.substr(0, 64), "\" not found (unknown or expired)"));
-}
-
 int64_t ToInt(const std::string& text) {
   int64_t v = 0;
   (void)absl::SimpleAtoi(text, &v);
@@ -133,18 +153,32 @@ RedisJobStore::~RedisJobStore() {
   if (subscriber_.joinable()) subscriber_.join();
 }
 
-absl::Status RedisJobStore::Create(JobRecord record) {
+absl::StatusOr<std::string> RedisJobStore::Create(JobRecord record) {
   record.set_format_version(1);
   record.mutable_job()->set_state(v1::JOB_STATE_QUEUED);
   const std::string id = record.job().job_id();
-  return Eval(pool_, kCreate, {Key(id), kJobs, kEvents},
-              {record.SerializeAsString(), absl::StrCat(record.job().created_unix_ms()), id})
-      .status();
+  absl::StatusOr<RedisValue> reply =
+      Eval(pool_, kCreate,
+           {Key(id), kJobs, kEvents, RequestKey(record.job().tenant(), record.job().request_id())},
+           {record.SerializeAsString(), absl::StrCat(record.job().created_unix_ms()), id});
+  if (!reply.ok()) return reply.status();
+  return reply->str;
+}
+
+absl::StatusOr<std::optional<std::string>> RedisJobStore::FindRequest(
+    const std::string& tenant, const std::string& request_id) const {
+  if (request_id.empty()) return std::nullopt;
+  absl::StatusOr<RedisValue> id = pool_.Command({"GET", RequestKey(tenant, request_id)});
+  if (!id.ok()) return id.status();
+  if (id->str.empty()) return std::nullopt;
+  absl::StatusOr<RedisValue> exists = pool_.Command({"EXISTS", Key(id->str)});
+  if (!exists.ok()) return exists.status();
+  if (exists->integer != 1) return std::nullopt;
+  return id->str;
 }
 
 void RedisJobStore::Remove(const std::string& id) {
-  (void)pool_.Command({"DEL", Key(id)});
-  (void)pool_.Command({"ZREM", kJobs, id});
+  (void)Eval(pool_, kRemove, {Key(id), kJobs}, {id});
 }
 
 absl::StatusOr<JobRecord> RedisJobStore::Read(const std::string& id) const {
@@ -155,7 +189,7 @@ absl::StatusOr<JobRecord> RedisJobStore::Read(const std::string& id) const {
     f[fields->elements[i].str] = fields->elements[i + 1].str;
   }
   JobRecord record;
-  if (!f.contains("record") || !record.ParseFromString(f["record"])) return NotFound(id);
+  if (!f.contains("record") || !record.ParseFromString(f["record"])) return JobNotFound(id);
   v1::Job& job = *record.mutable_job();
   job.set_state(static_cast<v1::JobState>(ToInt(f["state"])));
   job.set_attempts(static_cast<int>(ToInt(f["attempts"])));
@@ -168,8 +202,10 @@ absl::StatusOr<JobRecord> RedisJobStore::Read(const std::string& id) const {
   job.set_error_code(static_cast<int>(ToInt(f["error_code"])));
   job.set_error_message(f["error_message"]);
   job.set_result_size(ToInt(f["result_size"]));
+  job.set_result_sha256(f["result_sha256"]);
   job.set_face_count(ToInt(f["face_count"]));
   job.set_region_count(static_cast<int>(ToInt(f["region_count"])));
+  job.set_step_size(ToInt(f["step_size"]));
   return record;
 }
 
@@ -222,9 +258,10 @@ absl::Status RedisJobStore::Finish(const std::string& id, const absl::Status& st
   const absl::StatusOr<RedisValue> reply =
       Eval(pool_, kFinish, {Key(id), kFinished, kEvents},
            {id, absl::StrCat(static_cast<int>(TerminalState(status))), Now(),
-            absl::StrCat(static_cast<int>(status.code())), std::string(status.message()),
+            absl::StrCat(static_cast<int>(status.code())), WireMessage(status),
             absl::StrCat(output.result_size), absl::StrCat(output.face_count),
-            absl::StrCat(output.region_count)});
+            absl::StrCat(output.region_count), absl::StrCat(output.step_size),
+            output.result_sha256});
   if (reply.ok()) running_.Erase(id);
   return reply.status();
 }
@@ -238,11 +275,12 @@ absl::Status RedisJobStore::Release(const std::string& id) {
 absl::StatusOr<JobStore::CancelOutcome> RedisJobStore::Cancel(const std::string& id,
                                                               std::string_view reason) {
   absl::StatusOr<RedisValue> reply =
-      Eval(pool_, kCancel, {Key(id), kFinished, kEvents}, {id, Now(), std::string(reason)});
+      Eval(pool_, kCancel, {Key(id), kFinished, kEvents},
+           {id, Now(), WireMessage(absl::CancelledError(std::string(reason)))});
   if (!reply.ok()) return reply.status();
   switch (reply->integer) {
     case 0:
-      return NotFound(id);
+      return JobNotFound(id);
     case 1:
       return CancelOutcome::kWasQueued;
     case 2:
@@ -268,6 +306,7 @@ std::vector<std::string> RedisJobStore::Expire(absl::Time cutoff) {
     Remove(id.str);
     expired.push_back(id.str);
   }
+  for (const std::string& id : expired) job_changes_.Bump(id);
   if (!expired.empty()) changes_.Bump();
   return expired;
 }
@@ -298,6 +337,7 @@ void RedisJobStore::Subscribe(std::stop_token stop) {
       }
       backoff = absl::Milliseconds(100);
       changes_.Bump();  // watchers re-read what changed while unsubscribed
+      job_changes_.BumpAll();
     }
     absl::StatusOr<std::optional<RedisValue>> message = connection.Receive(absl::Milliseconds(250));
     if (!message.ok()) {
@@ -309,6 +349,10 @@ void RedisJobStore::Subscribe(std::stop_token stop) {
       const RedisValue& m = **message;
       if (m.elements.size() == 3 && m.elements[0].str == "message") {
         changes_.Bump();
+        // The message names the job; any event may move the queue (a start,
+        // a cancel, a release), so queued jobs' watchers re-read too.
+        job_changes_.Bump(m.elements[2].str);
+        job_changes_.BumpQueued();
         const std::vector<std::string> here = running_.Ids();
         if (std::find(here.begin(), here.end(), m.elements[2].str) != here.end()) {
           CheckCancel(m.elements[2].str);

@@ -31,7 +31,9 @@ class RedisJobStore final : public JobStore {
   RedisJobStore(RedisPool& pool, const JobQueue& queue);
   ~RedisJobStore() override;
 
-  absl::Status Create(JobRecord record) override;
+  absl::StatusOr<std::string> Create(JobRecord record) override;
+  absl::StatusOr<std::optional<std::string>> FindRequest(
+      const std::string& tenant, const std::string& request_id) const override;
   void Remove(const std::string& id) override;
   absl::StatusOr<v1::Job> Get(const std::string& id) const override;
   absl::StatusOr<std::vector<v1::Job>> List() const override;

@@ -1,7 +1,8 @@
 // File: server.h
 // -----------------------------------------------------------------------------
 // meshseg-server as an object: the gRPC server with the Segmentation service
-// (roles all and api), the standard health service and reflection, the
+// (roles all and api), the standard health service, reflection if asked,
+// the transport (TLS, mutual TLS, bearer tokens: credentials.h), the
 // backend (job queue, job store, blob store, spool: embedded or Redis), the
 // worker pool (roles all and worker) and the sweeper that forgets expired
 // results.
@@ -32,6 +33,11 @@ class Server {
   int port() const;
   // "HOST:PORT" with the bound port.
   std::string address() const;
+  // Re-reads the --auth-tokens file (main.cc calls it on SIGHUP); on error
+  // the old tokens stay in force. Returns the number of tokens now in force.
+  // Errors: FAILED_PRECONDITION without --auth-tokens; those of
+  // TokenAuth::Reload().
+  absl::StatusOr<int> ReloadTokens();
   // Number of files in the spool (for tests and logs).
   int64_t SpoolFileCount() const;
 

@@ -15,6 +15,7 @@
 #include "absl/time/time.h"
 #include "meshseg/pipeline.h"
 #include "meshseg/run_context.h"
+#include "server/credentials.h"
 
 namespace meshseg::server {
 
@@ -57,8 +58,31 @@ struct ServerOptions {
   absl::Duration result_ttl = absl::Hours(24);
   // Running jobs get this long to finish on shutdown before they are cancelled.
   absl::Duration shutdown_grace = absl::Seconds(30);
+  // HOST:PORT of the Prometheus endpoint (GET /metrics); empty = none.
+  std::string metrics_listen = {};
   // The job itself. Empty = RunPipeline.
   JobRunner runner = {};
+  // TLS, mutual TLS, bearer tokens, --insecure (credentials.h).
+  SecurityOptions security = {};
+  // Admission. Bytes of memory the jobs running in this process may take
+  // at once, by their estimated peak (pipeline.h's EstimateJobMemory); a
+  // job that can never fit is refused at upload, one that fits later waits.
+  // 0 = 85 % of the container's memory limit (cgroup), else of the
+  // machine's memory; for --role api, 0 = not checked at upload (the
+  // workers' own budget applies; give the workers' value to refuse early).
+  int64_t memory_budget = 0;
+  // Bytes each filesystem holding uploads keeps free; an upload whose
+  // declared size would cut into it (with the uploads in flight) is refused
+  // before its data is received.
+  int64_t min_free_disk = int64_t{256} << 20;
+  // Streaming calls (Upload, WatchJob, GetResult) open at once, server-wide;
+  // each holds a thread of the synchronous server while it waits. Further
+  // ones get RESOURCE_EXHAUSTED. The thread pool is capped a little above.
+  int max_concurrent_streams = 256;
+  // Serve gRPC server reflection (grpcurl and the like list and call the
+  // API without .proto files). Off by default: it describes the whole API
+  // to anyone who connects.
+  bool reflection = false;
 };
 
 // Returns "all", "api" or "worker".
@@ -66,7 +90,18 @@ std::string RoleName(Role role);
 // Parses a --role value. Errors: INVALID_ARGUMENT naming the value.
 absl::StatusOr<Role> ParseRole(absl::string_view name);
 
-// Returns the options with defaults filled in (workers, runner).
+// Returns the bytes `text` means: digits with an optional suffix k, M, G, T
+// (powers of 1000) or Ki, Mi, Gi, Ti (powers of 1024), e.g. "6Gi".
+// Errors: INVALID_ARGUMENT naming `flag` and the text.
+absl::StatusOr<int64_t> ParseByteSize(absl::string_view text, absl::string_view flag);
+
+// Returns the default memory budget: 85 % of the cgroup memory limit, else
+// of the machine's physical memory (the rest is the server's own: gRPC
+// buffers, upload chunks, the job records).
+int64_t DefaultMemoryBudget();
+
+// Returns the options with defaults filled in (workers, memory budget,
+// runner).
 // Errors (INVALID_ARGUMENT): a value out of range, naming the flag.
 absl::StatusOr<ServerOptions> ResolveOptions(ServerOptions options);
 

@@ -4,7 +4,11 @@
 // the job store, the runner (RunPipeline) on the upload with the job's stop
 // token and a progress callback, the result put in the blob store, the job
 // finished in the store, the upload removed, the queue told, one log line
-// per step. A job stopped by a shutdown is released (queued again), not
+// per step. With a memory budget, a job's estimated peak memory is reserved
+// before the runner starts and given back when it returns: a job that does
+// not fit next to the running ones waits (stage "waiting for memory"), and
+// while one waits no thread of this process takes another job from the
+// queue. A job stopped by a shutdown is released (queued again), not
 // cancelled. When the store cannot be reached the worker retries with
 // backoff; it never drops an outcome and never spins.
 //
@@ -23,6 +27,7 @@
 #include "server/blob_store.h"
 #include "server/job_queue.h"
 #include "server/job_store.h"
+#include "server/memory_budget.h"
 #include "server/server_options.h"
 #include "server/spool.h"
 
@@ -31,8 +36,9 @@ namespace meshseg::server {
 class WorkerPool {
  public:
   // Starts `workers` threads. All references must outlive the pool.
+  // `budget` may be null (no memory admission).
   WorkerPool(int workers, int max_attempts, JobQueue& queue, JobStore& store, BlobStore& blobs,
-             const Spool& scratch, JobRunner runner);
+             const Spool& scratch, JobRunner runner, MemoryBudget* budget = nullptr);
   // Joins the threads; the queue must have been closed.
   ~WorkerPool();
 
@@ -49,6 +55,12 @@ class WorkerPool {
   void Run(const Lease& lease);
   // Runs the started job; returns its outcome and fills `output`.
   absl::Status Execute(const RunSpec& spec, JobOutput& output);
+  // Reserves the job's estimated peak in the budget, waiting for room;
+  // returns the bytes reserved (0: no budget, or the estimate failed or is
+  // over the whole budget, which RunPipeline then reports).
+  // Errors: CANCELLED if the job is stopped while it waits.
+  absl::StatusOr<int64_t> ReserveMemory(const std::string& job_id, const std::string& path,
+                                        const PipelineParams& params, std::stop_token stop);
 
   const int max_attempts_;
   JobQueue& queue_;
@@ -56,6 +68,7 @@ class WorkerPool {
   BlobStore& blobs_;
   const Spool& scratch_;
   JobRunner runner_;
+  MemoryBudget* const budget_;
   std::string abort_on_file_;  // the test-only hook, empty = off
   std::stop_source give_up_;
   std::vector<std::thread> threads_;

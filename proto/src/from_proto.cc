@@ -4,20 +4,34 @@
 
 #include "absl/strings/str_cat.h"
 #include "meshseg/proto/convert.h"
+#include "meshseg/status_macros.h"
 
 namespace meshseg {
 namespace {
 
-// Upper limits of the user-facing tolerances; larger values mean a typo.
-constexpr double kMaxDistanceTolerance = 100.0;  // x mean edge length
-constexpr double kMaxAngleToleranceDeg = 90.0;
+// The range a wire option must lie in; an open end excludes its bound.
+struct Range {
+  double lo;
+  bool lo_open;
+  double hi;
+  bool hi_open;
+};
 
-absl::Status CheckTolerance(const char* name, double value, double limit) {
-  if (!std::isfinite(value) || value <= 0.0 || value > limit) {
-    return absl::InvalidArgumentError(absl::StrCat(
-        "segment options: ", name, " must be in (0, ", limit, "], got ", value));
-  }
-  return absl::OkStatus();
+// Distance tolerance: a multiple of the mean edge length; over 100 means a
+// typo (seed 000 uses 0.5). Angle tolerance: a deviation of the normals, in
+// (0, 90) degrees as SegmentParams requires (90 would accept any face).
+constexpr Range kDistanceTolerance{0.0, true, 100.0, false};
+constexpr Range kAngleToleranceDeg{0.0, true, 90.0, true};
+
+// Returns OK if `value` lies in `range`; else INVALID_ARGUMENT naming the
+// field, its range in interval notation and the value.
+absl::Status CheckRange(const char* field, double value, const Range& range) {
+  const bool above_lo = range.lo_open ? value > range.lo : value >= range.lo;
+  const bool below_hi = range.hi_open ? value < range.hi : value <= range.hi;
+  if (std::isfinite(value) && above_lo && below_hi) return absl::OkStatus();
+  return absl::InvalidArgumentError(
+      absl::StrCat("segment options: ", field, " must be in ", range.lo_open ? "(" : "[", range.lo,
+                   ", ", range.hi, range.hi_open ? ")" : "]", ", got ", value));
 }
 
 }  // namespace
@@ -25,15 +39,13 @@ absl::Status CheckTolerance(const char* name, double value, double limit) {
 absl::StatusOr<PipelineParams> FromProto(const v1::SegmentOptions& options) {
   PipelineParams params;
   if (options.has_distance_tolerance()) {
-    const absl::Status s = CheckTolerance("distance_tolerance", options.distance_tolerance(),
-                                          kMaxDistanceTolerance);
-    if (!s.ok()) return s;
+    MESHSEG_RETURN_IF_ERROR(
+        CheckRange("distance_tolerance", options.distance_tolerance(), kDistanceTolerance));
     params.segment.distance_tolerance = options.distance_tolerance();
   }
   if (options.has_angle_tolerance_deg()) {
-    const absl::Status s = CheckTolerance("angle_tolerance_deg", options.angle_tolerance_deg(),
-                                          kMaxAngleToleranceDeg);
-    if (!s.ok()) return s;
+    MESHSEG_RETURN_IF_ERROR(
+        CheckRange("angle_tolerance_deg", options.angle_tolerance_deg(), kAngleToleranceDeg));
     params.segment.angle_tolerance_deg = options.angle_tolerance_deg();
   }
   switch (options.segmentation_path()) {

@@ -2,6 +2,7 @@
 #include <variant>
 
 #include "meshseg/proto/convert.h"
+#include "proto/src/brep_to_proto.h"
 #include "proto/src/topology_to_proto.h"
 
 namespace meshseg {
@@ -121,6 +122,7 @@ v1::SegmentationResult ToProto(const PipelineResult& result) {
   e->set_exact_share(result.estimates.exact_share);
   SetTopology(result.topology, result.features, &out);
   out.mutable_point_labels()->Add(result.point_labels.begin(), result.point_labels.end());
+  SetBrep(result, &out);
   return out;
 }
 

@@ -1,9 +1,10 @@
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
 #include <cmath>
 #include <limits>
 #include <string>
-
-#include <gmock/gmock.h>
-#include <gtest/gtest.h>
+#include <vector>
 
 #include "meshseg/proto/convert.h"
 
@@ -40,6 +41,41 @@ TEST(FromProto, RejectsNanNegativeAndHugeTolerances) {
   v1::SegmentOptions o;
   o.set_angle_tolerance_deg(120.0);
   EXPECT_THAT(FromProto(o).status().message(), HasSubstr("angle_tolerance_deg"));
+}
+
+// Every option refused at a bound, past it, NaN and Inf, with its field and
+// range named; the values just inside are accepted.
+TEST(FromProto, RefusesEveryOptionOutsideItsRangeNamingFieldAndRange) {
+  struct Case {
+    void (v1::SegmentOptions::*set)(double);
+    const char* range_text;
+    double inside;
+    std::vector<double> outside;
+  };
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double inf = std::numeric_limits<double>::infinity();
+  const std::vector<Case> cases = {
+      {&v1::SegmentOptions::set_distance_tolerance,
+       "distance_tolerance must be in (0, 100]",
+       100.0,
+       {0.0, -0.5, 100.5, nan, inf}},
+      {&v1::SegmentOptions::set_angle_tolerance_deg,
+       "angle_tolerance_deg must be in (0, 90)",
+       89.9,
+       {90.0, 0.0, -3.0, 180.0, nan, -inf}},
+  };
+  for (const Case& c : cases) {
+    v1::SegmentOptions good;
+    (good.*c.set)(c.inside);
+    EXPECT_TRUE(FromProto(good).ok()) << c.range_text << " " << c.inside;
+    for (const double bad : c.outside) {
+      v1::SegmentOptions o;
+      (o.*c.set)(bad);
+      const absl::Status s = FromProto(o).status();
+      EXPECT_EQ(s.code(), absl::StatusCode::kInvalidArgument) << c.range_text << " " << bad;
+      EXPECT_THAT(s.message(), HasSubstr(c.range_text)) << bad;
+    }
+  }
 }
 
 TEST(FormatFromHint, KnowsEveryFormatInAnyCase) {

@@ -9,6 +9,8 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
+#include <regex>
 #include <string>
 #include <thread>
 #include <vector>
@@ -17,6 +19,7 @@
 #include <gtest/gtest.h>
 
 #include "absl/strings/str_cat.h"
+#include "absl/strings/str_replace.h"
 #include "absl/strings/str_split.h"
 #include "absl/synchronization/notification.h"
 #include "client/meshseg_client.h"
@@ -135,16 +138,90 @@ TEST(ServerMain, PrintsTheBoundPortAndStopsOnSigterm) {
   EXPECT_GT(done, signal) << server.Log();
 }
 
-TEST(ServerMain, BadFlagValueExitsNonZero) {
-  const std::string cmd = kServer + " --listen 127.0.0.1:0 --queue-capacity 0 2>&1";
-  FILE* p = popen(cmd.c_str(), "r");
-  ASSERT_NE(p, nullptr);
+// SIGHUP re-reads --auth-tokens: a token added to the file works after it,
+// a removed one stops working; the process keeps running. (Without TLS the
+// tokens ride gRPC local credentials, which the client's plaintext channel
+// to 127.0.0.1 satisfies.)
+TEST(ServerMain, SighupReloadsTheTokenFile) {
+  const std::string tokens = FreshDir("auth") + "/tokens.txt";
+  constexpr char kOld[] = "old-token-0123456789ab";
+  constexpr char kNew[] = "new-token-0123456789ab";
+  std::ofstream(tokens) << kOld << " acme\n";
+  ServerProcess server({"--spool-dir", FreshDir("spool"), "--workers", "1", "--auth-tokens",
+                        tokens});
+  ASSERT_FALSE(server.address().empty()) << server.Log();
+  const auto list_code = [&](const std::string& token) {
+    absl::StatusOr<MeshsegClient> client = MeshsegClient::Connect(server.address(), {.token = token});
+    if (!client.ok()) return client.status().code();
+    client->set_call_timeout(absl::Seconds(5));
+    return client->ListJobs().status().code();
+  };
+  EXPECT_EQ(list_code(kOld), absl::StatusCode::kOk);
+  EXPECT_EQ(list_code(kNew), absl::StatusCode::kUnauthenticated);
+  std::ofstream(tokens, std::ios::trunc) << kNew << " acme\n";
+  server.Signal(SIGHUP);
+  ASSERT_TRUE(server.AwaitLog("event=tokens_reloaded count=1", kTimeout)) << server.Log();
+  EXPECT_EQ(list_code(kNew), absl::StatusCode::kOk);
+  EXPECT_EQ(list_code(kOld), absl::StatusCode::kUnauthenticated);
+  EXPECT_THAT(server.Log(), HasSubstr("transport=local"));
+  server.Signal(SIGTERM);
+  EXPECT_EQ(server.AwaitExit(kTimeout), 0);
+}
+
+// Runs the shell command `cmd`; returns its stdout and sets *exit_code.
+std::string RunCommand(const std::string& cmd, int* exit_code) {
   std::string output;
+  FILE* p = popen(cmd.c_str(), "r");
+  if (p == nullptr) {
+    *exit_code = -1;
+    return output;
+  }
   char buf[256];
   while (fgets(buf, sizeof buf, p)) output += buf;
-  const int status = pclose(p);
-  EXPECT_NE(WEXITSTATUS(status), 0);
+  *exit_code = WEXITSTATUS(pclose(p));
+  return output;
+}
+
+TEST(ServerMain, BadFlagValueExitsNonZero) {
+  int exit_code = 0;
+  const std::string output =
+      RunCommand(kServer + " --listen 127.0.0.1:0 --queue-capacity 0 2>&1", &exit_code);
+  EXPECT_NE(exit_code, 0);
   EXPECT_THAT(output, HasSubstr("--queue-capacity"));
+}
+
+// Returns the names of every ABSL_FLAG defined in server/*.cc, hyphenated
+// as the command line spells them ("spool-dir").
+std::vector<std::string> ServerFlagNames() {
+  std::vector<std::string> names;
+  const std::regex flag(R"(ABSL_FLAG\(\s*[^,]+,\s*(\w+)\s*,)");
+  for (const auto& entry :
+       std::filesystem::directory_iterator(std::string(MESHSEG_SOURCE_DIR) + "/server")) {
+    if (entry.path().extension() != ".cc") continue;
+    std::ifstream in(entry.path());
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    for (std::sregex_iterator it(text.begin(), text.end(), flag), end; it != end; ++it) {
+      names.push_back(absl::StrReplaceAll((*it)[1].str(), {{"_", "-"}}));
+    }
+  }
+  return names;
+}
+
+TEST(ServerMain, HelpDocumentsEveryFlagAndExitsZero) {
+  const std::vector<std::string> names = ServerFlagNames();
+  ASSERT_GE(names.size(), 7u) << "the flag scan found too few ABSL_FLAGs";
+  for (const char* help : {"--help", "-h", "--helpfull"}) {
+    int exit_code = -1;
+    const std::string output =
+        RunCommand(absl::StrCat(kServer, " ", help, " 2>/dev/null"), &exit_code);
+    EXPECT_EQ(exit_code, 0) << help;
+    EXPECT_THAT(output, HasSubstr("usage: meshseg-server")) << help;
+    for (const std::string& name : names) {
+      EXPECT_THAT(output, HasSubstr(absl::StrCat("  --", name))) << help << ": " << name;
+    }
+    EXPECT_THAT(output, HasSubstr("(default: \"127.0.0.1:50051\")\n      HOST:PORT to listen on"));
+    EXPECT_THAT(output, Not(HasSubstr("--flagfile"))) << "only the server's own flags";
+  }
 }
 
 // SIGTERM while a job runs and another waits: the waiting one stays queued
@@ -187,8 +264,10 @@ TEST_F(ServerMainJobs, SigtermLetsTheRunningJobFinishRefusesUploadsAndExitsZero)
   EXPECT_EQ(job_a->face_count(), part_faces_);
 
   EXPECT_EQ(server.AwaitExit(kTimeout), 0);
+  // Finishing within the grace is what job_a's SUCCEEDED shows (past the
+  // grace it would be released, not finished); the time is only recorded,
+  // never asserted: it depends on the machine's load.
   const absl::Duration stop_time = absl::Now() - sigterm;
-  EXPECT_LT(stop_time, absl::Seconds(15)) << "within the grace period";
   RecordProperty("sigterm_to_exit_ms", static_cast<int>(absl::ToInt64Milliseconds(stop_time)));
 
   const std::vector<std::string> log = LogLines(server.Log());
@@ -235,8 +314,9 @@ TEST_F(ServerMainJobs, SigtermReleasesTheRunningJobAfterTheGraceAndTheNextStartR
     const absl::Time sigterm = absl::Now();
     server.Signal(SIGTERM);
     EXPECT_EQ(server.AwaitExit(kTimeout), 0);
+    // Not waiting for the job is what the job_released line below shows; the
+    // time is recorded only (it depends on the machine's load).
     const absl::Duration stop_time = absl::Now() - sigterm;
-    EXPECT_LT(stop_time, absl::Seconds(5)) << "stopped soon after the grace period";
     RecordProperty("sigterm_to_exit_ms", static_cast<int>(absl::ToInt64Milliseconds(stop_time)));
 
     const std::vector<std::string> log = LogLines(server.Log());

@@ -119,7 +119,7 @@ TEST(Server, ListensOnAnEphemeralPortAndIsServing) {
 // meshseg.v1.Segmentation (with its imports) and resolve it with no .proto
 // files at hand.
 TEST(Server, ReflectionListsAndDescribesTheSegmentationService) {
-  TestServer server;
+  TestServer server({.reflection = true});
   const std::unique_ptr<pb::Message> list = Reflect(server.address(), "list_services", "");
   ASSERT_NE(list, nullptr);
   const pb::Message& services = Field(*list, "list_services_response");

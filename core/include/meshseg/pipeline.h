@@ -15,8 +15,10 @@
 #include <vector>
 
 #include "absl/status/statusor.h"
+#include "meshseg/brep.h"
 #include "meshseg/curvature.h"
 #include "meshseg/features.h"
+#include "meshseg/input_size.h"
 #include "meshseg/mesh.h"
 #include "meshseg/reconstruct.h"
 #include "meshseg/remesh.h"
@@ -39,6 +41,13 @@ struct PipelineParams {
   FeatureParams features;
   // Upper bound on declared vertex/face counts of the input.
   int64_t max_elements = 200'000'000;
+  // When set, the B-rep of the result is written there as STEP (brep.h);
+  // brep.noise_sigma defaults to the segmentation's estimate.
+  std::string step_path;
+  BrepParams brep;
+  // Peak memory the job may take, in bytes; 0 = no limit. A job whose
+  // EstimateJobMemory exceeds it is refused before its input is read.
+  int64_t memory_budget_bytes = 0;
 };
 
 struct PipelineResult {
@@ -67,12 +76,35 @@ struct PipelineResult {
   bool from_point_cloud = false;
   int64_t point_count = 0;
   std::vector<int> point_labels;
+  // When PipelineParams::step_path is set: what the `brep` stage wrote, or
+  // (brep unset) why it wrote nothing; the segmentation stands either way.
+  std::optional<BrepReport> brep;
+  std::string brep_error;
 };
+
+// A job's predicted peak resident memory, from the size its input declares
+// (ProbeInput), by the model measured in core/src/pipeline/memory_model.h:
+// a base, the mapped file, a cost per mesh face (plus a full-size remesh when
+// the remesh may run) or per point, times a safety margin.
+struct MemoryEstimate {
+  InputSize input;
+  int64_t peak_bytes = 0;
+};
+
+// Returns the estimate for the file at `input_path` under `params` (its
+// format and remesh settings), reading only its header or its lines.
+// Errors: those of ProbeInput.
+absl::StatusOr<MemoryEstimate> EstimateJobMemory(const std::string& input_path,
+                                                 const PipelineParams& params = {});
 
 // Returns the segmentation of the mesh or point cloud in `input_path`.
 // A point cloud is first reconstructed into a watertight mesh (Reconstruct).
 // Errors: those of ReadMesh / ReadPointCloud, Reconstruct, EstimateCurvature,
-// Segment, ExtractTopology and RecognizeFeatures; CANCELLED on stop.
+// Segment, ExtractTopology and RecognizeFeatures; RESOURCE_EXHAUSTED, before
+// the input is read, when params.memory_budget_bytes is set and the job's
+// EstimateJobMemory exceeds it (the message gives both); INVALID_ARGUMENT
+// for coordinates beyond +-1e75 (their fourth powers overflow the fits);
+// INTERNAL if a number of the result is not finite; CANCELLED on stop.
 absl::StatusOr<PipelineResult> RunPipeline(const std::string& input_path,
                                            const PipelineParams& params = {},
                                            const RunContext& ctx = {});

@@ -3,13 +3,16 @@
 // to the faces or points of the input file.
 #include "meshseg/pipeline.h"
 
+#include <filesystem>
 #include <span>
 #include <utility>
 
 #include "absl/strings/str_cat.h"
 #include "meshseg/point_cloud.h"
 #include "meshseg/status_macros.h"
+#include "pipeline/finite_result.h"
 #include "pipeline/input_labels.h"
+#include "pipeline/memory_model.h"
 #include "pipeline/point_labels.h"
 #include "pipeline/refit_regions.h"
 #include "pipeline/remeshed_labels.h"
@@ -27,7 +30,25 @@ absl::Status ValidateParams(const PipelineParams& params) {
     return absl::InvalidArgumentError(
         absl::StrCat("pipeline: max_elements must be positive, got ", params.max_elements));
   }
+  if (params.memory_budget_bytes < 0) {
+    return absl::InvalidArgumentError(absl::StrCat(
+        "pipeline: memory_budget_bytes must be >= 0, got ", params.memory_budget_bytes));
+  }
   return absl::OkStatus();
+}
+
+// Returns OK if the job's estimated peak fits params.memory_budget_bytes.
+absl::Status CheckMemoryBudget(const std::string& input_path, const PipelineParams& params) {
+  if (params.memory_budget_bytes == 0) return absl::OkStatus();
+  MESHSEG_ASSIGN_OR_RETURN(const MemoryEstimate estimate, EstimateJobMemory(input_path, params));
+  if (estimate.peak_bytes <= params.memory_budget_bytes) return absl::OkStatus();
+  const InputSize& in = estimate.input;
+  return absl::ResourceExhaustedError(absl::StrCat(
+      "pipeline: \"", std::filesystem::path(input_path).filename().string(), "\": ",
+      in.point_cloud ? absl::StrCat(in.vertex_count, " points")
+                     : absl::StrCat(in.face_count, " faces, ", in.vertex_count, " vertices"),
+      " declared need an estimated ", estimate.peak_bytes, " bytes, over the memory budget of ",
+      params.memory_budget_bytes));
 }
 
 // Each region of `result` a surface of its own (the remeshed path does not
@@ -141,6 +162,25 @@ absl::StatusOr<std::vector<int>> SegmentRemeshed(const Mesh& mesh, double edge_l
   return labels;
 }
 
+// Writes the STEP file when params ask for one (`labels` one per face of
+// `mesh`, the mesh the topology refers to).
+absl::Status ExportStep(const Mesh& mesh, std::span<const int> labels,
+                        const PipelineParams& params, const RunContext& ctx,
+                        PipelineResult* result) {
+  if (params.step_path.empty()) return absl::OkStatus();
+  BrepParams brep = params.brep;
+  if (!brep.noise_sigma) brep.noise_sigma = result->estimates.noise_sigma;
+  absl::StatusOr<BrepReport> report =
+      WriteStep(mesh, labels, result->regions, result->topology, params.step_path, brep, ctx);
+  if (absl::IsCancelled(report.status())) return report.status();
+  if (report.ok()) {
+    result->brep = *std::move(report);
+  } else {
+    result->brep_error = std::string(report.status().message());
+  }
+  return absl::OkStatus();
+}
+
 absl::StatusOr<PipelineResult> RunOnPointCloud(const std::string& input_path,
                                                const PipelineParams& params,
                                                const RunContext& ctx) {
@@ -148,6 +188,7 @@ absl::StatusOr<PipelineResult> RunOnPointCloud(const std::string& input_path,
       PointCloud cloud,
       ReadPointCloud(input_path, {.format = params.format, .max_elements = params.max_elements}));
   ctx.Progress("read", 1.0);
+  MESHSEG_RETURN_IF_ERROR(pipeline_internal::CheckCoordinateRange(cloud.name, cloud.points));
   MESHSEG_ASSIGN_OR_RETURN(Reconstruction reconstruction,
                            Reconstruct(cloud, params.reconstruct, ctx));
   PipelineResult result;
@@ -155,6 +196,8 @@ absl::StatusOr<PipelineResult> RunOnPointCloud(const std::string& input_path,
   result.point_count = static_cast<int64_t>(cloud.points.size());
   MESHSEG_ASSIGN_OR_RETURN(result.face_labels,
                            SegmentMesh(reconstruction.mesh, params, ctx, &result));
+  MESHSEG_RETURN_IF_ERROR(
+      ExportStep(reconstruction.mesh, result.face_labels, params, ctx, &result));
   result.point_labels = pipeline_internal::PointLabels(
       reconstruction.mesh.tri, result.face_labels, cloud.points, reconstruction.is_outlier);
   return result;
@@ -176,6 +219,7 @@ absl::StatusOr<PipelineResult> RunOnMesh(const std::string& input_path,
       MESHSEG_ASSIGN_OR_RETURN(const std::vector<int> labels,
                                SegmentExact(mesh, exactness, params, ctx, &result));
       result.face_labels = pipeline_internal::InputFaceLabels(mesh.face_of_input, labels);
+      MESHSEG_RETURN_IF_ERROR(ExportStep(mesh, labels, params, ctx, &result));
       return result;
     }
   }
@@ -191,15 +235,25 @@ absl::StatusOr<PipelineResult> RunOnMesh(const std::string& input_path,
   result.face_labels = pipeline_internal::InputFaceLabels(mesh.face_of_input, mesh_labels);
   result.estimates.exact_tolerance = exactness.tolerance;
   result.estimates.exact_share = exactness.share;
+  MESHSEG_RETURN_IF_ERROR(ExportStep(mesh, mesh_labels, params, ctx, &result));
   return result;
 }
 
 }  // namespace
 
+absl::StatusOr<MemoryEstimate> EstimateJobMemory(const std::string& input_path,
+                                                 const PipelineParams& params) {
+  MemoryEstimate estimate;
+  MESHSEG_ASSIGN_OR_RETURN(estimate.input, ProbeInput(input_path, params.format));
+  estimate.peak_bytes = pipeline_internal::PeakBytes(estimate.input, params);
+  return estimate;
+}
+
 absl::StatusOr<PipelineResult> RunPipeline(const std::string& input_path,
                                            const PipelineParams& params,
                                            const RunContext& ctx) {
   MESHSEG_RETURN_IF_ERROR(ValidateParams(params));
+  MESHSEG_RETURN_IF_ERROR(CheckMemoryBudget(input_path, params));
   ctx.Progress("read", 0.0);
   bool point_cloud = params.format && IsPointCloudFormat(*params.format);
   if (!params.format || *params.format == FileFormat::kPly) {
@@ -207,7 +261,11 @@ absl::StatusOr<PipelineResult> RunPipeline(const std::string& input_path,
   }
   absl::StatusOr<PipelineResult> result = point_cloud ? RunOnPointCloud(input_path, params, ctx)
                                                       : RunOnMesh(input_path, params, ctx);
-  if (result.ok()) MESHSEG_RETURN_IF_ERROR(ctx.CheckStop("pipeline"));
+  if (result.ok()) {
+    MESHSEG_RETURN_IF_ERROR(ctx.CheckStop("pipeline"));
+    MESHSEG_RETURN_IF_ERROR(pipeline_internal::CheckResultFinite(
+        std::filesystem::path(input_path).filename().string(), *result));
+  }
   return result;
 }
 

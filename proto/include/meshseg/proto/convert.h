@@ -22,9 +22,18 @@ namespace meshseg {
 v1::SegmentationResult ToProto(const PipelineResult& result);
 
 // Returns the pipeline parameters `options` ask for, defaults where unset.
-// Errors (INVALID_ARGUMENT): a tolerance that is NaN, infinite, <= 0 or over
-// its limit (distance 100 x mean edge length, angle 90 degrees).
+// Errors (INVALID_ARGUMENT, naming the field, its range and the value): a
+// value outside its range, NaN or infinite. distance_tolerance in (0, 100]
+// (x mean edge length), angle_tolerance_deg in (0, 90).
 absl::StatusOr<PipelineParams> FromProto(const v1::SegmentOptions& options);
+
+// Returns the core form of a result message (the inverse of ToProto; the
+// features are not read back): labels, regions, estimates and topology,
+// RegionTopology::patch_count from the loops.
+// Errors (INVALID_ARGUMENT): a region without surface type or parameters, a
+// quadric without 10 coefficients, ids that are not their index, references
+// to regions, curves or corners that do not exist.
+absl::StatusOr<PipelineResult> FromProto(const v1::SegmentationResult& result);
 
 // Returns the format a wire format hint names: "" = unset (detect),
 // "stl", "obj", "off", "ply", "xyz", "pwn" (any case).
