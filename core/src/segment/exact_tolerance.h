@@ -19,7 +19,11 @@ namespace meshseg::segment_internal {
 
 // The spacing of the representable values at the largest coordinate,
 // for the finest representation that holds every coordinate exactly:
-// float32, a decimal of k significant digits (k <= 15), else double.
+// float32, a decimal of k significant digits (k <= 15), else double. A
+// unit conversion after the rounding (x 1000, x 25.4) is no exact operation
+// in binary: a coordinate within a few units in its last place of a float32
+// times a unit factor (a power of ten, or 25.4 times one) counts as that,
+// and the spacing is float32's in the file's own unit, times the factor.
 double CoordinateResolution(const std::vector<Eigen::Vector3d>& positions);
 
 // A vertex within kRoundingSpan resolutions of a surface lies on it: each

@@ -306,6 +306,23 @@ TEST(EstimateExactness, ADenseMeshRoundedCoarserThanItsFacetsSagIsNotExact) {
   EXPECT_FALSE(coarse.exact) << coarse.share;
 }
 
+// `mesh` with every vertex p moved to move(p).
+template <typename Move>
+Mesh Moved(const Mesh& mesh, Move move) {
+  std::vector<Eigen::Vector3d> v;
+  for (const auto vh : mesh.tri.vertices()) v.push_back(move(ToEigen(mesh.tri.point(vh))));
+  std::vector<std::array<int, 3>> f;
+  for (const auto fh : mesh.tri.faces()) {
+    std::array<int, 3> t{};
+    int k = 0;
+    for (const auto vh : mesh.tri.fv_range(fh)) t[k++] = vh.idx();
+    f.push_back(t);
+  }
+  absl::StatusOr<Mesh> moved = BuildMesh(std::move(v), f, "moved");
+  EXPECT_TRUE(moved.ok()) << moved.status();
+  return *std::move(moved);
+}
+
 // The same prism in micrometres, metres and far from the origin: the
 // tolerance follows the coordinates, the segmentation does not change.
 TEST(SegmentExactFacets, UnitsAndOffsetsGiveTheSameRegions) {
@@ -314,25 +331,33 @@ TEST(SegmentExactFacets, UnitsAndOffsetsGiveTheSameRegions) {
   for (const auto& [scale, shift] :
        {std::pair{1000.0, Eigen::Vector3d(0, 0, 0)}, std::pair{0.001, Eigen::Vector3d(0, 0, 0)},
         std::pair{1.0, Eigen::Vector3d(2e4, -1.5e4, 3e4)}}) {
-    std::vector<Eigen::Vector3d> v;
-    for (const auto vh : mesh.tri.vertices())
-      v.push_back(scale * ToEigen(mesh.tri.point(vh)) + shift);
-    std::vector<std::array<int, 3>> f;
-    for (const auto fh : mesh.tri.faces()) {
-      std::array<int, 3> t{};
-      int k = 0;
-      for (const auto vh : mesh.tri.fv_range(fh)) t[k++] = vh.idx();
-      f.push_back(t);
-    }
-    absl::StatusOr<Mesh> moved = BuildMesh(std::move(v), f, "moved");
-    ASSERT_TRUE(moved.ok()) << moved.status();
-    const Segmentation seg = SegmentExact(*moved);
+    const Segmentation seg =
+        SegmentExact(Moved(mesh, [&](const Eigen::Vector3d& p) { return scale * p + shift; }));
     EXPECT_EQ(seg.face_labels, base.face_labels) << "scale " << scale;
     for (const Region& r : seg.regions) {
       if (const auto* c = std::get_if<Cylinder>(&r.surface)) {
         EXPECT_NEAR(c->radius, 2.54 * scale, 1e-7 * scale) << "scale " << scale;
       }
     }
+  }
+}
+
+// A float32 file (binary STL) read in another unit: its numbers are float32
+// times the unit factor, no longer float32, and carry float32's rounding
+// all the same. The tolerance is the float32 one, times the factor (it was
+// 2.6-16 times too tight, as for doubles).
+TEST(EstimateExactness, AFloat32PartInAnotherUnitKeepsItsRounding) {
+  const Mesh prism = ProfilePrism(RoundedSquare(7.5, 2.54, 9));
+  const Mesh float32 = Moved(prism, [](const Eigen::Vector3d& p) {
+    return Eigen::Vector3d(p.cast<float>().cast<double>());
+  });
+  const double base = EstimateExactness(float32).tolerance;
+  ASSERT_GT(base, 0.0);
+  for (const double factor : {1000.0, 0.001, 25.4, 1e6}) {
+    const Exactness moved =
+        EstimateExactness(Moved(float32, [&](const Eigen::Vector3d& p) { return factor * p; }));
+    EXPECT_NEAR(moved.tolerance, factor * base, 1e-9 * factor * base) << "factor " << factor;
+    EXPECT_TRUE(moved.exact) << "factor " << factor;
   }
 }
 
