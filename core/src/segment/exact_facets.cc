@@ -12,6 +12,7 @@
 #include "meshseg/fit.h"
 #include "meshseg/status_macros.h"
 #include "segment/exact_hypotheses.h"
+#include "segment/exact_tolerance.h"
 #include "segment/facet_on_surface.h"
 
 namespace meshseg::segment_internal {
@@ -208,6 +209,78 @@ void JoinNeighbours(const FacetMesh& fm, double tau, std::vector<int>* owner,
   for (ExactRegion& r : *regions) std::sort(r.facets.begin(), r.facets.end());
 }
 
+// The largest distance of the corners of `facets` from `surface` (0 for a
+// corner on a chord of it, test (1) of facet_on_surface.h).
+double FarthestCorner(const FacetMesh& fm, const std::vector<int>& facets, const Surface& surface,
+                      double tau) {
+  double farthest = 0.0;
+  for (const int f : facets) {
+    for (const int v : fm.corners[f]) {
+      const double d = std::abs(SignedDistance(surface, fm.points[v]));
+      if (d > tau && ChordOnSurface(fm, v, surface, tau)) continue;
+      farthest = std::max(farthest, d);
+    }
+  }
+  return farthest;
+}
+
+// A piece of facets no hypothesis took (edge-connected) without a vertex of
+// its own, every corner also a corner of a region found, fills a gap
+// between faces found: the tessellator put no vertex inside the face it
+// belongs to, so nothing in the file fixes that face apart from its
+// boundary, which the neighbours hold. Boundary vertices lie on a B-rep
+// edge's curve, which lies on each face's surface only within the edge's
+// tolerance, coarser than the file's rounding (abc_00016513_gt.ply: 1e-5).
+// Such a piece joins the neighbouring region whose surface explains every
+// facet of it (facet_on_surface.h) at the smallest tolerance, if that
+// tolerance is within kLoosestExact of the diagonal, the loosest an exact
+// file's vertices can be off their surfaces (exact_tolerance.h); a face of
+// its own lies farther off every neighbour's surface and stays apart.
+void JoinGapPieces(const FacetMesh& fm, double tau, std::vector<int>* owner,
+                   std::vector<ExactRegion>* regions) {
+  const int n = fm.facet_count();
+  std::vector<char> found_corner(fm.points.size(), 0);
+  std::vector<int> leftover;
+  for (int f = 0; f < n; ++f) {
+    if ((*owner)[f] >= 0) {
+      for (const int v : fm.corners[f]) found_corner[v] = 1;
+    } else if (!fm.normal[f].isZero()) {
+      leftover.push_back(f);
+    }
+  }
+  const double loosest = kLoosestExact * fm.diagonal;
+  for (const std::vector<int>& piece : Pieces(fm, leftover)) {
+    const bool own_vertex = std::any_of(piece.begin(), piece.end(), [&](int f) {
+      return std::any_of(fm.corners[f].begin(), fm.corners[f].end(),
+                         [&](int v) { return !found_corner[v]; });
+    });
+    if (own_vertex) continue;
+    std::vector<int> neighbours;
+    for (const int f : piece) {
+      for (const int g : fm.across[f]) {
+        if (g >= 0 && (*owner)[g] >= 0) neighbours.push_back((*owner)[g]);
+      }
+    }
+    std::sort(neighbours.begin(), neighbours.end());
+    neighbours.erase(std::unique(neighbours.begin(), neighbours.end()), neighbours.end());
+    int best = -1;
+    double best_tolerance = loosest;
+    for (const int r : neighbours) {
+      const Surface& surface = (*regions)[r].surface;
+      const double tolerance = std::max(tau, FarthestCorner(fm, piece, surface, tau));
+      if (tolerance > best_tolerance) continue;
+      const bool on = std::all_of(piece.begin(), piece.end(),
+                                  [&](int f) { return FacetOnSurface(fm, f, surface, tolerance); });
+      if (on) best = r, best_tolerance = tolerance;
+    }
+    if (best < 0) continue;
+    for (const int f : piece) (*owner)[f] = best;
+    std::vector<int>& facets = (*regions)[best].facets;
+    facets.insert(facets.end(), piece.begin(), piece.end());
+    std::sort(facets.begin(), facets.end());
+  }
+}
+
 // Facets no hypothesis took: pieces over edges no sharper than `step`; a
 // piece of one facet is a plane, a larger one FREEFORM.
 void FreeformRegions(const FacetMesh& fm, double step, std::vector<int>* owner,
@@ -277,6 +350,7 @@ absl::StatusOr<ExactFacets> SegmentFacets(const FacetMesh& fm, double tau, const
     }
   }
   JoinNeighbours(fm, tau, &owner, &out.regions);
+  JoinGapPieces(fm, tau, &owner, &out.regions);
   FreeformRegions(fm, out.angular_step, &owner, &out.regions);
   out.face_labels = std::move(owner);
   return out;

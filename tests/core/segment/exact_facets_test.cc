@@ -361,5 +361,59 @@ TEST(EstimateExactness, AFloat32PartInAnotherUnitKeepsItsRounding) {
   }
 }
 
+// A square plate's top (z = 0, a grid of 4 x 4 unit cells) meeting a wall
+// (y = 0, 1 deep) along an edge whose middle vertex lies `lift` above the
+// top: on the edge's curve, which lies on the wall but on the top only
+// within the edge's tolerance. Turned and moved off the axes, so that
+// coordinates carry all their digits (tau = 1e-7 of the diagonal, 5.7e-7).
+Mesh PlateAndWall(double lift) {
+  std::vector<Eigen::Vector3d> v;
+  std::vector<std::array<int, 3>> f;
+  const auto top = [](int i, int j) { return 5 * j + i; };
+  for (int j = 0; j <= 4; ++j) {
+    for (int i = 0; i <= 4; ++i) v.emplace_back(i, j, i == 2 && j == 0 ? lift : 0.0);
+  }
+  for (int j = 0; j < 4; ++j) {
+    for (int i = 0; i < 4; ++i) {
+      f.push_back({top(i, j), top(i + 1, j), top(i + 1, j + 1)});
+      f.push_back({top(i, j), top(i + 1, j + 1), top(i, j + 1)});
+    }
+  }
+  for (int i = 0; i <= 4; ++i) v.emplace_back(i, 0.0, -1.0);
+  const auto bottom = [](int i) { return 25 + i; };
+  for (int i = 0; i < 4; ++i) {
+    f.push_back({top(i + 1, 0), top(i, 0), bottom(i)});
+    f.push_back({top(i + 1, 0), bottom(i), bottom(i + 1)});
+  }
+  const Eigen::Matrix3d turn =
+      Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
+  for (Eigen::Vector3d& p : v) p = turn * p + Eigen::Vector3d(0.31, -0.17, 0.23);
+  absl::StatusOr<Mesh> mesh = BuildMesh(std::move(v), f, "plate and wall");
+  EXPECT_TRUE(mesh.ok()) << mesh.status();
+  return *std::move(mesh);
+}
+
+// The three top facets at the lifted vertex fail the top's plane at tau
+// and hold no vertex of their own: every corner is one of the top's or the
+// wall's. Lifted by 1e-5 (1.7e-6 of the diagonal, under the loosest an
+// exact file's vertices can be off, 1e-5 of it), they join the top; lifted
+// by 1e-4 they do not (they would bend the top's plane by more than any
+// exact file's rounding).
+TEST(SegmentExactFacets, FacetsBetweenFacesWithoutAVertexOfTheirOwnJoinTheSurfaceThatHoldsThem) {
+  const Segmentation close = SegmentExact(PlateAndWall(1e-5));
+  ASSERT_EQ(close.face_labels.size(), 40u);
+  const int top = close.face_labels[0];
+  for (int f = 0; f < 32; ++f) EXPECT_EQ(close.face_labels[f], top) << "top facet " << f;
+  EXPECT_EQ(close.regions[top].type, SurfaceType::kPlane);
+  EXPECT_EQ(close.regions.size(), 2u);
+
+  const Segmentation far = SegmentExact(PlateAndWall(1e-4));
+  ASSERT_EQ(far.face_labels.size(), 40u);
+  const int far_top = far.face_labels[0];
+  // Facets 2, 4 and 5: cells (1, 0) first and (2, 0) both, at vertex (2, 0).
+  for (const int f : {2, 4, 5}) EXPECT_NE(far.face_labels[f], far_top) << "top facet " << f;
+  EXPECT_EQ(far.regions.size(), 3u);
+}
+
 }  // namespace
 }  // namespace meshseg
