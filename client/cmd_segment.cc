@@ -1,7 +1,8 @@
 // meshseg segment INPUT -o RESULT.json [--colored-ply OUT.ply] [--report REPORT.html]
 //   [--step OUT.step [--unit U]] [--include-mesh] [--length-unit U]
 //   [--distance-tolerance X] [--angle-tolerance DEG] [--format FMT]
-//   [--server HOST:PORT [--request-id ID]] [volume flags: client/volume_args.h]
+//   [--server HOST:PORT [--request-id ID]] [--path exact|scan] [--exact-tolerance X]
+//   [volume flags: client/volume_args.h]
 // In-process by default; with --server the same result comes from the service.
 #include <cstdio>
 #include <filesystem>
@@ -119,7 +120,8 @@ absl::Status RunSegment(const Argv& argv) {
       Args::Parse(argv,
                   {"-o", "--colored-ply", "--distance-tolerance", "--angle-tolerance", "--format",
                    "--server", "--report", "--step", "--unit", "--length-unit", "--request-id",
-                   "--iso", "--volume-mode", "--dims", "--spacing", "--origin", "--type"},
+                   "--path", "--exact-tolerance", "--iso", "--volume-mode", "--dims", "--spacing",
+                   "--origin", "--type"},
                   {"--include-mesh", kBigEndianSwitch}, 1));
   const std::string& input = args.positional(0);
   const std::optional<std::string> out = args.Value("-o");
@@ -132,6 +134,18 @@ absl::Status RunSegment(const Argv& argv) {
   if (dist) options.segment.set_distance_tolerance(*dist);
   if (angle) options.segment.set_angle_tolerance_deg(*angle);
   MESHSEG_RETURN_IF_ERROR(VolumeOptionsFromArgs(args, &options));
+  if (const std::optional<std::string> path = args.Value("--path")) {
+    if (*path == "exact") {
+      options.segment.set_segmentation_path(v1::SEGMENTATION_PATH_EXACT_FACETS);
+    } else if (*path == "scan") {
+      options.segment.set_segmentation_path(v1::SEGMENTATION_PATH_SCAN);
+    } else {
+      return absl::InvalidArgumentError(
+          absl::StrCat("--path must be exact or scan, got \"", *path, "\""));
+    }
+  }
+  MESHSEG_ASSIGN_OR_RETURN(const std::optional<double> exact_tol, args.Double("--exact-tolerance"));
+  if (exact_tol) options.segment.set_exact_tolerance(*exact_tol);
   // Same validation on both paths (the server repeats it).
   MESHSEG_RETURN_IF_ERROR(FromProto(options.segment).status());
   MESHSEG_ASSIGN_OR_RETURN(const std::optional<FileFormat> format,

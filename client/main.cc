@@ -18,6 +18,7 @@ constexpr char kUsage[] =
     "  reconstruct CLOUD -o MESH.ply [--format FMT]\n"
     "  segment INPUT -o RESULT.json [--colored-ply OUT.ply] [--distance-tolerance X]\n"
     "          [--angle-tolerance DEG] [--format FMT] [--server HOST:PORT]\n"
+    "          [--path exact|scan] [--exact-tolerance X]\n"
     "  jobs --server HOST:PORT\n"
     "  status JOB --server HOST:PORT\n"
     "  watch JOB --server HOST:PORT\n"

@@ -64,6 +64,22 @@ absl::StatusOr<PipelineParams> FromProto(const v1::SegmentOptions& options) {
                                                    options.volume_mode().substr(0, 64),
                                                    "\" is not one of auto, grey, binary"));
   }
+  switch (options.segmentation_path()) {
+    case v1::SEGMENTATION_PATH_UNSPECIFIED: break;
+    case v1::SEGMENTATION_PATH_EXACT_FACETS: params.segment.exact = ExactMode::kAlways; break;
+    case v1::SEGMENTATION_PATH_SCAN: params.segment.exact = ExactMode::kNever; break;
+    default:
+      return absl::InvalidArgumentError(absl::StrCat(
+          "segment options: segmentation_path must be EXACT_FACETS, SCAN or unspecified, got ",
+          v1::SegmentationPath_Name(options.segmentation_path())));
+  }
+  if (options.has_exact_tolerance()) {
+    if (!std::isfinite(options.exact_tolerance()) || !(options.exact_tolerance() > 0.0)) {
+      return absl::InvalidArgumentError(absl::StrCat(
+          "segment options: exact_tolerance must be > 0, got ", options.exact_tolerance()));
+    }
+    params.segment.exact_tolerance = options.exact_tolerance();
+  }
   return params;
 }
 

@@ -22,8 +22,19 @@ v1::SurfaceType ToProto(SurfaceType type) {
   return v1::SURFACE_TYPE_UNSPECIFIED;
 }
 
-// Fills the `surface` oneof of `out` from the alternative `surface` holds.
-void SetSurface(const Surface& surface, v1::Region* out) {
+v1::SegmentationPath ToProto(SegmentationPath path) {
+  switch (path) {
+    case SegmentationPath::kScan: return v1::SEGMENTATION_PATH_SCAN;
+    case SegmentationPath::kExactFacets: return v1::SEGMENTATION_PATH_EXACT_FACETS;
+    case SegmentationPath::kRemeshed: return v1::SEGMENTATION_PATH_REMESHED;
+  }
+  return v1::SEGMENTATION_PATH_UNSPECIFIED;
+}
+
+// Fills the surface oneof of `out` (a v1::Region or v1::SharedSurface) from
+// the alternative `surface` holds.
+template <typename Message>
+void SetSurface(const Surface& surface, Message* out) {
   std::visit(
       [out](const auto& s) {
         using T = std::decay_t<decltype(s)>;
@@ -88,6 +99,16 @@ v1::SegmentationResult ToProto(const PipelineResult& result) {
     r->set_max_distance(region.max_distance);
     // A freeform region keeps the quadric it was grown with as its surface.
     SetSurface(region.surface, r);
+    r->set_surface_id(region.surface_id);
+  }
+  for (const SharedSurface& surface : result.surfaces) {
+    v1::SharedSurface* s = out.add_surfaces();
+    s->set_id(surface.id);
+    s->set_type(ToProto(surface.type));
+    SetSurface(surface.surface, s);
+    s->mutable_regions()->Add(surface.regions.begin(), surface.regions.end());
+    s->set_rms_distance(surface.rms_distance);
+    s->set_max_distance(surface.max_distance);
   }
   v1::Estimates* e = out.mutable_estimates();
   e->set_noise_sigma(result.estimates.noise_sigma);
@@ -115,6 +136,9 @@ v1::SegmentationResult ToProto(const PipelineResult& result) {
     v->set_format(FileFormatName(result.volume.format));
     v->set_iso_value(result.iso_value);
   }
+  e->set_segmentation_path(ToProto(result.estimates.path));
+  e->set_exact_tolerance(result.estimates.exact_tolerance);
+  e->set_exact_share(result.estimates.exact_share);
   SetTopology(result.topology, result.features, &out);
   out.mutable_point_labels()->Add(result.point_labels.begin(), result.point_labels.end());
   SetBrep(result, &out);

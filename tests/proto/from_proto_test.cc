@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <limits>
+#include <string>
 #include <vector>
 
 #include "meshseg/proto/convert.h"
@@ -154,6 +155,31 @@ TEST(RawLayoutFromProto, TakesTheHeadersRawFieldsAndRefusesBadOnes) {
   h.set_raw_voxel_type("uint8");
   h.add_raw_dims(8);
   EXPECT_THAT(RawLayoutFromProto(h, &params).message(), HasSubstr("4 dims given, need 3"));
+}
+
+TEST(FromProto, ReadsThePathAndTheExactTolerance) {
+  v1::SegmentOptions o;
+  o.set_segmentation_path(v1::SEGMENTATION_PATH_EXACT_FACETS);
+  o.set_exact_tolerance(1e-6);
+  const absl::StatusOr<PipelineParams> p = FromProto(o);
+  ASSERT_TRUE(p.ok()) << p.status();
+  EXPECT_EQ(p->segment.exact, ExactMode::kAlways);
+  EXPECT_EQ(p->segment.exact_tolerance, 1e-6);
+  o.set_segmentation_path(v1::SEGMENTATION_PATH_SCAN);
+  EXPECT_EQ(FromProto(o)->segment.exact, ExactMode::kNever);
+}
+
+TEST(FromProto, RefusesANonPositiveExactToleranceAndTheRemeshedPath) {
+  v1::SegmentOptions o;
+  o.set_exact_tolerance(-1.0);
+  absl::StatusOr<PipelineParams> p = FromProto(o);
+  EXPECT_EQ(p.status().code(), absl::StatusCode::kInvalidArgument);
+  EXPECT_NE(p.status().message().find("exact_tolerance"), std::string::npos) << p.status();
+  v1::SegmentOptions remeshed;
+  remeshed.set_segmentation_path(v1::SEGMENTATION_PATH_REMESHED);
+  p = FromProto(remeshed);
+  EXPECT_EQ(p.status().code(), absl::StatusCode::kInvalidArgument);
+  EXPECT_NE(p.status().message().find("segmentation_path"), std::string::npos) << p.status();
 }
 
 }  // namespace

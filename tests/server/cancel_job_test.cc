@@ -94,7 +94,11 @@ TEST(CancelJob, RealPipelineStopsAtTheNextCheckAndFreesItsWorker) {
       absl::MutexLock lock(&mu);
       stop_seen = true;
     };
-    return RunPipeline(path, params, inner);
+    // The box is an exact tessellation, segmented facet by facet without a
+    // curvature stage; the held job takes the scan path, which has one.
+    PipelineParams scan = params;
+    scan.segment.exact = ExactMode::kNever;
+    return RunPipeline(path, scan, inner);
   };
   TestServer server({.workers = 1, .runner = runner});
   MeshsegClient client = server.Client();

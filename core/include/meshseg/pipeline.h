@@ -97,6 +97,8 @@ struct PipelineResult {
   std::vector<int> face_labels;
   std::vector<int> vertex_labels; // one per mesh vertex; -1 = no region
   std::vector<Region> regions;
+  // The surfaces the regions lie on (Segmentation::surfaces).
+  std::vector<SharedSurface> surfaces;
   SegmentEstimates estimates;
   Topology topology;
   std::vector<Feature> features;

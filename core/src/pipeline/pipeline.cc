@@ -27,7 +27,7 @@ namespace {
 
 // A CAD export's vertices lie on their surfaces to rounding: a face whose
 // corners miss its region's refitted surface by more than this, in l_avg of
-// the input (the exact-facet path's kExactTolerance), may belong next door.
+// the input, may belong next door.
 constexpr double kExactCorner = 1e-4;
 
 absl::Status ValidateParams(const PipelineParams& params) {
@@ -79,6 +79,21 @@ absl::Status CheckMemoryBudget(const std::string& input_path, const PipelinePara
       params.memory_budget_bytes));
 }
 
+// Each region of `result` a surface of its own (the remeshed path does not
+// join them).
+void OwnSurfaces(PipelineResult* result) {
+  result->surfaces.clear();
+  for (Region& r : result->regions) {
+    r.surface_id = r.id;
+    result->surfaces.push_back({.id = r.id,
+                                .type = r.type,
+                                .surface = r.surface,
+                                .regions = {r.id},
+                                .rms_distance = r.rms_distance,
+                                .max_distance = r.max_distance});
+  }
+}
+
 bool IsPointCloudFormat(FileFormat format) {
   return format == FileFormat::kXyz || format == FileFormat::kPwn;
 }
@@ -96,6 +111,20 @@ absl::Status DescribeRegions(const Mesh& mesh, std::span<const int> labels,
   return absl::OkStatus();
 }
 
+// Boundaries and features of `segmentation` (of `mesh`) into `result`, with
+// its regions, surfaces and estimates; returns its labels per mesh face.
+absl::StatusOr<std::vector<int>> TakeSegmentation(const Mesh& mesh, Segmentation segmentation,
+                                                  const PipelineParams& params,
+                                                  const RunContext& ctx, PipelineResult* result) {
+  MESHSEG_RETURN_IF_ERROR(
+      DescribeRegions(mesh, segmentation.face_labels, segmentation.regions, params, ctx, result));
+  result->vertex_labels = std::move(segmentation.vertex_labels);
+  result->regions = std::move(segmentation.regions);
+  result->surfaces = std::move(segmentation.surfaces);
+  result->estimates = segmentation.estimates;
+  return std::move(segmentation.face_labels);
+}
+
 // Segments `mesh` and fills everything of `result` but the labels; returns
 // the labels per mesh face.
 absl::StatusOr<std::vector<int>> SegmentMesh(const Mesh& mesh, const PipelineParams& params,
@@ -103,14 +132,23 @@ absl::StatusOr<std::vector<int>> SegmentMesh(const Mesh& mesh, const PipelinePar
   result->mesh = MeshStatistics(mesh);
   MESHSEG_ASSIGN_OR_RETURN(CurvatureField curvature,
                            EstimateCurvature(mesh, params.curvature, ctx));
-  MESHSEG_ASSIGN_OR_RETURN(Segmentation segmentation,
-                           Segment(mesh, curvature, params.segment, ctx));
-  MESHSEG_RETURN_IF_ERROR(
-      DescribeRegions(mesh, segmentation.face_labels, segmentation.regions, params, ctx, result));
-  result->vertex_labels = std::move(segmentation.vertex_labels);
-  result->regions = std::move(segmentation.regions);
-  result->estimates = segmentation.estimates;
-  return std::move(segmentation.face_labels);
+  SegmentParams segment = params.segment;
+  segment.exact = ExactMode::kNever;  // the caller has decided
+  MESHSEG_ASSIGN_OR_RETURN(Segmentation segmentation, Segment(mesh, curvature, segment, ctx));
+  return TakeSegmentation(mesh, std::move(segmentation), params, ctx, result);
+}
+
+// An exact tessellation (meshseg/segment.h: SegmentExactFacets), facet by
+// facet on the input itself: no curvature, no remesh.
+absl::StatusOr<std::vector<int>> SegmentExact(const Mesh& mesh, const Exactness& exactness,
+                                              const PipelineParams& params, const RunContext& ctx,
+                                              PipelineResult* result) {
+  result->mesh = MeshStatistics(mesh);
+  SegmentParams segment = params.segment;
+  segment.exact_tolerance = exactness.tolerance;
+  MESHSEG_ASSIGN_OR_RETURN(Segmentation segmentation, SegmentExactFacets(mesh, segment, ctx));
+  segmentation.estimates.exact_share = exactness.share;
+  return TakeSegmentation(mesh, std::move(segmentation), params, ctx, result);
 }
 
 // A CAD tessellation (meshseg/remesh.h): segments an isotropic remesh, then
@@ -128,7 +166,8 @@ absl::StatusOr<std::vector<int>> SegmentRemeshed(const Mesh& surface, const Mesh
   MESHSEG_ASSIGN_OR_RETURN(CurvatureField curvature,
                            EstimateCurvature(fine, params.curvature, ctx));
   SegmentParams segment = params.segment;
-  segment.on_facets = on_facets;  // the remesh's vertices lie on the input's facets
+  segment.exact = ExactMode::kNever;  // the remesh's vertices lie on chords, under the surface
+  segment.on_facets = on_facets;      // the remesh's vertices lie on the input's facets
   MESHSEG_ASSIGN_OR_RETURN(Segmentation segmentation, Segment(fine, curvature, segment, ctx));
   const double tolerance = segmentation.estimates.distance_tolerance;
   std::vector<int> labels =
@@ -143,9 +182,11 @@ absl::StatusOr<std::vector<int>> SegmentRemeshed(const Mesh& surface, const Mesh
     pipeline_internal::CompactRegions(&labels, &result->vertex_labels, &result->regions);
     pipeline_internal::RefitOnInputVertices(mesh.tri, labels, tolerance, &result->regions);
   }
+  OwnSurfaces(result);
   MESHSEG_RETURN_IF_ERROR(DescribeRegions(mesh, labels, result->regions, params, ctx, result));
   result->mesh = MeshStatistics(mesh);
   result->estimates = segmentation.estimates;
+  result->estimates.path = SegmentationPath::kRemeshed;
   result->remesh_edge_length = edge_length;
   result->remesh_face_count = static_cast<int64_t>(fine.tri.n_faces());
   result->remesh_fine_edge_length = remesh.fine_edge_length;
@@ -246,6 +287,7 @@ absl::StatusOr<PipelineResult> RunOnVolume(const std::string& input_path,
                       : SegmentMesh(surface->mesh, params, ctx, &result));
   result.face_labels = pipeline_internal::InputFaceLabels(surface->mesh.face_of_input, labels);
   MESHSEG_RETURN_IF_ERROR(ExportStep(surface->mesh, labels, params, ctx, &result));
+  AttachMesh(surface->mesh, {}, params, &result);  // the extracted surface; no input faces
   return result;
 }
 
@@ -279,6 +321,8 @@ absl::StatusOr<PipelineResult> RunOnMesh(const std::string& input_path,
       ReadMesh(input_path, {.format = params.format, .max_elements = params.max_elements}));
   ctx.Progress("read", 1.0);
   PipelineResult result;
+  // Binary occupancy first: a terraced surface's facets lie exactly in the
+  // planes of their neighbours, so it would pass for an exact tessellation.
   if (const std::optional<BinaryLattice> lattice = DetectBinaryLattice(mesh.tri)) {
     MESHSEG_ASSIGN_OR_RETURN(const BinaryVertices binary,
                              BinaryMeshFeatures(mesh.tri, *lattice, params.volume));
@@ -286,24 +330,24 @@ absl::StatusOr<PipelineResult> RunOnMesh(const std::string& input_path,
         const std::vector<int> labels,
         SegmentBinary(mesh, binary, lattice->spacing.minCoeff(), params, ctx, &result));
     result.face_labels = pipeline_internal::InputFaceLabels(mesh.face_of_input, labels);
+    AttachMesh(mesh, mesh.face_of_input, params, &result);
     return result;
   }
-  const TessellationShape shape = Assess(mesh, params.remesh);
-  if (params.remesh.mode == RemeshMode::kAuto && shape.too_fine_to_remesh) {
-    // A remesh at the face budget would lose what the export resolves (thin
-    // walls, small holes): the input is segmented facet by facet, if exact.
-    PipelineParams exact = params;
-    exact.segment.exact_facets = true;
-    absl::StatusOr<std::vector<int>> mesh_labels = SegmentMesh(mesh, exact, ctx, &result);
-    if (mesh_labels.ok()) {
-      result.face_labels = pipeline_internal::InputFaceLabels(mesh.face_of_input, *mesh_labels);
-      MESHSEG_RETURN_IF_ERROR(ExportStep(mesh, *mesh_labels, params, ctx, &result));
+  // An exact tessellation is segmented facet by facet, as read; the share
+  // of exact facets is reported either way (estimates.exact_share).
+  Exactness exactness;
+  if (params.segment.exact != ExactMode::kNever && params.remesh.mode != RemeshMode::kAlways) {
+    exactness = EstimateExactness(mesh, params.segment.exact_tolerance);
+    if (exactness.exact || params.segment.exact == ExactMode::kAlways) {
+      MESHSEG_ASSIGN_OR_RETURN(const std::vector<int> labels,
+                               SegmentExact(mesh, exactness, params, ctx, &result));
+      result.face_labels = pipeline_internal::InputFaceLabels(mesh.face_of_input, labels);
+      MESHSEG_RETURN_IF_ERROR(ExportStep(mesh, labels, params, ctx, &result));
       AttachMesh(mesh, mesh.face_of_input, params, &result);
       return result;
     }
-    if (!absl::IsFailedPrecondition(mesh_labels.status())) return mesh_labels.status();
-    result = PipelineResult{};
   }
+  const TessellationShape shape = Assess(mesh, params.remesh);
   const bool remesh = params.remesh.mode == RemeshMode::kAlways ||
                       (params.remesh.mode == RemeshMode::kAuto && shape.cad_like);
   const double edge_length = params.remesh.target_edge_length > 0.0
@@ -313,6 +357,8 @@ absl::StatusOr<PipelineResult> RunOnMesh(const std::string& input_path,
                            remesh ? SegmentRemeshed(mesh, mesh, edge_length, true, params, ctx, &result)
                                   : SegmentMesh(mesh, params, ctx, &result));
   result.face_labels = pipeline_internal::InputFaceLabels(mesh.face_of_input, mesh_labels);
+  result.estimates.exact_tolerance = exactness.tolerance;
+  result.estimates.exact_share = exactness.share;
   MESHSEG_RETURN_IF_ERROR(ExportStep(mesh, mesh_labels, params, ctx, &result));
   AttachMesh(mesh, mesh.face_of_input, params, &result);
   return result;
