@@ -125,6 +125,14 @@ absl::Status RedisConnection::Connect() {
 }
 
 absl::StatusOr<RedisValue> RedisConnection::Command(const std::vector<std::string>& args) {
+  // Between a reply and the next command nothing is pending on a
+  // request/reply connection, so input waiting now is the server's close
+  // (Redis restarted while this connection sat idle in a pool). Reconnect
+  // instead of failing the command on a socket hiredis still thinks is open.
+  if (context_ != nullptr && context_->err == 0) {
+    pollfd p{.fd = context_->fd, .events = POLLIN, .revents = 0};
+    if (poll(&p, 1, 0) != 0) Reset();
+  }
   if (absl::Status s = Connect(); !s.ok()) return s;
   Argv argv(args);
   void* reply = redisCommandArgv(context_, argv.argc(), argv.ptrs.data(), argv.lens.data());
