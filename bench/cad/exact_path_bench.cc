@@ -66,7 +66,9 @@ int main(int argc, char** argv) {
     best_wall[0] = std::min(best_wall[0], estimate_clock.Wall());
     best_cpu[0] = std::min(best_cpu[0], estimate_clock.Cpu());
     Clock segment_clock;
-    seg = meshseg::SegmentExactFacets(*mesh, {.exact_tolerance = exactness.tolerance});
+    meshseg::SegmentParams params;
+    params.exact_tolerance = exactness.tolerance;
+    seg = meshseg::SegmentExactFacets(*mesh, params);
     if (!seg.ok()) {
       std::fprintf(stderr, "%s\n", seg.status().ToString().c_str());
       return 1;

@@ -364,7 +364,7 @@ std::optional<Hypothesis> PlaneAt(const FacetMesh& fm, int f, double tau) {
 }
 
 std::optional<Hypothesis> CurvedAt(const FacetMesh& fm, int f, double tau) {
-  for (const auto [corners, smoothest_first] : SeedShapes()) {
+  for (const auto& [corners, smoothest_first] : SeedShapes()) {
     std::optional<Hypothesis> h = CurvedFit(fm, SeedGroup(fm, f, corners, smoothest_first), tau);
     if (!h) continue;
     Grow(fm, tau, &*h);
@@ -395,14 +395,14 @@ bool ExplainedLocally(const FacetMesh& fm, int f, double tau) {
   for (const int g : fm.across[f]) {
     if (g >= 0 && CornersOnSurface(fm, g, plane, tau)) return true;
   }
-  for (const auto [corners, smoothest_first] : SeedShapes()) {
+  for (const auto& [corners, smoothest_first] : SeedShapes()) {
     if (CurvedFit(fm, SeedGroup(fm, f, corners, smoothest_first), tau)) return true;
   }
   // A facet at its face's border: the facets around a neighbour may fit
   // where its own do not.
   for (const int g : fm.across[f]) {
     if (g < 0 || fm.normal[g].isZero()) continue;
-    for (const auto [corners, smoothest_first] : SeedShapes()) {
+    for (const auto& [corners, smoothest_first] : SeedShapes()) {
       const std::optional<Hypothesis> h =
           CurvedFit(fm, SeedGroup(fm, g, corners, smoothest_first), tau);
       if (h && FacetOnSurface(fm, f, h->surface, tau)) return true;

@@ -27,7 +27,9 @@ TEST(Simplify, BinaryBoxKeepsEveryFeatureVertexWithinHalfAVoxel) {
   // Seed 003 section 2.2: feature points are never removed.
   const std::set<int> kept(out->input_vertex.begin(), out->input_vertex.end());
   for (size_t v = 0; v < s.feature_vertex.size(); ++v) {
-    if (s.feature_vertex[v]) EXPECT_TRUE(kept.count(static_cast<int>(v))) << "feature vertex " << v;
+    if (s.feature_vertex[v]) {
+      EXPECT_TRUE(kept.count(static_cast<int>(v))) << "feature vertex " << v;
+    }
   }
   EXPECT_LE(out->hausdorff.Max(), 0.75 * kH);
 }
