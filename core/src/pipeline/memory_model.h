@@ -55,9 +55,9 @@ int64_t CostedFaces(const InputSize& input);
 int64_t PeakBytes(const InputSize& input, const PipelineParams& params);
 
 // Volumes (#33): the surface's faces are not in the header. Marching cubes
-// puts about 1.5 triangles on every voxel face of surface (measured: the
-// 498 x 340 x 246 test_piece grid, box surface 7.5e5 voxel faces, gave
-// 1.16e6 triangles); a part's surface is costed at twice its bounding box's
+// puts about 1.5 triangles on every voxel face of surface (measured on a
+// 498 x 340 x 246 grid of a machined part: a box surface of 7.5e5 voxel
+// faces gave 1.16e6 triangles); a part's surface is costed at twice its bounding box's
 // (holes, pockets): faces = 2 * 1.5 * 2 (nx ny + ny nz + nx nz), i.e. 6 per
 // face of the box product. Samples stream two slices at a time (16 B per
 // slice voxel).

@@ -230,7 +230,8 @@ double FarthestCorner(const FacetMesh& fm, const std::vector<int>& facets, const
 // belongs to, so nothing in the file fixes that face apart from its
 // boundary, which the neighbours hold. Boundary vertices lie on a B-rep
 // edge's curve, which lies on each face's surface only within the edge's
-// tolerance, coarser than the file's rounding (abc_00016513_gt.ply: 1e-5).
+// tolerance, coarser than the file's rounding (in real CAD exports up to
+// about 1e-5 of the part's diagonal).
 // Such a piece joins the neighbouring region whose surface explains every
 // facet of it (facet_on_surface.h) at the smallest tolerance, if that
 // tolerance is within kLoosestExact of the diagonal, the loosest an exact

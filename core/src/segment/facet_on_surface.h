@@ -20,8 +20,8 @@
 //      over r (r the farthest corner from the centroid);
 //  (4) the spread is under kMaxSpreadDeg: a facet over which the surface
 //      turns by a half turn or more approximates nothing of it. (CAD fans on
-//      small holes do span 100-180 degrees: abc_00007974_5.obj's r 0.5
-//      cylinders.)
+//      small holes do span 100-180 degrees: a coarse export may put only a
+//      few facets around a hole.)
 // On a plane the spread is 0, and (2)-(3) say that f lies in it. A facet of
 // an annular end face whose corners all lie on the rim circle has them on
 // the cylinder too, but its normal is along the axis, at 90 degrees to
