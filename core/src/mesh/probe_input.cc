@@ -185,6 +185,15 @@ absl::StatusOr<InputSize> ProbeInput(const std::string& path, std::optional<File
       size.point_cloud = true;
       break;
     }
+    case FileFormat::kNrrd:
+    case FileFormat::kMha:
+    case FileFormat::kMhd:
+    case FileFormat::kRaw:
+      // A volume's size is its header's grid (meshseg/voxel.h); the memory
+      // model costs volumes from that, never from mesh element counts.
+      return BadInput(src, absl::StrCat("a ", FileFormatName(size.format),
+                                        " volume has no mesh element counts; read its volume "
+                                        "header (meshseg/voxel.h)"));
     case FileFormat::kUnknown:
       return BadInput(src,
                       "unknown format (extension and content match none of stl, obj, off, "

@@ -94,6 +94,9 @@ TEST(ProbeInput, NamesTheFileAndTheProblem) {
   EXPECT_THAT(Message(counts), HasSubstr("no vertex and face counts"));
   const absl::Status negative = ProbeInput(WriteTemp("neg.off", "OFF\n-3 1 0\n")).status();
   EXPECT_THAT(Message(negative), HasSubstr("negative count"));
+  const absl::Status volume = ProbeInput(WriteTemp("ct.nrrd", "NRRD0004\ntype: uint8\n")).status();
+  EXPECT_EQ(volume.code(), absl::StatusCode::kInvalidArgument) << volume;
+  EXPECT_THAT(volume.message(), HasSubstr("nrrd volume has no mesh element counts")) << volume;
   const absl::Status unknown = ProbeInput(WriteTemp("x.bin", "\x01\x02garbage")).status();
   EXPECT_THAT(Message(unknown), HasSubstr("unknown format"));
 }
