@@ -1,6 +1,6 @@
 // meshseg simplify IN -o OUT (--target-faces N | --max-error E) [--regions RESULT.json]
-// Feature-preserving QEM (seed 003): a binary-occupancy mesh keeps its
-// feature voxels' vertices; with --regions the region boundaries are kept
+// Feature-preserving QEM (ALGORITHMS.md S4): a binary-occupancy mesh keeps
+// the vertices at its feature voxels (the material's edges and corners); with --regions the region boundaries are kept
 // and every face keeps its label. Prints the Hausdorff distance to IN.
 #include <chrono>
 #include <cstdio>

@@ -6,7 +6,6 @@
 //   python3 bench/cad/make_prism_grid.py 79 /tmp/grid1m.obj    (1M facets)
 // Prints one line per stage (the best of RUNS for the estimate and the
 // segmentation), then the regions and surfaces found.
-#include <sys/resource.h>
 
 #include <algorithm>
 #include <chrono>
@@ -18,14 +17,9 @@
 
 #include "meshseg/mesh.h"
 #include "meshseg/segment.h"
+#include "bench/peak_rss.h"
 
 namespace {
-
-double PeakMiB() {
-  rusage u{};
-  getrusage(RUSAGE_SELF, &u);
-  return u.ru_maxrss / 1024.0;  // Linux: KiB
-}
 
 // Wall and process CPU seconds since construction.
 struct Clock {
@@ -38,7 +32,7 @@ struct Clock {
 };
 
 void Print(const char* stage, double wall, double cpu) {
-  std::printf("%-10s %8.3f s wall %8.3f s cpu  peak %8.1f MiB\n", stage, wall, cpu, PeakMiB());
+  std::printf("%-10s %8.3f s wall %8.3f s cpu  peak %8.1f MiB\n", stage, wall, cpu, meshseg::bench::PeakRssMiB());
 }
 
 }  // namespace

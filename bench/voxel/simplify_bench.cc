@@ -22,6 +22,7 @@
 #include "meshseg/fit.h"
 #include "meshseg/generate.h"
 #include "meshseg/voxel.h"
+#include "bench/peak_rss.h"
 
 namespace {
 
@@ -31,12 +32,6 @@ constexpr double kSharpDeg = 30.0;
 constexpr double kNearH = 0.5;
 constexpr double kRadiusH = 1.5;
 constexpr double kFacingDeg = 15.0;
-
-double PeakMiB() {
-  rusage u{};
-  getrusage(RUSAGE_SELF, &u);
-  return u.ru_maxrss / 1024.0;
-}
 
 // CPU seconds of this process so far (user + system): on a shared machine
 // the wall time of a one-thread step says more about the neighbours.
@@ -98,7 +93,7 @@ int main(int argc, char** argv) {
       "out->in %.3f h, "
       "%.2f s); peak RSS %.0f MiB\n",
       in.n_faces(), s->mesh.tri.n_faces(), simplify_s, simplify_cpu, hd.Max() / h,
-      hd.input_to_output / h, hd.output_to_input / h, hausdorff_s, PeakMiB());
+      hd.input_to_output / h, hd.output_to_input / h, hausdorff_s, meshseg::bench::PeakRssMiB());
 
   // Sharp feature edges of the ground truth, sampled at edge midpoints.
   const meshseg::TriMesh& sm = s->mesh.tri;

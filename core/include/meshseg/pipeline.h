@@ -44,17 +44,23 @@ struct PipelineParams {
   // Volumes (NRRD, MetaImage, raw): reading and iso-surface (voxel.h).
   VolumeParams volume;
   // How binary-occupancy surfaces (binary volumes, terraced marching-cubes
-  // meshes) lose their terraces before segmentation; both keep seed 003's
-  // feature vertices and fit the surfaces on the original vertices.
+  // meshes) lose their terraces before segmentation. Both keep the vertices
+  // at feature voxels (edges and corners of the material, ALGORITHMS.md S4),
+  // whose position the occupancy fixes, and fit the surfaces on the original
+  // vertices, which are unbiased where the smoothed ones are not.
   enum class BinarySurface {
     kRelax,     // RelaxTerraces on the full surface (voxel.h)
-    kSimplify,  // seed 003's QEM simplification, remeshed (remesh.h)
+    kSimplify,  // feature-preserving QEM simplification, remeshed (remesh.h)
   };
   BinarySurface binary_surface = BinarySurface::kRelax;
-  // kRelax: seed 003's feature vertices stay put while the rest relax.
+  // kRelax: feature vertices stay put while the rest relax, so edges and
+  // corners are not rounded off by the smoothing.
   bool binary_relax_keeps_features = true;
   // kSimplify: at most this share of the faces, and a quadric error of at
-  // most this many voxels (seed 003: 0.5-0.6 voxel).
+  // most this many voxels: a binary surface's vertices lie within about half
+  // a voxel of the true surface, so that bound removes the terraces and
+  // keeps real shape
+  // (ALGORITHMS.md S4: 0.5-0.6 voxel).
   double binary_face_share = 0.1;
   double binary_max_error_voxels = 0.5;
   // Upper bound on declared vertex/face counts of the input.

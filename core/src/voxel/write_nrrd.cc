@@ -15,18 +15,9 @@
 namespace meshseg {
 namespace {
 
+// NRRD spells the integer types as VoxelTypeName does, and float32 "float".
 const char* NrrdTypeName(VoxelType type) {
-  switch (type) {
-    case VoxelType::kUint8:
-      return "uint8";
-    case VoxelType::kUint16:
-      return "uint16";
-    case VoxelType::kInt16:
-      return "int16";
-    case VoxelType::kFloat32:
-      return "float";
-  }
-  return "uint8";
+  return type == VoxelType::kFloat32 ? "float" : VoxelTypeName(type);
 }
 
 template <typename T>
