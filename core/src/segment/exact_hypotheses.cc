@@ -135,7 +135,11 @@ std::vector<int> Support(const FacetMesh& fm, const Surface& surface, std::span<
 // Grows `h` from its support, refitting on what it holds, until it stops
 // growing or the refit no longer fits within tau.
 void Grow(const FacetMesh& fm, double tau, Hypothesis* h) {
-  std::vector<char> mark(fm.facet_count(), 0);
+  // Marks of facets tried, all zero between calls (Support resets the ones it
+  // sets): one array per thread, so that a hypothesis costs what it touches
+  // rather than the size of the mesh.
+  thread_local std::vector<char> mark;
+  if (mark.size() < fm.corners.size()) mark.assign(fm.corners.size(), 0);
   for (int round = 0; round < kMaxGrowRounds; ++round) {
     std::vector<int> grown = Support(fm, h->surface, h->support, tau, &mark);
     const bool same = grown.size() == h->support.size();
