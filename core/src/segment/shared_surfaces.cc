@@ -29,12 +29,18 @@ bool AllOn(const FacetMesh& fm, const std::vector<int>& corners, const Surface& 
 }
 
 // A coarse key of a surface's parameters (direction with its sign made
-// canonical, offset or radius, at kKeyStep of the diagonal or radians):
-// surfaces that can coincide share it, or lie one step apart, so pairs are
-// only tried within a key and its neighbours.
+// canonical, offset or radius, position, at kKeyStep of the diagonal or
+// radians): surfaces that can coincide share it, or lie one step apart in
+// each, so pairs are only tried within a key and its neighbours. An axis's
+// position is its point nearest the frame's origin (the box centre), taken
+// along a fixed oblique direction: parallel cylinders of one radius (a pin
+// array, the holes of a grid) differ there, and two fits of one cylinder
+// agree there to their axes' angle times the box's size, the same
+// resolution as the direction's own step.
 constexpr double kKeyStep = 1e-3;
+using Key = std::array<long long, 4>;
 
-std::array<long long, 3> KeyOf(const Surface& s, double diagonal) {
+Key KeyOf(const Surface& s, double diagonal) {
   auto q = [&](double x, double unit) { return std::llround(x / (kKeyStep * unit)); };
   auto canonical = [](Eigen::Vector3d d) {
     const int k = d.cwiseAbs().maxCoeff() == std::abs(d.x())
@@ -42,24 +48,29 @@ std::array<long long, 3> KeyOf(const Surface& s, double diagonal) {
                       : (d.cwiseAbs().maxCoeff() == std::abs(d.y()) ? 1 : 2);
     return d[k] < 0.0 ? Eigen::Vector3d(-d) : d;
   };
+  const Eigen::Vector3d oblique = Eigen::Vector3d(0.36, 0.48, 0.8);  // unit, on no plane of axes
   if (const auto* p = std::get_if<Plane>(&s)) {
     const Eigen::Vector3d n = canonical(p->normal);
-    return {q(n.x(), 1.0), q(n.y(), 1.0), q(n.dot(p->point), diagonal)};
+    return {q(n.x(), 1.0), q(n.y(), 1.0), q(n.dot(p->point), diagonal), 0};
   }
   if (const auto* c = std::get_if<Cylinder>(&s)) {
     const Eigen::Vector3d a = canonical(c->axis_direction);
-    return {q(a.x(), 1.0), q(a.y(), 1.0), q(c->radius, diagonal)};
+    const Eigen::Vector3d foot = c->axis_origin - c->axis_origin.dot(a) * a;
+    return {q(a.x(), 1.0), q(a.y(), 1.0), q(c->radius, diagonal), q(foot.dot(oblique), diagonal)};
   }
   if (const auto* c = std::get_if<Cone>(&s)) {
-    return {q(c->apex.x(), diagonal), q(c->apex.y(), diagonal), q(c->half_angle, 1.0)};
+    return {q(c->apex.x(), diagonal), q(c->apex.y(), diagonal), q(c->half_angle, 1.0),
+            q(c->apex.z(), diagonal)};
   }
   if (const auto* c = std::get_if<Sphere>(&s)) {
-    return {q(c->center.x(), diagonal), q(c->center.y(), diagonal), q(c->radius, diagonal)};
+    return {q(c->center.x(), diagonal), q(c->center.y(), diagonal), q(c->radius, diagonal),
+            q(c->center.z(), diagonal)};
   }
   if (const auto* c = std::get_if<Torus>(&s)) {
-    return {q(c->center.x(), diagonal), q(c->major_radius, diagonal), q(c->minor_radius, diagonal)};
+    return {q(c->center.x(), diagonal), q(c->major_radius, diagonal), q(c->minor_radius, diagonal),
+            q(c->center.y(), diagonal)};
   }
-  return {0, 0, 0};
+  return {0, 0, 0, 0};
 }
 
 int Find(std::vector<int>& parent, int x) {
@@ -77,7 +88,7 @@ std::vector<SharedSurface> GroupSharedSurfaces(const FacetMesh& fm,
   for (int r = 0; r < n; ++r) corners[r] = CornersOf(fm, regions[r].facets);
   std::vector<int> parent(n);
   std::iota(parent.begin(), parent.end(), 0);
-  std::map<std::pair<int, std::array<long long, 3>>, std::vector<int>> by_key;
+  std::map<std::pair<int, Key>, std::vector<int>> by_key;
   for (int r = 0; r < n; ++r) {
     if (regions[r].type == SurfaceType::kFreeform) continue;
     by_key[{static_cast<int>(regions[r].type), KeyOf(regions[r].surface, fm.diagonal)}].push_back(
@@ -96,18 +107,15 @@ std::vector<SharedSurface> GroupSharedSurfaces(const FacetMesh& fm,
     parent[Find(parent, a)] = Find(parent, b);
   };
   for (const auto& [key, members] : by_key) {
-    for (int d0 = -1; d0 <= 1; ++d0) {
-      for (int d1 = -1; d1 <= 1; ++d1) {
-        for (int d2 = -1; d2 <= 1; ++d2) {
-          const auto near = by_key.find(
-              {key.first, {key.second[0] + d0, key.second[1] + d1, key.second[2] + d2}});
-          if (near == by_key.end() || near->first < key) continue;
-          for (const int a : members) {
-            for (const int b : near->second) {
-              if (near->first == key && b <= a) continue;
-              try_join(a, b);
-            }
-          }
+    for (int d = 0; d < 81; ++d) {  // the key and its neighbours, one step in each place
+      Key next = key.second;
+      for (int k = 0, m = d; k < 4; ++k, m /= 3) next[k] += m % 3 - 1;
+      const auto near = by_key.find({key.first, next});
+      if (near == by_key.end() || near->first < key) continue;
+      for (const int a : members) {
+        for (const int b : near->second) {
+          if (near->first == key && b <= a) continue;
+          try_join(a, b);
         }
       }
     }
