@@ -1,19 +1,24 @@
 // Wall and CPU time and peak memory of the exact-facet path on a mesh file
 // (read, exactness estimate, facet segmentation with shared surfaces), the
 // #31 speed target: <= 0.5 s per 10K facets, <= 10 s for 1M.
-// Usage: exact_path_bench MESH_FILE [RUNS]
+// Usage: exact_path_bench MESH_FILE [RUNS] [REGIONS_OUT]
 //   python3 bench/cad/make_prism_grid.py 8 /tmp/grid10k.obj    (10K facets)
 //   python3 bench/cad/make_prism_grid.py 79 /tmp/grid1m.obj    (1M facets)
 // Prints one line per stage (the best of RUNS for the estimate and the
-// segmentation), then the regions and surfaces found.
+// segmentation), then the regions and surfaces found. With REGIONS_OUT, also
+// writes the region table there (one line per region: type, facets, surface,
+// main parameters, rms and max distance) and a hash of the face labels, to
+// compare the regions of two builds with diff.
 
 #include <algorithm>
 #include <chrono>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <ctime>
 #include <map>
 #include <string>
+#include <variant>
 
 #include "meshseg/mesh.h"
 #include "meshseg/segment.h"
@@ -30,6 +35,25 @@ struct Clock {
   }
   double Cpu() const { return static_cast<double>(std::clock() - cpu) / CLOCKS_PER_SEC; }
 };
+
+// The parameters that tell surfaces apart: radii, angle, and the distance
+// of the plane or of the axis point from the origin.
+void PrintRegion(std::FILE* out, const meshseg::Region& r) {
+  std::fprintf(out, "%d %s faces %lld surface %d", r.id, meshseg::SurfaceTypeName(r.type),
+               static_cast<long long>(r.face_count), r.surface_id);
+  if (const auto* p = std::get_if<meshseg::Plane>(&r.surface)) {
+    std::fprintf(out, " offset %.9g", p->normal.dot(p->point));
+  } else if (const auto* c = std::get_if<meshseg::Cylinder>(&r.surface)) {
+    std::fprintf(out, " radius %.9g", c->radius);
+  } else if (const auto* c = std::get_if<meshseg::Cone>(&r.surface)) {
+    std::fprintf(out, " half_angle %.9g apex %.9g", c->half_angle, c->apex.norm());
+  } else if (const auto* c = std::get_if<meshseg::Sphere>(&r.surface)) {
+    std::fprintf(out, " radius %.9g", c->radius);
+  } else if (const auto* c = std::get_if<meshseg::Torus>(&r.surface)) {
+    std::fprintf(out, " radii %.9g %.9g", c->major_radius, c->minor_radius);
+  }
+  std::fprintf(out, " rms %.3g max %.3g\n", r.rms_distance, r.max_distance);
+}
 
 void Print(const char* stage, double wall, double cpu) {
   std::printf("%-10s %8.3f s wall %8.3f s cpu  peak %8.1f MiB\n", stage, wall, cpu, meshseg::bench::PeakRssMiB());
@@ -79,5 +103,20 @@ int main(int argc, char** argv) {
   std::printf("regions    %zu:", seg->regions.size());
   for (const auto& [type, count] : by_type) std::printf(" %s %d", type.c_str(), count);
   std::printf("\nsurfaces   %zu\n", seg->surfaces.size());
+  if (argc > 3) {
+    std::FILE* out = std::fopen(argv[3], "w");
+    if (out == nullptr) {
+      std::fprintf(stderr, "cannot write %s\n", argv[3]);
+      return 1;
+    }
+    std::uint64_t hash = 1469598103934665603ull;  // FNV-1a of the face labels
+    for (const int label : seg->face_labels) {
+      hash = (hash ^ static_cast<std::uint32_t>(label)) * 1099511628211ull;
+    }
+    std::fprintf(out, "regions %zu surfaces %zu labels %016llx\n", seg->regions.size(),
+                 seg->surfaces.size(), static_cast<unsigned long long>(hash));
+    for (const meshseg::Region& r : seg->regions) PrintRegion(out, r);
+    std::fclose(out);
+  }
   return 0;
 }
