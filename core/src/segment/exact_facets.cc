@@ -9,6 +9,8 @@
 #include <tuple>
 #include <utility>
 
+#include <tbb/parallel_for.h>
+
 #include "meshseg/fit.h"
 #include "meshseg/status_macros.h"
 #include "segment/exact_hypotheses.h"
@@ -344,12 +346,13 @@ absl::StatusOr<ExactFacets> SegmentFacets(const FacetMesh& fm, double tau, const
   std::vector<int> owner = Claim(fm, hypotheses, &out.regions);
   MESHSEG_RETURN_IF_ERROR(ctx.CheckStop("segment"));
   out.angular_step = AngularStep(fm, owner, out.regions);
-  // Each analytic region refitted on all of its corners.
-  for (ExactRegion& r : out.regions) {
+  // Each analytic region refitted on all of its corners (independent fits).
+  tbb::parallel_for(std::size_t{0}, out.regions.size(), [&](std::size_t i) {
+    ExactRegion& r = out.regions[i];
     if (const std::optional<Surface> refit = FitExactly(fm, r.type, r.facets, tau)) {
       r.surface = *refit;
     }
-  }
+  });
   JoinNeighbours(fm, tau, &owner, &out.regions);
   JoinGapPieces(fm, tau, &owner, &out.regions);
   FreeformRegions(fm, out.angular_step, &owner, &out.regions);

@@ -4,11 +4,14 @@
 #include <Eigen/Geometry>
 #include <Eigen/QR>
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <functional>
 #include <queue>
 #include <unordered_map>
 #include <utility>
+
+#include <tbb/parallel_for.h>
 
 #include "meshseg/fit.h"
 #include "segment/facet_on_surface.h"
@@ -368,8 +371,29 @@ std::optional<Hypothesis> PlaneAt(const FacetMesh& fm, int f, double tau) {
 }
 
 std::optional<Hypothesis> CurvedAt(const FacetMesh& fm, int f, double tau) {
-  for (const auto& [corners, smoothest_first] : SeedShapes()) {
-    std::optional<Hypothesis> h = CurvedFit(fm, SeedGroup(fm, f, corners, smoothest_first), tau);
+  // The seed shapes' fits are independent: they run in parallel, each in the
+  // order of the shapes, and a fit is skipped once an earlier shape has
+  // fitted (the earliest that fits and holds evidence when grown is the
+  // seed's, as if tried one after the other).
+  static const std::vector<std::pair<int, bool>> shapes = SeedShapes();
+  const int count = static_cast<int>(shapes.size());
+  std::vector<std::optional<Hypothesis>> fits(count);
+  std::vector<char> tried(count, 0);
+  std::atomic<int> first_fit{count};
+  auto fit_shape = [&](int i) {
+    fits[i] = CurvedFit(fm, SeedGroup(fm, f, shapes[i].first, shapes[i].second), tau);
+    tried[i] = 1;
+    if (fits[i]) {
+      for (int k = first_fit.load(); i < k && !first_fit.compare_exchange_weak(k, i);) {
+      }
+    }
+  };
+  tbb::parallel_for(0, count, [&](int i) {
+    if (i < first_fit.load()) fit_shape(i);
+  });
+  for (int i = 0; i < count; ++i) {
+    if (!tried[i]) fit_shape(i);  // after an earlier fit that did not hold
+    std::optional<Hypothesis>& h = fits[i];
     if (!h) continue;
     Grow(fm, tau, &*h);
     // A narrow seed can leave a simpler type undecided (a cone of a small
