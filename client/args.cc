@@ -13,12 +13,31 @@ bool Contains(std::initializer_list<std::string_view> names, std::string_view na
   return std::find(names.begin(), names.end(), name) != names.end();
 }
 
+// How a command that talks to a server (it knows --server) reaches it
+// securely: the CA of the server's certificate, a client certificate for
+// mutual TLS, and the bearer token.
+constexpr std::string_view kConnectionFlags[] = {"--tls-ca", "--tls-cert", "--tls-key", "--token"};
+
+bool IsValueFlag(std::initializer_list<std::string_view> value_flags, std::string_view name) {
+  if (Contains(value_flags, name)) return true;
+  return Contains(value_flags, "--server") &&
+         std::find(std::begin(kConnectionFlags), std::end(kConnectionFlags), name) !=
+             std::end(kConnectionFlags);
+}
+
 }  // namespace
 
 absl::StatusOr<Args> Args::Parse(const std::vector<std::string>& argv,
                                  std::initializer_list<std::string_view> value_flags,
                                  std::initializer_list<std::string_view> switches,
                                  std::size_t positionals) {
+  return Parse(argv, value_flags, switches, positionals, positionals);
+}
+
+absl::StatusOr<Args> Args::Parse(const std::vector<std::string>& argv,
+                                 std::initializer_list<std::string_view> value_flags,
+                                 std::initializer_list<std::string_view> switches,
+                                 std::size_t min_positionals, std::size_t max_positionals) {
   Args args;
   for (std::size_t i = 0; i < argv.size(); ++i) {
     const std::string& arg = argv[i];
@@ -34,7 +53,7 @@ absl::StatusOr<Args> Args::Parse(const std::vector<std::string>& argv,
     }
     if (Contains(switches, name) && !value) {
       args.switches_.insert(name);
-    } else if (Contains(value_flags, name)) {
+    } else if (IsValueFlag(value_flags, name)) {
       if (!value) {
         if (i + 1 >= argv.size()) {
           return absl::InvalidArgumentError(absl::StrCat(name, " needs a value"));
@@ -46,10 +65,13 @@ absl::StatusOr<Args> Args::Parse(const std::vector<std::string>& argv,
       return absl::InvalidArgumentError(absl::StrCat("unknown option ", arg));
     }
   }
-  if (args.positional_.size() != positionals) {
-    return absl::InvalidArgumentError(absl::StrCat("expected ", positionals, " argument",
-                                                   positionals == 1 ? "" : "s", ", got ",
-                                                   args.positional_.size()));
+  const std::size_t n = args.positional_.size();
+  if (n < min_positionals || n > max_positionals) {
+    const std::string expected = min_positionals == max_positionals
+                                     ? absl::StrCat(min_positionals)
+                                     : absl::StrCat(min_positionals, " to ", max_positionals);
+    return absl::InvalidArgumentError(absl::StrCat("expected ", expected, " argument",
+                                                   max_positionals == 1 ? "" : "s", ", got ", n));
   }
   return args;
 }

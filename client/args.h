@@ -26,8 +26,14 @@ class Args {
                                     std::initializer_list<std::string_view> value_flags,
                                     std::initializer_list<std::string_view> switches,
                                     std::size_t positionals);
+  // As above, with between `min_positionals` and `max_positionals`.
+  static absl::StatusOr<Args> Parse(const std::vector<std::string>& argv,
+                                    std::initializer_list<std::string_view> value_flags,
+                                    std::initializer_list<std::string_view> switches,
+                                    std::size_t min_positionals, std::size_t max_positionals);
 
   const std::string& positional(std::size_t i) const { return positional_[i]; }
+  std::size_t positional_count() const { return positional_.size(); }
   bool Has(std::string_view flag) const;
   std::optional<std::string> Value(std::string_view flag) const;
   // Errors (INVALID_ARGUMENT): a value that is not a finite number.

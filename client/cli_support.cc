@@ -17,7 +17,15 @@ absl::StatusOr<MeshsegClient> ConnectFromArgs(const Args& args) {
   if (!address) {
     return absl::InvalidArgumentError("no server: pass --server HOST:PORT or set MESHSEG_SERVER");
   }
-  return MeshsegClient::Connect(*address);
+  ConnectOptions options;
+  options.tls_ca = args.Value("--tls-ca").value_or("");
+  options.tls_cert = args.Value("--tls-cert").value_or("");
+  options.tls_key = args.Value("--tls-key").value_or("");
+  options.token = args.Value("--token").value_or("");
+  if (const char* env = std::getenv("MESHSEG_TOKEN"); options.token.empty() && env != nullptr) {
+    options.token = env;
+  }
+  return MeshsegClient::Connect(*address, options);
 }
 
 absl::Status WriteTextFile(const std::string& path, const std::string& text) {

@@ -1,4 +1,5 @@
 // meshseg generate PART -o FILE [--voxel-size H] [--noise S] [--ground-truth GT.json]
+//   [--volume OUT.nrrd [--binary]]
 // meshseg generate PART --scan CLOUD.xyz [--scan-points N] [--views N]
 //   [--scan-noise S] [--outliers F] [--scan-normals] [--ground-truth GT.json]
 // meshseg generate PART --surface-points N -o CLOUD.xyz [--scan-noise S]
@@ -16,6 +17,7 @@
 #include "meshseg/generate.h"
 #include "meshseg/point_cloud.h"
 #include "meshseg/status_macros.h"
+#include "meshseg/voxel.h"
 
 namespace meshseg::cli {
 namespace {
@@ -76,16 +78,43 @@ absl::Status WriteSurfacePoints(const Args& args, const GenerateParams& part_par
   return absl::OkStatus();
 }
 
+// The part as a CT volume (GenerateVolume); the ground truth, if asked for,
+// labels the surface `meshseg segment` extracts from it. -o also writes that
+// surface as a mesh.
+absl::Status WriteVolume(const std::string& name, const GenerateParams& params, const std::string& path,
+                         const Args& args) {
+  const bool binary = args.Has("--binary");
+  MESHSEG_ASSIGN_OR_RETURN(const VolumeData volume, GenerateVolume(name, binary, params));
+  const bool gzip = path.ends_with(".nrrd");
+  MESHSEG_RETURN_IF_ERROR(WriteNrrd(volume, path, gzip));
+  const auto& d = volume.geometry.dims;
+  std::printf("wrote %s: part %s, %lld x %lld x %lld %s voxels, h=%g\n", path.c_str(), name.c_str(),
+              (long long)d[0], (long long)d[1], (long long)d[2], binary ? "binary" : "grey",
+              volume.geometry.axes[0].norm());
+  const std::optional<std::string> gt = args.Value("--ground-truth");
+  const std::optional<std::string> out = args.Value("-o");
+  if (!gt && !out) return absl::OkStatus();
+  const absl::StatusOr<VolumeSurface> surface = ExtractSurface(path);
+  if (!surface.ok()) return surface.status();
+  if (out) MESHSEG_RETURN_IF_ERROR(WriteMesh(surface->mesh.tri, *out));
+  if (gt) {
+    MESHSEG_ASSIGN_OR_RETURN(const GeneratedPart part, LabelWithGroundTruth(name, surface->mesh, params));
+    MESHSEG_RETURN_IF_ERROR(WriteTextFile(*gt, GroundTruthJson(part)));
+  }
+  return absl::OkStatus();
+}
+
 }  // namespace
 
 absl::Status RunGenerate(const Argv& argv) {
   MESHSEG_ASSIGN_OR_RETURN(
       const Args args,
       Args::Parse(argv,
-                  {"-o", "--voxel-size", "--noise", "--ground-truth", "--seed", "--scan",
+                  {"-o", "--voxel-size", "--noise", "--ground-truth", "--seed", "--volume", "--scan",
                    "--scan-points", "--views", "--scan-noise", "--outliers", "--surface-points"},
-                  {"--scan-normals"}, 1));
+                  {"--binary", "--scan-normals"}, 1));
   const std::optional<std::string> out = args.Value("-o");
+  const std::optional<std::string> volume = args.Value("--volume");
   const std::optional<std::string> scan = args.Value("--scan");
   if (args.Has("--surface-points")) {
     if (!out) return absl::InvalidArgumentError("--surface-points N needs -o CLOUD.xyz");
@@ -94,8 +123,8 @@ absl::Status RunGenerate(const Argv& argv) {
     if (seed) params.seed = static_cast<uint64_t>(*seed);
     return WriteSurfacePoints(args, params, *out);
   }
-  if (!out && !scan) {
-    return absl::InvalidArgumentError(absl::StrCat("-o FILE or --scan CLOUD.xyz is required; parts: ",
+  if (!out && !volume && !scan) {
+    return absl::InvalidArgumentError(absl::StrCat("-o FILE, --volume OUT.nrrd or --scan CLOUD.xyz is required; parts: ",
                                                    absl::StrJoin(PartNames(), ", ")));
   }
   if (out && scan) return absl::InvalidArgumentError("give -o FILE or --scan CLOUD.xyz, not both");
@@ -107,6 +136,8 @@ absl::Status RunGenerate(const Argv& argv) {
   if (noise) params.noise = *noise;
   if (seed) params.seed = static_cast<uint64_t>(*seed);
   if (scan) return WriteScan(args, params, *scan);
+  if (volume) return WriteVolume(args.positional(0), params, *volume, args);
+  if (args.Has("--binary")) return absl::InvalidArgumentError("--binary goes with --volume OUT.nrrd");
 
   MESHSEG_ASSIGN_OR_RETURN(const GeneratedPart part,
                            GeneratePart(args.positional(0), params));

@@ -1,4 +1,5 @@
-// meshseg info FILE [--json]: statistics of a mesh or a point cloud.
+// meshseg info FILE [--json]: statistics of a mesh or a point cloud, or a
+// volume's header.
 #include <cstdio>
 #include <filesystem>
 #include <string>
@@ -6,9 +7,13 @@
 #include "absl/strings/str_cat.h"
 #include "absl/strings/str_format.h"
 #include "client/commands.h"
+#include "client/volume_args.h"
 #include "meshseg/mesh.h"
+#include "meshseg/pipeline.h"
 #include "meshseg/point_cloud.h"
+#include "meshseg/proto/convert.h"
 #include "meshseg/status_macros.h"
+#include "meshseg/voxel.h"
 
 namespace meshseg::cli {
 namespace {
@@ -95,12 +100,67 @@ absl::Status CloudInfo(const std::string& path, FileFormat format, bool json) {
   return absl::OkStatus();
 }
 
+absl::Status VolumeInfoOf(const std::string& path, const Args& args, bool json) {
+  UploadOptions options;
+  options.format_hint = args.Value("--format").value_or("");
+  MESHSEG_RETURN_IF_ERROR(VolumeOptionsFromArgs(args, &options));
+  PipelineParams params;
+  MESHSEG_ASSIGN_OR_RETURN(params.format, FormatFromHint(options.format_hint));
+  MESHSEG_RETURN_IF_ERROR(RawLayoutFromProto(options.raw, &params));
+  params.volume.read.format = params.format;
+  MESHSEG_ASSIGN_OR_RETURN(const VolumeInfo info, ReadVolumeInfo(path, params.volume.read));
+  const VolumeGeometry& g = info.geometry;
+  if (json) {
+    std::printf(
+        "{\"file\": %s, \"format\": \"%s\", \"dims\": [%lld, %lld, %lld], \"voxel_count\": %lld, "
+        "\"spacing\": %s, \"origin\": %s, \"voxel_type\": \"%s\", \"encoding\": \"%s\", "
+        "\"big_endian\": %s}\n",
+        JsonString(info.name).c_str(), FileFormatName(info.format), (long long)g.dims[0],
+        (long long)g.dims[1], (long long)g.dims[2], (long long)g.VoxelCount(),
+        JsonVec(g.Spacing()).c_str(), JsonVec(g.origin).c_str(), VoxelTypeName(info.type),
+        info.gzip ? "gzip" : "raw", info.big_endian ? "true" : "false");
+    return absl::OkStatus();
+  }
+  std::printf("%s (%s volume)\n  samples    %lld x %lld x %lld %s (%s%s)\n  spacing    %.6g %.6g %.6g\n"
+              "  origin     (%.6g %.6g %.6g)\n",
+              info.name.c_str(), FileFormatName(info.format), (long long)g.dims[0], (long long)g.dims[1],
+              (long long)g.dims[2], VoxelTypeName(info.type), info.gzip ? "gzip" : "raw",
+              info.big_endian ? ", big endian" : "", g.Spacing().x(), g.Spacing().y(), g.Spacing().z(),
+              g.origin.x(), g.origin.y(), g.origin.z());
+  return absl::OkStatus();
+}
+
 }  // namespace
 
 absl::Status RunInfo(const Argv& argv) {
-  MESHSEG_ASSIGN_OR_RETURN(const Args args, Args::Parse(argv, {}, {"--json"}, 1));
+  MESHSEG_ASSIGN_OR_RETURN(
+      const Args args,
+      Args::Parse(argv,
+                  {"--format", "--iso", "--volume-mode", "--dims", "--spacing", "--origin",
+                   "--type"},
+                  {"--json", "--memory-estimate", kBigEndianSwitch}, 1));
   const std::string& path = args.positional(0);
-  MESHSEG_ASSIGN_OR_RETURN(const FileFormat format, DetectFileFormat(path));
+  if (args.Has("--memory-estimate")) {  // from the header alone, as admission sees it
+    MESHSEG_ASSIGN_OR_RETURN(const MemoryEstimate e, EstimateJobMemory(path));
+    std::printf(
+        "{\"file\": %s, \"format\": \"%s\", \"point_cloud\": %s, "
+        "\"declared_vertices\": %lld, \"declared_faces\": %lld, \"file_bytes\": %lld, "
+        "\"peak_bytes\": %lld}\n",
+        JsonString(std::filesystem::path(path).filename().string()).c_str(),
+        FileFormatName(e.input.format), e.input.point_cloud ? "true" : "false",
+        (long long)e.input.vertex_count, (long long)e.input.face_count,
+        (long long)e.input.file_bytes, (long long)e.peak_bytes);
+    return absl::OkStatus();
+  }
+  MESHSEG_ASSIGN_OR_RETURN(const std::optional<FileFormat> hinted,
+                           FormatFromHint(args.Value("--format").value_or("")));
+  FileFormat format;
+  if (hinted) {
+    format = *hinted;
+  } else {
+    MESHSEG_ASSIGN_OR_RETURN(format, DetectFileFormat(path));
+  }
+  if (IsVolumeFormat(format)) return VolumeInfoOf(path, args, args.Has("--json"));
   MESHSEG_ASSIGN_OR_RETURN(const bool cloud, IsPointCloudFile(path));
   return cloud ? CloudInfo(path, format, args.Has("--json"))
                : MeshInfo(path, format, args.Has("--json"));

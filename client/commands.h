@@ -5,13 +5,16 @@
 #ifndef MESHSEG_CLIENT_COMMANDS_H_
 #define MESHSEG_CLIENT_COMMANDS_H_
 
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "absl/status/status.h"
 #include "absl/status/statusor.h"
 #include "client/args.h"
+#include "client/job_progress.h"
 #include "client/meshseg_client.h"
+#include "meshseg/mesh.h"
 
 namespace meshseg::cli {
 
@@ -27,6 +30,9 @@ absl::Status RunStatus(const Argv& argv);
 absl::Status RunWatch(const Argv& argv);
 absl::Status RunResult(const Argv& argv);
 absl::Status RunCancel(const Argv& argv);
+absl::Status RunReport(const Argv& argv);
+absl::Status RunBrep(const Argv& argv);
+absl::Status RunSimplify(const Argv& argv);
 
 // The server of a job command: --server, else $MESHSEG_SERVER.
 // Errors (INVALID_ARGUMENT): neither is set.
@@ -34,6 +40,15 @@ absl::StatusOr<MeshsegClient> ConnectFromArgs(const Args& args);
 
 // Writes `text` to `path`. Errors: INTERNAL naming the path.
 absl::Status WriteTextFile(const std::string& path, const std::string& text);
+
+// Writes the HTML report (html_report.h) of `result` to `out`, drawing the
+// file at `mesh_path` (the segmented input) when given. Errors: those of
+// GeometryForReport and WriteTextFile.
+absl::Status WriteHtmlReport(const std::string& out, const std::string& title,
+                             const v1::SegmentationResult& result,
+                             const std::optional<std::string>& mesh_path,
+                             const std::optional<FileFormat>& format,
+                             std::vector<StageTime> timings);
 
 }  // namespace meshseg::cli
 

@@ -11,18 +11,32 @@ namespace {
 
 constexpr char kUsage[] =
     "usage: meshseg <command> ...\n"
-    "  info FILE [--json]\n"
+    "  info FILE [--json] [--memory-estimate]\n"
     "  generate PART -o FILE [--voxel-size H] [--noise S] [--ground-truth GT.json]\n"
+    "           [--volume OUT.nrrd [--binary]]\n"
     "  convert IN OUT\n"
     "  reconstruct CLOUD -o MESH.ply [--format FMT]\n"
     "  segment INPUT -o RESULT.json [--colored-ply OUT.ply] [--distance-tolerance X]\n"
     "          [--angle-tolerance DEG] [--format FMT] [--server HOST:PORT]\n"
+    "          [--path exact|scan] [--exact-tolerance X]\n"
     "  jobs --server HOST:PORT\n"
     "  status JOB --server HOST:PORT\n"
     "  watch JOB --server HOST:PORT\n"
     "  result JOB -o RESULT.json --server HOST:PORT\n"
     "  cancel JOB --server HOST:PORT\n"
-    "(--server defaults to $MESHSEG_SERVER)\n";
+    "  report RESULT.json [MESH] -o REPORT.html [--format FMT]\n"
+    "(segment also takes --report REPORT.html)\n"
+    "(segment also takes --step OUT.step [--unit U], --include-mesh, --length-unit U,\n"
+    " and with --server --request-id ID)\n"
+    "  brep RESULT.json MESH -o OUT.step [--unit mm|cm|m|in|...]\n"
+    "  simplify IN -o OUT (--target-faces N | --max-error E) [--regions RESULT.json]\n"
+    "volumes (nrrd, mha, mhd, raw) go through info and segment; options:\n"
+    "  [--iso V] [--volume-mode auto|grey|binary] [--dims X,Y,Z --spacing SX,SY,SZ\n"
+    "   --type uint8|uint16|int16|float32 [--origin X,Y,Z] [--big-endian]] (raw)\n"
+    "(--server defaults to $MESHSEG_SERVER)\n"
+    "Commands with --server also take --tls-ca CA.pem (TLS; the server's CA),\n"
+    "--tls-cert CERT.pem --tls-key KEY.pem (mutual TLS) and --token TOKEN\n"
+    "(default $MESHSEG_TOKEN; sent as \"authorization: Bearer TOKEN\").\n";
 
 }  // namespace
 
@@ -34,6 +48,9 @@ int main(int argc, char** argv) {
       {"jobs", meshseg::cli::RunJobs},       {"status", meshseg::cli::RunStatus},
       {"watch", meshseg::cli::RunWatch},     {"result", meshseg::cli::RunResult},
       {"cancel", meshseg::cli::RunCancel},  {"reconstruct", meshseg::cli::RunReconstruct},
+      {"report", meshseg::cli::RunReport},
+      {"brep", meshseg::cli::RunBrep},
+      {"simplify", meshseg::cli::RunSimplify},
   };
   if (argc < 2 || std::string(argv[1]) == "help" || std::string(argv[1]) == "--help") {
     std::fputs(kUsage, argc < 2 ? stderr : stdout);

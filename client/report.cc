@@ -122,4 +122,21 @@ std::string JobLine(const v1::Job& job) {
   return line;
 }
 
+std::string BrepSummary(const v1::BrepReport& brep) {
+  if (!brep.error().empty()) return absl::StrCat("step: not written: ", brep.error(), "\n");
+  std::string out = absl::StrFormat(
+      "step: %d/%d faces, %s, %s; volume %.6g %s^3; edges %d exact, %d fitted; "
+      "tolerance max %.3g (sewing %.3g) %s\n",
+      brep.face_count(), brep.patch_count(),
+      brep.solid() ? "closed solid" : (brep.closed() ? "closed shell" : "open shell"),
+      brep.valid() ? "valid" : "INVALID", brep.volume(), brep.length_unit(),
+      brep.exact_edge_count(), brep.fitted_edge_count(), brep.max_tolerance(),
+      brep.sewing_tolerance(), brep.length_unit());
+  for (const v1::BrepFaceFailure& f : brep.failures()) {
+    absl::StrAppendFormat(&out, "  face of region %d patch %d not built: %s\n", f.region(),
+                          f.patch(), f.reason());
+  }
+  return out;
+}
+
 }  // namespace meshseg::cli

@@ -18,6 +18,11 @@ std::string RegionTable(const v1::SegmentationResult& result);
 // kind), corners and adjacent region pairs, then one line per feature.
 std::string TopologySummary(const v1::SegmentationResult& result);
 
+// Returns a line on the B-rep written to STEP (faces, closed solid or shell,
+// validity, volume, edges, tolerances) and one line per face not built; or
+// the line saying why no STEP file was written.
+std::string BrepSummary(const v1::BrepReport& brep);
+
 // Returns one line: id, state, file, progress or error.
 std::string JobLine(const v1::Job& job);
 

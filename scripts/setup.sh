@@ -11,6 +11,16 @@ PACKAGES=(
   libtbb-dev libcgal-dev libboost-graph-dev libnanoflann-dev
   libhiredis-dev redis-server
   libssl-dev
+  python3 python3-grpcio python3-protobuf python3-pil chromium openssl
+  time
+  nodejs
+  prometheus
+  clang-14 libclang-rt-14-dev
+  # brep stage (STEP export): OpenCASCADE 7.6; the CMake config's components
+  # FoundationClasses ... DataExchange need all five -dev packages.
+  libocct-foundation-dev libocct-modeling-data-dev libocct-modeling-algorithms-dev
+  libocct-ocaf-dev libocct-visualization-dev libocct-data-exchange-dev
+  zlib1g-dev
 )
 
 SUDO=""
@@ -22,6 +32,12 @@ for p in "${PACKAGES[@]}"; do
     missing+=("$p")
   fi
 done
+
+# npm (deploy/ validation): Debian's package, unless the installed node
+# already ships it (NodeSource's nodejs does, and conflicts with Debian's npm).
+if ! command -v npm >/dev/null 2>&1; then
+  missing+=(npm)
+fi
 
 if [ ${#missing[@]} -eq 0 ]; then
   echo "setup: all ${#PACKAGES[@]} packages already installed"

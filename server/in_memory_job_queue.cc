@@ -17,7 +17,12 @@ absl::Status InMemoryJobQueue::Push(const std::string& job_id) {
   return absl::OkStatus();
 }
 
-std::optional<std::string> InMemoryJobQueue::Pop() {
+void InMemoryJobQueue::Restore(const std::vector<std::string>& job_ids) {
+  absl::MutexLock lock(&mu_);
+  ids_.insert(ids_.end(), job_ids.begin(), job_ids.end());
+}
+
+std::optional<Lease> InMemoryJobQueue::Pop() {
   absl::MutexLock lock(&mu_);
   mu_.Await(absl::Condition(
       +[](InMemoryJobQueue* q) ABSL_NO_THREAD_SAFETY_ANALYSIS {
@@ -25,9 +30,9 @@ std::optional<std::string> InMemoryJobQueue::Pop() {
       },
       this));
   if (closed_) return std::nullopt;
-  std::string id = std::move(ids_.front());
+  Lease lease{.job_id = std::move(ids_.front()), .entry = {}};
   ids_.pop_front();
-  return id;
+  return lease;
 }
 
 bool InMemoryJobQueue::Remove(const std::string& job_id) {
@@ -44,17 +49,14 @@ int InMemoryJobQueue::Position(const std::string& job_id) const {
   return it == ids_.end() ? -1 : static_cast<int>(it - ids_.begin());
 }
 
-int InMemoryJobQueue::Size() const {
+absl::StatusOr<int> InMemoryJobQueue::Size() const {
   absl::MutexLock lock(&mu_);
   return static_cast<int>(ids_.size());
 }
 
-std::vector<std::string> InMemoryJobQueue::Close() {
+void InMemoryJobQueue::Close() {
   absl::MutexLock lock(&mu_);
   closed_ = true;
-  std::vector<std::string> left(ids_.begin(), ids_.end());
-  ids_.clear();
-  return left;
 }
 
 }  // namespace meshseg::server

@@ -1,6 +1,7 @@
 // File: in_memory_job_queue.h
 // -----------------------------------------------------------------------------
-// The embedded default JobQueue: a bounded FIFO guarded by a mutex.
+// The embedded default JobQueue: a bounded FIFO guarded by a mutex. What it
+// holds is rebuilt from the spool's job records after a restart.
 #ifndef MESHSEG_SERVER_IN_MEMORY_JOB_QUEUE_H_
 #define MESHSEG_SERVER_IN_MEMORY_JOB_QUEUE_H_
 
@@ -15,13 +16,20 @@ class InMemoryJobQueue final : public JobQueue {
  public:
   explicit InMemoryJobQueue(int capacity) : capacity_(capacity) {}
 
+  // Appends jobs recovered from the spool, in order, whatever the capacity
+  // (they were accepted before the restart).
+  void Restore(const std::vector<std::string>& job_ids);
+
   absl::Status Push(const std::string& job_id) override;
-  std::optional<std::string> Pop() override;
+  std::optional<Lease> Pop() override;
+  void Done(const Lease& /*lease*/) override {}
+  // The job store keeps the job QUEUED; recovery queues it again.
+  void Release(const Lease& /*lease*/) override {}
   bool Remove(const std::string& job_id) override;
   int Position(const std::string& job_id) const override;
-  int Size() const override;
+  absl::StatusOr<int> Size() const override;
   int Capacity() const override { return capacity_; }
-  std::vector<std::string> Close() override;
+  void Close() override;
 
  private:
   const int capacity_;

@@ -4,6 +4,7 @@
 #define MESHSEG_TESTS_SHARED_DATA_FILES_H_
 
 #include <cctype>
+#include <filesystem>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -11,7 +12,7 @@
 namespace meshseg::testing {
 
 inline std::string SharedData(const std::string& name) {
-  return std::string(MESHSEG_SHARED_DATA_DIR) + "/" + name;
+  return (std::filesystem::path(MESHSEG_SHARED_DATA_DIR) / name).string();
 }
 
 // Every mesh file (not the point clouds) of shared/data.

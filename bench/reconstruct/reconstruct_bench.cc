@@ -4,7 +4,6 @@
 //   build-rec/bin/reconstruct_bench --benchmark_counters_tabular=true
 // Peak RSS is the process's high-water mark (getrusage), so the sizes run
 // smallest first.
-#include <sys/resource.h>
 
 #include <cmath>
 #include <random>
@@ -12,6 +11,7 @@
 #include <benchmark/benchmark.h>
 
 #include "meshseg/reconstruct.h"
+#include "bench/peak_rss.h"
 
 namespace meshseg {
 namespace {
@@ -40,12 +40,6 @@ PointCloud TorusCloud(int count) {
   return cloud;
 }
 
-double PeakRssMb() {
-  rusage usage{};
-  getrusage(RUSAGE_SELF, &usage);
-  return usage.ru_maxrss / 1024.0;
-}
-
 void BM_Reconstruct(benchmark::State& state) {
   const PointCloud cloud = TorusCloud(static_cast<int>(state.range(0)));
   Reconstruction result;
@@ -61,7 +55,7 @@ void BM_Reconstruct(benchmark::State& state) {
   state.counters["supports"] = static_cast<double>(result.stats.support_count);
   state.counters["tets"] = static_cast<double>(result.stats.tet_count);
   state.counters["faces"] = static_cast<double>(result.mesh.tri.n_faces());
-  state.counters["peak_rss_MB"] = PeakRssMb();
+  state.counters["peak_rss_MB"] = meshseg::bench::PeakRssMiB();
 }
 BENCHMARK(BM_Reconstruct)->Arg(100'000)->Arg(1'000'000)->Iterations(1)->Unit(benchmark::kSecond);
 

@@ -2,7 +2,6 @@
 // shape Assess() sees (is it CAD-like?), and the time, size and peak memory
 // of IsotropicRemesh at the derived target length.
 // Usage: remesh_bench MESH... [--out DIR]  (DIR: write each remesh as PLY)
-#include <sys/resource.h>
 
 #include <chrono>
 #include <cstdio>
@@ -13,16 +12,7 @@
 
 #include "meshseg/mesh.h"
 #include "meshseg/remesh.h"
-
-namespace {
-
-double PeakMiB() {
-  rusage u{};
-  getrusage(RUSAGE_SELF, &u);
-  return u.ru_maxrss / 1024.0;  // Linux: KiB
-}
-
-}  // namespace
+#include "bench/peak_rss.h"
 
 int main(int argc, char** argv) {
   std::vector<std::string> files;
@@ -70,7 +60,7 @@ int main(int argc, char** argv) {
     }
     std::printf("  remesh at %.4g: %zu faces, l_avg %.4g, %.2f s, peak %.1f MiB\n",
                 shape.target_edge_length, remeshed->tri.n_faces(),
-                meshseg::MeanEdgeLength(remeshed->tri), seconds, PeakMiB());
+                meshseg::MeanEdgeLength(remeshed->tri), seconds, meshseg::bench::PeakRssMiB());
     if (stats.small_feature_radius > 0.0) {
       std::printf("  small features of radius %.4g: remeshed at %.4g\n", stats.small_feature_radius,
                   stats.fine_edge_length);

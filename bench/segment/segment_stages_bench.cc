@@ -3,7 +3,6 @@
 //        segment_stages_bench --file MESH_FILE [OUT.ply] (a mesh file)
 // Prints one line per stage: seconds and peak resident set (ru_maxrss), then
 // the region count per type.
-#include <sys/resource.h>
 
 #include <chrono>
 #include <cstdio>
@@ -15,14 +14,9 @@
 #include "meshseg/generate.h"
 #include "meshseg/mesh.h"
 #include "meshseg/segment.h"
+#include "bench/peak_rss.h"
 
 namespace {
-
-double PeakMiB() {
-  rusage u{};
-  getrusage(RUSAGE_SELF, &u);
-  return u.ru_maxrss / 1024.0;  // Linux: KiB
-}
 
 class Timer {
  public:
@@ -54,7 +48,7 @@ int main(int argc, char** argv) {
       return 1;
     }
     mesh = std::move(*read);
-    std::printf("read       %8.2f s  peak %8.1f MiB\n", timer.Lap(), PeakMiB());
+    std::printf("read       %8.2f s  peak %8.1f MiB\n", timer.Lap(), meshseg::bench::PeakRssMiB());
   } else {
     const double noise = argc > 3 ? std::atof(argv[3]) : 0.0;
     auto part = meshseg::GeneratePart(first, {.voxel_size = std::atof(argv[2]), .noise = noise});
@@ -63,7 +57,7 @@ int main(int argc, char** argv) {
       return 1;
     }
     mesh = std::move(part->mesh);
-    std::printf("generate   %8.2f s  peak %8.1f MiB\n", timer.Lap(), PeakMiB());
+    std::printf("generate   %8.2f s  peak %8.1f MiB\n", timer.Lap(), meshseg::bench::PeakRssMiB());
   }
   std::printf("mesh       %zu vertices, %zu faces\n", mesh.tri.n_vertices(), mesh.tri.n_faces());
   auto field = meshseg::EstimateCurvature(mesh);
@@ -71,13 +65,13 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "%s\n", field.status().ToString().c_str());
     return 1;
   }
-  std::printf("curvature  %8.2f s  peak %8.1f MiB\n", timer.Lap(), PeakMiB());
+  std::printf("curvature  %8.2f s  peak %8.1f MiB\n", timer.Lap(), meshseg::bench::PeakRssMiB());
   auto seg = meshseg::Segment(mesh, *field);
   if (!seg.ok()) {
     std::fprintf(stderr, "%s\n", seg.status().ToString().c_str());
     return 1;
   }
-  std::printf("segment    %8.2f s  peak %8.1f MiB\n", timer.Lap(), PeakMiB());
+  std::printf("segment    %8.2f s  peak %8.1f MiB\n", timer.Lap(), meshseg::bench::PeakRssMiB());
   const auto& e = seg->estimates;
   std::printf("estimates  l_avg %.4g sigma %.4g th_dis %.4g th_nm %.3g deg th_sv %.3g\n",
               e.mean_edge_length, e.noise_sigma, e.distance_tolerance, e.angle_tolerance_deg,

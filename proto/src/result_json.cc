@@ -22,4 +22,17 @@ absl::StatusOr<std::string> ResultJson(const v1::SegmentationResult& result) {
   return json;
 }
 
+absl::StatusOr<v1::SegmentationResult> ParseResultJson(std::string_view json) {
+  v1::SegmentationResult result;
+  google::protobuf::util::JsonParseOptions options;
+  options.ignore_unknown_fields = true;  // results of newer versions
+  const auto status = google::protobuf::util::JsonStringToMessage(
+      google::protobuf::StringPiece(json.data(), json.size()), &result, options);
+  if (!status.ok()) {
+    return absl::InvalidArgumentError(
+        absl::StrCat("result json: not a segmentation result: ", status.ToString()));
+  }
+  return result;
+}
+
 }  // namespace meshseg

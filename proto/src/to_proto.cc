@@ -2,6 +2,8 @@
 #include <variant>
 
 #include "meshseg/proto/convert.h"
+#include "proto/src/brep_to_proto.h"
+#include "proto/src/mesh_geometry_proto.h"
 #include "proto/src/topology_to_proto.h"
 
 namespace meshseg {
@@ -20,8 +22,19 @@ v1::SurfaceType ToProto(SurfaceType type) {
   return v1::SURFACE_TYPE_UNSPECIFIED;
 }
 
-// Fills the `surface` oneof of `out` from the alternative `surface` holds.
-void SetSurface(const Surface& surface, v1::Region* out) {
+v1::SegmentationPath ToProto(SegmentationPath path) {
+  switch (path) {
+    case SegmentationPath::kScan: return v1::SEGMENTATION_PATH_SCAN;
+    case SegmentationPath::kExactFacets: return v1::SEGMENTATION_PATH_EXACT_FACETS;
+    case SegmentationPath::kRemeshed: return v1::SEGMENTATION_PATH_REMESHED;
+  }
+  return v1::SEGMENTATION_PATH_UNSPECIFIED;
+}
+
+// Fills the surface oneof of `out` (a v1::Region or v1::SharedSurface) from
+// the alternative `surface` holds.
+template <typename Message>
+void SetSurface(const Surface& surface, Message* out) {
   std::visit(
       [out](const auto& s) {
         using T = std::decay_t<decltype(s)>;
@@ -86,6 +99,16 @@ v1::SegmentationResult ToProto(const PipelineResult& result) {
     r->set_max_distance(region.max_distance);
     // A freeform region keeps the quadric it was grown with as its surface.
     SetSurface(region.surface, r);
+    r->set_surface_id(region.surface_id);
+  }
+  for (const SharedSurface& surface : result.surfaces) {
+    v1::SharedSurface* s = out.add_surfaces();
+    s->set_id(surface.id);
+    s->set_type(ToProto(surface.type));
+    SetSurface(surface.surface, s);
+    s->mutable_regions()->Add(surface.regions.begin(), surface.regions.end());
+    s->set_rms_distance(surface.rms_distance);
+    s->set_max_distance(surface.max_distance);
   }
   v1::Estimates* e = out.mutable_estimates();
   e->set_noise_sigma(result.estimates.noise_sigma);
@@ -95,8 +118,32 @@ v1::SegmentationResult ToProto(const PipelineResult& result) {
   e->set_remesh_edge_length(result.remesh_edge_length);
   e->set_remesh_face_count(result.remesh_face_count);
   e->set_remesh_fine_edge_length(result.remesh_fine_edge_length);
+  e->set_simplified_face_count(result.simplified_face_count);
+  e->set_simplified_hausdorff(result.simplified_hausdorff);
+  out.set_binary_occupancy(result.binary_occupancy);
+  if (result.from_volume) {
+    v1::VolumeSource* v = out.mutable_volume();
+    const VolumeGeometry& g = result.volume.geometry;
+    v->mutable_dims()->Add(g.dims.begin(), g.dims.end());
+    const Eigen::Vector3d spacing = g.Spacing();
+    v->mutable_spacing()->set_x(spacing.x());
+    v->mutable_spacing()->set_y(spacing.y());
+    v->mutable_spacing()->set_z(spacing.z());
+    v->mutable_origin()->set_x(g.origin.x());
+    v->mutable_origin()->set_y(g.origin.y());
+    v->mutable_origin()->set_z(g.origin.z());
+    v->set_voxel_type(VoxelTypeName(result.volume.type));
+    v->set_format(FileFormatName(result.volume.format));
+    v->set_iso_value(result.iso_value);
+  }
+  e->set_segmentation_path(ToProto(result.estimates.path));
+  e->set_exact_tolerance(result.estimates.exact_tolerance);
+  e->set_exact_share(result.estimates.exact_share);
   SetTopology(result.topology, result.features, &out);
   out.mutable_point_labels()->Add(result.point_labels.begin(), result.point_labels.end());
+  SetBrep(result, &out);
+  if (result.mesh_geometry) SetMeshGeometry(*result.mesh_geometry, out.mutable_mesh_geometry());
+  out.set_length_unit(result.length_unit);
   return out;
 }
 

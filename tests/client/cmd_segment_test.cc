@@ -186,5 +186,82 @@ TEST(MeshsegSegment, UnreachableServerExitsOneWithOneLine) {
   EXPECT_THAT(Lines(r.err), SizeIs(1)) << r.err;
 }
 
+// --request-id makes a retried `segment --server` one job: the same id
+// again creates no second job and gives the same result; another id does.
+TEST(MeshsegSegment, RequestIdMakesARetryTheSameJob) {
+  TestServer server;
+  MeshsegClient client = server.Client();
+  const std::string dir = FreshDir("files");
+  const std::string input = dir + "/box.off";
+  testing_files::WriteOff(testing_files::SplitBox(2, {1, 1, 1}), input);
+  const auto segment = [&](const std::string& id, const std::string& out) {
+    return RunCli({"segment", input, "-o", out, "--server", server.address(), "--request-id", id});
+  };
+  testing_cli::CliRun r = segment("order-17/part-3", dir + "/first.json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  r = segment("order-17/part-3", dir + "/retry.json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(ReadText(dir + "/retry.json"), ReadText(dir + "/first.json"));
+  absl::StatusOr<std::vector<v1::Job>> jobs = client.ListJobs();
+  ASSERT_TRUE(jobs.ok()) << jobs.status();
+  ASSERT_EQ(jobs->size(), 1u);
+  EXPECT_EQ(jobs->front().request_id(), "order-17/part-3");
+
+  r = segment("order-17/part-4", dir + "/other.json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  jobs = client.ListJobs();
+  ASSERT_TRUE(jobs.ok()) << jobs.status();
+  EXPECT_EQ(jobs->size(), 2u);
+
+  // A bad id is the server's INVALID_ARGUMENT, in one line; offline it
+  // means nothing and is refused before any work.
+  r = segment("two words", dir + "/bad.json");
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_THAT(r.err, HasSubstr("request_id"));
+  EXPECT_THAT(Lines(r.err), SizeIs(1)) << r.err;
+  r = RunCli({"segment", input, "-o", dir + "/offline.json", "--request-id", "x"});
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_THAT(r.err, HasSubstr("--request-id needs --server"));
+}
+
+// --include-mesh and --length-unit: the same bytes offline and from the
+// server, with the mesh the curve ids index and the unit echoed.
+TEST(MeshsegSegment, IncludeMeshAndLengthUnitGiveTheSameJsonOnBothPaths) {
+  TestServer server;
+  const std::string dir = FreshDir("files");
+  const std::string input = dir + "/box.stl";
+  const testing_files::TestMesh box = testing_files::SplitBox(3, {2.0, 1.0, 0.5});
+  testing_files::WriteStlBinary(box, input);
+  const std::vector<std::string> flags = {"--include-mesh", "--length-unit", "CM"};
+  std::vector<std::string> offline = {"segment", input, "-o", dir + "/offline.json"};
+  offline.insert(offline.end(), flags.begin(), flags.end());
+  testing_cli::CliRun r = RunCli(offline);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  std::vector<std::string> remote = {"segment", input, "-o", dir + "/server.json", "--server",
+                                     server.address()};
+  remote.insert(remote.end(), flags.begin(), flags.end());
+  r = RunCli(remote);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string json = ReadText(dir + "/offline.json");
+  EXPECT_EQ(ReadText(dir + "/server.json"), json);
+  const v1::SegmentationResult result = ParseResult(json);
+  EXPECT_EQ(result.length_unit(), "cm");
+  EXPECT_EQ(result.mesh_geometry().vertices_size(), static_cast<int>(3 * box.v.size()));
+  EXPECT_EQ(result.mesh_geometry().faces_size(), static_cast<int>(3 * box.f.size()));
+  for (const v1::BoundaryCurve& c : result.curves()) {
+    for (int v : c.vertices()) EXPECT_LT(v, static_cast<int>(box.v.size()));
+  }
+
+  // An unknown unit, or a STEP unit other than the input's, exits 1 before
+  // any work, naming the value.
+  r = RunCli({"segment", input, "-o", dir + "/x.json", "--length-unit", "furlong"});
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_THAT(r.err, HasSubstr("length_unit \"furlong\" is not one of mm, cm"));
+  r = RunCli({"segment", input, "-o", dir + "/x.json", "--length-unit", "mm", "--step",
+              dir + "/x.step", "--unit", "in"});
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_THAT(r.err, HasSubstr("step_unit \"in\" is not length_unit \"mm\""));
+}
+
 }  // namespace
 }  // namespace meshseg

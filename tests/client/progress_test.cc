@@ -3,6 +3,11 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
 #include "absl/synchronization/notification.h"
 #include "tests/client/run_cli.h"
 #include "tests/server/test_files.h"
@@ -17,6 +22,15 @@ using testing_cli::RunCli;
 using testing_cli::RunCliOnTerminal;
 using testing_server::FreshDir;
 using testing_server::TestServer;
+
+// The whole-job percentages after each `marker` in `out` ("(job 43%").
+std::vector<int> JobPercents(const std::string& out, const std::string& marker) {
+  std::vector<int> percents;
+  for (std::size_t at = out.find(marker); at != std::string::npos; at = out.find(marker, at + 1)) {
+    percents.push_back(std::atoi(out.c_str() + at + marker.size()));
+  }
+  return percents;
+}
 
 // The server's jobs stop at their first "segment" report until the test has
 // seen the client print that stage: a job on loopback can otherwise end
@@ -65,6 +79,12 @@ TEST_F(ProgressTest, PlainLinesWhenNotATerminal) {
     ASSERT_EQ(r.exit_code, 0) << r.err;
     EXPECT_THAT(r.out, HasSubstr("progress: segment"));
     EXPECT_THAT(r.out, Not(HasSubstr("\r"))) << "no carriage returns in a log";
+    const std::vector<int> job = JobPercents(r.out, "(job ");
+    ASSERT_FALSE(job.empty()) << r.out;
+    EXPECT_TRUE(std::is_sorted(job.begin(), job.end())) << "the job's share never goes back\n"
+                                                        << r.out;
+    EXPECT_EQ(job.back(), 100) << r.out;
+    EXPECT_THAT(r.out, HasSubstr("ETA "));
     EXPECT_EQ(r.err, "");
   }
 }
@@ -80,6 +100,7 @@ TEST_F(ProgressTest, BarRedrawnInPlaceOnATerminal) {
     EXPECT_THAT(r.out, HasSubstr("] segment"));
     EXPECT_THAT(r.out, HasSubstr("100%"));
     EXPECT_THAT(r.out, Not(HasSubstr("progress: "))) << "no plain lines on a terminal";
+    EXPECT_THAT(r.out, HasSubstr("job 100%  ETA 0:00"));
   }
 }
 

@@ -88,5 +88,32 @@ TEST(ToProto, WritesTenQuadricCoefficients) {
   EXPECT_DOUBLE_EQ(p.regions(0).quadric().coefficients(9), 9.0);
 }
 
+// The exact path's additions: the surfaces (the regions on each, their joint
+// fit), each region's surface_id, and the path, tolerance and share.
+TEST(ToProto, CarriesSharedSurfacesAndTheExactPath) {
+  PipelineResult r = TwoRegions();
+  r.regions[0].surface_id = 0;
+  r.regions[1].surface_id = 0;  // as if both lay on one surface
+  r.surfaces.push_back({.id = 0,
+                        .type = SurfaceType::kPlane,
+                        .surface = Plane{.point = {0, 0, 2}, .normal = {0, 0, 1}},
+                        .regions = {0, 1},
+                        .rms_distance = 1e-9,
+                        .max_distance = 2e-9});
+  r.estimates.path = SegmentationPath::kExactFacets;
+  r.estimates.exact_tolerance = 8e-5;
+  r.estimates.exact_share = 0.995;
+  const v1::SegmentationResult p = ToProto(r);
+  ASSERT_EQ(p.surfaces_size(), 1);
+  EXPECT_EQ(p.surfaces(0).type(), v1::SURFACE_TYPE_PLANE);
+  EXPECT_EQ(p.surfaces(0).plane().point().z(), 2.0);
+  EXPECT_EQ(p.surfaces(0).regions_size(), 2);
+  EXPECT_EQ(p.surfaces(0).max_distance(), 2e-9);
+  EXPECT_EQ(p.regions(1).surface_id(), 0);
+  EXPECT_EQ(p.estimates().segmentation_path(), v1::SEGMENTATION_PATH_EXACT_FACETS);
+  EXPECT_EQ(p.estimates().exact_tolerance(), 8e-5);
+  EXPECT_EQ(p.estimates().exact_share(), 0.995);
+}
+
 }  // namespace
 }  // namespace meshseg

@@ -1,13 +1,16 @@
 // The meshseg-server binary: prints the bound address, refuses bad flags with
 // one line, and on SIGTERM shuts down gracefully: health NOT_SERVING, new
-// uploads refused, queued jobs cancelled, the running job finishes within
-// the grace period (or is cancelled after it), exit code 0. Its stderr holds
+// uploads refused, queued jobs kept for the next start, the running job
+// finishes within the grace period (or is released after it, to run again
+// after a restart), exit code 0. Its stderr holds
 // one structured line per job state change.
 #include <signal.h>
 #include <unistd.h>
 
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
+#include <regex>
 #include <string>
 #include <thread>
 #include <vector>
@@ -16,6 +19,7 @@
 #include <gtest/gtest.h>
 
 #include "absl/strings/str_cat.h"
+#include "absl/strings/str_replace.h"
 #include "absl/strings/str_split.h"
 #include "absl/synchronization/notification.h"
 #include "client/meshseg_client.h"
@@ -134,22 +138,96 @@ TEST(ServerMain, PrintsTheBoundPortAndStopsOnSigterm) {
   EXPECT_GT(done, signal) << server.Log();
 }
 
-TEST(ServerMain, BadFlagValueExitsNonZero) {
-  const std::string cmd = kServer + " --listen 127.0.0.1:0 --queue-capacity 0 2>&1";
-  FILE* p = popen(cmd.c_str(), "r");
-  ASSERT_NE(p, nullptr);
+// SIGHUP re-reads --auth-tokens: a token added to the file works after it,
+// a removed one stops working; the process keeps running. (Without TLS the
+// tokens ride gRPC local credentials, which the client's plaintext channel
+// to 127.0.0.1 satisfies.)
+TEST(ServerMain, SighupReloadsTheTokenFile) {
+  const std::string tokens = FreshDir("auth") + "/tokens.txt";
+  constexpr char kOld[] = "old-token-0123456789ab";
+  constexpr char kNew[] = "new-token-0123456789ab";
+  std::ofstream(tokens) << kOld << " acme\n";
+  ServerProcess server({"--spool-dir", FreshDir("spool"), "--workers", "1", "--auth-tokens",
+                        tokens});
+  ASSERT_FALSE(server.address().empty()) << server.Log();
+  const auto list_code = [&](const std::string& token) {
+    absl::StatusOr<MeshsegClient> client = MeshsegClient::Connect(server.address(), {.token = token});
+    if (!client.ok()) return client.status().code();
+    client->set_call_timeout(absl::Seconds(5));
+    return client->ListJobs().status().code();
+  };
+  EXPECT_EQ(list_code(kOld), absl::StatusCode::kOk);
+  EXPECT_EQ(list_code(kNew), absl::StatusCode::kUnauthenticated);
+  std::ofstream(tokens, std::ios::trunc) << kNew << " acme\n";
+  server.Signal(SIGHUP);
+  ASSERT_TRUE(server.AwaitLog("event=tokens_reloaded count=1", kTimeout)) << server.Log();
+  EXPECT_EQ(list_code(kNew), absl::StatusCode::kOk);
+  EXPECT_EQ(list_code(kOld), absl::StatusCode::kUnauthenticated);
+  EXPECT_THAT(server.Log(), HasSubstr("transport=local"));
+  server.Signal(SIGTERM);
+  EXPECT_EQ(server.AwaitExit(kTimeout), 0);
+}
+
+// Runs the shell command `cmd`; returns its stdout and sets *exit_code.
+std::string RunCommand(const std::string& cmd, int* exit_code) {
   std::string output;
+  FILE* p = popen(cmd.c_str(), "r");
+  if (p == nullptr) {
+    *exit_code = -1;
+    return output;
+  }
   char buf[256];
   while (fgets(buf, sizeof buf, p)) output += buf;
-  const int status = pclose(p);
-  EXPECT_NE(WEXITSTATUS(status), 0);
+  *exit_code = WEXITSTATUS(pclose(p));
+  return output;
+}
+
+TEST(ServerMain, BadFlagValueExitsNonZero) {
+  int exit_code = 0;
+  const std::string output =
+      RunCommand(kServer + " --listen 127.0.0.1:0 --queue-capacity 0 2>&1", &exit_code);
+  EXPECT_NE(exit_code, 0);
   EXPECT_THAT(output, HasSubstr("--queue-capacity"));
 }
 
-// SIGTERM while a job runs and another waits: the waiting one is cancelled,
-// new uploads get UNAVAILABLE, health is NOT_SERVING, the running job
-// finishes well within the 20 s grace and the process exits 0. The log has
-// each job's queued / started / finished lines, in order around the signal.
+// Returns the names of every ABSL_FLAG defined in server/*.cc, hyphenated
+// as the command line spells them ("spool-dir").
+std::vector<std::string> ServerFlagNames() {
+  std::vector<std::string> names;
+  const std::regex flag(R"(ABSL_FLAG\(\s*[^,]+,\s*(\w+)\s*,)");
+  for (const auto& entry :
+       std::filesystem::directory_iterator(std::string(MESHSEG_SOURCE_DIR) + "/server")) {
+    if (entry.path().extension() != ".cc") continue;
+    std::ifstream in(entry.path());
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    for (std::sregex_iterator it(text.begin(), text.end(), flag), end; it != end; ++it) {
+      names.push_back(absl::StrReplaceAll((*it)[1].str(), {{"_", "-"}}));
+    }
+  }
+  return names;
+}
+
+TEST(ServerMain, HelpDocumentsEveryFlagAndExitsZero) {
+  const std::vector<std::string> names = ServerFlagNames();
+  ASSERT_GE(names.size(), 7u) << "the flag scan found too few ABSL_FLAGs";
+  for (const char* help : {"--help", "-h", "--helpfull"}) {
+    int exit_code = -1;
+    const std::string output =
+        RunCommand(absl::StrCat(kServer, " ", help, " 2>/dev/null"), &exit_code);
+    EXPECT_EQ(exit_code, 0) << help;
+    EXPECT_THAT(output, HasSubstr("usage: meshseg-server")) << help;
+    for (const std::string& name : names) {
+      EXPECT_THAT(output, HasSubstr(absl::StrCat("  --", name))) << help << ": " << name;
+    }
+    EXPECT_THAT(output, HasSubstr("(default: \"127.0.0.1:50051\")\n      HOST:PORT to listen on"));
+    EXPECT_THAT(output, Not(HasSubstr("--flagfile"))) << "only the server's own flags";
+  }
+}
+
+// SIGTERM while a job runs and another waits: the waiting one stays queued
+// (recovery_test.cc runs it after a restart), new uploads get UNAVAILABLE, health is NOT_SERVING,
+// the running job finishes well within the 20 s grace and the process exits 0. The log has each
+// job's queued / started / finished lines, in order around the signal.
 TEST_F(ServerMainJobs, SigtermLetsTheRunningJobFinishRefusesUploadsAndExitsZero) {
   ServerProcess server({"--spool-dir", spool_, "--workers", "1", "--shutdown-grace", "20s"});
   ASSERT_FALSE(server.address().empty()) << server.first_line() << server.Log();
@@ -167,8 +245,7 @@ TEST_F(ServerMainJobs, SigtermLetsTheRunningJobFinishRefusesUploadsAndExitsZero)
     b = queued->job_id();
   }
   Watcher watch_a(server.address(), a);
-  Watcher watch_b(server.address(), b);
-  ASSERT_TRUE(watch_a.Open() && watch_b.Open());
+  ASSERT_TRUE(watch_a.Open());
 
   const absl::Time sigterm = absl::Now();
   server.Signal(SIGTERM);
@@ -181,18 +258,16 @@ TEST_F(ServerMainJobs, SigtermLetsTheRunningJobFinishRefusesUploadsAndExitsZero)
   EXPECT_EQ(refused.status().code(), absl::StatusCode::kUnavailable) << refused.status();
   EXPECT_THAT(refused.status().message(), HasSubstr("shutting down"));
 
-  const absl::StatusOr<v1::Job> job_b = watch_b.Job();
-  ASSERT_TRUE(job_b.ok()) << job_b.status();
-  EXPECT_EQ(job_b->state(), v1::JOB_STATE_CANCELLED);
-  EXPECT_THAT(job_b->error_message(), HasSubstr("shutting down"));
   const absl::StatusOr<v1::Job> job_a = watch_a.Job();
   ASSERT_TRUE(job_a.ok()) << job_a.status();
   EXPECT_EQ(job_a->state(), v1::JOB_STATE_SUCCEEDED) << job_a->error_message();
   EXPECT_EQ(job_a->face_count(), part_faces_);
 
   EXPECT_EQ(server.AwaitExit(kTimeout), 0);
+  // Finishing within the grace is what job_a's SUCCEEDED shows (past the
+  // grace it would be released, not finished); the time is only recorded,
+  // never asserted: it depends on the machine's load.
   const absl::Duration stop_time = absl::Now() - sigterm;
-  EXPECT_LT(stop_time, absl::Seconds(15)) << "within the grace period";
   RecordProperty("sigterm_to_exit_ms", static_cast<int>(absl::ToInt64Milliseconds(stop_time)));
 
   const std::vector<std::string> log = LogLines(server.Log());
@@ -217,49 +292,52 @@ TEST_F(ServerMainJobs, SigtermLetsTheRunningJobFinishRefusesUploadsAndExitsZero)
   EXPECT_GT(finished_a, signal) << "the job was still running at SIGTERM\n" << all;
   EXPECT_GT(done, finished_a) << all;
   EXPECT_EQ(LineOf(log, {"event=job_started", "job=" + b}), -1) << "the queued job never ran";
-  EXPECT_THAT(all, Not(HasSubstr("shutdown_cancelling_running_jobs")));
+  EXPECT_THAT(all, Not(HasSubstr("job=" + b + " state=CANCELLED"))) << "nor was cancelled";
+  EXPECT_THAT(all, Not(HasSubstr("shutdown_releasing_running_jobs")));
 }
 
-// With a 100 ms grace the running job is cancelled: its watcher sees
-// CANCELLED, the log says so, the process exits 0 promptly and the job
-// leaves nothing in the spool.
-TEST_F(ServerMainJobs, SigtermCancelsTheRunningJobAfterTheGracePeriod) {
-  ServerProcess server({"--spool-dir", spool_, "--workers", "1", "--shutdown-grace", "100ms"});
-  ASSERT_FALSE(server.address().empty()) << server.first_line() << server.Log();
-  const absl::StatusOr<v1::UploadResponse> running =
-      MeshsegClient::Connect(server.address()).Upload(*part_path_);
-  ASSERT_TRUE(running.ok()) << running.status();
-  const std::string a = running->job_id();
-  ASSERT_TRUE(server.AwaitLog("event=job_started job=" + a, kTimeout)) << server.Log();
-  Watcher watch_a(server.address(), a);
-  ASSERT_TRUE(watch_a.Open());
+// With a 100 ms grace the running job is stopped and released, not
+// cancelled: the process exits 0 promptly, the log says so, its upload stays
+// in the spool, and the next start runs it again to SUCCEEDED without
+// counting the interrupted attempt.
+TEST_F(ServerMainJobs, SigtermReleasesTheRunningJobAfterTheGraceAndTheNextStartRunsIt) {
+  std::string a;
+  {
+    ServerProcess server({"--spool-dir", spool_, "--workers", "1", "--shutdown-grace", "100ms"});
+    ASSERT_FALSE(server.address().empty()) << server.first_line() << server.Log();
+    const absl::StatusOr<v1::UploadResponse> running =
+        MeshsegClient::Connect(server.address()).Upload(*part_path_);
+    ASSERT_TRUE(running.ok()) << running.status();
+    a = running->job_id();
+    ASSERT_TRUE(server.AwaitLog("event=job_started job=" + a, kTimeout)) << server.Log();
 
-  const absl::Time sigterm = absl::Now();
-  server.Signal(SIGTERM);
-  const absl::StatusOr<v1::Job> job_a = watch_a.Job();
-  ASSERT_TRUE(job_a.ok()) << job_a.status();
-  EXPECT_EQ(job_a->state(), v1::JOB_STATE_CANCELLED);
-  EXPECT_EQ(server.AwaitExit(kTimeout), 0);
-  const absl::Duration stop_time = absl::Now() - sigterm;
-  EXPECT_LT(stop_time, absl::Seconds(5)) << "cancelled soon after the grace period";
-  RecordProperty("sigterm_to_exit_ms", static_cast<int>(absl::ToInt64Milliseconds(stop_time)));
+    const absl::Time sigterm = absl::Now();
+    server.Signal(SIGTERM);
+    EXPECT_EQ(server.AwaitExit(kTimeout), 0);
+    // Not waiting for the job is what the job_released line below shows; the
+    // time is recorded only (it depends on the machine's load).
+    const absl::Duration stop_time = absl::Now() - sigterm;
+    RecordProperty("sigterm_to_exit_ms", static_cast<int>(absl::ToInt64Milliseconds(stop_time)));
 
-  const std::vector<std::string> log = LogLines(server.Log());
-  const std::string all = server.Log();
-  const int signal = LineOf(log, {"event=signal", "signal=SIGTERM"});
-  const int cancelling = LineOf(log, {"event=shutdown_cancelling_running_jobs"});
-  const int finished_a = LineOf(log, {"event=job_finished", "job=" + a, "state=CANCELLED"});
-  const int done = LineOf(log, {"event=shutdown_done"});
-  EXPECT_GE(LineOf(log, {"event=job_queued", "job=" + a}), 0) << all;
-  EXPECT_GE(LineOf(log, {"event=job_started", "job=" + a}), 0) << all;
-  EXPECT_GT(cancelling, signal) << all;
-  EXPECT_GT(finished_a, cancelling) << all;
-  EXPECT_GT(done, finished_a) << all;
-  std::vector<std::string> left;
-  for (const auto& entry : std::filesystem::recursive_directory_iterator(spool_)) {
-    if (entry.is_regular_file()) left.push_back(entry.path().string());
+    const std::vector<std::string> log = LogLines(server.Log());
+    const std::string all = server.Log();
+    const int signal = LineOf(log, {"event=signal", "signal=SIGTERM"});
+    const int releasing = LineOf(log, {"event=shutdown_releasing_running_jobs"});
+    const int released = LineOf(log, {"event=job_released", "job=" + a});
+    const int done = LineOf(log, {"event=shutdown_done"});
+    EXPECT_GT(releasing, signal) << all;
+    EXPECT_GT(released, releasing) << all;
+    EXPECT_GT(done, released) << all;
+    EXPECT_EQ(LineOf(log, {"event=job_finished", "job=" + a}), -1) << all;
   }
-  EXPECT_THAT(left, ::testing::IsEmpty()) << "no upload or partial result left behind";
+  ServerProcess again({"--spool-dir", spool_, "--workers", "1"});
+  ASSERT_FALSE(again.address().empty()) << again.Log();
+  const absl::StatusOr<v1::Job> job =
+      MeshsegClient::Connect(again.address()).Watch(a, {}, kTimeout);
+  ASSERT_TRUE(job.ok()) << job.status();
+  EXPECT_EQ(job->state(), v1::JOB_STATE_SUCCEEDED) << job->error_message();
+  EXPECT_EQ(job->face_count(), part_faces_);
+  EXPECT_EQ(job->attempts(), 1) << "the released attempt is not counted";
 }
 
 }  // namespace

@@ -25,22 +25,26 @@ namespace meshseg::testing_server {
 
 class ServerProcess {
  public:
-  // Starts `meshseg-server --listen 127.0.0.1:0 flags...` and waits up to
-  // 10 s for its "listening on HOST:PORT" line (address() stays empty if
-  // none came).
-  explicit ServerProcess(std::vector<std::string> flags) {
+  // Starts `meshseg-server --listen 127.0.0.1:0 flags...` with `env`
+  // ("NAME=VALUE") added to the environment and waits up to 10 s for its
+  // "listening on HOST:PORT" line (address() stays empty if none came).
+  explicit ServerProcess(std::vector<std::string> flags, std::vector<std::string> env = {}) {
     flags.insert(flags.begin(),
                  {std::string(MESHSEG_BIN_DIR) + "/meshseg-server", "--listen", "127.0.0.1:0"});
     std::vector<char*> argv;
     for (std::string& f : flags) argv.push_back(f.data());
     argv.push_back(nullptr);
+    for (char** e = environ; *e != nullptr; ++e) env.emplace_back(*e);
+    std::vector<char*> envp;
+    for (std::string& e : env) envp.push_back(e.data());
+    envp.push_back(nullptr);
     int out[2], err[2];
     if (pipe2(out, O_CLOEXEC) != 0 || pipe2(err, O_CLOEXEC) != 0) return;
     pid_ = fork();
     if (pid_ == 0) {  // only async-signal-safe calls: the parent has threads
       dup2(out[1], STDOUT_FILENO);
       dup2(err[1], STDERR_FILENO);
-      execv(argv[0], argv.data());
+      execve(argv[0], argv.data(), envp.data());
       _exit(127);
     }
     close(out[1]);
@@ -75,6 +79,12 @@ class ServerProcess {
   const std::string& first_line() const { return first_line_; }
 
   void Signal(int signal) const { kill(pid_, signal); }
+
+  // kill -9, then reaps the process.
+  void Kill9() {
+    Signal(SIGKILL);
+    AwaitExit(absl::Seconds(10));
+  }
 
   // Everything written to stderr so far.
   std::string Log() const {

@@ -74,34 +74,48 @@ struct Gate {
   }
 };
 
-// Returns the grpc.health.v1 status of the whole server: 1 = SERVING,
-// 2 = NOT_SERVING, -1 = the call failed. The messages are tiny, so they are
-// encoded by hand (HealthCheckRequest{} is empty; the response is field 1).
-inline int HealthStatus(const std::string& address) {
-  auto channel = grpc::CreateChannel(address, grpc::InsecureChannelCredentials());
+// Makes a unary call of `method` with the serialized `request` on a
+// generic stub; returns its status and fills `response` with the bytes.
+// `credentials`: plaintext unless given (TLS tests).
+inline grpc::Status UnaryCall(const std::string& address, const std::string& method,
+                              const std::string& request, std::string* response,
+                              std::shared_ptr<grpc::ChannelCredentials> credentials = nullptr) {
+  if (credentials == nullptr) credentials = grpc::InsecureChannelCredentials();
+  auto channel = grpc::CreateChannel(address, credentials);
   grpc::GenericStub stub(channel);
   grpc::ClientContext context;
   context.set_deadline(absl::ToChronoTime(absl::Now() + absl::Seconds(5)));
   grpc::CompletionQueue cq;
-  grpc::Slice empty;
-  grpc::ByteBuffer request(&empty, 1);
-  auto call = stub.PrepareUnaryCall(&context, "/grpc.health.v1.Health/Check", request, &cq);
+  grpc::Slice slice(request);
+  grpc::ByteBuffer out(&slice, 1);
+  auto call = stub.PrepareUnaryCall(&context, method, out, &cq);
   call->StartCall();
-  grpc::ByteBuffer response;
+  grpc::ByteBuffer in;
   grpc::Status status;
-  call->Finish(&response, &status, reinterpret_cast<void*>(1));
+  call->Finish(&in, &status, reinterpret_cast<void*>(1));
   void* tag = nullptr;
   bool ok = false;
   cq.Next(&tag, &ok);
   cq.Shutdown();
   while (cq.Next(&tag, &ok)) {
   }
-  if (!status.ok()) return -1;
   std::vector<grpc::Slice> slices;
-  response.Dump(&slices);
-  std::string bytes;
+  if (status.ok()) in.Dump(&slices);
+  response->clear();
   for (const grpc::Slice& s : slices)
-    bytes.append(reinterpret_cast<const char*>(s.begin()), s.size());
+    response->append(reinterpret_cast<const char*>(s.begin()), s.size());
+  return status;
+}
+
+// Returns the grpc.health.v1 status of the whole server: 1 = SERVING,
+// 2 = NOT_SERVING, -1 = the call failed. The messages are tiny, so they are
+// encoded by hand (HealthCheckRequest{} is empty; the response is field 1).
+inline int HealthStatus(const std::string& address,
+                        std::shared_ptr<grpc::ChannelCredentials> credentials = nullptr) {
+  std::string bytes;
+  const grpc::Status status =
+      UnaryCall(address, "/grpc.health.v1.Health/Check", "", &bytes, std::move(credentials));
+  if (!status.ok()) return -1;
   return bytes.size() == 2 && bytes[0] == 0x08 ? bytes[1] : (bytes.empty() ? 0 : -1);
 }
 

@@ -19,6 +19,7 @@
 #include "meshseg/point_cloud.h"
 #include "meshseg/run_context.h"
 #include "meshseg/surface.h"
+#include "meshseg/voxel.h"
 
 namespace meshseg {
 
@@ -63,6 +64,25 @@ std::vector<std::string> PartNames();
 absl::StatusOr<GeneratedPart> GeneratePart(std::string_view name,
                                            const GenerateParams& params = {},
                                            const RunContext& ctx = {});
+
+// Returns the part sampled on its voxel grid as a CT volume (uint16, the
+// mesh's grid: origin and spacing h). Grey: air 1000, material 3000, with a
+// linear partial-volume ramp over 2 h across the surface (so interpolation
+// between two samples next to the surface finds it) and Gaussian noise of
+// params.noise h along the normals turned into grey values (sigma = noise *
+// 1000). Binary: 1 for grid points inside the solid, else 0 (a thresholded
+// scan). Errors: as GeneratePart.
+absl::StatusOr<VolumeData> GenerateVolume(std::string_view name, bool binary,
+                                          const GenerateParams& params = {},
+                                          const RunContext& ctx = {});
+
+// Returns `mesh` (any surface of part `name` at voxel size params.voxel_size,
+// e.g. extracted from its volume) with the part's ground truth: primitives,
+// face_primitive, face_near_boundary and vertex_primitive as GeneratePart
+// gives them, from the solid's active surface at each vertex.
+// Errors: INVALID_ARGUMENT for an unknown name.
+absl::StatusOr<GeneratedPart> LabelWithGroundTruth(std::string_view name, const Mesh& mesh,
+                                                   const GenerateParams& params = {});
 
 // Returns the ground truth of `part` as a JSON document:
 //   {"name", "voxel_size", "noise" (model units), "face_count",

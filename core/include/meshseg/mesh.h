@@ -81,7 +81,18 @@ absl::StatusOr<Mesh> BuildMesh(std::vector<Eigen::Vector3d> vertices,
 // Copies an OpenMesh point into an Eigen vector.
 inline Eigen::Vector3d ToEigen(const OpenMesh::Vec3d& p) { return {p[0], p[1], p[2]}; }
 
-enum class FileFormat { kUnknown, kStl, kObj, kOff, kPly, kXyz, kPwn };
+enum class FileFormat {
+  kUnknown, kStl, kObj, kOff, kPly, kXyz, kPwn,
+  // Volumes (meshseg/voxel.h): NRRD (.nrrd/.nhdr), MetaImage (.mha, .mhd +
+  // data file) and headerless .raw samples.
+  kNrrd, kMha, kMhd, kRaw,
+};
+
+// True for the volume formats (kNrrd, kMha, kMhd, kRaw).
+inline bool IsVolumeFormat(FileFormat format) {
+  return format == FileFormat::kNrrd || format == FileFormat::kMha || format == FileFormat::kMhd ||
+         format == FileFormat::kRaw;
+}
 
 // "stl", "obj", ... ("unknown" for kUnknown).
 const char* FileFormatName(FileFormat format);

@@ -9,20 +9,24 @@
 #ifndef MESHSEG_PIPELINE_H_
 #define MESHSEG_PIPELINE_H_
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "absl/status/statusor.h"
+#include "meshseg/brep.h"
 #include "meshseg/curvature.h"
 #include "meshseg/features.h"
+#include "meshseg/input_size.h"
 #include "meshseg/mesh.h"
 #include "meshseg/reconstruct.h"
 #include "meshseg/remesh.h"
 #include "meshseg/run_context.h"
 #include "meshseg/segment.h"
 #include "meshseg/topology.h"
+#include "meshseg/voxel.h"
 
 namespace meshseg {
 
@@ -37,8 +41,57 @@ struct PipelineParams {
   SegmentParams segment;
   TopologyParams topology;
   FeatureParams features;
+  // Volumes (NRRD, MetaImage, raw): reading and iso-surface (voxel.h).
+  VolumeParams volume;
+  // How binary-occupancy surfaces (binary volumes, terraced marching-cubes
+  // meshes) lose their terraces before segmentation. Both keep the vertices
+  // at feature voxels (edges and corners of the material, ALGORITHMS.md S4),
+  // whose position the occupancy fixes, and fit the surfaces on the original
+  // vertices, which are unbiased where the smoothed ones are not.
+  enum class BinarySurface {
+    kRelax,     // RelaxTerraces on the full surface (voxel.h)
+    kSimplify,  // feature-preserving QEM simplification, remeshed (remesh.h)
+  };
+  BinarySurface binary_surface = BinarySurface::kRelax;
+  // kRelax: feature vertices stay put while the rest relax, so edges and
+  // corners are not rounded off by the smoothing.
+  bool binary_relax_keeps_features = true;
+  // kSimplify: at most this share of the faces, and a quadric error of at
+  // most this many voxels: a binary surface's vertices lie within about half
+  // a voxel of the true surface, so that bound removes the terraces and
+  // keeps real shape
+  // (ALGORITHMS.md S4: 0.5-0.6 voxel).
+  double binary_face_share = 0.1;
+  double binary_max_error_voxels = 0.5;
   // Upper bound on declared vertex/face counts of the input.
   int64_t max_elements = 200'000'000;
+  // When set, the B-rep of the result is written there as STEP (brep.h);
+  // brep.noise_sigma defaults to the segmentation's estimate.
+  std::string step_path;
+  BrepParams brep;
+  // Peak memory the job may take, in bytes; 0 = no limit. A job whose
+  // EstimateJobMemory exceeds it is refused before its input is read.
+  int64_t memory_budget_bytes = 0;
+  // Copy the mesh the result's ids refer to into PipelineResult::mesh_geometry.
+  bool include_mesh = false;
+  // The length unit of the input's coordinates, echoed in the result: ""
+  // (unspecified: model units) or one of CanonicalLengthUnit's (brep.h), any
+  // case. With step_path set, brep.length_unit must name the same unit
+  // (coordinates are written unscaled).
+  std::string length_unit;
+};
+
+// The mesh the result's vertex ids (vertex_labels, curves, corners) and mesh
+// faces refer to: the input as loaded (STL welded, polygons fan-triangulated,
+// dropped faces left out; also when it was segmented on a remesh), or the
+// mesh reconstructed from a point cloud.
+struct MeshGeometry {
+  std::vector<Eigen::Vector3d> vertices;
+  // Vertex ids, in each face's winding order (the input's).
+  std::vector<std::array<int, 3>> faces;
+  // One per face: the input face it came from (a polygon's triangles share
+  // one). Empty for a point cloud, whose faces are all reconstructed.
+  std::vector<int> input_face;
 };
 
 struct PipelineResult {
@@ -50,6 +103,8 @@ struct PipelineResult {
   std::vector<int> face_labels;
   std::vector<int> vertex_labels; // one per mesh vertex; -1 = no region
   std::vector<Region> regions;
+  // The surfaces the regions lie on (Segmentation::surfaces).
+  std::vector<SharedSurface> surfaces;
   SegmentEstimates estimates;
   Topology topology;
   std::vector<Feature> features;
@@ -65,12 +120,56 @@ struct PipelineResult {
   bool from_point_cloud = false;
   int64_t point_count = 0;
   std::vector<int> point_labels;
+  // When PipelineParams::step_path is set: what the `brep` stage wrote, or
+  // (brep unset) why it wrote nothing; the segmentation stands either way.
+  std::optional<BrepReport> brep;
+  std::string brep_error;
+  // Volume input: the volume's header and the iso value used; face_labels
+  // and the mesh statistics are those of the extracted surface.
+  bool from_volume = false;
+  VolumeInfo volume;
+  double iso_value = 0.0;
+  // Binary occupancy (a binary volume, or a mesh detected as terraced
+  // marching-cubes output): segmented on the seed 003 simplification of this
+  // many faces, whose Hausdorff distance to the full surface is given; labels
+  // refer to the full-resolution faces.
+  bool binary_occupancy = false;
+  int64_t simplified_face_count = 0;
+  double simplified_hausdorff = 0.0;
+  // Set when PipelineParams::include_mesh is.
+  std::optional<MeshGeometry> mesh_geometry;
+  // PipelineParams::length_unit, lowercase ("" = unspecified).
+  std::string length_unit;
 };
 
-// Returns the segmentation of the mesh or point cloud in `input_path`.
-// A point cloud is first reconstructed into a watertight mesh (Reconstruct).
+// A job's predicted peak resident memory, from the size its input declares
+// (ProbeInput), by the model measured in core/src/pipeline/memory_model.h:
+// a base, the mapped file, a cost per mesh face (plus a full-size remesh when
+// the remesh may run) or per point, times a safety margin.
+struct MemoryEstimate {
+  InputSize input;
+  int64_t peak_bytes = 0;
+};
+
+// Returns the estimate for the file at `input_path` under `params` (its
+// format and remesh settings), reading only its header or its lines.
+// Errors: those of ProbeInput.
+absl::StatusOr<MemoryEstimate> EstimateJobMemory(const std::string& input_path,
+                                                 const PipelineParams& params = {});
+
+// Returns the segmentation of the mesh, point cloud or volume in
+// `input_path`. A point cloud is first reconstructed into a watertight mesh
+// (Reconstruct); a volume's surface is extracted (ExtractSurface). Binary
+// occupancy surfaces go through seed 003: feature voxels, QEM simplification,
+// segmentation of its remesh, labels mapped back to the full surface.
 // Errors: those of ReadMesh / ReadPointCloud, Reconstruct, EstimateCurvature,
-// Segment, ExtractTopology and RecognizeFeatures; CANCELLED on stop.
+// Segment, ExtractTopology and RecognizeFeatures; RESOURCE_EXHAUSTED, before
+// the input is read, when params.memory_budget_bytes is set and the job's
+// EstimateJobMemory exceeds it (the message gives both); INVALID_ARGUMENT
+// for coordinates beyond +-1e75 (their fourth powers overflow the fits);
+// INTERNAL if a number of the result is not finite; CANCELLED on stop;
+// INVALID_ARGUMENT for a length_unit CanonicalLengthUnit does not know, or
+// one that is not the STEP file's (brep.length_unit) when step_path is set.
 absl::StatusOr<PipelineResult> RunPipeline(const std::string& input_path,
                                            const PipelineParams& params = {},
                                            const RunContext& ctx = {});

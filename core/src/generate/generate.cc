@@ -61,19 +61,30 @@ absl::StatusOr<Grid> GridFor(const PartSpec& spec, double h) {
   return g;
 }
 
-}  // namespace
-
-std::vector<std::string> PartNames() { return generate_internal::CatalogueNames(); }
-
-absl::StatusOr<GeneratedPart> GeneratePart(std::string_view name, const GenerateParams& params,
-                                           const RunContext& ctx) {
-  MESHSEG_RETURN_IF_ERROR(ValidateParams(name, params));
+absl::StatusOr<PartSpec> SpecNamed(std::string_view name) {
   std::optional<PartSpec> spec = generate_internal::FindPart(name);
   if (!spec) {
     return absl::InvalidArgumentError(absl::StrCat("generate: unknown part \"", std::string(name),
                                                    "\"; known parts: ",
                                                    absl::StrJoin(PartNames(), ", ")));
   }
+  return *std::move(spec);
+}
+
+}  // namespace
+
+absl::StatusOr<Grid> generate_internal::PartGrid(std::string_view name, const GenerateParams& params) {
+  MESHSEG_RETURN_IF_ERROR(ValidateParams(name, params));
+  MESHSEG_ASSIGN_OR_RETURN(const PartSpec spec, SpecNamed(name));
+  return GridFor(spec, params.voxel_size > 0.0 ? params.voxel_size : spec.default_voxel_size);
+}
+
+std::vector<std::string> PartNames() { return generate_internal::CatalogueNames(); }
+
+absl::StatusOr<GeneratedPart> GeneratePart(std::string_view name, const GenerateParams& params,
+                                           const RunContext& ctx) {
+  MESHSEG_RETURN_IF_ERROR(ValidateParams(name, params));
+  MESHSEG_ASSIGN_OR_RETURN(const std::optional<PartSpec> spec, SpecNamed(name));
   const double h = params.voxel_size > 0.0 ? params.voxel_size : spec->default_voxel_size;
   MESHSEG_ASSIGN_OR_RETURN(const Grid grid, GridFor(*spec, h));
   MESHSEG_ASSIGN_OR_RETURN(RawSurface raw, generate_internal::MarchingCubes(spec->solid, grid, ctx));

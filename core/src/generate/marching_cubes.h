@@ -10,12 +10,14 @@
 #define MESHSEG_GENERATE_MARCHING_CUBES_H_
 
 #include <array>
+#include <string_view>
 #include <vector>
 
 #include <Eigen/Core>
 
 #include "absl/status/statusor.h"
 #include "generate/csg.h"
+#include "meshseg/generate.h"
 #include "meshseg/run_context.h"
 
 namespace meshseg::generate_internal {
@@ -30,6 +32,10 @@ struct Grid {
     return origin + h * Eigen::Vector3d(i, j, k);
   }
 };
+
+// Returns the grid part `name` is sampled on at params.voxel_size (0 = the
+// part's default). Errors: as GeneratePart's parameter and size checks.
+absl::StatusOr<Grid> PartGrid(std::string_view name, const GenerateParams& params);
 
 // Keeps vertices this fraction of a grid edge away from its ends, so no two
 // vertices of a cube coincide (no zero-area triangles).

@@ -7,6 +7,7 @@
 #include <OpenMesh/Core/System/omstream.hh>
 
 #include "absl/strings/str_cat.h"
+#include "meshseg/input_size.h"
 #include "meshseg/mesh.h"
 #include "meshseg/status_macros.h"
 #include "mesh/input_topology.h"
@@ -64,6 +65,15 @@ absl::Status Fill(RawMesh raw, const Source& src, Mesh* out) {
   if (nv > std::numeric_limits<int>::max()) {
     return BadInput(src, absl::StrCat(nv, " vertices, over the limit of ",
                                       std::numeric_limits<int>::max()));
+  }
+  for (int64_t i = 0; i < nv; ++i) {
+    const double m = raw.vertices[i].cwiseAbs().maxCoeff();
+    if (m > kMaxCoordinate) {  // beyond it, areas here and fits downstream overflow
+      return BadInput(src, absl::StrCat("vertex ", i, " has coordinate ", m, ", beyond the +-",
+                                        kMaxCoordinate,
+                                        " whose fourth powers the surface fits can sum without "
+                                        "overflow; rescale the part"));
+    }
   }
   // Fan triangulation; tri_face[t] is the input face of triangle t.
   Triangles tris;

@@ -29,6 +29,10 @@ FileFormat FormatOfExtension(const std::string& path) {
   if (ext == "ply") return FileFormat::kPly;
   if (ext == "xyz") return FileFormat::kXyz;
   if (ext == "pwn") return FileFormat::kPwn;
+  if (ext == "nrrd" || ext == "nhdr") return FileFormat::kNrrd;
+  if (ext == "mha") return FileFormat::kMha;
+  if (ext == "mhd") return FileFormat::kMhd;
+  if (ext == "raw") return FileFormat::kRaw;
   return FileFormat::kUnknown;
 }
 
@@ -54,6 +58,8 @@ FileFormat FormatOfContent(std::string_view head, int64_t size) {
   }
   const std::string_view text = StripLeadingSpace(head);
   if (text.starts_with("ply")) return FileFormat::kPly;
+  if (head.starts_with("NRRD000")) return FileFormat::kNrrd;
+  if (text.starts_with("ObjectType") || text.starts_with("NDims")) return FileFormat::kMha;
   if (text.starts_with("solid")) return FileFormat::kStl;
   for (const char* magic : {"OFF", "COFF", "NOFF", "CNOFF"}) {
     if (text.starts_with(magic)) return FileFormat::kOff;
@@ -98,6 +104,10 @@ const char* FileFormatName(FileFormat format) {
     case FileFormat::kPly: return "ply";
     case FileFormat::kXyz: return "xyz";
     case FileFormat::kPwn: return "pwn";
+    case FileFormat::kNrrd: return "nrrd";
+    case FileFormat::kMha: return "mha";
+    case FileFormat::kMhd: return "mhd";
+    case FileFormat::kRaw: return "raw";
     case FileFormat::kUnknown: break;
   }
   return "unknown";
@@ -115,7 +125,8 @@ absl::StatusOr<FileFormat> DetectFileFormat(const std::string& path) {
   const FileFormat format = mesh_internal::FormatOf(path, head, info.st_size);
   if (format == FileFormat::kUnknown) {
     return mesh_internal::BadInput(
-        src, "unknown format (extension and content match none of stl, obj, off, ply, xyz, pwn)");
+        src, "unknown format (extension and content match none of stl, obj, off, ply, xyz, pwn, "
+             "nrrd, mha, mhd, raw)");
   }
   return format;
 }

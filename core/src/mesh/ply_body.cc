@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstring>
 #include <optional>
+#include <string>
 
 #include "absl/strings/str_cat.h"
 #include "meshseg/status_macros.h"
@@ -17,8 +18,8 @@ namespace {
 class ValueReader {
  public:
   ValueReader(std::string_view bytes, const PlyHeader& header, const Source& src)
-      : bytes_(bytes), pos_(header.body_offset), encoding_(header.encoding), src_(src),
-        cursor_(bytes.substr(header.body_offset)) {
+      : bytes_(bytes), pos_(header.body_offset), body_offset_(header.body_offset),
+        encoding_(header.encoding), src_(src), cursor_(bytes.substr(header.body_offset)) {
     cursor_.set_comments(false);
     line_offset_ = header.body_line - 1;
   }
@@ -63,6 +64,12 @@ class ValueReader {
 
   bool ascii() const { return encoding_ == PlyEncoding::kAscii; }
 
+  // Bytes of the file not read yet.
+  int64_t BytesLeft() const {
+    const size_t at = ascii() ? body_offset_ + cursor_.offset() : pos_;
+    return at < bytes_.size() ? static_cast<int64_t>(bytes_.size() - at) : 0;
+  }
+
  private:
   absl::StatusOr<double> NextAscii(const std::string& what) {
     if (cursor_.AtEnd()) return Error(absl::StrCat("file ends while reading ", what));
@@ -98,6 +105,7 @@ class ValueReader {
 
   std::string_view bytes_;
   size_t pos_;
+  size_t body_offset_;
   PlyEncoding encoding_;
   const Source& src_;
   TextCursor cursor_;
@@ -123,6 +131,7 @@ absl::Status ReadElement(const PlyElement& element, ValueReader& reader, PlyData
   int xyz[3] = {-1, -1, -1};
   int nxyz[3] = {-1, -1, -1};
   int indices = -1;
+  bool normals = false;  // all of nx ny nz present
   if (is_vertex) {
     const char* names[3] = {"x", "y", "z"};
     const char* normal_names[3] = {"nx", "ny", "nz"};
@@ -133,7 +142,7 @@ absl::Status ReadElement(const PlyElement& element, ValueReader& reader, PlyData
         return reader.Error(absl::StrCat("element vertex has no scalar property ", names[c]));
       }
     }
-    const bool normals = nxyz[0] >= 0 && nxyz[1] >= 0 && nxyz[2] >= 0;
+    normals = nxyz[0] >= 0 && nxyz[1] >= 0 && nxyz[2] >= 0;
     data->vertices.resize(element.count);
     if (normals) data->normals.resize(element.count);
   }
@@ -161,6 +170,17 @@ absl::Status ReadElement(const PlyElement& element, ValueReader& reader, PlyData
               absl::StrCat("face ", i, " has ", n, " corners, expected 3 to 1000000"));
         }
         if (n < 0) return reader.Error(absl::StrCat("negative list length ", n));
+        // A length counts the values that follow, each at least one byte
+        // (text or binary): a whole number no larger than the bytes left.
+        if (n != std::floor(n) || n > static_cast<double>(reader.BytesLeft())) {
+          // Whole lengths are shown as integers ("4000000000", not "4e+09").
+          const std::string shown = n == std::floor(n) && std::abs(n) < 9e15
+                                        ? absl::StrCat(static_cast<int64_t>(n))
+                                        : absl::StrCat(n);
+          return reader.Error(absl::StrCat("list length ", shown, " of ", p.name,
+                                           " is not a whole number of values the ",
+                                           reader.BytesLeft(), " bytes left can hold"));
+        }
         for (int64_t c = 0; c < static_cast<int64_t>(n); ++c) {
           MESHSEG_ASSIGN_OR_RETURN(const double v, reader.Next(p.type, p.name));
           if (!corners) continue;
@@ -181,7 +201,7 @@ absl::Status ReadElement(const PlyElement& element, ValueReader& reader, PlyData
           }
           data->vertices[i][c] = v;
         }
-        if (static_cast<int>(k) == nxyz[c] && !data->normals.empty()) data->normals[i][c] = v;
+        if (static_cast<int>(k) == nxyz[c] && normals) data->normals[i][c] = v;
       }
     }
     MESHSEG_RETURN_IF_ERROR(reader.EndElement(element.name));
@@ -197,11 +217,18 @@ absl::StatusOr<PlyData> ReadPlyData(std::string_view bytes, const Source& src,
   ValueReader reader(bytes, header, src);
   int64_t declared_bytes = 0;
   bool vertex_seen = false;
+  bool face_seen = false;
   for (const PlyElement& element : header.elements) {
     if (element.name == "face" && !vertex_seen) {
       return BadInput(src, "element face comes before element vertex");
     }
+    // Indices refer to THE vertex list: a second one (or a second face
+    // list) leaves the file ambiguous, so it is refused, not merged.
+    if ((element.name == "vertex" && vertex_seen) || (element.name == "face" && face_seen)) {
+      return BadInput(src, absl::StrCat("element ", element.name, " declared twice"));
+    }
     vertex_seen |= element.name == "vertex";
+    face_seen |= element.name == "face";
     const int64_t min_bytes = MinElementBytes(element, reader.ascii());
     MESHSEG_RETURN_IF_ERROR(CheckDeclaredCount(
         src, absl::StrCat("\"", element.name, "\" elements"), element.count, min_bytes,

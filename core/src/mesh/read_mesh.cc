@@ -34,6 +34,13 @@ absl::StatusOr<Mesh> ReadMesh(const std::string& path, const ReadMeshOptions& op
     case FileFormat::kPwn:
       return BadInput(src, absl::StrCat("a ", FileFormatName(format),
                                         " point cloud is not a mesh; read it as a point cloud"));
+    case FileFormat::kNrrd:
+    case FileFormat::kMha:
+    case FileFormat::kMhd:
+    case FileFormat::kRaw:
+      return BadInput(src, absl::StrCat("a ", FileFormatName(format),
+                                        " volume is not a mesh; extract its surface first "
+                                        "(meshseg/voxel.h)"));
     case FileFormat::kUnknown:
       return BadInput(src, "unknown format (extension and content match none of stl, obj, "
                            "off, ply)");

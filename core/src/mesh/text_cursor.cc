@@ -107,6 +107,17 @@ std::string_view StripLeadingSpace(std::string_view text) {
   return start == std::string_view::npos ? std::string_view() : text.substr(start);
 }
 
-std::string Shorten(std::string_view token) { return std::string(token.substr(0, 24)); }
+std::string Shorten(std::string_view token) {
+  std::string out;
+  for (const char c : token.substr(0, 24)) {
+    const auto byte = static_cast<unsigned char>(c);
+    if (byte >= 0x20 && byte < 0x7F) {
+      out.push_back(c);
+    } else {
+      absl::StrAppend(&out, "\\x", absl::Hex(byte, absl::kZeroPad2));
+    }
+  }
+  return out;
+}
 
 }  // namespace meshseg::mesh_internal

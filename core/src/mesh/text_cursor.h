@@ -67,7 +67,9 @@ absl::StatusOr<double> NextFinite(const Source& src, TextCursor& cursor, const c
 // Returns `text` without leading blanks and newlines.
 std::string_view StripLeadingSpace(std::string_view text);
 
-// Returns a token for a message, cut to at most 24 characters.
+// Returns a token for a message: its first 24 bytes, each byte outside
+// printable ASCII written as \xNN, so a message quoting a binary file's
+// bytes stays one readable line.
 std::string Shorten(std::string_view token);
 
 }  // namespace meshseg::mesh_internal

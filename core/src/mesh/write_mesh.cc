@@ -9,6 +9,7 @@
 #include <memory>
 
 #include "absl/strings/str_cat.h"
+#include "meshseg/label_color.h"
 #include "meshseg/mesh.h"
 #include "meshseg/point_cloud.h"
 #include "mesh/source.h"
@@ -43,6 +44,8 @@ void Append(std::string& out, T value) {
   out.append(raw, sizeof(T));
 }
 
+}  // namespace
+
 // Distinct colours for labels 0, 1, 2, ...: hues spaced by the golden angle,
 // three brightness levels; grey for -1.
 std::array<uint8_t, 3> LabelColor(int label) {
@@ -59,6 +62,8 @@ std::array<uint8_t, 3> LabelColor(int label) {
   }
   return color;
 }
+
+namespace {
 
 std::string PlyBytes(const TriMesh& mesh, const std::vector<int>* labels) {
   std::string out = absl::StrCat(

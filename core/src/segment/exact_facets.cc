@@ -1,492 +1,360 @@
 #include "segment/exact_facets.h"
 
-#include <algorithm>
-#include <array>
-#include <cmath>
-#include <limits>
-#include <map>
-#include <numeric>
-#include <set>
-#include <utility>
-#include <vector>
-
 #include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <optional>
+#include <queue>
+#include <tuple>
+#include <utility>
 
-#include "absl/strings/str_cat.h"
 #include "meshseg/fit.h"
 #include "meshseg/status_macros.h"
-#include "segment/decide_type.h"
+#include "segment/exact_hypotheses.h"
+#include "segment/exact_tolerance.h"
+#include "segment/facet_on_surface.h"
 
 namespace meshseg::segment_internal {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
+constexpr int kStopCheckStride = 1024;
 
-// Flat groups of faces, each within the tolerance of one plane.
-struct Facets {
-  std::vector<int> of_face;
-  std::vector<std::vector<int>> faces;
-  std::vector<Eigen::Vector3d> normal;
-  std::vector<std::vector<int>> neighbors;         // facets across an edge
-  std::vector<std::vector<int>> smooth_neighbors;  // those at < kMaxFacetAngleDeg
-  // Vertices where the facet's outline turns, sorted. The others lie on a
-  // straight piece of outline between two corners or inside the facet: a
-  // CAD tessellator adds such vertices on a facet's edge to meet the next
-  // face's tessellation, and on a curved face they sit under the arc, on
-  // the chord, by up to the sagitta.
-  std::vector<std::vector<int>> corners;
-};
-
-std::array<int, 3> FaceVertices(const TriMesh& mesh, int f) {
-  std::array<int, 3> out{};
-  int k = 0;
-  for (auto it = mesh.cfv_iter(TriMesh::FaceHandle(f)); it.is_valid() && k < 3; ++it) {
-    out[k++] = it->idx();
-  }
-  return out;
+double Dihedral(const FacetMesh& fm, int f, int g) {
+  return std::atan2(fm.normal[f].cross(fm.normal[g]).norm(), fm.normal[f].dot(fm.normal[g]));
 }
 
-std::vector<int> NeighborFaces(const TriMesh& mesh, int f) {
-  std::vector<int> out;
-  for (auto it = mesh.cff_iter(TriMesh::FaceHandle(f)); it.is_valid(); ++it)
-    out.push_back(it->idx());
-  return out;
-}
-
-// True if x lies within `eps` of the segment from a to b, strictly between.
-bool OnSegment(const Eigen::Vector3d& x, const Eigen::Vector3d& a, const Eigen::Vector3d& b,
-               double eps) {
-  const Eigen::Vector3d ab = b - a;
-  const double t = ab.dot(x - a) / ab.squaredNorm();
-  return t > 0.0 && t < 1.0 && (a + t * ab - x).norm() < eps;
-}
-
-// The corners (Facets::corners) of one facet from its outline: each outline
-// vertex with the other ends of its outline edges. A vertex is a corner
-// unless it has two and lies on the segment between them, and the straight
-// run it is part of lies within `eps` of the segment between the corners
-// that end it (a densely tessellated arc bends too little at each vertex to
-// tell).
-std::vector<int> FacetCorners(const SegmentContext& c,
-                              const std::map<int, std::vector<int>>& outline, double eps) {
-  std::set<int> corners;
-  for (const auto& [v, ends] : outline) {
-    if (ends.size() != 2 ||
-        !OnSegment(c.position(v), c.position(ends[0]), c.position(ends[1]), eps)) {
-      corners.insert(v);
+// Facets in the order they seed: the flattest among their neighbours
+// first (the inside of a face before its border, where the facets around a
+// seed reach into the next face), then by index.
+std::vector<int> SeedOrder(const FacetMesh& fm) {
+  const int n = fm.facet_count();
+  std::vector<float> sharpest(n, 0.0f);
+  for (int f = 0; f < n; ++f) {
+    for (const int g : fm.across[f]) {
+      if (g >= 0) sharpest[f] = std::max(sharpest[f], static_cast<float>(Dihedral(fm, f, g)));
     }
   }
-  std::set<int> bent;  // straight locally, not between the run's corners
-  for (const int start : corners) {
-    for (const int first : outline.at(start)) {
-      std::vector<int> run;
-      int previous = start, current = first;
-      while (!corners.contains(current) && run.size() <= outline.size()) {
-        run.push_back(current);
-        const std::vector<int>& ends = outline.at(current);
-        const int next = ends[0] == previous ? ends[1] : ends[0];
-        previous = current;
-        current = next;
-      }
-      const bool straight =
-          corners.contains(current) && std::all_of(run.begin(), run.end(), [&](int v) {
-            return OnSegment(c.position(v), c.position(start), c.position(current), eps);
-          });
-      if (!straight) bent.insert(run.begin(), run.end());
-    }
-  }
-  corners.insert(bent.begin(), bent.end());
-  return {corners.begin(), corners.end()};
-}
-
-// The corners of each facet (Facets::corners).
-std::vector<std::vector<int>> OutlineCorners(const SegmentContext& c, const TriMesh& mesh,
-                                             const std::vector<int>& of_face,
-                                             std::size_t facet_count, double eps) {
-  // (facet, vertex, the other end of an outline edge at vertex)
-  std::vector<std::array<int, 3>> ends;
-  for (const auto heh : mesh.halfedges()) {
-    const auto face = mesh.face_handle(heh);
-    if (!face.is_valid()) continue;
-    const auto across = mesh.opposite_face_handle(heh);
-    const int m = of_face[face.idx()];
-    if (across.is_valid() && of_face[across.idx()] == m) continue;
-    const int a = mesh.from_vertex_handle(heh).idx();
-    const int b = mesh.to_vertex_handle(heh).idx();
-    ends.push_back({m, a, b});
-    ends.push_back({m, b, a});
-  }
-  std::sort(ends.begin(), ends.end());
-  ends.erase(std::unique(ends.begin(), ends.end()), ends.end());
-  std::vector<std::vector<int>> corners(facet_count);
-  for (std::size_t i = 0; i < ends.size();) {
-    const int m = ends[i][0];
-    std::map<int, std::vector<int>> outline;
-    for (; i < ends.size() && ends[i][0] == m; ++i) outline[ends[i][1]].push_back(ends[i][2]);
-    corners[m] = FacetCorners(c, outline, eps);
-  }
-  return corners;
-}
-
-Facets GroupFacets(const SegmentContext& c, const TriMesh& mesh, double eps) {
-  const int n_faces = static_cast<int>(mesh.n_faces());
-  Facets facets;
-  facets.of_face.assign(n_faces, -1);
-  // Largest faces first: a facet is judged flat against its first face's
-  // plane, and a sliver's normal is off by the rounding of its corners over
-  // its height (abc_00016513_gt.ply, float coordinates: two plane faces of
-  // 35 triangles stayed apart from the coplanar one of 252 beside them).
-  std::vector<int> by_area(n_faces);
-  std::iota(by_area.begin(), by_area.end(), 0);
-  std::vector<double> area(n_faces);
-  for (int f = 0; f < n_faces; ++f) area[f] = mesh.calc_face_area(TriMesh::FaceHandle(f));
-  std::stable_sort(by_area.begin(), by_area.end(), [&](int a, int b) { return area[a] > area[b]; });
-  std::vector<int> queue;
-  for (const int seed : by_area) {
-    if (facets.of_face[seed] >= 0) continue;
-    const std::array<int, 3> sv = FaceVertices(mesh, seed);
-    const Eigen::Vector3d n = ToEigen(mesh.normal(TriMesh::FaceHandle(seed)));
-    const Eigen::Vector3d origin = c.position(sv[0]);
-    const int id = static_cast<int>(facets.faces.size());
-    facets.faces.emplace_back();
-    facets.normal.push_back(n);
-    facets.of_face[seed] = id;
-    queue.assign(1, seed);
-    while (!queue.empty()) {
-      const int f = queue.back();
-      queue.pop_back();
-      facets.faces[id].push_back(f);
-      if (n.isZero()) continue;  // a degenerate face is a facet of its own
-      for (const int g : NeighborFaces(mesh, f)) {
-        if (facets.of_face[g] >= 0) continue;
-        bool flat = true;
-        for (const int v : FaceVertices(mesh, g)) {
-          flat = flat && std::abs(n.dot(c.position(v) - origin)) < eps;
-        }
-        if (!flat) continue;
-        facets.of_face[g] = id;
-        queue.push_back(g);
-      }
-    }
-    std::sort(facets.faces[id].begin(), facets.faces[id].end());
-  }
-  // Numbered by their first face, as the segmentation takes seeds in facet
-  // order.
-  std::vector<int> order(facets.faces.size());
+  std::vector<int> order(n);
   std::iota(order.begin(), order.end(), 0);
-  std::sort(order.begin(), order.end(),
-            [&](int a, int b) { return facets.faces[a].front() < facets.faces[b].front(); });
-  std::vector<std::vector<int>> faces(order.size());
-  std::vector<Eigen::Vector3d> normal(order.size());
-  for (std::size_t id = 0; id < order.size(); ++id) {
-    faces[id] = std::move(facets.faces[order[id]]);
-    normal[id] = facets.normal[order[id]];
-    for (const int f : faces[id]) facets.of_face[f] = static_cast<int>(id);
-  }
-  facets.faces = std::move(faces);
-  facets.normal = std::move(normal);
-  const double cos_max = std::cos(kMaxFacetAngleDeg * kPi / 180.0);
-  facets.neighbors.resize(facets.faces.size());
-  facets.smooth_neighbors.resize(facets.faces.size());
-  for (int f = 0; f < n_faces; ++f) {
-    const int a = facets.of_face[f];
-    for (const int g : NeighborFaces(mesh, f)) {
-      const int b = facets.of_face[g];
-      if (a == b) continue;
-      facets.neighbors[a].push_back(b);
-      // Either orientation: the facets of a closed part may not agree.
-      if (std::abs(facets.normal[a].dot(facets.normal[b])) > cos_max) {
-        facets.smooth_neighbors[a].push_back(b);
+  std::stable_sort(order.begin(), order.end(),
+                   [&](int a, int b) { return sharpest[a] < sharpest[b]; });
+  return order;
+}
+
+// Every facet's hypotheses: seeds in SeedOrder, skipping facets a
+// hypothesis already holds; each seed gives its plane, and, unless that
+// plane holds all its smooth neighbours, the first curved type that fits
+// around it.
+absl::StatusOr<std::vector<Hypothesis>> Hypotheses(const FacetMesh& fm, double tau,
+                                                   const RunContext& ctx) {
+  const int n = fm.facet_count();
+  const double crease = kSeedCreaseDeg * kPi / 180.0;
+  std::vector<char> covered(n, 0);
+  std::vector<Hypothesis> out;
+  const std::vector<int> order = SeedOrder(fm);
+  for (int k = 0; k < n; ++k) {
+    const int f = order[k];
+    if (k % kStopCheckStride == 0) {
+      MESHSEG_RETURN_IF_ERROR(ctx.CheckStop("segment"));
+      ctx.Progress("segment", 0.8 * k / n);
+    }
+    if (covered[f]) continue;
+    covered[f] = 1;
+    std::optional<Hypothesis> plane = PlaneAt(fm, f, tau);
+    bool flat_around = plane.has_value();
+    if (plane) {
+      for (const int g : fm.across[f]) {
+        if (g < 0 || fm.normal[g].isZero() || Dihedral(fm, f, g) >= crease) continue;
+        flat_around =
+            flat_around && std::binary_search(plane->support.begin(), plane->support.end(), g);
       }
+      for (const int g : plane->support) covered[g] = 1;
+      out.push_back(*std::move(plane));
+    }
+    if (flat_around) continue;
+    if (std::optional<Hypothesis> curved = CurvedAt(fm, f, tau)) {
+      for (const int g : curved->support) covered[g] = 1;
+      out.push_back(*std::move(curved));
     }
   }
-  for (auto* lists : {&facets.neighbors, &facets.smooth_neighbors}) {
-    for (std::vector<int>& list : *lists) {
-      std::sort(list.begin(), list.end());
-      list.erase(std::unique(list.begin(), list.end()), list.end());
-    }
-  }
-  facets.corners = OutlineCorners(c, mesh, facets.of_face, facets.faces.size(), eps);
-  return facets;
+  return out;
 }
 
-// The corners of `members` (facet ids), sorted, with area-weighted normals
-// of the members' faces.
-struct FacetSample {
-  std::vector<int> vertices;
-  std::vector<Eigen::Vector3d> points;
-  std::vector<Eigen::Vector3d> normals;
-};
-
-FacetSample SampleOf(const SegmentContext& c, const TriMesh& mesh, const Facets& facets,
-                     const std::vector<int>& members) {
-  std::vector<std::pair<int, Eigen::Vector3d>> contributions;
-  for (const int m : members) {
-    const std::vector<int>& corners = facets.corners[m];
-    for (const int f : facets.faces[m]) {
-      const TriMesh::FaceHandle fh(f);
-      const Eigen::Vector3d area_normal = mesh.calc_face_area(fh) * ToEigen(mesh.normal(fh));
-      for (const int x : FaceVertices(mesh, f)) {
-        if (std::binary_search(corners.begin(), corners.end(), x)) {
-          contributions.emplace_back(x, area_normal);
-        }
-      }
-    }
-  }
-  std::sort(contributions.begin(), contributions.end(),
-            [](const auto& a, const auto& b) { return a.first < b.first; });
-  FacetSample s;
-  for (std::size_t i = 0; i < contributions.size();) {
-    Eigen::Vector3d n = Eigen::Vector3d::Zero();
-    std::size_t j = i;
-    for (; j < contributions.size() && contributions[j].first == contributions[i].first; ++j) {
-      // Facet normals of a closed part may face either way; align to the first.
-      const Eigen::Vector3d& m = contributions[j].second;
-      n += (n.dot(m) < 0.0 ? -m : m);
-    }
-    s.vertices.push_back(contributions[i].first);
-    s.points.push_back(c.position(contributions[i].first));
-    s.normals.push_back(n.norm() > 0.0 ? Eigen::Vector3d(n.normalized())
-                                       : Eigen::Vector3d::UnitZ());
-    i = j;
-  }
-  return s;
-}
-
-// The first of cylinder, cone, sphere, torus that every point of `s` meets
-// within `eps`, with more points than parameters + 2; type kQuadric if none.
-std::pair<SurfaceType, Surface> ExactCurvedFit(const FacetSample& s, double eps) {
-  for (const SurfaceType type :
-       {SurfaceType::kCylinder, SurfaceType::kCone, SurfaceType::kSphere, SurfaceType::kTorus}) {
-    if (static_cast<int>(s.points.size()) < ParameterCount(type) + 3) continue;
-    const FitResult fit =
-        FitOfType(type, {.points = s.points, .normals = s.normals, .weights = {}});
-    if (fit.ok() && fit.max_distance < eps) return {type, fit.surface};
-  }
-  return {SurfaceType::kQuadric, Surface{}};
-}
-
-// True if facet m is one of the facets of `surface`: every corner lies on
-// it, and the facet's normal is within kMaxChordAngleDeg of the surface
-// normal at each corner (not a chord across it). Its other vertices lie on
-// straight runs between corners: on the surface along a ruling, or under it
-// on a chord by at most kMaxSagitta l_avg (a flat cut across a cylinder
-// has its corners on the cylinder too, and its edges far under it).
-bool FacetOnSurface(const SegmentContext& c, const TriMesh& mesh, const Facets& facets, int m,
-                    const Surface& surface, double eps) {
-  const double cos_max = std::cos(kMaxChordAngleDeg * kPi / 180.0);
-  for (const int v : facets.corners[m]) {
-    const Projection pr = Project(surface, c.position(v), Eigen::Vector3d::Zero());
-    if (!(std::abs(pr.distance) < eps) || !(std::abs(pr.normal.dot(facets.normal[m])) > cos_max)) {
-      return false;
-    }
-  }
-  const double sagitta = kMaxSagitta * c.mean_edge_length;
-  for (const int f : facets.faces[m]) {
-    for (const int v : FaceVertices(mesh, f)) {
-      const Projection pr = Project(surface, c.position(v), Eigen::Vector3d::Zero());
-      if (!(std::abs(pr.distance) < sagitta)) return false;
-    }
-  }
-  return true;
-}
-
-// The angle facet m spans around the line through `origin` along `axis`:
-// the widest pair of its corners seen from the line (a facet of a curved
-// face spans less than half a turn).
-double SpanAroundAxis(const SegmentContext& c, const Facets& facets, int m,
-                      const Eigen::Vector3d& origin, const Eigen::Vector3d& axis) {
-  std::vector<Eigen::Vector3d> across;
-  for (const int v : facets.corners[m]) {
-    const Eigen::Vector3d d = c.position(v) - origin;
-    const Eigen::Vector3d r = d - d.dot(axis) * axis;
-    if (r.norm() > 0.0) across.push_back(r.normalized());
-  }
-  double widest = 0.0;
-  for (std::size_t i = 0; i < across.size(); ++i) {
-    for (std::size_t j = i + 1; j < across.size(); ++j) {
-      widest =
-          std::max(widest, std::atan2(across[i].cross(across[j]).norm(), across[i].dot(across[j])));
-    }
-  }
-  return widest;
-}
-
-// True if `surface` is a cylinder or cone and the facets of `seed` step
-// around its axis evenly: the widest spans at most kMaxEvenStepRatio times
-// the narrowest. (A sphere or torus is stepped in two directions; it is not
-// judged.)
-bool StepsEvenly(const SegmentContext& c, const Facets& facets, const std::vector<int>& seed,
-                 const Surface& surface) {
-  Eigen::Vector3d origin, axis;
-  if (const auto* cylinder = std::get_if<Cylinder>(&surface)) {
-    origin = cylinder->axis_origin;
-    axis = cylinder->axis_direction.normalized();
-  } else if (const auto* cone = std::get_if<Cone>(&surface)) {
-    origin = cone->apex;
-    axis = cone->axis_direction.normalized();
-  } else {
-    return false;
-  }
-  double narrowest = std::numeric_limits<double>::infinity(), widest = 0.0;
-  for (const int m : seed) {
-    const double span = SpanAroundAxis(c, facets, m, origin, axis);
-    narrowest = std::min(narrowest, span);
-    widest = std::max(widest, span);
-  }
-  return widest <= kMaxEvenStepRatio * narrowest && narrowest > 0.0;
-}
-
-// Seed sets around facet p, cheapest first: chains of three (p, a smooth
-// neighbour, and a smooth neighbour of either), then its whole smooth
-// neighbourhood two steps deep.
-std::vector<std::vector<int>> SeedSets(const Facets& facets, const std::vector<int>& taken, int p) {
-  auto free_neighbors = [&](int m) {
-    std::vector<int> out;
-    for (const int q : facets.smooth_neighbors[m]) {
-      if (taken[q] < 0) out.push_back(q);
-    }
-    return out;
+// The edge-connected pieces of `facets` (sorted).
+std::vector<std::vector<int>> Pieces(const FacetMesh& fm, const std::vector<int>& facets) {
+  std::vector<std::vector<int>> pieces;
+  std::vector<char> seen(facets.size(), 0);
+  auto index = [&](int g) {
+    const auto it = std::lower_bound(facets.begin(), facets.end(), g);
+    return it != facets.end() && *it == g ? static_cast<int>(it - facets.begin()) : -1;
   };
-  std::vector<std::vector<int>> sets;
-  const std::vector<int> first = free_neighbors(p);
-  if (first.empty()) return sets;
-  std::vector<int> deep = first;
-  deep.push_back(p);
-  for (const int q : first) {
-    for (const int r : free_neighbors(q)) deep.push_back(r);
-  }
-  std::sort(deep.begin(), deep.end());
-  deep.erase(std::unique(deep.begin(), deep.end()), deep.end());
-  for (const int q : first) {
-    std::vector<int> thirds = first;
-    for (const int r : free_neighbors(q)) thirds.push_back(r);
-    for (const int r : thirds) {
-      if (r == p || r <= q) continue;
-      sets.push_back({p, q, r});
+  for (std::size_t i = 0; i < facets.size(); ++i) {
+    if (seen[i]) continue;
+    seen[i] = 1;
+    std::vector<int> piece = {facets[i]};
+    for (std::size_t k = 0; k < piece.size(); ++k) {
+      for (const int g : fm.across[piece[k]]) {
+        const int j = g < 0 ? -1 : index(g);
+        if (j < 0 || seen[j]) continue;
+        seen[j] = 1;
+        piece.push_back(g);
+      }
     }
+    std::sort(piece.begin(), piece.end());
+    pieces.push_back(std::move(piece));
   }
-  sets.push_back(deep);
-  return sets;
+  return pieces;
 }
 
-// Tries the seed sets of facet p in order (SeedSets); the first whose
-// corners a curved type meets exactly, with every facet on it, becomes the
-// next region of `out` and grows over the facets on its surface. With
-// `even_steps`, only a cylinder or cone seed stepping evenly around its
-// axis is taken (StepsEvenly). True if a region was made.
-bool SeedRegionAt(const SegmentContext& c, const TriMesh& mesh, const Facets& facets, double eps,
-                  int p, bool even_steps, std::vector<int>* taken, FaceRegions* out) {
-  for (const std::vector<int>& seed : SeedSets(facets, *taken, p)) {
-    if (static_cast<int>(seed.size()) < kMinFacets) continue;
-    const FacetSample sample = SampleOf(c, mesh, facets, seed);
-    if (sample.points.size() > kMaxSeedVertices) continue;
-    auto [type, surface] = ExactCurvedFit(sample, eps);
-    // A fit through the corners of a few facets can still cut across them
-    // (two parallel wall lines lie on a cylinder of any radius above half
-    // their distance, with its normals along the wall).
-    if (type == SurfaceType::kQuadric || !std::all_of(seed.begin(), seed.end(), [&](int m) {
-          return FacetOnSurface(c, mesh, facets, m, surface, eps);
-        })) {
+// The lazy greedy cover (exact_facets.h): returns the owner region of each
+// facet (-1 = none) and appends the regions.
+std::vector<int> Claim(const FacetMesh& fm, const std::vector<Hypothesis>& hypotheses,
+                       std::vector<ExactRegion>* regions) {
+  std::vector<int> owner(fm.facet_count(), -1);
+  std::vector<int> stamp(fm.points.size(), -1);
+  int stamp_id = 0;
+  auto free_corners = [&](const Hypothesis& h) {
+    ++stamp_id;
+    int count = 0;
+    for (const int f : h.support) {
+      if (owner[f] >= 0) continue;
+      for (const int v : fm.corners[f]) {
+        if (stamp[v] != stamp_id) stamp[v] = stamp_id, ++count;
+      }
+    }
+    return count;
+  };
+  // (free corners, simpler first, earlier first)
+  using Entry = std::tuple<int, int, int>;
+  std::priority_queue<Entry> queue;
+  for (std::size_t i = 0; i < hypotheses.size(); ++i) {
+    queue.emplace(free_corners(hypotheses[i]), -Simplicity(hypotheses[i].type),
+                  -static_cast<int>(i));
+  }
+  while (!queue.empty()) {
+    const auto [key, simplicity, minus_index] = queue.top();
+    queue.pop();
+    const Hypothesis& h = hypotheses[-minus_index];
+    const int now = free_corners(h);
+    if (now < key) {
+      if (now > 0) queue.emplace(now, simplicity, minus_index);
       continue;
     }
-    if (even_steps && !StepsEvenly(c, facets, seed, surface)) continue;
-    const int id = static_cast<int>(out->regions.size());
-    std::vector<int> members = seed;
-    for (const int m : members) (*taken)[m] = id;
-    // Grown over the facets on the surface, then refitted to all of them
-    // and grown on: a fit to a few facets of a narrow arc extrapolates
-    // (abc_00016513_gt.ply's outer cylinder, r 0.4286 from its seed 0.4284,
-    // misses the next facets by 2e-5 to 1e-4 against eps 1.8e-5).
-    FacetSample all;
-    for (std::size_t grown_from = 0, round = 0;
-         grown_from < members.size() && round < kMaxGrowRounds; ++round) {
-      const std::size_t before = members.size();
-      for (std::size_t k = grown_from; k < members.size(); ++k) {
-        for (const int q : facets.neighbors[members[k]]) {
-          if ((*taken)[q] >= 0 || !FacetOnSurface(c, mesh, facets, q, surface, eps)) continue;
-          (*taken)[q] = id;
-          members.push_back(q);
-        }
-      }
-      all = SampleOf(c, mesh, facets, members);
-      const FitResult refit =
-          FitOfType(type, {.points = all.points, .normals = all.normals, .weights = {}});
-      if (!refit.ok() || !(refit.max_distance < eps)) break;
-      surface = refit.surface;
-      // The refitted surface may take facets the first one missed next
-      // to any member.
-      grown_from = members.size() > before ? 0 : members.size();
+    std::vector<int> free;
+    for (const int f : h.support) {
+      if (owner[f] < 0) free.push_back(f);
     }
-    out->regions.push_back({.type = type, .surface = surface, .vertices = all.vertices});
-    return true;
+    for (std::vector<int>& piece : Pieces(fm, free)) {
+      if (!HoldsEvidence(fm, h.type, piece)) continue;
+      const int id = static_cast<int>(regions->size());
+      for (const int f : piece) owner[f] = id;
+      regions->push_back({.type = h.type, .surface = h.surface, .facets = std::move(piece)});
+    }
   }
-  return false;
+  return owner;
+}
+
+// The largest dihedral angle between edge neighbours inside one curved
+// region: the tessellation's angular step.
+double AngularStep(const FacetMesh& fm, const std::vector<int>& owner,
+                   const std::vector<ExactRegion>& regions) {
+  double step = 0.0;
+  for (const ExactRegion& r : regions) {
+    if (r.type == SurfaceType::kPlane) continue;
+    for (const int f : r.facets) {
+      for (const int g : fm.across[f]) {
+        if (g >= 0 && owner[g] == owner[f]) step = std::max(step, Dihedral(fm, f, g));
+      }
+    }
+  }
+  return step > 0.0 ? step : kDefaultAngularStep;
+}
+
+// A facet no hypothesis took whose corners all lie on the surface of a
+// region across one of its edges (within tau, or on a chord of it) joins
+// that region: it fails the chord criterion there (a sliver spanning a rim)
+// but holds no evidence of a surface of its own, its corners fixing only
+// its own plane. Of several such neighbours, the one sharing the most edges
+// with it; repeated while facets join.
+void JoinNeighbours(const FacetMesh& fm, double tau, std::vector<int>* owner,
+                    std::vector<ExactRegion>* regions) {
+  const int n = fm.facet_count();
+  for (bool joined = true; joined;) {
+    joined = false;
+    for (int f = 0; f < n; ++f) {
+      if ((*owner)[f] >= 0 || fm.normal[f].isZero()) continue;
+      int best = -1, best_edges = 0;
+      for (const int g : fm.across[f]) {
+        const int r = g < 0 ? -1 : (*owner)[g];
+        if (r < 0 || (*regions)[r].type == SurfaceType::kFreeform) continue;
+        const int edges = static_cast<int>(
+            std::count_if(fm.across[f].begin(), fm.across[f].end(),
+                          [&](int h) { return h >= 0 && (*owner)[h] == r; }));
+        if (edges <= best_edges) continue;
+        const Surface& surface = (*regions)[r].surface;
+        const bool on = std::all_of(fm.corners[f].begin(), fm.corners[f].end(), [&](int v) {
+          return std::abs(SignedDistance(surface, fm.points[v])) <= tau ||
+                 ChordOnSurface(fm, v, surface, tau);
+        });
+        if (on) best = r, best_edges = edges;
+      }
+      if (best < 0) continue;
+      (*owner)[f] = best;
+      (*regions)[best].facets.push_back(f);
+      joined = true;
+    }
+  }
+  for (ExactRegion& r : *regions) std::sort(r.facets.begin(), r.facets.end());
+}
+
+// The largest distance of the corners of `facets` from `surface` (0 for a
+// corner on a chord of it, test (1) of facet_on_surface.h).
+double FarthestCorner(const FacetMesh& fm, const std::vector<int>& facets, const Surface& surface,
+                      double tau) {
+  double farthest = 0.0;
+  for (const int f : facets) {
+    for (const int v : fm.corners[f]) {
+      const double d = std::abs(SignedDistance(surface, fm.points[v]));
+      if (d > tau && ChordOnSurface(fm, v, surface, tau)) continue;
+      farthest = std::max(farthest, d);
+    }
+  }
+  return farthest;
+}
+
+// A piece of facets no hypothesis took (edge-connected) without a vertex of
+// its own, every corner also a corner of a region found, fills a gap
+// between faces found: the tessellator put no vertex inside the face it
+// belongs to, so nothing in the file fixes that face apart from its
+// boundary, which the neighbours hold. Boundary vertices lie on a B-rep
+// edge's curve, which lies on each face's surface only within the edge's
+// tolerance, coarser than the file's rounding (in real CAD exports up to
+// about 1e-5 of the part's diagonal).
+// Such a piece joins the neighbouring region whose surface explains every
+// facet of it (facet_on_surface.h) at the smallest tolerance, if that
+// tolerance is within kLoosestExact of the diagonal, the loosest an exact
+// file's vertices can be off their surfaces (exact_tolerance.h); a face of
+// its own lies farther off every neighbour's surface and stays apart.
+void JoinGapPieces(const FacetMesh& fm, double tau, std::vector<int>* owner,
+                   std::vector<ExactRegion>* regions) {
+  const int n = fm.facet_count();
+  std::vector<char> found_corner(fm.points.size(), 0);
+  std::vector<int> leftover;
+  for (int f = 0; f < n; ++f) {
+    if ((*owner)[f] >= 0) {
+      for (const int v : fm.corners[f]) found_corner[v] = 1;
+    } else if (!fm.normal[f].isZero()) {
+      leftover.push_back(f);
+    }
+  }
+  const double loosest = kLoosestExact * fm.diagonal;
+  for (const std::vector<int>& piece : Pieces(fm, leftover)) {
+    const bool own_vertex = std::any_of(piece.begin(), piece.end(), [&](int f) {
+      return std::any_of(fm.corners[f].begin(), fm.corners[f].end(),
+                         [&](int v) { return !found_corner[v]; });
+    });
+    if (own_vertex) continue;
+    std::vector<int> neighbours;
+    for (const int f : piece) {
+      for (const int g : fm.across[f]) {
+        if (g >= 0 && (*owner)[g] >= 0) neighbours.push_back((*owner)[g]);
+      }
+    }
+    std::sort(neighbours.begin(), neighbours.end());
+    neighbours.erase(std::unique(neighbours.begin(), neighbours.end()), neighbours.end());
+    int best = -1;
+    double best_tolerance = loosest;
+    for (const int r : neighbours) {
+      const Surface& surface = (*regions)[r].surface;
+      const double tolerance = std::max(tau, FarthestCorner(fm, piece, surface, tau));
+      if (tolerance > best_tolerance) continue;
+      const bool on = std::all_of(piece.begin(), piece.end(),
+                                  [&](int f) { return FacetOnSurface(fm, f, surface, tolerance); });
+      if (on) best = r, best_tolerance = tolerance;
+    }
+    if (best < 0) continue;
+    for (const int f : piece) (*owner)[f] = best;
+    std::vector<int>& facets = (*regions)[best].facets;
+    facets.insert(facets.end(), piece.begin(), piece.end());
+    std::sort(facets.begin(), facets.end());
+  }
+}
+
+// Facets no hypothesis took: pieces over edges no sharper than `step`; a
+// piece of one facet is a plane, a larger one FREEFORM.
+void FreeformRegions(const FacetMesh& fm, double step, std::vector<int>* owner,
+                     std::vector<ExactRegion>* regions) {
+  const int n = fm.facet_count();
+  for (int f = 0; f < n; ++f) {
+    if ((*owner)[f] >= 0 || fm.normal[f].isZero()) continue;
+    const int id = static_cast<int>(regions->size());
+    std::vector<int> piece = {f};
+    (*owner)[f] = id;
+    for (std::size_t k = 0; k < piece.size(); ++k) {
+      for (const int g : fm.across[piece[k]]) {
+        if (g < 0 || (*owner)[g] >= 0 || fm.normal[g].isZero() ||
+            Dihedral(fm, piece[k], g) > step) {
+          continue;
+        }
+        (*owner)[g] = id;
+        piece.push_back(g);
+      }
+    }
+    std::sort(piece.begin(), piece.end());
+    ExactRegion region{
+        .type = SurfaceType::kPlane, .surface = Plane{fm.Centroid(f), fm.normal[f]}, .facets = {}};
+    if (piece.size() > 1) {
+      region.type = SurfaceType::kFreeform;
+      std::vector<Eigen::Vector3d> points, normals;
+      for (const int g : piece) {
+        points.push_back(fm.Centroid(g));
+        normals.push_back(fm.normal[g]);
+      }
+      const FitResult quadric = FitQuadric({.points = points, .normals = normals, .weights = {}});
+      region.surface = quadric.ok() ? quadric.surface : Surface{Quadric{}};
+    }
+    region.facets = std::move(piece);
+    regions->push_back(std::move(region));
+  }
+  // A degenerate facet joins the region of a neighbour.
+  for (int f = 0; f < n; ++f) {
+    if ((*owner)[f] >= 0) continue;
+    for (const int g : fm.across[f]) {
+      if (g >= 0 && (*owner)[g] >= 0) {
+        (*owner)[f] = (*owner)[g];
+        (*regions)[(*owner)[g]].facets.push_back(f);
+        break;
+      }
+    }
+    if ((*owner)[f] < 0) {
+      (*owner)[f] = static_cast<int>(regions->size());
+      regions->push_back(
+          ExactRegion{.type = SurfaceType::kPlane, .surface = Plane{}, .facets = {f}});
+    }
+  }
 }
 
 }  // namespace
 
-bool IsCoarseExact(const CurvatureField& curvature, const SegmentEstimates& estimates) {
-  if (curvature.sharp.empty()) return false;
-  if (!(estimates.noise_sigma <= kExactNoise * estimates.mean_edge_length)) return false;
-  const auto sharp = std::count(curvature.sharp.begin(), curvature.sharp.end(), 1);
-  return sharp > kCoarseSharpShare * static_cast<double>(curvature.sharp.size());
-}
-
-absl::StatusOr<FaceRegions> SegmentExactFacets(const SegmentContext& c, const TriMesh& mesh) {
-  const double eps = kExactTolerance * c.mean_edge_length;
-  const Facets facets = GroupFacets(c, mesh, eps);
-  const int n_facets = static_cast<int>(facets.faces.size());
-  std::vector<int> taken(n_facets, -1);
-  FaceRegions out;
-  // Cylinder and cone seeds that step evenly around their axis, as a
-  // tessellator steps an arc, go first: a flat face between the last facets
-  // of two equal rounds lies on a circle exactly too (an isosceles trapezoid
-  // is cyclic), and whichever was seeded first took the rounds' end facets.
-  // The rest follow in the second pass, in facet order as before: CAD fans
-  // of single triangles step unevenly (abc_00007974_5.obj's cylinders 1.5 to
-  // 2, abc_00016513_gt.ply's r 0.107 ones 6), and spheres and tori are not
-  // judged (let first, the corners of a few facets of abc_00016513_gt.ply's
-  // r 0.43 cylinder gave spheres, and the cylinder came in 8 pieces).
-  for (const bool even_steps : {true, false}) {
-    for (int p = 0; p < n_facets; ++p) {
-      if (taken[p] >= 0) continue;
-      if (p % 256 == 0) MESHSEG_RETURN_IF_ERROR(c.run->CheckStop("segment"));
-      SeedRegionAt(c, mesh, facets, eps, p, even_steps, &taken, &out);
+absl::StatusOr<ExactFacets> SegmentFacets(const FacetMesh& fm, double tau, const RunContext& ctx) {
+  MESHSEG_ASSIGN_OR_RETURN(const std::vector<Hypothesis> hypotheses, Hypotheses(fm, tau, ctx));
+  ExactFacets out;
+  std::vector<int> owner = Claim(fm, hypotheses, &out.regions);
+  MESHSEG_RETURN_IF_ERROR(ctx.CheckStop("segment"));
+  out.angular_step = AngularStep(fm, owner, out.regions);
+  // Each analytic region refitted on all of its corners.
+  for (ExactRegion& r : out.regions) {
+    if (const std::optional<Surface> refit = FitExactly(fm, r.type, r.facets, tau)) {
+      r.surface = *refit;
     }
   }
-  // The facets left are planes.
-  for (int p = 0; p < n_facets; ++p) {
-    if (taken[p] >= 0) continue;
-    taken[p] = static_cast<int>(out.regions.size());
-    const FacetSample s = SampleOf(c, mesh, facets, {p});
-    const FitResult plane =
-        FitOfType(SurfaceType::kPlane, {.points = s.points, .normals = {}, .weights = {}});
-    out.regions.push_back({.type = SurfaceType::kPlane,
-                           .surface = plane.ok() ? plane.surface : Surface{},
-                           .vertices = s.vertices});
-  }
-  out.face_labels.resize(mesh.n_faces());
-  for (std::size_t f = 0; f < out.face_labels.size(); ++f) {
-    out.face_labels[f] = taken[facets.of_face[f]];
-  }
+  JoinNeighbours(fm, tau, &owner, &out.regions);
+  JoinGapPieces(fm, tau, &owner, &out.regions);
+  FreeformRegions(fm, out.angular_step, &owner, &out.regions);
+  out.face_labels = std::move(owner);
   return out;
-}
-
-absl::Status ExpectExactTessellation(const Mesh& mesh, const FaceRegions& regions) {
-  std::vector<int64_t> faces(regions.regions.size(), 0);
-  for (const int r : regions.face_labels) ++faces[r];
-  int64_t explained = 0;
-  for (std::size_t r = 0; r < faces.size(); ++r) {
-    if (regions.regions[r].type != SurfaceType::kPlane || faces[r] > 1) explained += faces[r];
-  }
-  const double share =
-      static_cast<double>(explained) / std::max<std::size_t>(regions.face_labels.size(), 1);
-  if (share >= kMinExactShare) return absl::OkStatus();
-  return absl::FailedPreconditionError(absl::StrCat(
-      "segment: \"", mesh.name, "\" is not an exact tessellation: ", std::round(100.0 * share),
-      "% of its faces lie in exact surfaces or planes of more than one face (need ",
-      std::round(100.0 * kMinExactShare), "%)"));
 }
 
 }  // namespace meshseg::segment_internal

@@ -12,7 +12,6 @@
 #include "segment/decide_type.h"
 #include "segment/dissolve_crease_bands.h"
 #include "segment/estimate_noise.h"
-#include "segment/exact_facets.h"
 #include "segment/finalize_regions.h"
 #include "segment/give_back_rows.h"
 #include "segment/initial_segmentation.h"
@@ -41,7 +40,24 @@ absl::Status ValidateParams(const SegmentParams& p) {
   if (!(p.alpha > 0.0) || !(p.alpha <= 1.0)) {
     return absl::InvalidArgumentError(absl::StrCat("segment: alpha must be in (0, 1], got ", p.alpha));
   }
+  if (p.exact_tolerance && !(*p.exact_tolerance > 0.0 && std::isfinite(*p.exact_tolerance))) {
+    return absl::InvalidArgumentError(
+        absl::StrCat("segment: exact_tolerance must be > 0, got ", *p.exact_tolerance));
+  }
   return absl::OkStatus();
+}
+
+// Each region a surface of its own (the scan path does not join them).
+void OwnSurfaces(Segmentation* seg) {
+  for (Region& r : seg->regions) {
+    r.surface_id = r.id;
+    seg->surfaces.push_back({.id = r.id,
+                             .type = r.type,
+                             .surface = r.surface,
+                             .regions = {r.id},
+                             .rms_distance = r.rms_distance,
+                             .max_distance = r.max_distance});
+  }
 }
 
 }  // namespace
@@ -59,26 +75,20 @@ absl::StatusOr<Segmentation> Segment(const Mesh& mesh, const CurvatureField& cur
         "\" has ", mesh.tri.n_vertices()));
   }
   MESHSEG_RETURN_IF_ERROR(ctx.CheckStop("segment"));
+  if (params.exact != ExactMode::kNever) {
+    const Exactness exactness = params.exact == ExactMode::kAuto
+                                    ? EstimateExactness(mesh, params.exact_tolerance)
+                                    : Exactness{};
+    if (params.exact == ExactMode::kAlways || exactness.exact) {
+      MESHSEG_ASSIGN_OR_RETURN(Segmentation seg, SegmentExactFacets(mesh, params, ctx));
+      seg.estimates.exact_share = exactness.share;
+      return seg;
+    }
+  }
   const SegmentEstimates estimates = EstimateNoise(curvature, MeanEdgeLength(mesh.tri), params);
   SegmentContext c = MakeSegmentContext(mesh.tri, curvature, estimates, params.alpha, ctx);
   c.on_facets = params.on_facets;
 
-  // A coarse CAD export has no curvature seeds on its curved faces, but
-  // exact vertices: it is segmented facet by facet (exact_facets.h).
-  if (params.exact_facets || IsCoarseExact(curvature, estimates)) {
-    MESHSEG_ASSIGN_OR_RETURN(const FaceRegions exact, SegmentExactFacets(c, mesh.tri));
-    Segmentation seg = FinalizeFaceRegions(c, mesh.tri, exact.face_labels, exact.regions);
-    seg.estimates = estimates;
-    if (params.exact_facets) {
-      MESHSEG_RETURN_IF_ERROR(ExpectExactTessellation(mesh, exact));
-      // The local fits behind the noise estimate straddle walls thinner
-      // than their neighbourhoods; the facets are exact by construction.
-      seg.estimates.noise_sigma = 0.0;
-      seg.estimates.distance_tolerance = params.distance_tolerance * estimates.mean_edge_length;
-    }
-    ctx.Progress("segment", 1.0);
-    return seg;
-  }
   std::vector<int> labels(c.vertex_count(), -1);
   std::vector<RegionState> regions;
   MESHSEG_RETURN_IF_ERROR(GrowInitialRegions(c, &labels, &regions));
@@ -156,6 +166,7 @@ absl::StatusOr<Segmentation> Segment(const Mesh& mesh, const CurvatureField& cur
   MESHSEG_RETURN_IF_ERROR(ctx.CheckStop("segment"));
   Segmentation seg = FinalizeRegions(c, mesh.tri, std::move(labels), std::move(regions));
   seg.estimates = estimates;
+  OwnSurfaces(&seg);
   ctx.Progress("segment", 1.0);
   return seg;
 }

@@ -13,6 +13,21 @@ using ::testing::HasSubstr;
 using testing_files::Message;
 using testing_files::WriteTemp;
 
+TEST(DetectFileFormat, KnowsVolumesByExtensionAndMagic) {
+  EXPECT_EQ(*DetectFileFormat(WriteTemp("v.nrrd", "x")), FileFormat::kNrrd);
+  EXPECT_EQ(*DetectFileFormat(WriteTemp("v.NHDR", "x")), FileFormat::kNrrd);
+  EXPECT_EQ(*DetectFileFormat(WriteTemp("v.mha", "x")), FileFormat::kMha);
+  EXPECT_EQ(*DetectFileFormat(WriteTemp("v.mhd", "x")), FileFormat::kMhd);
+  EXPECT_EQ(*DetectFileFormat(WriteTemp("v.raw", "x")), FileFormat::kRaw);
+  EXPECT_EQ(*DetectFileFormat(WriteTemp("scan", "NRRD0004\ntype: uint8\n")), FileFormat::kNrrd);
+  EXPECT_EQ(*DetectFileFormat(WriteTemp("scan2", "ObjectType = Image\nNDims = 3\n")), FileFormat::kMha);
+  EXPECT_TRUE(IsVolumeFormat(FileFormat::kRaw));
+  EXPECT_FALSE(IsVolumeFormat(FileFormat::kPly));
+  const absl::StatusOr<Mesh> mesh = ReadMesh(WriteTemp("ct.nrrd", "NRRD0004\n"));
+  ASSERT_FALSE(mesh.ok());
+  EXPECT_THAT(Message(mesh.status()), ::testing::HasSubstr("volume is not a mesh"));
+}
+
 TEST(DetectFileFormat, UsesExtensionInAnyCase) {
   EXPECT_EQ(*DetectFileFormat(WriteTemp("a.STL", "x")), FileFormat::kStl);
   EXPECT_EQ(*DetectFileFormat(WriteTemp("a.Obj", "x")), FileFormat::kObj);

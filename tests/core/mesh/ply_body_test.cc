@@ -61,5 +61,51 @@ TEST(ReadPlyData, RejectsExtraValuesOnAsciiLine) {
               ::testing::HasSubstr("line 8: extra values after vertex"));
 }
 
+// Found by fuzz_ply_ascii (fuzz/regressions/ply_ascii/): a list length too
+// large for an integer was converted to one (undefined behaviour) and, for
+// an element other than face, trusted as a loop bound.
+TEST(ReadPlyData, RejectsListLengthsThatAreNotCountsTheFileCanHold) {
+  const std::string head =
+      "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\n"
+      "property float z\nelement extra 1\nproperty list uchar int values\nend_header\n1 2 3\n";
+  for (const char* length : {"3.7e113", "2.5", "nan", "40"}) {
+    const absl::StatusOr<PlyData> data = ReadPlyData(head + length + " 1 2 3\n", kSrc, 100);
+    ASSERT_EQ(data.status().code(), absl::StatusCode::kInvalidArgument) << length;
+    EXPECT_THAT(testing_files::Message(data.status()),
+                ::testing::MatchesRegex(".*line 11: list length .* of values is not a whole number of "
+                                        "values the [0-9]+ bytes left can hold"))
+        << length;
+  }
+  EXPECT_TRUE(ReadPlyData(head + "3 1 2 3\n", kSrc, 100).ok());
+
+  std::string binary =
+      "ply\nformat binary_little_endian 1.0\nelement vertex 1\nproperty uchar x\nproperty uchar y\n"
+      "property uchar z\nelement extra 1\nproperty list uint uchar values\nend_header\n";
+  binary += std::string("\1\2\3", 3);
+  testing_files::AppendRaw<uint32_t>(binary, 4000000000u);
+  const absl::StatusOr<PlyData> data = ReadPlyData(binary, kSrc, 100);
+  ASSERT_EQ(data.status().code(), absl::StatusCode::kInvalidArgument);
+  EXPECT_THAT(testing_files::Message(data.status()),
+              ::testing::HasSubstr("list length 4000000000 of values is not a whole number of "
+                                   "values the 0 bytes left can hold"));
+}
+
+// Found by fuzz_ply_binary (fuzz/regressions/ply_binary/): a second vertex
+// element with a partial set of normals wrote past the first one's normals.
+TEST(ReadPlyData, RejectsASecondVertexOrFaceElement) {
+  const std::string vertex =
+      "element vertex 1\nproperty float x\nproperty float y\nproperty float z\n"
+      "property float nx\nproperty float ny\nproperty float nz\n";
+  const std::string face = "element face 0\nproperty list uchar int vertex_indices\n";
+  for (const std::string& elements : {vertex + vertex, vertex + face + face}) {
+    const absl::StatusOr<PlyData> data =
+        ReadPlyData("ply\nformat ascii 1.0\n" + elements + "end_header\n1 2 3 0 0 1\n1 2 3 0 0 1\n",
+                    kSrc, 100);
+    ASSERT_EQ(data.status().code(), absl::StatusCode::kInvalidArgument);
+    EXPECT_THAT(testing_files::Message(data.status()),
+                ::testing::MatchesRegex(".*element (vertex|face) declared twice"));
+  }
+}
+
 }  // namespace
 }  // namespace meshseg::mesh_internal

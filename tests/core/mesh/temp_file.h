@@ -57,8 +57,8 @@ using Tri = std::array<std::array<float, 3>, 3>;
 // Binary STL bytes of `triangles`; `declared` overrides the count field.
 inline std::string BinaryStl(const std::vector<Tri>& triangles, int64_t declared = -1,
                              std::string_view header = "binary stl written by a test") {
-  std::string out(80, ' ');
-  out.replace(0, header.size(), header);
+  std::string out(header.substr(0, 80));  // the 80-byte header, space-padded
+  out.resize(80, ' ');
   AppendRaw<uint32_t>(out, static_cast<uint32_t>(declared >= 0 ? declared : triangles.size()));
   for (const Tri& t : triangles) {
     for (int i = 0; i < 3; ++i) AppendRaw<float>(out, 0.0f);

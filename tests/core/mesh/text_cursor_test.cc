@@ -53,6 +53,7 @@ TEST(ParseNumbers, AcceptsWholeTokensOnly) {
 
 TEST(Shorten, CutsLongTokens) {
   EXPECT_EQ(Shorten(std::string(100, 'x')).size(), 24u);
+  EXPECT_EQ(Shorten("\xff\xfe\t3"), "\\xff\\xfe\\x093");
   EXPECT_EQ(StripLeadingSpace(" \n\tsolid"), "solid");
 }
 

@@ -4,6 +4,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include "meshseg/label_color.h"
 #include "meshseg/mesh.h"
 #include "meshseg/point_cloud.h"
 #include "temp_file.h"
@@ -89,6 +90,7 @@ TEST(WriteColoredPly, GivesEachLabelItsOwnColourAndGreyToMinusOne) {
   EXPECT_EQ(colors[10], (std::array<uint8_t, 3>{128, 128, 128}));
   std::set<std::array<uint8_t, 3>> distinct(colors.begin(), colors.end());
   EXPECT_EQ(distinct.size(), 7u);  // labels 0..5 and grey
+  EXPECT_EQ(colors[2], LabelColor(1)) << "the palette the HTML report shares";
   // The file is still a mesh we read.
   const absl::StatusOr<Mesh> back = ReadMesh(path);
   ASSERT_TRUE(back.ok()) << back.status();

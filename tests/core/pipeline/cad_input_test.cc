@@ -1,6 +1,9 @@
 // RunPipeline on CAD tessellations: long thin triangles with their vertices
-// exactly on the surface are segmented on an isotropic remesh, labels come
-// back per input face, and the surfaces are refitted on the input vertices.
+// exactly on the surface are segmented facet by facet as read
+// (meshseg/segment.h: SegmentExactFacets); on the scan path
+// (ExactMode::kNever, and for CAD-like meshes that are not exact) they are
+// segmented on an isotropic remesh, labels come back per input face, and
+// the surfaces are refitted on the input vertices.
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -8,6 +11,7 @@
 #include <random>
 #include <string>
 #include <utility>
+#include <vector>
 #include <variant>
 
 #include <Eigen/Geometry>
@@ -48,11 +52,37 @@ std::pair<int, double> MainRegion(const testing::CadShape& shape, const Pipeline
   return {best.first, static_cast<double>(best.second) / std::max(total, 1)};
 }
 
+// An exact CAD cylinder of long strips: facet by facet, no remesh, the
+// cylinder and its caps exact, each its own surface.
+TEST(CadInput, ExactCylinderOfLongStripsIsSegmentedFacetByFacet) {
+  const testing::CadShape shape = testing::CadCylinder(10.0, 40.0, 48);
+  const absl::StatusOr<PipelineResult> result = RunOnShape(shape, "cad_cylinder_exact_test.ply");
+  ASSERT_TRUE(result.ok()) << result.status();
+  EXPECT_EQ(result->estimates.path, SegmentationPath::kExactFacets);
+  EXPECT_EQ(result->remesh_face_count, 0);
+  EXPECT_GE(result->estimates.exact_share, kMinExactShare);
+  ASSERT_EQ(result->regions.size(), 3u);
+  ASSERT_EQ(result->surfaces.size(), 3u);
+  for (std::size_t f = 0; f < shape.triangles.size(); ++f) {
+    const Region& r = result->regions[result->face_labels[f]];
+    ASSERT_EQ(r.type, shape.surface[f] == 0 ? SurfaceType::kCylinder : SurfaceType::kPlane);
+    if (r.type == SurfaceType::kCylinder) {
+      EXPECT_NEAR(std::get<Cylinder>(r.surface).radius, 10.0, 1e-9);
+    }
+    EXPECT_EQ(result->surfaces[r.surface_id].regions, std::vector<int>{r.id});
+  }
+}
+
+// The same on the scan path: segmented on an isotropic remesh.
 TEST(CadInput, CylinderOfLongStripsComesBackAsOneExactCylinderAndTwoPlanes) {
   const testing::CadShape shape = testing::CadCylinder(10.0, 40.0, 48);
-  const absl::StatusOr<PipelineResult> result = RunOnShape(shape, "cad_cylinder_input_test.ply");
+  PipelineParams scan;
+  scan.segment.exact = ExactMode::kNever;
+  const absl::StatusOr<PipelineResult> result =
+      RunOnShape(shape, "cad_cylinder_input_test.ply", scan);
   ASSERT_TRUE(result.ok()) << result.status();
   EXPECT_GT(result->remesh_face_count, 10 * static_cast<int64_t>(shape.triangles.size()));
+  EXPECT_EQ(result->estimates.path, SegmentationPath::kRemeshed);
   EXPECT_GT(result->remesh_edge_length, 0.0);
   ASSERT_EQ(result->face_labels.size(), shape.triangles.size());
   EXPECT_LE(result->regions.size(), 4u);
@@ -141,12 +171,13 @@ TEST(CadInput, TooFineButNotExactIsRemeshed) {
   EXPECT_EQ(result->face_labels.size(), shape.triangles.size());
 }
 
-// A hole of r = 2.5 in a plate remeshed at edges of 1.5 (as the face budget
+// On the scan path, a hole of r = 2.5 in a plate remeshed at edges of 1.5 (as the face budget
 // sets them on a large plate, plate_holes.stl): the remesh is refined around
 // it, and the hole comes back as one cylinder of its radius.
 TEST(CadInput, SmallHoleOfAPlateIsFound) {
   const testing::CadShape shape = testing::CadPlateWithHole(20.0, 6.0, 2.5, 24);
   PipelineParams params;
+  params.segment.exact = ExactMode::kNever;
   params.remesh.target_edge_length = 1.5;
   const absl::StatusOr<PipelineResult> result =
       RunOnShape(shape, "cad_plate_hole_test.ply", params);
@@ -174,6 +205,7 @@ TEST(CadInput, SmallHoleOfAPlateIsFound) {
 TEST(CadInput, SmallHoleIsLostWithoutTheFinerRemesh) {
   const testing::CadShape shape = testing::CadPlateWithHole(20.0, 6.0, 2.5, 24);
   PipelineParams params;
+  params.segment.exact = ExactMode::kNever;
   params.remesh.target_edge_length = 1.5;
   params.remesh.small_radius_edges = 0.0;
   const absl::StatusOr<PipelineResult> result =

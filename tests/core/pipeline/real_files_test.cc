@@ -106,6 +106,7 @@ TEST(SegmentReal, AbcPartPatchesGetRegionsOfTheirType) {
   const absl::StatusOr<PipelineResult> seg =
       RunPipeline(testing::SharedData("abc_00007974_5.obj"));
   ASSERT_TRUE(seg.ok()) << seg.status();
+  EXPECT_EQ(seg->estimates.path, SegmentationPath::kExactFacets);
   EXPECT_LE(seg->regions.size(), 26u);
   for (std::size_t i = 0; i < patches.size(); ++i) {
     if (i == kTwoFacetPatch) continue;
@@ -132,19 +133,20 @@ TEST(SegmentReal, AbcPartPatchesGetRegionsOfTheirType) {
   }
 }
 
-// tray_bottom_1002.stl is a CAD plate 3.175 thick whose remesh at the face
-// budget (edges 1.86 against a median shortest edge of 0.44) cannot hold its
-// walls and holes, so it is segmented facet by facet. Its truth, read off
-// the file (circles through the wall facets' corners, all exact to 1e-4,
-// and looked at in the coloured PLY): the top and the bottom, 8 octagon
-// sides with 8 corner rounds of radius 5/32", a slot of 4 sides and 4
-// rounds of 0.1", and 22 holes: 4 of radius 1.13, 4 of 1/16", 3 of 1.899,
-// 4 of 2.489, 3 of 3.264 and 4 of 4.564. Every round and hole is one exact
-// cylinder along the plate's normal (y); nothing else is curved.
+// tray_bottom_1002.stl is an exact CAD export, segmented facet by facet.
+// Its truth, read off the file (circles through the wall facets' corners,
+// all exact to 1e-4, and looked at in the coloured PLY): the top and the
+// bottom, 8 octagon sides with 8 corner rounds of radius 5/32", a slot of 4
+// sides and 4 rounds of 0.1", and 22 holes: 4 of radius 1.13, 4 of 1/16", 3
+// of 1.899, 4 of 2.489, 3 of 3.264 and 4 of 4.564. Every round and hole is
+// one exact cylinder along the plate's normal (y), whole although some of
+// their facets carry a vertex on a chord (facet_on_surface.h, test 1);
+// nothing else is curved, and the top and bottom fans are whole.
 TEST(SegmentReal, TrayBottomIsSegmentedFacetByFacet) {
   const absl::StatusOr<PipelineResult> result =
       RunPipeline(testing::SharedData("tray_bottom_1002.stl"));
   ASSERT_TRUE(result.ok()) << result.status();
+  EXPECT_EQ(result->estimates.path, SegmentationPath::kExactFacets);
   EXPECT_EQ(result->remesh_face_count, 0);
   EXPECT_EQ(result->estimates.noise_sigma, 0.0);
   std::map<double, int> holes;  // radius rounded to 0.01 -> cylinders
@@ -152,7 +154,7 @@ TEST(SegmentReal, TrayBottomIsSegmentedFacetByFacet) {
   for (const Region& r : result->regions) {
     if (const auto* c = std::get_if<Cylinder>(&r.surface)) {
       EXPECT_EQ(r.type, SurfaceType::kCylinder);
-      EXPECT_NEAR(std::abs(c->axis_direction.y()), 1.0, 1e-9) << "region " << r.id;
+      EXPECT_NEAR(std::abs(c->axis_direction.y()), 1.0, 1e-6) << "region " << r.id;
       EXPECT_LT(r.max_distance, 1e-3) << "region " << r.id;
       ++holes[std::round(100.0 * c->radius) / 100.0];
     } else {
@@ -167,46 +169,60 @@ TEST(SegmentReal, TrayBottomIsSegmentedFacetByFacet) {
   EXPECT_EQ(holes, truth);
   EXPECT_EQ(planes, 2 + 8 + 4);
   EXPECT_EQ(plate_faces, 2 * 1310);  // the top and bottom fans, whole
+  EXPECT_EQ(result->surfaces.size(), result->regions.size());
 }
 
 // plate_holes.stl (SOURCES.md): five holes of r 3.3782, four under 82°
 // countersinks, one under a counterbore of r 5.5563 whose floor is at
-// z 6.35. At the remesh's edges of 1.66 a hole had 13 edges around and its
-// wall went into the bottom plane (rms 4.34); the remesh is now finer there.
-// Its vertical corners are rounds of r 25.4 (read off the file: 15-degree
-// facets from z 6.35 to the top), two of which were spheres through both
-// rims until the types were told apart on all of their remeshed vertices.
-TEST(SegmentReal, PlateHolesAreCylindersUnderConesAndACounterbore) {
-  const absl::StatusOr<PipelineResult> result = RunPipeline(testing::SharedData("plate_holes.stl"));
-  ASSERT_TRUE(result.ok()) << result.status();
-  EXPECT_GT(result->remesh_fine_edge_length, 0.0);
-  int holes = 0, counterbores = 0, countersinks = 0, corner_rounds = 0;
-  for (const Region& r : result->regions) {
-    EXPECT_NE(r.type, SurfaceType::kSphere) << "region " << r.id;
+// z 6.35; an exact export, segmented facet by facet. Its vertical corners
+// are rounds of r 25.4 (15-degree strips from z 6.35 to the top), its
+// bottom edges rounds of r 6.35, blended at the corners by tori
+// (19.05, 6.35): 29 surfaces in all, as the scan path found them on main.
+void ExpectPlateHoles(const PipelineResult& result, double scale) {
+  EXPECT_EQ(result.estimates.path, SegmentationPath::kExactFacets);
+  EXPECT_EQ(result.regions.size(), 29u);
+  int holes = 0, counterbores = 0, countersinks = 0, corner_rounds = 0, edge_rounds = 0, tori = 0;
+  for (const Region& r : result.regions) {
+    EXPECT_NE(r.type, SurfaceType::kFreeform) << "region " << r.id;
     if (const auto* c = std::get_if<Cylinder>(&r.surface);
         c != nullptr && std::abs(c->axis_direction.z()) > 1.0 - 1e-6) {
-      if (std::abs(c->radius - 3.3782) < 0.01) ++holes;
-      if (std::abs(c->radius - 5.5563) < 0.01) ++counterbores;
-      if (std::abs(c->radius - 25.4) < 0.01) ++corner_rounds;
-      EXPECT_LT(r.rms_distance, 1e-4) << "region " << r.id;
+      if (std::abs(c->radius - 3.3782 * scale) < 0.01 * scale) ++holes;
+      if (std::abs(c->radius - 5.5563 * scale) < 0.01 * scale) ++counterbores;
+      if (std::abs(c->radius - 25.4 * scale) < 0.01 * scale) ++corner_rounds;
+    } else if (c != nullptr && std::abs(c->radius - 6.35 * scale) < 0.01 * scale) {
+      EXPECT_LT(std::abs(c->axis_direction.z()), 1e-6) << "region " << r.id;
+      ++edge_rounds;
+    }
+    if (const auto* t = std::get_if<Torus>(&r.surface)) {
+      EXPECT_NEAR(t->major_radius, 19.05 * scale, 0.01 * scale) << "region " << r.id;
+      EXPECT_NEAR(t->minor_radius, 6.35 * scale, 0.01 * scale) << "region " << r.id;
+      ++tori;
     }
     if (const auto* c = std::get_if<Cone>(&r.surface)) {
       EXPECT_NEAR(std::abs(c->axis_direction.z()), 1.0, 1e-6) << "region " << r.id;
       EXPECT_NEAR(c->half_angle * 180.0 / std::numbers::pi, 41.0, 0.1) << "region " << r.id;
       ++countersinks;
     }
-    if (const auto* p = std::get_if<Plane>(&r.surface); p != nullptr && p->normal.z() < -0.999) {
-      EXPECT_LT(r.rms_distance, 1e-4) << "the bottom, region " << r.id;
+    if (r.type != SurfaceType::kFreeform) {
+      EXPECT_LT(r.rms_distance, 1e-4 * scale) << SurfaceTypeName(r.type) << " region " << r.id;
     }
   }
   EXPECT_EQ(holes, 5);
   EXPECT_EQ(counterbores, 1);
   EXPECT_EQ(countersinks, 4);
   EXPECT_EQ(corner_rounds, 4);
+  EXPECT_EQ(edge_rounds, 4);
+  EXPECT_EQ(tori, 4);
+}
+
+TEST(SegmentReal, PlateHolesAreCylindersUnderConesAndACounterbore) {
+  const absl::StatusOr<PipelineResult> result = RunPipeline(testing::SharedData("plate_holes.stl"));
+  ASSERT_TRUE(result.ok()) << result.status();
+  ExpectPlateHoles(*result, 1.0);
 }
 
 // An exact CAD export's vertices lie on its surfaces, so no region lies on
-// a neighbour's surface (within kExactTolerance) unless the two should be
+// a neighbour's surface (within 1e-4 l_avg) unless the two should be
 // one. On abc_00016513_gt.ply, before evenly stepped seeds went first
 // (exact_facets.h), 8 spheres of 5-44 faces cut from the r 0.107 and 0.048
 // cylinders did, to 1e-8, and before facets grew from their largest face,
@@ -215,10 +231,12 @@ void ExpectNoRegionOnItsNeighbour(const PipelineResult& result, const std::strin
   const absl::StatusOr<Mesh> mesh = ReadMesh(testing::SharedData(file));
   ASSERT_TRUE(mesh.ok()) << mesh.status();
   ASSERT_EQ(result.face_labels.size(), mesh->tri.n_faces());
-  const double exact = 1e-4 * result.topology.mean_edge_length;  // kExactTolerance
+  const double exact = 1e-4 * result.topology.mean_edge_length;
   for (const Adjacency& arc : result.topology.adjacency) {
     for (const auto& [piece, whole] :
          {std::pair{arc.region_a, arc.region_b}, std::pair{arc.region_b, arc.region_a}}) {
+      // A FREEFORM region has no surface to lie on (its quadric is for display).
+      if (result.regions[whole].type == SurfaceType::kFreeform) continue;
       double farthest = 0.0;
       for (const auto f : mesh->tri.faces()) {
         if (result.face_labels[f.idx()] != piece) continue;
@@ -237,15 +255,19 @@ void ExpectNoRegionOnItsNeighbour(const PipelineResult& result, const std::strin
 
 // abc_00016513_gt.ply has no per-face truth, but the refit on the input
 // vertices is exact where a region holds only its own faces (measured: all
-// 12 cylinders at rms < 2e-7), and no region lies on its neighbour.
+// 12 cylinders at rms < 2e-7), and no region lies on its neighbour. The part
+// is planes and cylinders only: no FREEFORM region (slivers between a plane
+// and its cylinders once were, exact_facets.cc: JoinGapPieces).
 void ExpectExactCylindersInOnePiece(const PipelineResult& result, const std::string& file) {
-  int exact_cylinders = 0, planes = 0;
+  int exact_cylinders = 0, planes = 0, freeform = 0;
   for (const Region& r : result.regions) {
     if (r.type == SurfaceType::kPlane) ++planes;
     if (r.type == SurfaceType::kCylinder && r.rms_distance < 1e-6) ++exact_cylinders;
+    if (r.type == SurfaceType::kFreeform) ++freeform;
   }
   EXPECT_GE(exact_cylinders, 12);
   EXPECT_GE(planes, 4);
+  EXPECT_EQ(freeform, 0);
   ExpectNoRegionOnItsNeighbour(result, file);
 }
 
@@ -281,8 +303,9 @@ TEST_P(RealFile, LabelsEveryInputFace) {
   }
 }
 
-// The CAD exports of shared/data with long thin triangles: each is remeshed.
-TEST_P(RealFile, CadExportsAreRemeshed) {
+// The CAD exports of shared/data with long thin triangles are CAD-like
+// (remesh.h: Assess; they are segmented facet by facet, being exact).
+TEST_P(RealFile, CadExportsAreCadLike) {
   const absl::StatusOr<Mesh> mesh = ReadMesh(testing::SharedData(GetParam()));
   ASSERT_TRUE(mesh.ok()) << mesh.status();
   const bool cad_export = GetParam() == "plate_holes.stl" || GetParam() == "tray_bottom_1002.stl" ||
@@ -357,42 +380,28 @@ INSTANTIATE_TEST_SUITE_P(Frames, RealFileFrame,
                                   "_" + info.param.frame;
                          });
 
-// plate_holes.stl goes through the remesh path, and the remesh follows the
-// last bits of the coordinates: each draw of 1e-12 relative jitter segments
-// a different remesh. Every region stays exact on the input's vertices. (At
-// stop 26, before faces were relabelled by their corners and trimmed fits
-// kept to the seed's piece, draws 3 and 6 had a 45-degree cone over two
-// sides. At stop 27 draw 8's corner round at (25.4, 25.4) was a cone of 7.7
-// degrees, rms 0.14 on the input, until the input refit tried the cylinder
-// too; draws 1-12 pass, 1-8 run here.)
-// plate_holes.stl's 29 surfaces, each exact (rms under 1e-4 mm times
-// `scale`) on the input's vertices.
-void ExpectPlateHolesExact(const std::string& path, double scale) {
-  const absl::StatusOr<PipelineResult> result = RunPipeline(path);
-  ASSERT_TRUE(result.ok()) << result.status();
-  EXPECT_EQ(result->regions.size(), 29u);
-  for (const Region& r : result->regions) {
-    EXPECT_LT(r.rms_distance, 1e-4 * scale)
-        << SurfaceTypeName(r.type) << " region " << r.id << ", " << r.face_count << " faces";
-  }
-}
-
+// plate_holes.stl with 1e-12 relative jitter on every coordinate (another
+// exporter's rounding): the same holes and countersinks, every analytic
+// region exact on the input's vertices.
 class PlateHolesJittered : public ::testing::TestWithParam<uint64_t> {};
 
-TEST_P(PlateHolesJittered, EveryRegionIsExactOnTheInput) {
-  ExpectPlateHolesExact(MovedCopy("plate_holes.stl", 1.0, Eigen::Vector3d::Zero(), GetParam()),
-                        1.0);
+TEST_P(PlateHolesJittered, HolesAndCountersinksAreFound) {
+  const absl::StatusOr<PipelineResult> result =
+      RunPipeline(MovedCopy("plate_holes.stl", 1.0, Eigen::Vector3d::Zero(), GetParam()));
+  ASSERT_TRUE(result.ok()) << result.status();
+  ExpectPlateHoles(*result, 1.0);
 }
 
-INSTANTIATE_TEST_SUITE_P(Draws, PlateHolesJittered, ::testing::Range<uint64_t>(1, 9));
+INSTANTIATE_TEST_SUITE_P(Draws, PlateHolesJittered, ::testing::Range<uint64_t>(1, 4));
 
-// The same in micrometres and in metres. (During stop 26, in micrometres,
-// an r 6.35 edge round held a 14th face, rms 6 um.)
+// The same in micrometres and in metres.
 class PlateHolesScaled : public ::testing::TestWithParam<double> {};
 
-TEST_P(PlateHolesScaled, EveryRegionIsExactOnTheInput) {
-  ExpectPlateHolesExact(MovedCopy("plate_holes.stl", GetParam(), Eigen::Vector3d::Zero()),
-                        GetParam());
+TEST_P(PlateHolesScaled, HolesAndCountersinksAreFound) {
+  const absl::StatusOr<PipelineResult> result =
+      RunPipeline(MovedCopy("plate_holes.stl", GetParam(), Eigen::Vector3d::Zero()));
+  ASSERT_TRUE(result.ok()) << result.status();
+  ExpectPlateHoles(*result, GetParam());
 }
 
 INSTANTIATE_TEST_SUITE_P(Units, PlateHolesScaled, ::testing::Values(1000.0, 0.001),

@@ -8,6 +8,7 @@
 #define MESHSEG_PROTO_RESULT_JSON_H_
 
 #include <string>
+#include <string_view>
 
 #include "absl/status/statusor.h"
 #include "meshseg/v1/segmentation.pb.h"
@@ -18,6 +19,11 @@ namespace meshseg {
 // label arrays of large meshes stay one line).
 // Errors: INTERNAL if the printer fails (never for a valid message).
 absl::StatusOr<std::string> ResultJson(const v1::SegmentationResult& result);
+
+// Returns the result a JSON document holds (as ResultJson prints it; field
+// names in either case). Errors (INVALID_ARGUMENT): not such a document,
+// with the parser's reason.
+absl::StatusOr<v1::SegmentationResult> ParseResultJson(std::string_view json);
 
 }  // namespace meshseg
 

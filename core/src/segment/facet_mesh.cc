@@ -1,0 +1,126 @@
+#include "segment/facet_mesh.h"
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <limits>
+#include <type_traits>
+#include <variant>
+
+namespace meshseg::segment_internal {
+
+namespace {
+
+// A vertex strictly inside a segment between two of its neighbours, not at
+// its ends' tenth of it (a vertex put on an edge, not a corner of a fan).
+constexpr double kChordInside = 0.1;
+
+// fm->chord_ends and chord_offset (facet_mesh.h).
+void FindChordVertices(const TriMesh& mesh, FacetMesh* fm) {
+  const int n = static_cast<int>(fm->points.size());
+  fm->chord_ends.assign(n, {-1, -1});
+  fm->chord_offset.assign(n, std::numeric_limits<double>::infinity());
+  std::vector<int> ring;
+  for (const auto v : mesh.vertices()) {
+    ring.clear();
+    for (const auto w : mesh.vv_range(v)) ring.push_back(w.idx());
+    const Eigen::Vector3d& p = fm->points[v.idx()];
+    for (std::size_t i = 0; i < ring.size(); ++i) {
+      for (std::size_t j = i + 1; j < ring.size(); ++j) {
+        const Eigen::Vector3d& a = fm->points[ring[i]];
+        const Eigen::Vector3d ab = fm->points[ring[j]] - a;
+        const double length2 = ab.squaredNorm();
+        if (!(length2 > 0.0)) continue;
+        const double t = (p - a).dot(ab) / length2;
+        if (t < kChordInside || t > 1.0 - kChordInside) continue;
+        const double offset = (a + t * ab - p).norm();
+        if (offset < fm->chord_offset[v.idx()]) {
+          fm->chord_offset[v.idx()] = offset;
+          fm->chord_ends[v.idx()] = {ring[i], ring[j]};
+        }
+      }
+    }
+  }
+}
+
+}  // namespace
+
+FacetMesh BuildFacetMesh(const TriMesh& mesh) {
+  FacetMesh fm;
+  const int n_vertices = static_cast<int>(mesh.n_vertices());
+  Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
+  Eigen::Vector3d hi = -lo;
+  for (const auto v : mesh.vertices()) {
+    const Eigen::Vector3d p = ToEigen(mesh.point(v));
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+  if (n_vertices > 0) {
+    fm.origin = 0.5 * (lo + hi);
+    fm.diagonal = (hi - lo).norm();
+  }
+  fm.points.resize(n_vertices);
+  for (const auto v : mesh.vertices()) fm.points[v.idx()] = ToEigen(mesh.point(v)) - fm.origin;
+  const int n_faces = static_cast<int>(mesh.n_faces());
+  fm.corners.resize(n_faces);
+  fm.across.resize(n_faces);
+  fm.normal.resize(n_faces);
+  fm.area.resize(n_faces);
+  for (const auto f : mesh.faces()) {
+    int k = 0;
+    for (const auto h : mesh.fh_range(f)) {
+      if (k == 3) break;
+      fm.corners[f.idx()][k] = mesh.from_vertex_handle(h).idx();
+      const auto g = mesh.opposite_face_handle(h);
+      fm.across[f.idx()][k] = g.is_valid() ? g.idx() : -1;
+      ++k;
+    }
+    const std::array<int, 3>& c = fm.corners[f.idx()];
+    const Eigen::Vector3d cross =
+        (fm.points[c[1]] - fm.points[c[0]]).cross(fm.points[c[2]] - fm.points[c[0]]);
+    const double norm = cross.norm();
+    fm.area[f.idx()] = 0.5 * norm;
+    fm.normal[f.idx()] = norm > 0.0 ? Eigen::Vector3d(cross / norm) : Eigen::Vector3d::Zero();
+  }
+  FindChordVertices(mesh, &fm);
+  return fm;
+}
+
+std::vector<int> CornersOf(const FacetMesh& fm, const std::vector<int>& facets) {
+  std::vector<int> v;
+  v.reserve(3 * facets.size());
+  for (const int f : facets) v.insert(v.end(), fm.corners[f].begin(), fm.corners[f].end());
+  std::sort(v.begin(), v.end());
+  v.erase(std::unique(v.begin(), v.end()), v.end());
+  return v;
+}
+
+Surface Translated(const Surface& surface, const Eigen::Vector3d& shift) {
+  return std::visit(
+      [&](auto s) -> Surface {
+        using T = std::decay_t<decltype(s)>;
+        if constexpr (std::is_same_v<T, Plane>) {
+          s.point += shift;
+        } else if constexpr (std::is_same_v<T, Cylinder>) {
+          s.axis_origin += shift;
+        } else if constexpr (std::is_same_v<T, Cone>) {
+          s.apex += shift;
+        } else if constexpr (std::is_same_v<T, Sphere> || std::is_same_v<T, Torus>) {
+          s.center += shift;
+        } else {
+          // f(x - shift): expand the linear and constant terms.
+          const auto& c = s.c;
+          const double x = shift.x(), y = shift.y(), z = shift.z();
+          Quadric q = s;
+          q.c[6] = c[6] - 2 * c[0] * x - c[3] * y - c[5] * z;
+          q.c[7] = c[7] - 2 * c[1] * y - c[3] * x - c[4] * z;
+          q.c[8] = c[8] - 2 * c[2] * z - c[4] * y - c[5] * x;
+          q.c[9] = c[9] + c[0] * x * x + c[1] * y * y + c[2] * z * z + c[3] * x * y + c[4] * y * z +
+                   c[5] * z * x - c[6] * x - c[7] * y - c[8] * z;
+          return q;
+        }
+        return s;
+      },
+      surface);
+}
+
+}  // namespace meshseg::segment_internal

@@ -1,0 +1,176 @@
+// EstimateExactness() and SegmentExactFacets(): the exact path of the
+// segment stage (exact_facets.h), from the mesh to a Segmentation.
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "absl/strings/str_cat.h"
+#include "meshseg/fit.h"
+#include "meshseg/segment.h"
+#include "meshseg/status_macros.h"
+#include "segment/exact_facets.h"
+#include "segment/exact_hypotheses.h"
+#include "segment/exact_tolerance.h"
+#include "segment/facet_mesh.h"
+#include "segment/shared_surfaces.h"
+
+namespace meshseg {
+namespace {
+
+using segment_internal::CornersOf;
+using segment_internal::ExactRegion;
+using segment_internal::FacetMesh;
+using segment_internal::OnChord;
+
+// Facets sampled (every k-th) for the share of exact facets.
+constexpr int kExactnessSample = 1000;
+// ... in multiples of the share an exact mesh may miss.
+constexpr double kMaxMissedShare = 5.0;
+
+// The given tolerance, else the one from the rounding of `mesh`'s own
+// coordinates (as read: fm's are moved, and no longer round).
+double Tolerance(const TriMesh& mesh, const FacetMesh& fm, std::optional<double> given) {
+  if (given) return *given;
+  std::vector<Eigen::Vector3d> positions;
+  positions.reserve(mesh.n_vertices());
+  for (const auto v : mesh.vertices()) positions.push_back(ToEigen(mesh.point(v)));
+  return segment_internal::ExactTolerance(positions, fm.diagonal,
+                                          segment_internal::PlanarityFloor(fm));
+}
+
+// `mean_edge`: the mean edge length of the mesh.
+Exactness Measure(const FacetMesh& fm, double tolerance, double mean_edge) {
+  Exactness e;
+  e.tolerance = tolerance;
+  const int n = fm.facet_count();
+  const int stride = std::max(1, n / kExactnessSample);
+  // A mesh far from exact is known as such long before the sample ends
+  // (each unexplained facet costs the most fits): sampling stops at
+  // kMaxMissedShare of it missed.
+  const int missed_limit =
+      static_cast<int>(kMaxMissedShare * (1.0 - kMinExactShare) * kExactnessSample);
+  double explained = 0.0, total = 0.0;
+  int missed = 0;
+  for (int f = 0; f < n && missed <= missed_limit; f += stride) {
+    total += fm.area[f];
+    if (segment_internal::ExplainedLocally(fm, f, tolerance)) {
+      explained += fm.area[f];
+    } else {
+      ++missed;
+    }
+  }
+  e.share = total > 0.0 ? explained / total : 0.0;
+  e.resolved_sag = tolerance > 0.0 && fm.diagonal > 0.0
+                       ? mean_edge * mean_edge / (8.0 * fm.diagonal * tolerance)
+                       : 0.0;
+  e.exact = e.share >= kMinExactShare && e.resolved_sag >= kMinResolvedSag;
+  return e;
+}
+
+// Distances of `corners` to `surface` into rms and max; corners on a chord
+// (facet_mesh.h: OnChord within tau) lie under it by its sag, and are left
+// out.
+void Distances(const FacetMesh& fm, const std::vector<int>& corners, const Surface& surface,
+               double tau, double* rms, double* max) {
+  double sum2 = 0.0;
+  *max = 0.0;
+  int count = 0;
+  for (const int v : corners) {
+    if (OnChord(fm, v, tau)) continue;
+    ++count;
+    const double d = std::abs(SignedDistance(surface, fm.points[v]));
+    sum2 += d * d;
+    *max = std::max(*max, d);
+  }
+  *rms = count == 0 ? 0.0 : std::sqrt(sum2 / count);
+}
+
+// The Segmentation of `exact`: regions renumbered by first facet, vertices
+// labelled with a facet around them, surfaces in the input's frame.
+Segmentation Assemble(const Mesh& mesh, const FacetMesh& fm,
+                      const segment_internal::ExactFacets& exact, double tau) {
+  const int n_regions = static_cast<int>(exact.regions.size());
+  std::vector<int> new_id(n_regions, -1);
+  std::vector<int> old_of;
+  for (const int old : exact.face_labels) {
+    if (old >= 0 && new_id[old] < 0) {
+      new_id[old] = static_cast<int>(old_of.size());
+      old_of.push_back(old);
+    }
+  }
+  std::vector<ExactRegion> regions;
+  for (const int old : old_of) regions.push_back(exact.regions[old]);
+  std::vector<int> surface_of_region;
+  const std::vector<SharedSurface> shared =
+      segment_internal::GroupSharedSurfaces(fm, regions, tau, &surface_of_region);
+
+  Segmentation seg;
+  seg.face_labels.resize(exact.face_labels.size());
+  for (std::size_t f = 0; f < exact.face_labels.size(); ++f) {
+    seg.face_labels[f] = exact.face_labels[f] < 0 ? -1 : new_id[exact.face_labels[f]];
+  }
+  seg.vertex_labels.assign(mesh.tri.n_vertices(), -1);
+  for (std::size_t f = 0; f < seg.face_labels.size(); ++f) {
+    for (const int v : fm.corners[f]) {
+      if (seg.vertex_labels[v] < 0) seg.vertex_labels[v] = seg.face_labels[f];
+    }
+  }
+  for (std::size_t r = 0; r < regions.size(); ++r) {
+    Region region;
+    region.id = static_cast<int>(r);
+    region.type = regions[r].type;
+    region.surface = segment_internal::Translated(regions[r].surface, fm.origin);
+    region.face_count = static_cast<int64_t>(regions[r].facets.size());
+    for (const int f : regions[r].facets) region.area += fm.area[f];
+    const std::vector<int> corners = CornersOf(fm, regions[r].facets);
+    region.vertex_count = static_cast<int64_t>(corners.size());
+    Distances(fm, corners, regions[r].surface, tau, &region.rms_distance, &region.max_distance);
+    region.surface_id = surface_of_region[r];
+    seg.regions.push_back(std::move(region));
+  }
+  for (SharedSurface s : shared) {
+    std::vector<int> facets;
+    for (const int r : s.regions) {
+      facets.insert(facets.end(), regions[r].facets.begin(), regions[r].facets.end());
+    }
+    Distances(fm, CornersOf(fm, facets), s.surface, tau, &s.rms_distance, &s.max_distance);
+    s.surface = segment_internal::Translated(s.surface, fm.origin);
+    seg.surfaces.push_back(std::move(s));
+  }
+  return seg;
+}
+
+}  // namespace
+
+Exactness EstimateExactness(const Mesh& mesh, std::optional<double> tolerance) {
+  const FacetMesh fm = segment_internal::BuildFacetMesh(mesh.tri);
+  return Measure(fm, Tolerance(mesh.tri, fm, tolerance), MeanEdgeLength(mesh.tri));
+}
+
+absl::StatusOr<Segmentation> SegmentExactFacets(const Mesh& mesh, const SegmentParams& params,
+                                                const RunContext& ctx) {
+  if (mesh.tri.n_faces() == 0) {
+    return absl::InvalidArgumentError(absl::StrCat("segment: \"", mesh.name, "\" has no faces"));
+  }
+  if (params.exact_tolerance &&
+      !(*params.exact_tolerance > 0.0 && std::isfinite(*params.exact_tolerance))) {
+    return absl::InvalidArgumentError(
+        absl::StrCat("segment: exact_tolerance must be > 0, got ", *params.exact_tolerance));
+  }
+  MESHSEG_RETURN_IF_ERROR(ctx.CheckStop("segment"));
+  const FacetMesh fm = segment_internal::BuildFacetMesh(mesh.tri);
+  const double tau = Tolerance(mesh.tri, fm, params.exact_tolerance);
+  MESHSEG_ASSIGN_OR_RETURN(const segment_internal::ExactFacets exact,
+                           segment_internal::SegmentFacets(fm, tau, ctx));
+  Segmentation seg = Assemble(mesh, fm, exact, tau);
+  seg.estimates.mean_edge_length = MeanEdgeLength(mesh.tri);
+  seg.estimates.noise_sigma = 0.0;
+  seg.estimates.distance_tolerance = tau;
+  seg.estimates.angle_tolerance_deg = exact.angular_step * 180.0 / 3.14159265358979323846;
+  seg.estimates.path = SegmentationPath::kExactFacets;
+  seg.estimates.exact_tolerance = tau;  // exact_share: measured by the caller
+  ctx.Progress("segment", 1.0);
+  return seg;
+}
+
+}  // namespace meshseg

@@ -1,0 +1,141 @@
+// Simplify(): copies the mesh, marks feature points (given, and the ends of
+// edges between differently labelled faces), runs OpenMesh's decimater with
+// the feature-quadric module, and rebuilds a compact Mesh with the labels of
+// the surviving faces and the Hausdorff distance to the input.
+#include <cmath>
+#include <numbers>
+
+#include <OpenMesh/Tools/Decimater/DecimaterT.hh>
+
+#include "absl/strings/str_cat.h"
+#include "meshseg/status_macros.h"
+#include "meshseg/voxel.h"
+#include "voxel/feature_quadric_module.h"
+
+namespace meshseg {
+namespace {
+
+using Decimater = OpenMesh::Decimater::DecimaterT<TriMesh>;
+using Module = voxel_internal::ModFeatureQuadricT<TriMesh>;
+
+absl::Status ValidateParams(const TriMesh& mesh, const SimplifyParams& params,
+                            std::span<const uint8_t> feature_vertex,
+                            std::span<const int> face_labels) {
+  if (params.target_faces <= 0 && !(params.max_error > 0.0)) {
+    return absl::InvalidArgumentError("simplify: give a target face count or a max error");
+  }
+  if (params.target_faces < 0 || !std::isfinite(params.max_error) || params.max_error < 0.0) {
+    return absl::InvalidArgumentError(absl::StrCat("simplify: target_faces ", params.target_faces,
+                                                   " and max_error ", params.max_error,
+                                                   " must not be negative"));
+  }
+  if (!(params.max_normal_flip_deg > 0.0 && params.max_normal_flip_deg <= 180.0)) {
+    return absl::InvalidArgumentError(absl::StrCat(
+        "simplify: max_normal_flip_deg ", params.max_normal_flip_deg, " must be in (0, 180]"));
+  }
+  if (mesh.n_faces() == 0) return absl::InvalidArgumentError("simplify: the mesh has no faces");
+  if (!feature_vertex.empty() && feature_vertex.size() != mesh.n_vertices()) {
+    return absl::InvalidArgumentError(absl::StrCat("simplify: ", feature_vertex.size(),
+                                                   " feature flags for ", mesh.n_vertices(),
+                                                   " vertices"));
+  }
+  if (!face_labels.empty() && face_labels.size() != mesh.n_faces()) {
+    return absl::InvalidArgumentError(absl::StrCat("simplify: ", face_labels.size(),
+                                                   " face labels for ", mesh.n_faces(), " faces"));
+  }
+  return absl::OkStatus();
+}
+
+// Reports progress and honours stop requests every few thousand collapses.
+class Progress : public OpenMesh::Decimater::Observer {
+ public:
+  Progress(const RunContext& ctx, size_t total) : Observer(4096), ctx_(ctx), total_(total) {}
+  void notify(size_t step) override {
+    ctx_.Progress("simplify",
+                  std::min(0.9, static_cast<double>(step) / std::max<size_t>(1, total_)));
+  }
+  bool abort() const override { return ctx_.stop_requested(); }
+
+ private:
+  const RunContext& ctx_;
+  size_t total_;
+};
+
+}  // namespace
+
+absl::StatusOr<Simplification> Simplify(const TriMesh& mesh, const SimplifyParams& params,
+                                        std::span<const uint8_t> feature_vertex,
+                                        std::span<const int> face_labels, const RunContext& ctx) {
+  MESHSEG_RETURN_IF_ERROR(ValidateParams(mesh, params, feature_vertex, face_labels));
+  ctx.Progress("simplify", 0.0);
+  TriMesh work = mesh;
+  OpenMesh::VPropHandleT<int> origin_vertex;
+  OpenMesh::FPropHandleT<int> origin_face;
+  work.add_property(origin_vertex);
+  work.add_property(origin_face);
+  for (auto v : work.vertices()) work.property(origin_vertex, v) = v.idx();
+  for (auto f : work.faces()) work.property(origin_face, f) = f.idx();
+
+  Decimater decimater(work);
+  typename Module::Handle module;
+  decimater.add(module);
+  Module& mod = decimater.module(module);
+  mod.set_max_error(params.max_error);
+  mod.set_min_cos_normal(std::cos(params.max_normal_flip_deg * std::numbers::pi / 180.0));
+  for (auto v : work.vertices()) {
+    mod.set_feature(v, !feature_vertex.empty() && feature_vertex[v.idx()]);
+  }
+  if (!face_labels.empty()) {
+    for (auto e : work.edges()) {
+      if (work.is_boundary(e)) continue;
+      const int a = face_labels[work.face_handle(work.halfedge_handle(e, 0)).idx()];
+      const int b = face_labels[work.face_handle(work.halfedge_handle(e, 1)).idx()];
+      if (a == b) continue;
+      mod.set_feature(work.to_vertex_handle(work.halfedge_handle(e, 0)), true);
+      mod.set_feature(work.to_vertex_handle(work.halfedge_handle(e, 1)), true);
+    }
+  }
+  if (!decimater.initialize())
+    return absl::InternalError("simplify: the decimater did not initialise");
+  const size_t target = params.target_faces > 0 ? static_cast<size_t>(params.target_faces) : 0;
+  Progress progress(ctx, work.n_faces() > target ? (work.n_faces() - target) / 2 : 1);
+  decimater.set_observer(&progress);
+  decimater.decimate_to_faces(0, target);
+  decimater.set_observer(nullptr);
+  MESHSEG_RETURN_IF_ERROR(ctx.CheckStop("simplify"));
+
+  // A compact copy: surviving vertices in input order, faces likewise.
+  std::vector<int> new_index(work.n_vertices(), -1);
+  std::vector<Eigen::Vector3d> points;
+  Simplification out;
+  for (auto v : work.vertices()) {
+    if (work.status(v).deleted()) continue;
+    new_index[v.idx()] = static_cast<int>(points.size());
+    points.push_back(ToEigen(work.point(v)));
+    out.input_vertex.push_back(work.property(origin_vertex, v));
+  }
+  std::vector<std::array<int, 3>> triangles;
+  for (auto f : work.faces()) {
+    if (work.status(f).deleted()) continue;
+    std::array<int, 3> t;
+    int c = 0;
+    for (auto v : work.fv_range(f)) t[c++] = new_index[v.idx()];
+    triangles.push_back(t);
+    if (!face_labels.empty()) out.face_labels.push_back(face_labels[work.property(origin_face, f)]);
+  }
+  MESHSEG_ASSIGN_OR_RETURN(out.mesh, BuildMesh(std::move(points), triangles, "simplified"));
+  if (!face_labels.empty()) {
+    // BuildMesh may drop a triangle (degenerate): keep labels per mesh face.
+    std::vector<int> labels(out.mesh.tri.n_faces(), -1);
+    for (size_t t = 0; t < out.mesh.face_of_input.size(); ++t) {
+      if (out.mesh.face_of_input[t] >= 0) labels[out.mesh.face_of_input[t]] = out.face_labels[t];
+    }
+    out.face_labels = std::move(labels);
+  }
+  ctx.Progress("simplify", 0.95);
+  if (params.measure_hausdorff) out.hausdorff = Hausdorff(mesh, out.mesh.tri);
+  ctx.Progress("simplify", 1.0);
+  return out;
+}
+
+}  // namespace meshseg

@@ -1,0 +1,1 @@
+// Compiles tests/pch/core_tests.h once; see tests/CMakeLists.txt.

@@ -1,0 +1,1 @@
+// Compiles tests/pch/service_tests.h once; see tests/CMakeLists.txt.
