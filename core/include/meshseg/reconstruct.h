@@ -30,13 +30,6 @@ struct ReconstructParams {
   // Seed 001 eq. (6) (the paper uses 1e-3 of the bounding box with leaf cells
   // of 4e-3, i.e. about one point spacing).
   double error_tolerance = 1.0;
-  // Largest support radius, in h (our addition; seed 001 grows a ball until
-  // its linear fit exceeds ε, which on a flat face makes balls tens of h
-  // across: tets that coarse put the closing of an occlusion gap tens of h
-  // off, and a ball grown into empty space extends its face's plane there).
-  // A ball of the octree's cell size that still holds fewer than 6 points
-  // lies away from the points and takes no part in f.
-  double max_support_radius = 6.0;
   // Max octree level. Unset = derived so that the leaf cell edge is about
   // leaf_cell_size × h. Seed 001 §2.1.1 (the paper uses 8 or 9).
   std::optional<int> octree_max_level = std::nullopt;

@@ -1,12 +1,8 @@
 #include "reconstruct/graph_cut.h"
 
-#include <algorithm>
 #include <cmath>
 
-
-#include <Eigen/Geometry>
 #include <boost/graph/adjacency_list.hpp>
-#include <tbb/parallel_for.h>
 #include <boost/graph/boykov_kolmogorov_max_flow.hpp>
 
 #include "meshseg/status_macros.h"
@@ -39,45 +35,38 @@ void AddEdgePair(int u, int v, double forward, double backward, Graph* g) {
 
 }  // namespace
 
-absl::StatusOr<std::vector<uint8_t>> GraphCutLabels(const TetMesh& tets, const CutInput& in,
+absl::StatusOr<std::vector<uint8_t>> GraphCutLabels(const TetMesh& tets,
+                                                    const std::vector<Eigen::Vector3d>& position,
+                                                    const std::vector<double>& f, double k,
                                                     const RunContext& ctx) {
-  const int n = static_cast<int>(in.evidence.size());
-  const double h3 = in.h * in.h * in.h;
-  std::vector<double> e(n);
-  for (int v = 0; v < n; ++v) e[v] = std::clamp(in.evidence[v], -0.5, 0.5);
-  // Per vertex: a quarter of the volume of its tets, in h³.
-  std::vector<double> volume(n, 0.0);
-  for (const auto& t : tets.tets) {
-    const Eigen::Vector3d& p0 = in.position[t[0]];
-    const double v = std::abs((in.position[t[1]] - p0)
-                                  .dot((in.position[t[2]] - p0).cross(in.position[t[3]] - p0))) /
-                     (6.0 * h3);
-    for (const int i : t) volume[i] += 0.25 * v;
-  }
+  const int n = static_cast<int>(position.size());
+  std::vector<double> length_sum(n, 0.0);
+  std::vector<int> degree(n, 0);
   double max_weight = 0.0;
   Graph g(n + 2);
   const int source = n;
   const int sink = n + 1;
-  for (size_t i = 0; i < tets.edges.size(); ++i) {
-    const auto [a, b] = tets.edges[i];
-    const double length = (in.position[a] - in.position[b]).norm();
-    const double rho = in.supported[i]
-                           ? std::max(std::abs(in.f[a] + in.f[b]) / length, kMinAreaCost)  // eq. (10)
-                           : 1.0;
-    const double w = rho * length * length / (in.h * in.h);
+  for (const auto& [a, b] : tets.edges) {
+    const double len = (position[a] - position[b]).norm();
+    length_sum[a] += len;
+    length_sum[b] += len;
+    ++degree[a];
+    ++degree[b];
+    const double w = std::abs(f[a] + f[b]) / std::max(len, 1e-300);  // eq. (10)
     max_weight = std::max(max_weight, w);
     AddEdgePair(a, b, w, w, &g);
   }
   std::vector<double> terminal(n);
   for (int v = 0; v < n; ++v) {
-    terminal[v] = in.k * std::abs(e[v]) * volume[v];  // eqs. (8)-(9)
+    const double ave = degree[v] > 0 ? length_sum[v] / degree[v] : 1.0;
+    terminal[v] = k * std::abs(f[v]) / std::max(ave, 1e-300);  // eqs. (8)-(9)
     max_weight = std::max(max_weight, terminal[v]);
   }
   const double unbreakable = 1e6 * (max_weight + 1.0) * (tets.edges.size() + 1);
   for (int v = 0; v < n; ++v) {
     if (tets.on_hull[v]) {
       AddEdgePair(v, sink, unbreakable, 0.0, &g);
-    } else if (e[v] >= 0) {
+    } else if (f[v] >= 0) {
       AddEdgePair(source, v, terminal[v], 0.0, &g);
     } else {
       AddEdgePair(v, sink, terminal[v], 0.0, &g);
@@ -100,21 +89,6 @@ absl::StatusOr<std::vector<uint8_t>> GraphCutLabels(const TetMesh& tets, const C
     inside[v] = color[v] == boost::color_traits<boost::default_color_type>::black() ? 1 : 0;
   }
   return inside;
-}
-
-std::vector<uint8_t> SupportedEdges(const TetMesh& tets,
-                                    const std::vector<Eigen::Vector3d>& position,
-                                    const PointIndex& index, double h) {
-  std::vector<uint8_t> supported(tets.edges.size());
-  tbb::parallel_for(size_t{0}, tets.edges.size(), [&](size_t i) {
-    thread_local std::vector<uint32_t> nearest;
-    thread_local std::vector<double> d2;
-    const auto [a, b] = tets.edges[i];
-    const double reach = 2.0 * h + 0.5 * (position[a] - position[b]).norm();
-    index.Nearest(0.5 * (position[a] + position[b]), 1, &nearest, &d2);
-    supported[i] = !d2.empty() && d2[0] <= reach * reach;
-  });
-  return supported;
 }
 
 std::vector<uint8_t> SignLabels(const TetMesh& tets, const std::vector<double>& f) {

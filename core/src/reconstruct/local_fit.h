@@ -40,12 +40,11 @@ struct FitInput {
   const std::vector<Eigen::Vector3d>& normals;  // unit, inward
   const PointIndex& index;
   double epsilon;     // ε, model units
-  double max_radius;  // never grow a ball beyond this (nor below min_radius)
+  double max_radius;  // never grow a ball beyond this
 };
 
 // Minimum number of points (the farthest with zero weight) a ball holds so
-// that g_i is defined; balls in empty space grow until they hold as many, up
-// to FitInput::max_radius, and a ball left with fewer takes no part in f.
+// that g_i is defined; balls in empty space grow until they hold as many.
 inline constexpr int kMinFitPoints = 6;
 
 // Returns the support centred at `center` whose radius is the largest with

@@ -49,7 +49,6 @@ Eigen::Vector3d ZeroOnSegment(const Eigen::Vector3d& a, const Eigen::Vector3d& b
 absl::StatusOr<IsoSurface> MarchingTetrahedra(const TetMesh& tets,
                                               const std::vector<Eigen::Vector3d>& position,
                                               const std::vector<double>& f,
-                                              const std::vector<double>& evidence,
                                               const std::vector<uint8_t>& inside,
                                               const std::vector<uint8_t>& sparse,
                                               const PuFunction& pu, const RunContext& ctx) {
@@ -67,14 +66,7 @@ absl::StatusOr<IsoSurface> MarchingTetrahedra(const TetMesh& tets,
     for (size_t i = range.begin(); i != range.end(); ++i) {
       const auto [a, b] = cut[i];
       const bool same_sign = (f[a] >= 0) == (f[b] >= 0);
-      const bool evidence_crosses =
-          !evidence.empty() && (evidence[a] >= 0) != (evidence[b] >= 0);
-      if (same_sign && evidence_crosses) {
-        const double t = evidence[a] / (evidence[a] - evidence[b]);
-        out.vertices[i] = position[a] + t * (position[b] - position[a]);
-      } else if (same_sign && f[a] == f[b]) {
-        out.vertices[i] = 0.5 * (position[a] + position[b]);
-      } else if (same_sign) {
+      if (same_sign) {
         out.vertices[i] = std::abs(f[a]) <= std::abs(f[b]) ? position[a] : position[b];
       } else {
         out.vertices[i] = ZeroOnSegment(position[a], position[b], f[a], f[b], pu);

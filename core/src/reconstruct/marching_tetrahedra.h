@@ -26,18 +26,13 @@ struct IsoSurface {
 
 // Returns the surface of marching tetrahedra on the labels `inside`: one
 // vertex per edge with differently labelled ends, at the zero of f on it when
-// the signs of f at the ends differ, else at the end with the smaller |f|
-// (seed 001 §2.3); but where the ends' f agree in sign and `evidence` (the
-// labels' own evidence, may be empty) changes sign, at its linear zero, and
-// where f is the same at both ends (no fit reaches either), at the midpoint.
+// the signs of f at the ends differ, else at the end with the smaller |f|.
 // Closed and manifold when no hull vertex is inside. `position`, `f`,
-// `evidence` (if not empty), `inside` and `sparse` have one entry per tet
-// vertex.
+// `inside` and `sparse` have one entry per tet vertex.
 // Errors: CANCELLED when ctx requests a stop.
 absl::StatusOr<IsoSurface> MarchingTetrahedra(const TetMesh& tets,
                                               const std::vector<Eigen::Vector3d>& position,
                                               const std::vector<double>& f,
-                                              const std::vector<double>& evidence,
                                               const std::vector<uint8_t>& inside,
                                               const std::vector<uint8_t>& sparse,
                                               const PuFunction& pu, const RunContext& ctx);

@@ -41,7 +41,8 @@ Eigen::Vector3d OntoLocalPlane(const Eigen::Vector3d& x, const std::vector<Eigen
 
 }  // namespace
 
-std::vector<int> ProjectToPoints(const SampledSurface& surface, double radius, int iterations,
+std::vector<int> ProjectToPoints(const std::vector<Eigen::Vector3d>& points,
+                                 const PointIndex& index, double radius, int iterations,
                                  TriMesh* mesh) {
   const double sigma2 = radius * radius / 4.0;
   std::vector<uint8_t> left(mesh->n_vertices(), 0);
@@ -54,26 +55,20 @@ std::vector<int> ProjectToPoints(const SampledSurface& surface, double radius, i
       const TriMesh::VertexHandle vh(static_cast<int>(v));
       Eigen::Vector3d x = ToEigen(mesh->point(vh));
       for (int step = 0; step < iterations; ++step) {
-        surface.index.WithinRadius(x, radius, &found);
+        index.WithinRadius(x, radius, &found);
         double widened = sigma2;
         if (found.size() < kMinProjectionPoints) {
-          surface.index.Nearest(x, kMinProjectionPoints, &nearest, &nearest_d2);
+          index.Nearest(x, kMinProjectionPoints, &nearest, &nearest_d2);
           const double reach = kFallbackReach * radius;
           if (nearest.size() < kMinProjectionPoints || nearest_d2.back() > reach * reach) {
-            left[v] = 1;
+            left[v] = step == 0;
             break;
           }
           found.clear();
           for (size_t k = 0; k < nearest.size(); ++k) found.emplace_back(nearest[k], nearest_d2[k]);
           widened = nearest_d2.back() / 4.0;
         }
-        const Eigen::Vector3d foot = OntoLocalPlane(x, surface.points, found, widened, &scratch);
-        surface.index.Nearest(foot, 1, &nearest, &nearest_d2);
-        const double reach =
-            kSupportReach * std::max(surface.h, surface.spacing[nearest[0]]);
-        left[v] = nearest_d2[0] > reach * reach;
-        if (left[v]) break;
-        x = foot;
+        x = OntoLocalPlane(x, points, found, widened, &scratch);
       }
       mesh->set_point(vh, TriMesh::Point(x[0], x[1], x[2]));
     }

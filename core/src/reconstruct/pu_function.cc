@@ -2,21 +2,19 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
 namespace meshseg::reconstruct_internal {
 
 PuFunction::PuFunction(const std::vector<Support>& supports) : supports_(supports) {
-  double smallest = std::numeric_limits<double>::infinity();
+  if (supports.empty()) return;
+  double smallest = supports[0].radius;
   for (const auto& s : supports) {
+    smallest = std::min(smallest, s.radius);
     largest_radius_ = std::max(largest_radius_, s.radius);
-    if (s.point_count >= kMinFitPoints) smallest = std::min(smallest, s.radius);
   }
-  if (!std::isfinite(smallest)) return;
   const int count = static_cast<int>(std::floor(std::log2(largest_radius_ / smallest))) + 1;
   groups_.resize(count);
   for (size_t i = 0; i < supports.size(); ++i) {
-    if (supports[i].point_count < kMinFitPoints) continue;
     const int c =
         std::min(count - 1, static_cast<int>(std::floor(std::log2(supports[i].radius / smallest))));
     groups_[c].centers.push_back(supports[i].center);

@@ -18,8 +18,8 @@ class PuFunction {
   // `supports` must outlive this object.
   explicit PuFunction(const std::vector<Support>& supports);
 
-  // Returns f(x); −(largest radius) where no support holding at least
-  // kMinFitPoints points reaches x (no fit describes x: outside). Thread-safe.
+  // Returns f(x); −(largest radius) where no support reaches x (outside).
+  // Thread-safe.
   double operator()(const Eigen::Vector3d& x) const;
 
  private:

@@ -2,9 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
-#include <numeric>
 #include <string>
 
 #include <tbb/blocked_range.h>
@@ -25,7 +22,6 @@
 #include "reconstruct/small_components.h"
 #include "reconstruct/smoothing.h"
 #include "reconstruct/surface_mesh.h"
-#include "reconstruct/winding_number.h"
 
 namespace meshseg {
 namespace {
@@ -135,11 +131,9 @@ absl::StatusOr<Reconstruction> Reconstruct(const PointCloud& cloud, const Recons
   MESHSEG_RETURN_IF_ERROR(ValidateCloud(cloud));
   Reconstruction out;
   ReconstructStats& stats = out.stats;
-  ctx.Progress("reconstruct: outliers", 0.0);
-  std::vector<double> spread;
   {
     const PointIndex all_index(cloud.points);
-    spread = MeanNeighborDistances(cloud.points, all_index);
+    const std::vector<double> spread = MeanNeighborDistances(cloud.points, all_index);
     stats.point_spacing = Median(spread);
     out.is_outlier =
         OutlierFlags(cloud.points, cloud.normals, all_index, spread, params.normal_neighbors,
@@ -150,12 +144,10 @@ absl::StatusOr<Reconstruction> Reconstruct(const PointCloud& cloud, const Recons
   // Outliers take no part in the fits.
   std::vector<Eigen::Vector3d> points;
   std::vector<Eigen::Vector3d> given_normals;
-  std::vector<double> kept_spread;
   for (size_t i = 0; i < cloud.points.size(); ++i) {
     stats.outlier_count += out.is_outlier[i];
     if (out.is_outlier[i]) continue;
     points.push_back(cloud.points[i]);
-    kept_spread.push_back(spread[i]);
     if (cloud.has_normals()) given_normals.push_back(cloud.normals[i]);
   }
   Eigen::Vector3d lo = points[0], hi = points[0];
@@ -170,7 +162,7 @@ absl::StatusOr<Reconstruction> Reconstruct(const PointCloud& cloud, const Recons
                                                    "; they (nearly) coincide"));
   }
   const PointIndex index(points);
-  ctx.Progress("reconstruct: normals", 0.0);
+  ctx.Progress(kStage, 0.05);
 
   // Step 1: inward normals.
   MESHSEG_ASSIGN_OR_RETURN(
@@ -178,7 +170,7 @@ absl::StatusOr<Reconstruction> Reconstruct(const PointCloud& cloud, const Recons
       InwardNormals(points, given_normals, index, params.normal_neighbors, ctx));
   stats.normals_estimated = !cloud.has_normals();
   stats.normals_flipped = cloud.has_normals() && normals.flipped;
-  ctx.Progress("reconstruct: octree", 0.0);
+  ctx.Progress(kStage, 0.15);
 
   // Step 2: octree, covering and the partition-of-unity implicit f.
   const double cube = extent * (1.0 + 2.0 * kCubeMargin);
@@ -189,14 +181,13 @@ absl::StatusOr<Reconstruction> Reconstruct(const PointCloud& cloud, const Recons
   MESHSEG_ASSIGN_OR_RETURN(const std::vector<OctreeLeaf> leaves,
                            BalancedOctreeLeaves(points, origin, cube, stats.octree_max_level, ctx));
   stats.octree_leaf_count = static_cast<int64_t>(leaves.size());
-  ctx.Progress("reconstruct: covering", 0.0);
   const FitInput fit_input{points, normals.normals, index, params.error_tolerance * h,
-                           params.max_support_radius * h};
+                           std::sqrt(3.0) * cube};
   MESHSEG_ASSIGN_OR_RETURN(const std::vector<Support> supports,
                            CoverBySupports(leaves, fit_input, params.seed, ctx));
   stats.support_count = static_cast<int64_t>(supports.size());
   const PuFunction f(supports);
-  ctx.Progress("reconstruct: tetrahedralization", 0.0);
+  ctx.Progress(kStage, 0.4);
 
   // Step 3: regular tetrahedralization of the support centres.
   MESHSEG_ASSIGN_OR_RETURN(const TetMesh tets, RegularTetrahedralization(supports, ctx));
@@ -209,42 +200,22 @@ absl::StatusOr<Reconstruction> Reconstruct(const PointCloud& cloud, const Recons
     position[v] = s.center;
     sparse[v] = s.point_count < params.sparse_support_points;
   }
-  ctx.Progress("reconstruct: f at the supports", 0.0);
   const std::vector<double> f_at = Evaluate(f, position);
   MESHSEG_RETURN_IF_ERROR(ctx.CheckStop(kStage));
-  ctx.Progress("reconstruct: graph cut", 0.0);
+  ctx.Progress(kStage, 0.6);
 
-  // Step 4: inside/outside labels, by a graph cut on the winding number's
-  // evidence (winding_number.h).
+  // Step 4: inside/outside labels.
   const std::vector<uint8_t> by_sign = SignLabels(tets, f_at);
   std::vector<uint8_t> inside = by_sign;
-  std::vector<double> evidence;
   if (params.use_graph_cut) {
-    std::vector<Eigen::Vector3d> outward(normals.normals.size());
-    for (size_t i = 0; i < outward.size(); ++i) outward[i] = -normals.normals[i];
-    const WindingNumber winding(points, outward, PointAreas(kept_spread));
-    evidence.resize(position.size());
-    tbb::parallel_for(size_t{0}, position.size(),
-                      [&](size_t v) { evidence[v] = winding(position[v]) - 0.5; });
-    MESHSEG_RETURN_IF_ERROR(ctx.CheckStop(kStage));
-    const std::vector<uint8_t> supported = SupportedEdges(tets, position, index, h);
-    const CutInput cut{position, evidence, f_at, supported, params.graph_cut_k, h};
-    MESHSEG_ASSIGN_OR_RETURN(inside, GraphCutLabels(tets, cut, ctx));
+    MESHSEG_ASSIGN_OR_RETURN(inside, GraphCutLabels(tets, position, f_at, params.graph_cut_k, ctx));
   }
   for (size_t v = 0; v < inside.size(); ++v) stats.relabelled_count += inside[v] != by_sign[v];
-  if (getenv("MESHSEG_DEBUG_TETS")) {
-    FILE* dbg = fopen(getenv("MESHSEG_DEBUG_TETS"), "w");
-    std::vector<Eigen::Vector3d> outward(normals.normals.size());
-    for (size_t i = 0; i < outward.size(); ++i) outward[i] = -normals.normals[i];
-    const WindingNumber winding(points, outward, PointAreas(kept_spread));
-    for (size_t v = 0; v < inside.size(); ++v) fprintf(dbg, "%g %g %g %d %g %g %g\n", position[v].x(), position[v].y(), position[v].z(), inside[v], winding(position[v]) - 0.5, f_at[v], supports[tets.support[v]].radius);
-    fclose(dbg);
-  }
-  ctx.Progress("reconstruct: marching tetrahedra", 0.0);
+  ctx.Progress(kStage, 0.75);
 
   // Steps 5-6: marching tetrahedra and selective smoothing.
   MESHSEG_ASSIGN_OR_RETURN(IsoSurface surface,
-                           MarchingTetrahedra(tets, position, f_at, evidence, inside, sparse, f, ctx));
+                           MarchingTetrahedra(tets, position, f_at, inside, sparse, f, ctx));
   if (surface.triangles.empty()) {
     return absl::InvalidArgumentError(
         absl::StrCat(kStage, ": \"", cloud.name, "\": no inside region found among ",
@@ -252,22 +223,15 @@ absl::StatusOr<Reconstruction> Reconstruct(const PointCloud& cloud, const Recons
   }
   stats.dropped_component_count = DropSmallComponents(params.min_component_fraction, &surface);
   for (const uint8_t s : surface.to_smooth) stats.smoothed_vertex_count += s;
-  ctx.Progress("reconstruct: smoothing", 0.0);
   SmoothSelected(surface.triangles, surface.to_smooth, params.smoothing_lambda,
                  params.smoothing_iterations, &surface.vertices);
-  ctx.Progress("reconstruct: surface mesh", 0.0);
+  ctx.Progress(kStage, 0.9);
   MESHSEG_ASSIGN_OR_RETURN(out.mesh, SurfaceMesh(surface.vertices, surface.triangles, cloud.name));
 
   // Step 7 (our addition): a finer, scan-like mesh on the points.
   if (params.refine_edge_length > 0) {
-    ctx.Progress("reconstruct: refine", 0.0);
-    const SampledSurface sampled{points, index, kept_spread, h};
-    MESHSEG_ASSIGN_OR_RETURN(RefinedSurface refined,
-                             RefineOnPoints(out.mesh.tri, sampled, params, ctx, &stats));
-    out.mesh.tri = refined.mesh;
-    out.mesh.input_vertex_count = static_cast<int64_t>(out.mesh.tri.n_vertices());
-    out.mesh.face_of_input.resize(out.mesh.tri.n_faces());
-    std::iota(out.mesh.face_of_input.begin(), out.mesh.face_of_input.end(), 0);
+    MESHSEG_ASSIGN_OR_RETURN(out.mesh,
+                             RefineOnPoints(out.mesh, points, index, f, h, params, ctx, &stats));
   }
 
   ctx.Progress(kStage, 1.0);
