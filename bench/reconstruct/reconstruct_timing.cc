@@ -43,7 +43,6 @@ bool SetParam(const std::string& name, double value, meshseg::ReconstructParams*
       {"error_tolerance", &p->error_tolerance},
       {"leaf_cell_size", &p->leaf_cell_size},
       {"graph_cut_k", &p->graph_cut_k},
-      {"max_support_radius", &p->max_support_radius},
       {"refine_edge_length", &p->refine_edge_length},
       {"projection_radius", &p->projection_radius},
       {"outlier_distance", &p->outlier_distance},

@@ -219,7 +219,10 @@ absl::StatusOr<Reconstruction> Reconstruct(const PointCloud& cloud, const Recons
   if (surface.triangles.empty()) {
     return absl::InvalidArgumentError(
         absl::StrCat(kStage, ": \"", cloud.name, "\": no inside region found among ",
-                     tets.support.size(), " supports; the points enclose no volume"));
+                     tets.support.size(),
+                     " supports; the points enclose no volume at least two octree leaf cells (",
+                     cube / (1 << stats.octree_max_level),
+                     " model units) thick; a thinner solid needs a smaller leaf_cell_size"));
   }
   stats.dropped_component_count = DropSmallComponents(params.min_component_fraction, &surface);
   for (const uint8_t s : surface.to_smooth) stats.smoothed_vertex_count += s;
