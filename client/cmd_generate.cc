@@ -45,13 +45,13 @@ absl::Status WriteScan(const Args& args, const GenerateParams& part_params,
       "wrote %s: scan of %s, %zu points (%lld outliers) from %d views, spacing %g, noise %g, "
       "%.1f %% of the surface seen\n",
       out.c_str(), scan.part.name.c_str(), scan.cloud.points.size(),
-      static_cast<long long>(scan.cloud.points.size() - params.points), params.views,
-      scan.spacing, params.noise * scan.spacing, 100.0 * scan.seen_area_fraction);
+      static_cast<long long>(scan.cloud.points.size() - params.points), params.views, scan.spacing,
+      params.noise * scan.spacing, 100.0 * scan.seen_area_fraction);
   return absl::OkStatus();
 }
 
 absl::Status WriteSurfacePoints(const Args& args, const GenerateParams& part_params,
-                               const std::string& out) {
+                                const std::string& out) {
   MESHSEG_ASSIGN_OR_RETURN(const std::optional<double> count, args.Double("--surface-points"));
   MESHSEG_ASSIGN_OR_RETURN(const std::optional<double> noise, args.Double("--scan-noise"));
   if (!(*count >= 1)) {
@@ -70,7 +70,8 @@ absl::Status WriteSurfacePoints(const Args& args, const GenerateParams& part_par
   PointCloud cloud;
   cloud.points = samples.points;
   if (sigma > 0.0) {
-    for (size_t i = 0; i < cloud.points.size(); ++i) cloud.points[i] += gauss(rng) * samples.normals[i];
+    for (size_t i = 0; i < cloud.points.size(); ++i)
+      cloud.points[i] += gauss(rng) * samples.normals[i];
   }
   MESHSEG_RETURN_IF_ERROR(WritePointCloud(cloud, out));
   std::printf("wrote %s: %zu points on %s, noise %g\n", out.c_str(), cloud.points.size(),
@@ -107,12 +108,12 @@ absl::Status WriteVolume(const std::string& name, const GenerateParams& params, 
 }  // namespace
 
 absl::Status RunGenerate(const Argv& argv) {
-  MESHSEG_ASSIGN_OR_RETURN(
-      const Args args,
-      Args::Parse(argv,
-                  {"-o", "--voxel-size", "--noise", "--ground-truth", "--seed", "--volume", "--scan",
-                   "--scan-points", "--views", "--scan-noise", "--outliers", "--surface-points"},
-                  {"--binary", "--scan-normals"}, 1));
+  MESHSEG_ASSIGN_OR_RETURN(const Args args,
+                           Args::Parse(argv,
+                                       {"-o", "--voxel-size", "--noise", "--ground-truth", "--seed",
+                                        "--volume", "--scan", "--scan-points", "--views",
+                                        "--scan-noise", "--outliers", "--surface-points"},
+                                       {"--binary", "--scan-normals"}, 1));
   const std::optional<std::string> out = args.Value("-o");
   const std::optional<std::string> volume = args.Value("--volume");
   const std::optional<std::string> scan = args.Value("--scan");
@@ -124,8 +125,9 @@ absl::Status RunGenerate(const Argv& argv) {
     return WriteSurfacePoints(args, params, *out);
   }
   if (!out && !volume && !scan) {
-    return absl::InvalidArgumentError(absl::StrCat("-o FILE, --volume OUT.nrrd or --scan CLOUD.xyz is required; parts: ",
-                                                   absl::StrJoin(PartNames(), ", ")));
+    return absl::InvalidArgumentError(
+        absl::StrCat("-o FILE, --volume OUT.nrrd or --scan CLOUD.xyz is required; parts: ",
+                     absl::StrJoin(PartNames(), ", ")));
   }
   if (out && scan) return absl::InvalidArgumentError("give -o FILE or --scan CLOUD.xyz, not both");
   GenerateParams params;

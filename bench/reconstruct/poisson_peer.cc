@@ -5,15 +5,6 @@
 // runs it. Bench only: never linked into the product.
 //   build/bin/poisson_peer CLOUD.xyz OUT.ply [--given-normals] [--neighbors K]
 // Prints the time of each step and the process's peak memory.
-#include <sys/resource.h>
-
-#include <chrono>
-#include <cstdio>
-#include <cstdlib>
-#include <string>
-#include <utility>
-#include <vector>
-
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
 #include <CGAL/Surface_mesh.h>
@@ -23,6 +14,14 @@
 #include <CGAL/poisson_surface_reconstruction.h>
 #include <CGAL/property_map.h>
 
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "bench/peak_rss.h"
 #include "meshseg/point_cloud.h"
 
 namespace {
@@ -36,12 +35,6 @@ using NormalMap = CGAL::Second_of_pair_property_map<Pwn>;
 
 double Seconds(std::chrono::steady_clock::time_point since) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - since).count();
-}
-
-double PeakRssMb() {
-  rusage usage{};
-  getrusage(RUSAGE_SELF, &usage);
-  return usage.ru_maxrss / 1024.0;
 }
 
 int Fail(const std::string& message) {
@@ -96,7 +89,7 @@ int main(int argc, char** argv) {
   if (!CGAL::IO::write_polygon_mesh(argv[2], output, CGAL::parameters::stream_precision(17))) {
     return Fail(std::string("cannot write ") + argv[2]);
   }
-  std::printf("wrote %s: %zu faces, %.2f s, peak %.0f MB\n", argv[2], static_cast<size_t>(output.number_of_faces()), total,
-              PeakRssMb());
+  std::printf("wrote %s: %zu faces, %.2f s, peak %.0f MB\n", argv[2],
+              static_cast<size_t>(output.number_of_faces()), total, meshseg::bench::PeakRssMiB());
   return 0;
 }

@@ -88,22 +88,24 @@ int main(int argc, char** argv) {
     return test::Quantile(d, q) / sp;
   };
   std::printf("sp %.6g (%zu points)\n", sp, cloud->points.size());
-  std::printf("mesh %lld vertices %lld faces; open edges %lld, non-manifold edges %lld, "
-              "non-manifold vertices %lld, degenerate faces %lld, components %lld, genus %lld "
-              "(truth %lld)\n",
-              (long long)stats.vertex_count, (long long)stats.face_count,
-              (long long)stats.boundary_edge_count, (long long)stats.non_manifold_edge_count,
-              (long long)stats.non_manifold_vertex_count, (long long)stats.degenerate_face_count,
-              (long long)stats.component_count, (long long)test::TotalGenus(mesh->tri),
-              (long long)test::TotalGenus(truth->tri));
+  std::printf(
+      "mesh %lld vertices %lld faces; open edges %lld, non-manifold edges %lld, "
+      "non-manifold vertices %lld, degenerate faces %lld, components %lld, genus %lld "
+      "(truth %lld)\n",
+      (long long)stats.vertex_count, (long long)stats.face_count,
+      (long long)stats.boundary_edge_count, (long long)stats.non_manifold_edge_count,
+      (long long)stats.non_manifold_vertex_count, (long long)stats.degenerate_face_count,
+      (long long)stats.component_count, (long long)test::TotalGenus(mesh->tri),
+      (long long)test::TotalGenus(truth->tri));
   std::printf("accuracy      p50 %.2f  p95 %.2f  max %.2f sp\n", in_sp(accuracy, 0.5),
               in_sp(accuracy, 0.95), in_sp(accuracy, 1.0));
   std::printf("completeness  p50 %.2f  p95 %.2f  max %.2f sp\n", in_sp(completeness, 0.5),
               in_sp(completeness, 0.95), in_sp(completeness, 1.0));
-  std::printf("visible compl p50 %.2f  p95 %.2f  max %.2f sp (%.1f %% of the truth within %.1f sp "
-              "of a point)\n",
-              in_sp(visible_completeness, 0.5), in_sp(visible_completeness, 0.95),
-              in_sp(visible_completeness, 1.0), 100.0 * visible_samples.size() / samples, visible);
+  std::printf(
+      "visible compl p50 %.2f  p95 %.2f  max %.2f sp (%.1f %% of the truth within %.1f sp "
+      "of a point)\n",
+      in_sp(visible_completeness, 0.5), in_sp(visible_completeness, 0.95),
+      in_sp(visible_completeness, 1.0), 100.0 * visible_samples.size() / samples, visible);
   // Faces of `triangles` coloured by the distance of their centroid to `to`.
   const auto write_errors = [&](const TriMesh& tri, const std::vector<test::Triangle>& triangles,
                                 const test::SurfaceDistance& to, bool mark_unseen,

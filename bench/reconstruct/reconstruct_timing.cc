@@ -13,6 +13,7 @@
 #include <map>
 #include <string>
 
+#include "bench/peak_rss.h"
 #include "meshseg/mesh.h"
 #include "meshseg/point_cloud.h"
 #include "meshseg/reconstruct.h"
@@ -30,12 +31,6 @@ double CpuSeconds() {
   getrusage(RUSAGE_SELF, &usage);
   return usage.ru_utime.tv_sec + usage.ru_stime.tv_sec +
          1e-6 * (usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
-}
-
-double PeakRssMb() {
-  rusage usage{};
-  getrusage(RUSAGE_SELF, &usage);
-  return usage.ru_maxrss / 1024.0;
 }
 
 bool SetParam(const std::string& name, double value, meshseg::ReconstructParams* p) {
@@ -74,8 +69,8 @@ int main(int argc, char** argv) {
   for (int i = 3; i < argc; ++i) {
     const std::string arg = argv[i];
     const size_t eq = arg.find('=');
-    if (eq == std::string::npos || !SetParam(arg.substr(0, eq), std::atof(arg.c_str() + eq + 1),
-                                             &params)) {
+    if (eq == std::string::npos ||
+        !SetParam(arg.substr(0, eq), std::atof(arg.c_str() + eq + 1), &params)) {
       return Fail("unknown parameter " + arg);
     }
   }
@@ -115,16 +110,16 @@ int main(int argc, char** argv) {
     std::printf("  %-36s %7.2f s wall %7.2f s cpu\n", name.c_str(), s.first, s.second);
   }
   const auto& st = r->stats;
-  std::printf("total %.2f s wall, %.2f s cpu, peak %.0f MB; %zu points, %lld outliers, h %.6g, supports %lld, "
-              "tets %lld, relabelled %lld, smoothed %lld, dropped components %lld, "
-              "refine edge %.6g, unsupported %lld; %zu vertices, %zu faces\n",
-              std::chrono::duration<double>(end - start).count(), CpuSeconds() - start_cpu,
-              PeakRssMb(),
-              cloud->points.size(), (long long)st.outlier_count, st.point_spacing,
-              (long long)st.support_count, (long long)st.tet_count,
-              (long long)st.relabelled_count, (long long)st.smoothed_vertex_count,
-              (long long)st.dropped_component_count, st.refine_edge_length,
-              (long long)st.unsupported_vertex_count, r->mesh.tri.n_vertices(),
-              r->mesh.tri.n_faces());
+  std::printf(
+      "total %.2f s wall, %.2f s cpu, peak %.0f MB; %zu points, %lld outliers, h %.6g, supports "
+      "%lld, "
+      "tets %lld, relabelled %lld, smoothed %lld, dropped components %lld, "
+      "refine edge %.6g, unsupported %lld; %zu vertices, %zu faces\n",
+      std::chrono::duration<double>(end - start).count(), CpuSeconds() - start_cpu,
+      meshseg::bench::PeakRssMiB(), cloud->points.size(), (long long)st.outlier_count,
+      st.point_spacing, (long long)st.support_count, (long long)st.tet_count,
+      (long long)st.relabelled_count, (long long)st.smoothed_vertex_count,
+      (long long)st.dropped_component_count, st.refine_edge_length,
+      (long long)st.unsupported_vertex_count, r->mesh.tri.n_vertices(), r->mesh.tri.n_faces());
   return 0;
 }

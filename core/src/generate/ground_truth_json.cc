@@ -66,9 +66,8 @@ std::string Parameters(const Surface& surface) {
 
 // 0/1 flags as a comma-separated list.
 std::string Flags(const std::vector<uint8_t>& flags) {
-  return absl::StrJoin(flags, ",", [](std::string* o, uint8_t b) {
-    absl::StrAppend(o, static_cast<int>(b));
-  });
+  return absl::StrJoin(flags, ",",
+                       [](std::string* o, uint8_t b) { absl::StrAppend(o, static_cast<int>(b)); });
 }
 
 // The answer key's fields, without the closing brace.

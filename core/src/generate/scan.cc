@@ -1,14 +1,14 @@
 // ScanPart: the scanner mode of the generator (generate.h). Surface samples
 // on the exact primitives, kept per view by line of sight and a laser
 // scanner's density, moved by range noise along the ray; then outliers.
+#include <tbb/parallel_for.h>
+
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <random>
 #include <utility>
-
-#include <Eigen/Geometry>
-#include <tbb/parallel_for.h>
 
 #include "absl/strings/str_cat.h"
 #include "generate/parts.h"
@@ -32,8 +32,8 @@ constexpr double kRayStartVoxels = 0.05;
 
 absl::Status ValidateParams(std::string_view name, const ScanParams& p) {
   const auto bad = [&](const std::string& what) {
-    return absl::InvalidArgumentError(absl::StrCat(kStage, ": part \"", std::string(name), "\": ",
-                                                   what));
+    return absl::InvalidArgumentError(
+        absl::StrCat(kStage, ": part \"", std::string(name), "\": ", what));
   };
   if (p.points < 1 || p.points > kMaxPoints) {
     return bad(absl::StrCat("points ", p.points, " outside [1, ", kMaxPoints, "]"));
@@ -98,7 +98,8 @@ absl::StatusOr<ScannedPart> ScanPart(std::string_view name, const ScanParams& pa
   scan.viewpoints = Viewpoints(box, params);
   double nearest_range = std::numeric_limits<double>::infinity();
   for (const auto& eye : scan.viewpoints) {
-    nearest_range = std::min(nearest_range, (box.center() - eye).norm() - 0.5 * box.diagonal().norm());
+    nearest_range =
+        std::min(nearest_range, (box.center() - eye).norm() - 0.5 * box.diagonal().norm());
   }
   const double min_cos = std::cos(params.max_incidence_deg * std::numbers::pi / 180.0);
   const double start = kRayStartVoxels * g.voxel_size;
@@ -121,9 +122,10 @@ absl::StatusOr<ScannedPart> ScanPart(std::string_view name, const ScanParams& pa
         const Eigen::Vector3d to_eye = scan.viewpoints[v] - batch.points[i];
         const double range = to_eye.norm();
         const double cos_incidence = batch.normals[i].dot(to_eye) / range;
-        const bool visible = cos_incidence > min_cos &&
-                             generate_internal::LineOfSight(spec->solid, batch.points[i],
-                                                            scan.viewpoints[v], start, g.voxel_size);
+        const bool visible =
+            cos_incidence > min_cos &&
+            generate_internal::LineOfSight(spec->solid, batch.points[i], scan.viewpoints[v], start,
+                                           g.voxel_size);
         const double falloff = nearest_range / range;
         keep[i * views + v] = visible ? cos_incidence * falloff * falloff : 0.0;
       }

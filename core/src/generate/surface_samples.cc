@@ -1,9 +1,8 @@
 // SampleSurface: points uniform by area on a generated part's exact
 // primitives (generate.h).
+#include <Eigen/Geometry>
 #include <array>
 #include <random>
-
-#include <Eigen/Geometry>
 
 #include "meshseg/fit.h"
 #include "meshseg/generate.h"

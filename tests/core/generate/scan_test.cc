@@ -1,11 +1,11 @@
 // The scanner mode of the generator (ScanPart): point counts and outlier
 // flags, occlusion (faces turned away from every view get no points), range
 // noise along the ray, and bad parameters.
-#include <algorithm>
-#include <cmath>
-
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
 
 #include "meshseg/generate.h"
 
@@ -40,7 +40,7 @@ TEST(ScanPart, FacesTurnedAwayFromEveryViewGetNoPoints) {
   const auto scan = ScanPart("small_block", Small());
   ASSERT_TRUE(scan.ok()) << scan.status();
   int64_t down = 0;
-  for (const auto& n : scan->cloud.normals) down += n.z() < -0.99;
+  for (const auto &n : scan->cloud.normals) down += n.z() < -0.99;
   EXPECT_EQ(down, 0);
   EXPECT_LT(scan->seen_area_fraction, 0.95);
   EXPECT_GT(scan->seen_area_fraction, 0.3);
@@ -77,8 +77,7 @@ TEST(ScanPart, BadParametersAreInvalidNamingTheValue) {
   p = Small();
   p.elevation_deg = 90;
   EXPECT_THAT(ScanPart("small_block", p).status().message(), HasSubstr("elevation_deg 90"));
-  EXPECT_EQ(ScanPart("no_such_part", Small()).status().code(),
-            absl::StatusCode::kInvalidArgument);
+  EXPECT_EQ(ScanPart("no_such_part", Small()).status().code(), absl::StatusCode::kInvalidArgument);
 }
 
 }  // namespace

@@ -11,6 +11,10 @@
 #ifndef MESHSEG_TESTS_CORE_RECONSTRUCT_SURFACE_METRICS_H_
 #define MESHSEG_TESTS_CORE_RECONSTRUCT_SURFACE_METRICS_H_
 
+#include <tbb/parallel_for.h>
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -18,10 +22,6 @@
 #include <memory>
 #include <random>
 #include <vector>
-
-#include <Eigen/Core>
-#include <Eigen/Geometry>
-#include <tbb/parallel_for.h>
 
 #include "meshseg/mesh.h"
 #include "reconstruct/point_index.h"
