@@ -40,7 +40,7 @@ TEST(ScanPart, FacesTurnedAwayFromEveryViewGetNoPoints) {
   const auto scan = ScanPart("small_block", Small());
   ASSERT_TRUE(scan.ok()) << scan.status();
   int64_t down = 0;
-  for (const auto &n : scan->cloud.normals) down += n.z() < -0.99;
+  for (const auto& n : scan->cloud.normals) down += n.z() < -0.99;
   EXPECT_EQ(down, 0);
   EXPECT_LT(scan->seen_area_fraction, 0.95);
   EXPECT_GT(scan->seen_area_fraction, 0.3);

@@ -53,7 +53,7 @@ struct Defects {
 
 using Faces = std::vector<std::array<int, 3>>;
 
-Faces FaceList(const TriMesh &m) {
+Faces FaceList(const TriMesh& m) {
   Faces faces;
   for (const auto f : m.faces()) {
     std::array<int, 3> t{};
@@ -64,20 +64,20 @@ Faces FaceList(const TriMesh &m) {
   return faces;
 }
 
-std::vector<Eigen::Vector3d> Positions(const TriMesh &m) {
+std::vector<Eigen::Vector3d> Positions(const TriMesh& m) {
   std::vector<Eigen::Vector3d> p;
   for (const auto v : m.vertices()) p.push_back(ToEigen(m.point(v)));
   return p;
 }
 
-Defects FindDefects(const Faces &faces, const std::vector<Eigen::Vector3d> &position) {
+Defects FindDefects(const Faces& faces, const std::vector<Eigen::Vector3d>& position) {
   Defects d;
   std::map<std::pair<int, int>, int> directed;                          // (from, to) -> count
   std::vector<std::vector<std::pair<int, int>>> link(position.size());  // opposite edge per face
-  for (const auto &t : faces) {
-    const Eigen::Vector3d &a = position[t[0]];
-    const Eigen::Vector3d &b = position[t[1]];
-    const Eigen::Vector3d &c = position[t[2]];
+  for (const auto& t : faces) {
+    const Eigen::Vector3d& a = position[t[0]];
+    const Eigen::Vector3d& b = position[t[1]];
+    const Eigen::Vector3d& c = position[t[2]];
     if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2] || (b - a).cross(c - a).norm() == 0.0) {
       ++d.degenerate_faces;
     }
@@ -87,21 +87,21 @@ Defects FindDefects(const Faces &faces, const std::vector<Eigen::Vector3d> &posi
     }
   }
   std::map<std::pair<int, int>, std::pair<int, int>> undirected;  // -> (faces, same-way pairs)
-  for (const auto &[e, count] : directed) {
-    auto &u = undirected[{std::min(e.first, e.second), std::max(e.first, e.second)}];
+  for (const auto& [e, count] : directed) {
+    auto& u = undirected[{std::min(e.first, e.second), std::max(e.first, e.second)}];
     u.first += count;
     u.second += count > 1;
   }
-  for (const auto &[e, u] : undirected) {
+  for (const auto& [e, u] : undirected) {
     d.open_edges += u.first == 1;
     d.non_manifold_edges += u.first > 2;
     d.misoriented_edges += u.first == 2 && u.second > 0;
   }
   // A manifold vertex's link (the edges opposite it) is one closed cycle.
-  for (const auto &edges : link) {
+  for (const auto& edges : link) {
     if (edges.empty()) continue;
     std::map<int, int> next;
-    for (const auto &[from, to] : edges) next[from] = to;
+    for (const auto& [from, to] : edges) next[from] = to;
     if (next.size() != edges.size()) {
       ++d.non_manifold_vertices;
       continue;
@@ -124,19 +124,19 @@ Defects FindDefects(const Faces &faces, const std::vector<Eigen::Vector3d> &posi
 // solid, as a scan of bodies touching each other has none.
 Shape Union(std::vector<Shape> parts) {
   Shape s;
-  s.sdf = [parts](const Eigen::Vector3d &p) {
+  s.sdf = [parts](const Eigen::Vector3d& p) {
     double d = std::numeric_limits<double>::infinity();
-    for (const auto &part : parts) d = std::min(d, part.sdf(p));
+    for (const auto& part : parts) d = std::min(d, part.sdf(p));
     return d;
   };
   double area = 0.0;
   std::vector<double> weights;
-  for (const auto &part : parts) {
+  for (const auto& part : parts) {
     area += part.area;
     weights.push_back(part.area);
   }
   s.area = area;
-  s.sample = [parts, weights](std::mt19937 &rng, Eigen::Vector3d *p, Eigen::Vector3d *n) {
+  s.sample = [parts, weights](std::mt19937& rng, Eigen::Vector3d* p, Eigen::Vector3d* n) {
     std::discrete_distribution<int> pick(weights.begin(), weights.end());
     for (;;) {
       const int i = pick(rng);
@@ -151,10 +151,10 @@ Shape Union(std::vector<Shape> parts) {
   return s;
 }
 
-Shape Translated(Shape shape, const Eigen::Vector3d &offset) {
+Shape Translated(Shape shape, const Eigen::Vector3d& offset) {
   Shape s = shape;
-  s.sdf = [shape, offset](const Eigen::Vector3d &p) { return shape.sdf(p - offset); };
-  s.sample = [shape, offset](std::mt19937 &rng, Eigen::Vector3d *p, Eigen::Vector3d *n) {
+  s.sdf = [shape, offset](const Eigen::Vector3d& p) { return shape.sdf(p - offset); };
+  s.sample = [shape, offset](std::mt19937& rng, Eigen::Vector3d* p, Eigen::Vector3d* n) {
     shape.sample(rng, p, n);
     *p += offset;
   };
@@ -165,7 +165,7 @@ Shape Translated(Shape shape, const Eigen::Vector3d &offset) {
 // random low-frequency waves of amplitude up to 0.25 in all. Surface samples
 // are the sphere's, pushed out radially (density varies with the stretch, as
 // a scan's does); normals from the gradient of |p| − r(p / |p|).
-Shape Blob(std::mt19937 &rng) {
+Shape Blob(std::mt19937& rng) {
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   std::array<Eigen::Vector3d, 3> k;
   std::array<double, 3> phase{}, amp{};
@@ -174,15 +174,15 @@ Shape Blob(std::mt19937 &rng) {
     phase[i] = u(rng) * M_PI;
     amp[i] = 0.08 * std::abs(u(rng));
   }
-  const auto radius = [k, phase, amp](const Eigen::Vector3d &dir) {
+  const auto radius = [k, phase, amp](const Eigen::Vector3d& dir) {
     double r = 1.0;
     for (int i = 0; i < 3; ++i) r += amp[i] * std::sin(k[i].dot(dir) + phase[i]);
     return r;
   };
-  const auto f = [radius](const Eigen::Vector3d &p) { return p.norm() - radius(p.normalized()); };
+  const auto f = [radius](const Eigen::Vector3d& p) { return p.norm() - radius(p.normalized()); };
   Shape s;
   s.sdf = f;
-  s.sample = [radius, f](std::mt19937 &rng, Eigen::Vector3d *p, Eigen::Vector3d *n) {
+  s.sample = [radius, f](std::mt19937& rng, Eigen::Vector3d* p, Eigen::Vector3d* n) {
     std::normal_distribution<double> g;
     const Eigen::Vector3d dir = Eigen::Vector3d(g(rng), g(rng), g(rng)).normalized();
     *p = radius(dir) * dir;
@@ -279,12 +279,12 @@ std::vector<Case> Cases(unsigned seed) {
 class ManifoldProperty : public ::testing::TestWithParam<unsigned> {};
 
 TEST_P(ManifoldProperty, EveryEdgeHasTwoFacesAndEveryVertexOneFan) {
-  for (const Case &c : Cases(GetParam())) {
+  for (const Case& c : Cases(GetParam())) {
     SCOPED_TRACE(absl::StrCat(c.name, ", seed ", GetParam()));
     const PointCloud cloud = test::MakeCloud(c.shape, c.spec);
     const auto r = Reconstruct(cloud);
     ASSERT_TRUE(r.ok()) << r.status();
-    const TriMesh &m = r->mesh.tri;
+    const TriMesh& m = r->mesh.tri;
     ASSERT_GT(m.n_faces(), 0u);
     const Defects d = FindDefects(FaceList(m), Positions(m));
     EXPECT_TRUE(d.None()) << d.Describe();
@@ -317,7 +317,7 @@ TEST(ManifoldPropertyCheck, FindsOpenEdgesPinchedVerticesFlippedAndFlatFaces) {
   EXPECT_EQ(FindDefects(flipped, p).misoriented_edges, 3);
 
   Faces pinched = tet;
-  for (const auto &t : Faces{{3, 5, 4}, {3, 4, 6}, {4, 5, 6}, {3, 6, 5}}) pinched.push_back(t);
+  for (const auto& t : Faces{{3, 5, 4}, {3, 4, 6}, {4, 5, 6}, {3, 6, 5}}) pinched.push_back(t);
   const Defects d = FindDefects(pinched, p);
   EXPECT_EQ(d.non_manifold_vertices, 1) << d.Describe();
   EXPECT_EQ(d.open_edges + d.non_manifold_edges + d.misoriented_edges, 0) << d.Describe();
