@@ -16,6 +16,7 @@
 
 #include "absl/status/statusor.h"
 #include "meshseg/mesh.h"
+#include "meshseg/point_cloud.h"
 #include "meshseg/run_context.h"
 #include "meshseg/surface.h"
 #include "meshseg/voxel.h"
@@ -91,6 +92,77 @@ absl::StatusOr<GeneratedPart> LabelWithGroundTruth(std::string_view name, const 
 //    "face_primitive": [int per face], "face_near_boundary": [0/1 per face]}
 // with Vec3 = {"x", "y", "z"}.
 std::string GroundTruthJson(const GeneratedPart& part);
+
+// Points drawn uniformly by area on a part's exact primitives.
+struct SurfaceSamples {
+  std::vector<Eigen::Vector3d> points;
+  std::vector<Eigen::Vector3d> normals;  // unit, outward
+  std::vector<int> primitive;            // per point; -1 on a face without one
+};
+
+// Returns `count` points uniform by area on the faces of `part.mesh`, each
+// moved to the closest point of its face's exact primitive (from `seed`).
+SurfaceSamples SampleSurface(const GeneratedPart& part, int64_t count, uint64_t seed);
+
+// Scanner mode: a simulated laser scan of a generated part. Points are drawn
+// uniformly by area on the part's exact primitives; each scanner position
+// keeps a point it sees (its ray meets no material on the way, the surface
+// faces it at less than max_incidence_deg) with probability cos(incidence) ×
+// (nearest range / range)², as a scanner sweeping its beam at equal angle
+// steps does, so density is uneven and overlapping views add up; the point
+// is then moved along the ray by Gaussian range noise. Uniform outliers in
+// the part's bounding box are appended, flagged.
+struct ScanParams {
+  // Scan points over all views (outliers come on top).
+  int64_t points = 50'000;
+  // Scanner positions: evenly spaced in azimuth on a ring around the part's
+  // centre, elevation_deg above its horizontal plane (z up), at `distance`
+  // bounding-box diagonals from the centre, so faces turned down are unseen.
+  int views = 4;
+  double elevation_deg = 35.0;
+  double distance = 2.0;
+  // Rays meeting the surface at more than this from its normal return
+  // nothing (a scanner loses a grazing beam).
+  double max_incidence_deg = 80.0;
+  // Standard deviation of the range noise, in nominal spacings (see
+  // ScannedPart::spacing).
+  double noise = 0.1;
+  // Outliers added uniformly in the part's bounding box, as a fraction of
+  // `points`.
+  double outliers = 0.0;
+  // Give every point the true outward normal (outliers a random one);
+  // scanners that estimate normals do so from the points, so default off.
+  bool normals = false;
+  uint64_t seed = 1;
+};
+
+struct ScannedPart {
+  GeneratedPart part;  // at GenerateParams' voxel size, noise-free
+  // The scan points in draw order, then the outliers.
+  PointCloud cloud;
+  // One per point: the primitive the point was drawn from; -1 for an outlier
+  // (and for a point on a face without a primitive).
+  std::vector<int> point_primitive;
+  std::vector<uint8_t> is_outlier;  // one per point
+  // sqrt(seen area / scan points), model units: the spacing the scan would
+  // have at uniform density.
+  double spacing = 0.0;
+  double seen_area_fraction = 0.0;  // of the part's surface, seen by a view
+  std::vector<Eigen::Vector3d> viewpoints;
+};
+
+// Returns the scan of part `name` (generated with `part_params`).
+// Errors: those of GeneratePart; INVALID_ARGUMENT for points < 1 or over
+// 100 M, views < 1, elevation outside [0, 90), distance <= 0.5,
+// max_incidence_deg outside (0, 90], noise < 0, outliers outside [0, 10];
+// FAILED_PRECONDITION if no view sees the part; CANCELLED on stop.
+absl::StatusOr<ScannedPart> ScanPart(std::string_view name, const ScanParams& params = {},
+                                     const GenerateParams& part_params = {},
+                                     const RunContext& ctx = {});
+
+// Returns GroundTruthJson of the scanned part with two more fields:
+//   "point_primitive": [int per point], "point_outlier": [0/1 per point].
+std::string ScanTruthJson(const ScannedPart& scan);
 
 }  // namespace meshseg
 

@@ -64,9 +64,14 @@ std::string Parameters(const Surface& surface) {
       surface);
 }
 
-}  // namespace
+// 0/1 flags as a comma-separated list.
+std::string Flags(const std::vector<uint8_t>& flags) {
+  return absl::StrJoin(flags, ",",
+                       [](std::string* o, uint8_t b) { absl::StrAppend(o, static_cast<int>(b)); });
+}
 
-std::string GroundTruthJson(const GeneratedPart& part) {
+// The answer key's fields, without the closing brace.
+std::string GroundTruthFields(const GeneratedPart& part) {
   std::string out = absl::StrCat("{\"name\": ", Quoted(part.name), ", \"voxel_size\": ",
                                  Num(part.voxel_size), ", \"noise\": ", Num(part.noise),
                                  ", \"face_count\": ", part.face_primitive.size(),
@@ -78,12 +83,20 @@ std::string GroundTruthJson(const GeneratedPart& part) {
                     Parameters(p.surface), "}");
   }
   absl::StrAppend(&out, "],\n \"face_primitive\": [", absl::StrJoin(part.face_primitive, ","),
-                  "],\n \"face_near_boundary\": [",
-                  absl::StrJoin(part.face_near_boundary, ",", [](std::string* o, uint8_t b) {
-                    absl::StrAppend(o, static_cast<int>(b));
-                  }),
-                  "]}\n");
+                  "],\n \"face_near_boundary\": [", Flags(part.face_near_boundary), "]");
   return out;
+}
+
+}  // namespace
+
+std::string GroundTruthJson(const GeneratedPart& part) {
+  return absl::StrCat(GroundTruthFields(part), "}\n");
+}
+
+std::string ScanTruthJson(const ScannedPart& scan) {
+  return absl::StrCat(GroundTruthFields(scan.part), ",\n \"point_primitive\": [",
+                      absl::StrJoin(scan.point_primitive, ","), "],\n \"point_outlier\": [",
+                      Flags(scan.is_outlier), "]}\n");
 }
 
 }  // namespace meshseg

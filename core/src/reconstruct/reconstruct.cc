@@ -217,9 +217,11 @@ absl::StatusOr<Reconstruction> Reconstruct(const PointCloud& cloud, const Recons
   MESHSEG_ASSIGN_OR_RETURN(IsoSurface surface,
                            MarchingTetrahedra(tets, position, f_at, inside, sparse, f, ctx));
   if (surface.triangles.empty()) {
-    return absl::InvalidArgumentError(
-        absl::StrCat(kStage, ": \"", cloud.name, "\": no inside region found among ",
-                     tets.support.size(), " supports; the points enclose no volume"));
+    return absl::InvalidArgumentError(absl::StrCat(
+        kStage, ": \"", cloud.name, "\": no inside region found among ", tets.support.size(),
+        " supports; the points enclose no volume at least two octree leaf cells (",
+        cube / (1 << stats.octree_max_level),
+        " model units) thick; a thinner solid needs a smaller leaf_cell_size"));
   }
   stats.dropped_component_count = DropSmallComponents(params.min_component_fraction, &surface);
   for (const uint8_t s : surface.to_smooth) stats.smoothed_vertex_count += s;

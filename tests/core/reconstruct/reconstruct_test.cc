@@ -281,6 +281,17 @@ TEST(Reconstruct, CoincidentPointsAreInvalid) {
   EXPECT_THAT(r.status().message(), HasSubstr("coincide"));
 }
 
+// A plate under one point spacing thick holds no support centre inside it at
+// the default leaf cells of two spacings: an error naming the cell size and
+// the parameter to change, not an empty mesh.
+TEST(Reconstruct, SolidThinnerThanTheLeafCellsIsInvalidNamingTheCellSize) {
+  const Shape plate = test::Box({1.0, 0.8, 0.0125});
+  const auto r = Reconstruct(test::MakeCloud(plate, CloudSpec{.points = 4000}));
+  EXPECT_EQ(r.status().code(), absl::StatusCode::kInvalidArgument);
+  EXPECT_THAT(r.status().message(), HasSubstr("model units) thick"));
+  EXPECT_THAT(r.status().message(), HasSubstr("smaller leaf_cell_size"));
+}
+
 TEST(Reconstruct, BadParamsAreInvalid) {
   const PointCloud cloud = test::MakeCloud(test::Sphere(1.0), CloudSpec{.points = 500});
   EXPECT_THAT(Reconstruct(cloud, {.error_tolerance = 0}).status().message(),
