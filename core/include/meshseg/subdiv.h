@@ -63,6 +63,12 @@ struct SubdivParams {
   // point reaches determined (Hoppe et al. 1994 eq. 4 uses the same spring
   // energy with a decreasing weight). Relative, dimensionless.
   double smoothing_weight = 1e-4;
+  // Weight of the tangential offset against the normal distance of each data
+  // point to its footpoint (1 = point-to-point as Hoppe et al. 1994; small =
+  // point-to-plane, which converges in a few rounds because the surface may
+  // slide along itself; Pottmann et al. 2006 "squared distance
+  // minimization"). Must be > 0 to keep the system definite.
+  double tangent_weight = 0.1;
 };
 
 // The fitted surface.
