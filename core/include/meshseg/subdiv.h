@@ -19,6 +19,7 @@
 #include <array>
 #include <cstdint>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "absl/status/statusor.h"
@@ -42,6 +43,15 @@ struct ControlMesh {
 struct SubdivParams {
   // Faces of the control mesh; unset = face_fraction of the input's faces.
   std::optional<int64_t> target_faces;
+  // Largest rms distance from the data to the limit surface, in model units;
+  // unset = fit once at the target size. Set: while the fit is farther than
+  // this, the control mesh is rebuilt with twice the faces (adaptive
+  // refinement, issue #35), up to max_face_fraction of the input's faces.
+  std::optional<double> tolerance;
+  // Upper bound of the refinement: a control mesh of a quarter of the input's
+  // faces has as many control vertices as a quarter of the data, where the
+  // least-squares fit starts to follow the noise.
+  double max_face_fraction = 0.25;
   // Control-mesh size relative to the input when target_faces is unset.
   // Issue #35 asks for a control mesh of at most 5 % of the input's faces.
   double face_fraction = 0.05;
@@ -82,8 +92,13 @@ struct SubdivFit {
   // surface, in model units, after the last fit round.
   double rms_distance = 0.0;
   double max_distance = 0.0;
-  // rms after quasi-interpolation (entry 0) and after each fit round.
+  // rms after quasi-interpolation (entry 0) and after each fit round, of
+  // the last control mesh tried.
   std::vector<double> rms_per_round;
+  // With SubdivParams::tolerance: the control face counts tried and their
+  // final rms, in order (one entry without a tolerance).
+  std::vector<int64_t> tried_faces;
+  std::vector<double> tried_rms;
 };
 
 // Returns the Loop subdivision surface fitted to the vertices of `mesh`.
@@ -92,11 +107,22 @@ struct SubdivFit {
 // feature_angle_deg, corners where three or more creases meet), the sampled
 // limit surface (control faces x 4^limit_level triangles) and the fit's
 // distances. Reports progress as "subdiv".
+// With params.tolerance, control meshes of doubling size are fitted until
+// the rms is within it (or the size bound is reached: the closest fit is
+// returned; compare rms_distance with the tolerance).
 // Errors: INVALID_ARGUMENT for bad params, a mesh with fewer than 4 faces or
 // a target face count outside [4, input faces]; INTERNAL if the least-squares
 // system cannot be factored; CANCELLED on stop.
 absl::StatusOr<SubdivFit> FitSubdivisionSurface(const Mesh& mesh, const SubdivParams& params = {},
                                                 const RunContext& ctx = {});
+
+// Writes `control` to `path` as Wavefront OBJ: `v` and `f` lines (f 1-based
+// as OBJ wants), then one line per crease edge, `t crease 2/1/0 A B 10`, and
+// per corner, `t corner 1/1/0 V 10`, with 0-based vertex indices: the tag
+// lines of OpenSubdiv's regression shapes (regression/shapes/*.h, read by
+// its shape_utils), where sharpness 10 is infinitely sharp.
+// Errors: INTERNAL if the file cannot be written.
+absl::Status WriteControlObj(const ControlMesh& control, const std::string& path);
 
 }  // namespace meshseg
 

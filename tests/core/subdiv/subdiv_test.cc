@@ -81,14 +81,42 @@ TEST(FitSubdivisionSurface, CubeKeepsSharpEdges) {
   EXPECT_LE(d.max, h) << "rounding wider than 1 h";
 }
 
+TEST(FitSubdivisionSurface, ToleranceRefinesTheControlMesh) {
+  // Asking for half the rms of the default size must double the control
+  // mesh until the fit is within it: the approximation error of a smooth
+  // surface falls with the control edge length.
+  const testing::Superellipsoid shape;
+  testing::Triangles t = testing::UnitIcosphere(3);
+  for (auto& v : t.vertices) v = shape.Project(v);
+  auto mesh = testing::ToMesh(t, "superellipsoid");
+  ASSERT_TRUE(mesh.ok()) << mesh.status();
+  auto coarse = FitSubdivisionSurface(*mesh);
+  ASSERT_TRUE(coarse.ok()) << coarse.status();
+  SubdivParams params;
+  params.tolerance = 0.5 * coarse->rms_distance;
+  auto fine = FitSubdivisionSurface(*mesh, params);
+  ASSERT_TRUE(fine.ok()) << fine.status();
+  ASSERT_GE(fine->tried_faces.size(), 2u);
+  EXPECT_EQ(fine->tried_faces.front(), static_cast<int64_t>(coarse->control.faces.size()));
+  for (size_t i = 1; i < fine->tried_faces.size(); ++i) {
+    EXPECT_GT(fine->tried_faces[i], fine->tried_faces[i - 1]);
+  }
+  EXPECT_LE(fine->rms_distance, *params.tolerance);
+  EXPECT_EQ(fine->control.faces.size(), fine->tried_faces.back());
+}
+
 TEST(FitSubdivisionSurface, RejectsBadParamsAndTinyMeshes) {
   testing::Triangles t = testing::UnitIcosphere(1);
   auto mesh = testing::ToMesh(t, "ico80");
   ASSERT_TRUE(mesh.ok());
-  auto r = FitSubdivisionSurface(*mesh, {.target_faces = 2});
+  SubdivParams tiny;
+  tiny.target_faces = 2;
+  auto r = FitSubdivisionSurface(*mesh, tiny);
   EXPECT_EQ(r.status().code(), absl::StatusCode::kInvalidArgument);
   EXPECT_THAT(r.status().message(), HasSubstr("target_faces 2 is below 4"));
-  r = FitSubdivisionSurface(*mesh, {.target_faces = 81});
+  SubdivParams huge;
+  huge.target_faces = 81;
+  r = FitSubdivisionSurface(*mesh, huge);
   EXPECT_THAT(r.status().message(), HasSubstr("target_faces 81 exceeds the 80 faces of \"ico80\""));
   SubdivParams deep;
   deep.limit_level = 9;
@@ -98,6 +126,10 @@ TEST(FitSubdivisionSurface, RejectsBadParamsAndTinyMeshes) {
   nan_weight.smoothing_weight = std::nan("");
   r = FitSubdivisionSurface(*mesh, nan_weight);
   EXPECT_THAT(r.status().message(), HasSubstr("smoothing_weight nan"));
+  SubdivParams negative;
+  negative.tolerance = -1.0;
+  r = FitSubdivisionSurface(*mesh, negative);
+  EXPECT_THAT(r.status().message(), HasSubstr("tolerance -1 must be finite and > 0"));
   testing::Triangles tri;
   tri.vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
   tri.faces = {{0, 1, 2}};
