@@ -59,6 +59,12 @@ struct SubdivParams {
   // 30 degrees as RemeshParams::feature_angle_deg: fillets between analytic
   // faces (and scan noise at 0.05 h) stay below, machined edges above.
   double feature_angle_deg = 30.0;
+  // Sharp edges count as creases only in connected feature lines of at least
+  // this many edges: a part's sharp edge crosses many triangles, while single
+  // sharp edges come from noise or a coarse tessellation of a curved surface.
+  // Each crease line end is a fixed vertex of the simplification, so short
+  // spurious lines would also keep the control mesh from its target size.
+  int min_crease_edges = 4;
   // The limit surface is sampled at the vertices of this subdivision level of
   // the control mesh; data points are fitted to the triangles between them.
   // Level 2 (16 triangles per control face) keeps the chord error of the

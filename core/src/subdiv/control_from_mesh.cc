@@ -36,16 +36,35 @@ class Progress : public OpenMesh::Decimater::Observer {
   size_t total_;
 };
 
-// Tags feature edges and their vertices in `work`; locks vertices whose
-// feature-edge count is not 0 or 2. Returns the feature-edge count per vertex.
-std::vector<int> TagFeatures(TriMesh& work, double feature_angle_deg) {
+// Returns the root of v's set (path halving).
+int Find(std::vector<int>& parent, int v) {
+  while (parent[v] != v) v = parent[v] = parent[parent[v]];
+  return v;
+}
+
+// Tags feature edges and their vertices in `work`: edges sharper than
+// feature_angle_deg, in connected feature lines of at least min_edges edges
+// (a machined edge or a crease crosses many triangles; a lone sharp edge is a
+// scan or tessellation artefact). Locks vertices whose feature-edge count is
+// not 0 or 2. Returns the feature-edge count per vertex.
+std::vector<int> TagFeatures(TriMesh& work, double feature_angle_deg, int min_edges) {
   const double min_cos = std::cos(feature_angle_deg * std::numbers::pi / 180.0);
-  std::vector<int> count(work.n_vertices(), 0);
+  std::vector<OpenMesh::SmartEdgeHandle> sharp;
+  std::vector<int> parent(work.n_vertices());
+  for (size_t v = 0; v < parent.size(); ++v) parent[v] = static_cast<int>(v);
   for (auto e : work.edges()) {
     if (work.is_boundary(e)) continue;  // the decimater keeps boundaries on themselves
     const auto n0 = work.normal(work.face_handle(work.halfedge_handle(e, 0)));
     const auto n1 = work.normal(work.face_handle(work.halfedge_handle(e, 1)));
     if (OpenMesh::dot(n0, n1) >= min_cos) continue;
+    sharp.push_back(e);
+    parent[Find(parent, e.v0().idx())] = Find(parent, e.v1().idx());
+  }
+  std::vector<int> line_edges(work.n_vertices(), 0);
+  for (auto e : sharp) ++line_edges[Find(parent, e.v0().idx())];
+  std::vector<int> count(work.n_vertices(), 0);
+  for (auto e : sharp) {
+    if (line_edges[Find(parent, e.v0().idx())] < min_edges) continue;
     work.status(e).set_feature(true);
     for (auto v : {e.v0(), e.v1()}) {
       work.status(v).set_feature(true);
@@ -84,10 +103,11 @@ ControlMesh Compact(const TriMesh& work, const std::vector<int>& feature_count) 
 }  // namespace
 
 absl::StatusOr<ControlMesh> ControlFromMesh(const TriMesh& mesh, int64_t target_faces,
-                                            double feature_angle_deg, const RunContext& ctx) {
+                                            double feature_angle_deg, int min_crease_edges,
+                                            const RunContext& ctx) {
   TriMesh work = mesh;
   work.update_face_normals();
-  const std::vector<int> feature_count = TagFeatures(work, feature_angle_deg);
+  const std::vector<int> feature_count = TagFeatures(work, feature_angle_deg, min_crease_edges);
   Decimater decimater(work);
   Quadric::Handle quadric;
   NormalFlipping::Handle flipping;

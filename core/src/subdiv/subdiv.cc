@@ -35,6 +35,10 @@ absl::Status ValidateParams(const SubdivParams& params) {
     return absl::InvalidArgumentError(absl::StrCat(
         "subdiv: feature_angle_deg ", params.feature_angle_deg, " must be in (0, 180]"));
   }
+  if (params.min_crease_edges < 1) {
+    return absl::InvalidArgumentError(
+        absl::StrCat("subdiv: min_crease_edges ", params.min_crease_edges, " must be >= 1"));
+  }
   if (params.limit_level < 0 || params.limit_level > kMaxLimitLevel) {
     return absl::InvalidArgumentError(absl::StrCat("subdiv: limit_level ", params.limit_level,
                                                    " must be in [0, ", kMaxLimitLevel, "]"));
@@ -66,9 +70,9 @@ absl::Status ValidateParams(const SubdivParams& params) {
 absl::StatusOr<SubdivFit> FitAtSize(const Mesh& mesh, const std::vector<Eigen::Vector3d>& data,
                                     int64_t target, const SubdivParams& params,
                                     const RunContext& ctx) {
-  MESHSEG_ASSIGN_OR_RETURN(
-      ControlMesh control,
-      subdiv_internal::ControlFromMesh(mesh.tri, target, params.feature_angle_deg, ctx));
+  MESHSEG_ASSIGN_OR_RETURN(ControlMesh control, subdiv_internal::ControlFromMesh(
+                                                    mesh.tri, target, params.feature_angle_deg,
+                                                    params.min_crease_edges, ctx));
   MESHSEG_ASSIGN_OR_RETURN(const subdiv_internal::ControlTopology topo,
                            subdiv_internal::BuildControlTopology(control));
   control.vertices = subdiv_internal::QuasiInterpolate(control, topo);

@@ -9,7 +9,7 @@ TEST(ControlFromMesh, CubeKeepsItsEdgesAsCreasesAndCorners) {
   const testing::Triangles t = testing::Cube(1.0, 8);  // 768 faces
   auto mesh = testing::ToMesh(t, "cube");
   ASSERT_TRUE(mesh.ok()) << mesh.status();
-  auto control = ControlFromMesh(mesh->tri, 60, 30.0);
+  auto control = ControlFromMesh(mesh->tri, 60, 30.0, 4);
   ASSERT_TRUE(control.ok()) << control.status();
   EXPECT_LE(control->faces.size(), 60u);
   EXPECT_EQ(control->corners.size(), 8u);
@@ -33,7 +33,7 @@ TEST(ControlFromMesh, CubeKeepsItsEdgesAsCreasesAndCorners) {
 TEST(ControlFromMesh, SmoothSphereHasNoCreases) {
   auto mesh = testing::ToMesh(testing::UnitIcosphere(3), "sphere");
   ASSERT_TRUE(mesh.ok()) << mesh.status();
-  auto control = ControlFromMesh(mesh->tri, 100, 30.0);
+  auto control = ControlFromMesh(mesh->tri, 100, 30.0, 4);
   ASSERT_TRUE(control.ok()) << control.status();
   EXPECT_LE(control->faces.size(), 100u);
   EXPECT_GE(control->faces.size(), 90u);
