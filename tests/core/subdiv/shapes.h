@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "meshseg/mesh.h"
+#include "server/test_files.h"
 
 namespace meshseg::testing {
 
@@ -93,42 +94,12 @@ void AddNoise(Triangles& m, double sigma, Normal normal, unsigned seed) {
   for (auto& v : m.vertices) v += noise(rng) * normal(v).normalized();
 }
 
-// A cube [-s, s]^3, each side an n x n grid of squares split along a diagonal.
+// A cube [-s, s]^3, each side an n x n grid of squares split along a
+// diagonal (the service tests' SplitBox, centred).
 inline Triangles Cube(double s, int n) {
-  Triangles m;
-  std::map<std::array<long, 3>, int> index;
-  auto vertex = [&](const Eigen::Vector3d& p) {
-    const std::array<long, 3> key = {std::lround(p.x() * 1e6), std::lround(p.y() * 1e6),
-                                     std::lround(p.z() * 1e6)};
-    auto [it, inserted] = index.try_emplace(key, static_cast<int>(m.vertices.size()));
-    if (inserted) m.vertices.push_back(p);
-    return it->second;
-  };
-  for (int axis = 0; axis < 3; ++axis) {
-    for (double side : {-1.0, 1.0}) {
-      const int u = (axis + 1) % 3, w = (axis + 2) % 3;
-      auto at = [&](int i, int j) {
-        Eigen::Vector3d p;
-        p[axis] = side * s;
-        p[u] = -s + 2.0 * s * i / n;
-        p[w] = -s + 2.0 * s * j / n;
-        return vertex(p);
-      };
-      for (int i = 0; i < n; ++i) {
-        for (int j = 0; j < n; ++j) {
-          const int a = at(i, j), b = at(i + 1, j), c = at(i + 1, j + 1), d = at(i, j + 1);
-          // Outward orientation: (u, w, axis) is right-handed.
-          if (side > 0) {
-            m.faces.push_back({a, b, c});
-            m.faces.push_back({a, c, d});
-          } else {
-            m.faces.push_back({a, c, b});
-            m.faces.push_back({a, d, c});
-          }
-        }
-      }
-    }
-  }
+  const testing_files::TestMesh box = testing_files::SplitBox(n, Eigen::Vector3d::Constant(2 * s));
+  Triangles m{box.v, box.f};
+  for (auto& v : m.vertices) v -= Eigen::Vector3d::Constant(s);
   return m;
 }
 
