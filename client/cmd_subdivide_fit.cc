@@ -59,6 +59,9 @@ absl::Status RunSubdivideFit(const Argv& argv) {
       "input to limit surface rms %.6g, max %.6g; %.2f s\n",
       out->c_str(), mesh->tri.n_faces(), fit->control.faces.size(), fit->control.creases.size(),
       fit->control.corners.size(), fit->rms_distance, fit->max_distance, seconds);
+  std::string rounds;
+  for (double r : fit->rms_per_round) absl::StrAppend(&rounds, rounds.empty() ? "" : " -> ", r);
+  std::printf("rms after quasi-interpolation, then per fit round: %s\n", rounds.c_str());
   if (tolerance && fit->rms_distance > *tolerance) {
     std::printf(
         "note: rms %.6g stays above --tolerance %.6g at %zu control faces (the size bound)\n",
