@@ -15,12 +15,13 @@
 #ifndef MESHSEG_SUBDIV_H_
 #define MESHSEG_SUBDIV_H_
 
-#include <Eigen/Core>
 #include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
+
+#include <Eigen/Core>
 
 #include "absl/status/statusor.h"
 #include "meshseg/mesh.h"
@@ -48,9 +49,9 @@ struct SubdivParams {
   // this, the control mesh is rebuilt with twice the faces (adaptive
   // refinement, issue #35), up to max_face_fraction of the input's faces.
   std::optional<double> tolerance;
-  // Upper bound of the refinement: a control mesh of a quarter of the input's
-  // faces has as many control vertices as a quarter of the data, where the
-  // least-squares fit starts to follow the noise.
+  // Upper bound of the refinement: a control mesh with a quarter of the
+  // input's faces has about four data points per control vertex; fewer would
+  // leave too little data per unknown to average the noise out.
   double max_face_fraction = 0.25;
   // Control-mesh size relative to the input when target_faces is unset.
   // Issue #35 asks for a control mesh of at most 5 % of the input's faces.
@@ -67,17 +68,18 @@ struct SubdivParams {
   int min_crease_edges = 4;
   // The limit surface is sampled at the vertices of this subdivision level of
   // the control mesh; data points are fitted to the triangles between them.
-  // Level 2 (16 triangles per control face) keeps the chord error of the
-  // sampled limit surface under 1 % of the control edge on unit curvature.
+  // Level 2 splits a control face into 16 flat triangles, whose chord error
+  // against the limit surface is about (edge / 4)^2 * curvature / 8.
   int limit_level = 2;
   // Rounds of footpoint update + least squares after quasi-interpolation.
-  // Seed 004 stops at quasi-interpolation; Hoppe et al. 1994 section 5 report
-  // that a few projection/solve rounds reach most of the improvement.
+  // Seed 004 stops at quasi-interpolation. Measured on a noisy superellipsoid
+  // (tests/core/subdiv/subdiv_test.cc): data rms 0.075 after quasi-
+  // interpolation, then 0.045, 0.043, 0.042 (the noise level) by round 3.
   int fit_iterations = 3;
   // Weight of the membrane term (sum of squared control edge vectors) against
   // the data term, per data point: keeps control vertices that no data
-  // point reaches determined (Hoppe et al. 1994 eq. 4 uses the same spring
-  // energy with a decreasing weight). Relative, dimensionless.
+  // point reaches determined (the spring energy of Hoppe et al.'s mesh
+  // optimisation, at a small weight). Relative, dimensionless.
   double smoothing_weight = 1e-4;
   // Weight of the tangential offset against the normal distance of each data
   // point to its footpoint (1 = point-to-point as Hoppe et al. 1994; small =

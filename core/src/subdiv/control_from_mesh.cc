@@ -1,13 +1,14 @@
 #include "subdiv/control_from_mesh.h"
 
-#include <OpenMesh/Tools/Decimater/DecimaterT.hh>
-#include <OpenMesh/Tools/Decimater/ModNormalFlippingT.hh>
-#include <OpenMesh/Tools/Decimater/ModQuadricT.hh>
-#include <OpenMesh/Tools/Decimater/Observer.hh>
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <vector>
+
+#include <OpenMesh/Tools/Decimater/DecimaterT.hh>
+#include <OpenMesh/Tools/Decimater/ModNormalFlippingT.hh>
+#include <OpenMesh/Tools/Decimater/ModQuadricT.hh>
+#include <OpenMesh/Tools/Decimater/Observer.hh>
 
 #include "absl/strings/str_cat.h"
 #include "meshseg/status_macros.h"

@@ -1,9 +1,10 @@
 #include "subdiv/fit_control_points.h"
 
-#include <Eigen/Geometry>
-#include <Eigen/SparseCholesky>
 #include <algorithm>
 #include <cmath>
+
+#include <Eigen/Geometry>
+#include <Eigen/SparseCholesky>
 
 #include "absl/strings/str_cat.h"
 #include "meshseg/status_macros.h"

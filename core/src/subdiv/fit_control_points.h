@@ -4,8 +4,9 @@
 #ifndef MESHSEG_SUBDIV_FIT_CONTROL_POINTS_H_
 #define MESHSEG_SUBDIV_FIT_CONTROL_POINTS_H_
 
-#include <Eigen/Core>
 #include <vector>
+
+#include <Eigen/Core>
 
 #include "absl/status/statusor.h"
 #include "meshseg/run_context.h"

@@ -3,9 +3,10 @@
 #ifndef MESHSEG_SUBDIV_FOOTPOINTS_H_
 #define MESHSEG_SUBDIV_FOOTPOINTS_H_
 
-#include <Eigen/Core>
 #include <array>
 #include <vector>
+
+#include <Eigen/Core>
 
 namespace meshseg::subdiv_internal {
 

@@ -3,8 +3,9 @@
 #ifndef MESHSEG_SUBDIV_LOOP_REFINE_H_
 #define MESHSEG_SUBDIV_LOOP_REFINE_H_
 
-#include <Eigen/SparseCore>
 #include <vector>
+
+#include <Eigen/SparseCore>
 
 #include "meshseg/subdiv.h"
 #include "subdiv/control_topology.h"

@@ -2,13 +2,14 @@
 #ifndef MESHSEG_TESTS_CORE_SUBDIV_SHAPES_H_
 #define MESHSEG_TESTS_CORE_SUBDIV_SHAPES_H_
 
-#include <Eigen/Core>
 #include <array>
 #include <cmath>
 #include <map>
 #include <random>
 #include <utility>
 #include <vector>
+
+#include <Eigen/Core>
 
 #include "meshseg/mesh.h"
 #include "server/test_files.h"
