@@ -33,6 +33,7 @@ absl::Status RunCancel(const Argv& argv);
 absl::Status RunReport(const Argv& argv);
 absl::Status RunBrep(const Argv& argv);
 absl::Status RunSimplify(const Argv& argv);
+absl::Status RunSubdivideFit(const Argv& argv);
 
 // The server of a job command: --server, else $MESHSEG_SERVER.
 // Errors (INVALID_ARGUMENT): neither is set.

@@ -33,6 +33,7 @@ constexpr char kUsage[] =
     " and with --server --request-id ID)\n"
     "  brep RESULT.json MESH -o OUT.step [--unit mm|cm|m|in|...]\n"
     "  simplify IN -o OUT (--target-faces N | --max-error E) [--regions RESULT.json]\n"
+    "  subdivide-fit IN -o CONTROL.obj [--faces N | --tolerance E] [--limit OUT.ply]\n"
     "volumes (nrrd, mha, mhd, raw) go through info and segment; options:\n"
     "  [--iso V] [--volume-mode auto|grey|binary] [--dims X,Y,Z --spacing SX,SY,SZ\n"
     "   --type uint8|uint16|int16|float32 [--origin X,Y,Z] [--big-endian]] (raw)\n"
@@ -54,6 +55,7 @@ int main(int argc, char** argv) {
       {"report", meshseg::cli::RunReport},
       {"brep", meshseg::cli::RunBrep},
       {"simplify", meshseg::cli::RunSimplify},
+      {"subdivide-fit", meshseg::cli::RunSubdivideFit},
   };
   if (argc < 2 || std::string(argv[1]) == "help" || std::string(argv[1]) == "--help") {
     std::fputs(kUsage, argc < 2 ? stderr : stdout);

@@ -1,0 +1,32 @@
+// The coarse control mesh of seed 004 section 2.4: feature edges tagged as
+// creases, then QEM edge collapse to a target face count that never
+// collapses across a feature line.
+#ifndef MESHSEG_SUBDIV_CONTROL_FROM_MESH_H_
+#define MESHSEG_SUBDIV_CONTROL_FROM_MESH_H_
+
+#include <cstdint>
+
+#include "absl/status/statusor.h"
+#include "meshseg/mesh.h"
+#include "meshseg/run_context.h"
+#include "meshseg/subdiv.h"
+
+namespace meshseg::subdiv_internal {
+
+// Returns `mesh` simplified to about `target_faces` faces by OpenMesh's
+// decimater (Garland-Heckbert quadrics as priority, normal-flip guard; half-
+// edge collapses, so control vertices are input vertices). Edges whose faces'
+// normals differ by more than `feature_angle_deg`, in connected lines of at
+// least `min_crease_edges` such edges, are feature edges: a vertex
+// on one only collapses along its feature line, vertices where the number of
+// feature edges is not two (junctions, line ends) never collapse. The
+// surviving feature edges are the creases; feature junctions (three or more
+// feature edges) are the corners. Reports progress as "subdiv" in [0, 0.4].
+// Errors: INVALID_ARGUMENT if the decimater cannot start; CANCELLED on stop.
+absl::StatusOr<ControlMesh> ControlFromMesh(const TriMesh& mesh, int64_t target_faces,
+                                            double feature_angle_deg, int min_crease_edges,
+                                            const RunContext& ctx = {});
+
+}  // namespace meshseg::subdiv_internal
+
+#endif  // MESHSEG_SUBDIV_CONTROL_FROM_MESH_H_
