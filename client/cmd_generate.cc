@@ -1,5 +1,7 @@
 // meshseg generate PART -o FILE [--voxel-size H] [--noise S] [--ground-truth GT.json]
 //   [--volume OUT.nrrd [--binary]]
+// meshseg generate CAD_PART --cad -o FILE.stl|obj [--deflection coarse|fine] [--unit m|mm|um]
+//   [--ground-truth GT.json]
 #include <cstdio>
 
 #include "absl/strings/str_cat.h"
@@ -38,18 +40,58 @@ absl::Status WriteVolume(const std::string& name, const GenerateParams& params, 
   return absl::OkStatus();
 }
 
+// The part as an exact B-rep, tessellated as CAD systems export it
+// (GenerateCadPart).
+absl::Status WriteCad(const std::string& name, const std::string& out, const Args& args) {
+  for (const char* flag : {"--voxel-size", "--noise", "--seed", "--volume"}) {
+    if (args.Value(flag)) {
+      return absl::InvalidArgumentError(absl::StrCat(flag, " does not apply to --cad parts"));
+    }
+  }
+  if (args.Has("--binary")) return absl::InvalidArgumentError("--binary goes with --volume OUT.nrrd");
+  CadParams params;
+  const std::string deflection = args.Value("--deflection").value_or("coarse");
+  if (deflection != "coarse" && deflection != "fine") {
+    return absl::InvalidArgumentError(
+        absl::StrCat("--deflection \"", deflection, "\": expected coarse or fine"));
+  }
+  params.deflection = deflection == "fine" ? CadDeflection::kFine : CadDeflection::kCoarse;
+  const std::string unit = args.Value("--unit").value_or("mm");
+  MESHSEG_ASSIGN_OR_RETURN(params.unit_scale, UnitScale(unit));
+  MESHSEG_ASSIGN_OR_RETURN(const GeneratedPart part, GenerateCadPart(name, params));
+  MESHSEG_RETURN_IF_ERROR(WriteMesh(part.mesh.tri, out));
+  if (const std::optional<std::string> gt = args.Value("--ground-truth")) {
+    MESHSEG_RETURN_IF_ERROR(WriteTextFile(*gt, GroundTruthJson(part)));
+  }
+  std::printf("wrote %s: CAD part %s, %zu faces, %zu vertices, %zu B-rep faces, %s deflection, %s\n",
+              out.c_str(), part.name.c_str(), part.mesh.tri.n_faces(), part.mesh.tri.n_vertices(),
+              part.primitives.size(), deflection.c_str(), unit.c_str());
+  return absl::OkStatus();
+}
+
 }  // namespace
 
 absl::Status RunGenerate(const Argv& argv) {
   MESHSEG_ASSIGN_OR_RETURN(
       const Args args,
-      Args::Parse(argv, {"-o", "--voxel-size", "--noise", "--ground-truth", "--seed", "--volume"},
-                  {"--binary"}, 1));
+      Args::Parse(argv,
+                  {"-o", "--voxel-size", "--noise", "--ground-truth", "--seed", "--volume",
+                   "--deflection", "--unit"},
+                  {"--binary", "--cad"}, 1));
   const std::optional<std::string> out = args.Value("-o");
   const std::optional<std::string> volume = args.Value("--volume");
   if (!out && !volume) {
     return absl::InvalidArgumentError(absl::StrCat("-o FILE is required; parts: ",
-                                                   absl::StrJoin(PartNames(), ", ")));
+                                                   absl::StrJoin(PartNames(), ", "),
+                                                   "; with --cad: ",
+                                                   absl::StrJoin(CadPartNames(), ", ")));
+  }
+  if (args.Has("--cad")) {
+    if (!out) return absl::InvalidArgumentError("--cad writes a mesh: -o FILE.stl|obj is required");
+    return WriteCad(args.positional(0), *out, args);
+  }
+  for (const char* flag : {"--deflection", "--unit"}) {
+    if (args.Value(flag)) return absl::InvalidArgumentError(absl::StrCat(flag, " goes with --cad"));
   }
   GenerateParams params;
   MESHSEG_ASSIGN_OR_RETURN(const std::optional<double> h, args.Double("--voxel-size"));

@@ -14,6 +14,8 @@ constexpr char kUsage[] =
     "  info FILE [--json] [--memory-estimate]\n"
     "  generate PART -o FILE [--voxel-size H] [--noise S] [--ground-truth GT.json]\n"
     "           [--volume OUT.nrrd [--binary]]\n"
+    "  generate CAD_PART --cad -o FILE.stl|obj [--deflection coarse|fine] [--unit m|mm|um]\n"
+    "           [--ground-truth GT.json]\n"
     "  convert IN OUT\n"
     "  reconstruct CLOUD -o MESH.ply [--format FMT]\n"
     "  segment INPUT -o RESULT.json [--colored-ply OUT.ply] [--distance-tolerance X]\n"
