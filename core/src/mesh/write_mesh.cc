@@ -8,6 +8,8 @@
 #include <cstring>
 #include <memory>
 
+#include <Eigen/Geometry>
+
 #include "absl/strings/str_cat.h"
 #include "meshseg/label_color.h"
 #include "meshseg/mesh.h"
