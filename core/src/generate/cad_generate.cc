@@ -78,13 +78,13 @@ absl::StatusOr<GeneratedPart> GenerateCadPart(std::string_view name, const CadPa
   }
   const std::optional<TopoDS_Shape> shape = generate_internal::FindCadPart(name);
   if (!shape) {
-    return absl::InvalidArgumentError(absl::StrCat("generate: unknown CAD part \"",
-                                                   std::string(name), "\"; known CAD parts: ",
-                                                   absl::StrJoin(CadPartNames(), ", ")));
+    return absl::InvalidArgumentError(
+        absl::StrCat("generate: unknown CAD part \"", std::string(name),
+                     "\"; known CAD parts: ", absl::StrJoin(CadPartNames(), ", ")));
   }
   if (shape->IsNull()) {
-    return absl::InternalError(absl::StrCat("generate: OpenCASCADE failed to build CAD part \"",
-                                            std::string(name), "\""));
+    return absl::InternalError(
+        absl::StrCat("generate: OpenCASCADE failed to build CAD part \"", std::string(name), "\""));
   }
   MESHSEG_RETURN_IF_ERROR(ctx.CheckStop("generate"));
   Bnd_Box box;

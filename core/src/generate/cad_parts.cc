@@ -199,8 +199,8 @@ struct Entry {
 };
 
 constexpr Entry kCatalogue[] = {
-    {"cad_tube", ThinTube},         {"cad_nut", HexNut},
-    {"cad_cross_bore", CrossBore},  {"cad_bracket", SheetBracket},
+    {"cad_tube", ThinTube},          {"cad_nut", HexNut},
+    {"cad_cross_bore", CrossBore},   {"cad_bracket", SheetBracket},
     {"cad_plate_holes", PlateHoles}, {"cad_flange_shaft", FlangeShaft},
 };
 

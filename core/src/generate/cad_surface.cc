@@ -30,8 +30,8 @@ CadFace SurfaceOfFace(const TopoDS_Face& face) {
     }
     case GeomAbs_Cylinder: {
       const gp_Cylinder c = s.Cylinder();
-      return {Cylinder{Vec(c.Location().XYZ()), Vec(c.Axis().Direction().XYZ()), c.Radius()},
-              false, "cylinder"};
+      return {Cylinder{Vec(c.Location().XYZ()), Vec(c.Axis().Direction().XYZ()), c.Radius()}, false,
+              "cylinder"};
     }
     case GeomAbs_Cone: {
       const gp_Cone c = s.Cone();

@@ -45,10 +45,11 @@ struct Welder {
   int& CornerOf(const TopoDS_Edge& edge, const gp_Pnt& p) {
     TopoDS_Vertex first, last;
     TopExp::Vertices(edge, first, last);
-    const TopoDS_Vertex& v = first.IsNull() || (!last.IsNull() && BRep_Tool::Pnt(last).Distance(p) <
-                                                                      BRep_Tool::Pnt(first).Distance(p))
-                                 ? last
-                                 : first;
+    const TopoDS_Vertex& v =
+        first.IsNull() || (!last.IsNull() &&
+                           BRep_Tool::Pnt(last).Distance(p) < BRep_Tool::Pnt(first).Distance(p))
+            ? last
+            : first;
     return corner_node[corners.FindIndex(v) - 1];
   }
 };
@@ -66,7 +67,8 @@ double SnapToSharedSurfaces(CadTessellation& t, double length) {
   for (size_t i = 0; i < t.triangles.size(); ++i) {
     for (const int v : t.triangles[i]) {
       std::vector<int>& f = faces_of[v];
-      if (std::find(f.begin(), f.end(), t.triangle_face[i]) == f.end()) f.push_back(t.triangle_face[i]);
+      if (std::find(f.begin(), f.end(), t.triangle_face[i]) == f.end())
+        f.push_back(t.triangle_face[i]);
     }
   }
   constexpr int kMaxRounds = 200;
@@ -137,7 +139,8 @@ absl::StatusOr<CadTessellation> Tessellate(const TopoDS_Shape& shape, double cho
         // A polygon's ends are the edge's B-rep vertices; a degenerated edge
         // (a cone's apex, a sphere's pole) is its one vertex all along.
         const bool corner = degenerated || i == 0 || i == n - 1;
-        int& id = corner ? weld.CornerOf(edge, p) : (n == static_cast<int>(ids.size()) ? ids[i] : global[local]);
+        int& id = corner ? weld.CornerOf(edge, p)
+                         : (n == static_cast<int>(ids.size()) ? ids[i] : global[local]);
         if (id < 0) id = global[local] >= 0 ? global[local] : weld.NewVertex(p, face_id);
         if (global[local] < 0) global[local] = id;
       }

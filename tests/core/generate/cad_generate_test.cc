@@ -87,7 +87,8 @@ TEST(GenerateCadPart, PartsHoldTheSurfacesTheyAreBuiltOf) {
       {"cad_tube", {{SurfaceType::kPlane, 2}, {SurfaceType::kCylinder, 2}}},
       // Six flats, two ends, the bore, 6 + 6 chamfer patches; the patch at
       // the corner on the cones' seam (angle 0) is two faces on each cone.
-      {"cad_nut", {{SurfaceType::kPlane, 8}, {SurfaceType::kCylinder, 1}, {SurfaceType::kCone, 14}}},
+      {"cad_nut",
+       {{SurfaceType::kPlane, 8}, {SurfaceType::kCylinder, 1}, {SurfaceType::kCone, 14}}},
       // Bend r 3 and r 5, three holes.
       {"cad_bracket", {{SurfaceType::kCylinder, 5}}},
       // Four corner fillets, three small holes, countersink, counterbore.

@@ -66,8 +66,8 @@ TEST_P(CadGenerated, FacesAndSurfacesAreFoundExactly) {
       "%s %s %s: %zu facets, %d regions for %d faces (%zu surfaces), area %.3f %%, found %d/%d, "
       "worst %.2g, shared %d/%d, %.2f s\n",
       name.c_str(), fine ? "fine" : "coarse", unit.c_str(), part->mesh.tri.n_faces(), s.regions,
-      s.faces, result->surfaces.size(), 100.0 * s.area_right, s.found, s.big_faces,
-      s.worst_error, s.shared_once, s.shared, seconds);
+      s.faces, result->surfaces.size(), 100.0 * s.area_right, s.found, s.big_faces, s.worst_error,
+      s.shared_once, s.shared, seconds);
   EXPECT_GE(s.area_right, kMinAreaRight);
   EXPECT_EQ(s.found, s.big_faces) << ::testing::PrintToString(s.misses);
   EXPECT_LE(s.worst_error, kMaxParameterError);
