@@ -1,11 +1,14 @@
 // meshseg generate PART -o FILE [--voxel-size H] [--noise S] [--ground-truth GT.json]
 //   [--volume OUT.nrrd [--binary]]
+// meshseg generate CAD_PART --cad -o FILE.stl|obj [--deflection coarse|fine] [--unit m|mm|um]
+//   [--ground-truth GT.json]
 // meshseg generate PART --scan CLOUD.xyz [--scan-points N] [--views N]
 //   [--scan-noise S] [--outliers F] [--scan-normals] [--ground-truth GT.json]
 // meshseg generate PART --surface-points N -o CLOUD.xyz [--scan-noise S]
-// The second form writes a simulated laser scan of the part (ScanPart); its
-// ground truth adds the primitive and outlier flag of every point. The third
-// writes N points uniform on the part's surface (SampleSurface), with
+// The CAD form builds the part as an exact OpenCASCADE B-rep and writes its
+// tessellation (GenerateCadPart). The scan form writes a simulated laser scan
+// of the part (ScanPart); its ground truth adds the primitive and outlier flag
+// of every point. The last writes N points uniform on the part's surface (SampleSurface), with
 // Gaussian noise of S nominal spacings (sqrt(area / N)) if given.
 #include <cmath>
 #include <cstdio>
@@ -105,15 +108,45 @@ absl::Status WriteVolume(const std::string& name, const GenerateParams& params, 
   return absl::OkStatus();
 }
 
+// The part as an exact B-rep, tessellated as CAD systems export it
+// (GenerateCadPart).
+absl::Status WriteCad(const std::string& name, const std::string& out, const Args& args) {
+  for (const char* flag : {"--voxel-size", "--noise", "--seed", "--volume"}) {
+    if (args.Value(flag)) {
+      return absl::InvalidArgumentError(absl::StrCat(flag, " does not apply to --cad parts"));
+    }
+  }
+  if (args.Has("--binary")) return absl::InvalidArgumentError("--binary goes with --volume OUT.nrrd");
+  CadParams params;
+  const std::string deflection = args.Value("--deflection").value_or("coarse");
+  if (deflection != "coarse" && deflection != "fine") {
+    return absl::InvalidArgumentError(
+        absl::StrCat("--deflection \"", deflection, "\": expected coarse or fine"));
+  }
+  params.deflection = deflection == "fine" ? CadDeflection::kFine : CadDeflection::kCoarse;
+  const std::string unit = args.Value("--unit").value_or("mm");
+  MESHSEG_ASSIGN_OR_RETURN(params.unit_scale, UnitScale(unit));
+  MESHSEG_ASSIGN_OR_RETURN(const GeneratedPart part, GenerateCadPart(name, params));
+  MESHSEG_RETURN_IF_ERROR(WriteMesh(part.mesh.tri, out));
+  if (const std::optional<std::string> gt = args.Value("--ground-truth")) {
+    MESHSEG_RETURN_IF_ERROR(WriteTextFile(*gt, GroundTruthJson(part)));
+  }
+  std::printf("wrote %s: CAD part %s, %zu faces, %zu vertices, %zu B-rep faces, %s deflection, %s\n",
+              out.c_str(), part.name.c_str(), part.mesh.tri.n_faces(), part.mesh.tri.n_vertices(),
+              part.primitives.size(), deflection.c_str(), unit.c_str());
+  return absl::OkStatus();
+}
+
 }  // namespace
 
 absl::Status RunGenerate(const Argv& argv) {
-  MESHSEG_ASSIGN_OR_RETURN(const Args args,
-                           Args::Parse(argv,
-                                       {"-o", "--voxel-size", "--noise", "--ground-truth", "--seed",
-                                        "--volume", "--scan", "--scan-points", "--views",
-                                        "--scan-noise", "--outliers", "--surface-points"},
-                                       {"--binary", "--scan-normals"}, 1));
+  MESHSEG_ASSIGN_OR_RETURN(
+      const Args args,
+      Args::Parse(argv,
+                  {"-o", "--voxel-size", "--noise", "--ground-truth", "--seed", "--volume",
+                   "--scan", "--scan-points", "--views", "--scan-noise", "--outliers",
+                   "--surface-points", "--deflection", "--unit"},
+                  {"--binary", "--scan-normals", "--cad"}, 1));
   const std::optional<std::string> out = args.Value("-o");
   const std::optional<std::string> volume = args.Value("--volume");
   const std::optional<std::string> scan = args.Value("--scan");
@@ -127,7 +160,15 @@ absl::Status RunGenerate(const Argv& argv) {
   if (!out && !volume && !scan) {
     return absl::InvalidArgumentError(
         absl::StrCat("-o FILE, --volume OUT.nrrd or --scan CLOUD.xyz is required; parts: ",
-                     absl::StrJoin(PartNames(), ", ")));
+                     absl::StrJoin(PartNames(), ", "), "; with --cad: ",
+                     absl::StrJoin(CadPartNames(), ", ")));
+  }
+  if (args.Has("--cad")) {
+    if (!out) return absl::InvalidArgumentError("--cad writes a mesh: -o FILE.stl|obj is required");
+    return WriteCad(args.positional(0), *out, args);
+  }
+  for (const char* flag : {"--deflection", "--unit"}) {
+    if (args.Value(flag)) return absl::InvalidArgumentError(absl::StrCat(flag, " goes with --cad"));
   }
   if (out && scan) return absl::InvalidArgumentError("give -o FILE or --scan CLOUD.xyz, not both");
   GenerateParams params;

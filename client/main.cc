@@ -17,6 +17,8 @@ constexpr char kUsage[] =
     "  generate PART --scan CLOUD.xyz [--scan-points N] [--views N] [--scan-noise S]\n"
     "           [--outliers F] [--scan-normals] [--ground-truth GT.json]\n"
     "  generate PART --surface-points N -o CLOUD.xyz [--scan-noise S]\n"
+    "  generate CAD_PART --cad -o FILE.stl|obj [--deflection coarse|fine] [--unit m|mm|um]\n"
+    "           [--ground-truth GT.json]\n"
     "  convert IN OUT\n"
     "  reconstruct CLOUD -o MESH.ply [--format FMT]\n"
     "  segment INPUT -o RESULT.json [--colored-ply OUT.ply] [--distance-tolerance X]\n"

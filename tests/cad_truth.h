@@ -189,9 +189,11 @@ inline constexpr int kBigFace = 20;
 
 // Scores `face_labels` / `regions` (per mesh face of `mesh`) against
 // `labels` (per mesh face, B-rep face index, -1 = none) and `truth`.
+// Faces of fewer than `min_triangles` triangles are not asked to be found
+// (big_faces counts the others).
 inline CadScore ScoreCad(const Mesh& mesh, const std::vector<int>& face_labels,
                          const std::vector<Region>& regions, const std::vector<int>& labels,
-                         const std::vector<TruthFace>& truth) {
+                         const std::vector<TruthFace>& truth, int min_triangles = kBigFace) {
   CadScore score;
   const TriMesh& tri = mesh.tri;
   Eigen::Vector3d lo = Eigen::Vector3d::Constant(1e300), hi = -lo;
@@ -240,7 +242,7 @@ inline CadScore ScoreCad(const Mesh& mesh, const std::vector<int>& face_labels,
     for (int f = 0; f < n; ++f) {
       if (labels[f] == k) share[face_labels[f]] += area[f], ++triangles;
     }
-    if (triangles < kBigFace) continue;
+    if (triangles < min_triangles) continue;
     ++score.big_faces;
     const int r = std::max_element(share.begin(), share.end(), [](auto& a, auto& b) {
                     return a.second < b.second;

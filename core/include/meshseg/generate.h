@@ -37,6 +37,9 @@ struct PrimitiveTruth {
   int id = 0;
   std::string name;  // e.g. "bore", "boss_fillet"
   Surface surface;
+  // CAD mode: a B-rep face of no analytic type (B-spline, offset, ...);
+  // `surface` is then an empty Quadric and the JSON type is "freeform".
+  bool freeform = false;
 };
 
 struct GeneratedPart {
@@ -83,6 +86,48 @@ absl::StatusOr<VolumeData> GenerateVolume(std::string_view name, bool binary,
 // Errors: INVALID_ARGUMENT for an unknown name.
 absl::StatusOr<GeneratedPart> LabelWithGroundTruth(std::string_view name, const Mesh& mesh,
                                                    const GenerateParams& params = {});
+
+// CAD mode: the part built as an exact B-rep with OpenCASCADE (primitives,
+// booleans, fillets, chamfers) and tessellated as CAD systems export STL
+// (BRepMesh_IncrementalMesh with a chordal and an angular deflection), so
+// every vertex lies on the B-rep's surfaces and facets are long and thin.
+// Each B-rep face is one primitive (its surface from the face's own geometry,
+// BRepAdaptor_Surface); faces on one surface (a bore split by a groove, the
+// patches of a chamfer cut by flats) stay separate primitives with equal
+// surfaces, as in a B-rep.
+enum class CadDeflection {
+  // Chordal deflection 2e-3 of the bounding-box diagonal, angular 30 degrees
+  // (a CAD system's "coarse" STL export).
+  kCoarse,
+  // Chordal deflection 2e-4 of the diagonal, angular 10 degrees ("fine").
+  kFine,
+};
+
+struct CadParams {
+  CadDeflection deflection = CadDeflection::kCoarse;
+  // Length units per millimetre of the part's own dimensions: 1e-3 writes
+  // metres, 1 millimetres, 1e3 micrometres (UnitScale).
+  double unit_scale = 1.0;
+};
+
+// Names of the CAD-mode parts, smallest first.
+std::vector<std::string> CadPartNames();
+
+// Returns the unit_scale of a unit name: "m" 1e-3, "mm" 1, "um" 1e3.
+// Errors: INVALID_ARGUMENT naming the unit and the known ones.
+absl::StatusOr<double> UnitScale(std::string_view unit);
+
+// Returns the CAD-mode part `name`: the mesh (vertices welded along the
+// B-rep's edges, watertight, triangles oriented outwards), one primitive per
+// B-rep face, face_primitive for every face (never -1), face_near_boundary
+// all 0 (no sampling band: facets end on the B-rep's edges) and
+// vertex_primitive (for a vertex on an edge, one of its faces). voxel_size
+// and noise are 0.
+// Errors: INVALID_ARGUMENT for an unknown name or a unit_scale that is not
+// finite and > 0; INTERNAL if OpenCASCADE fails to build or mesh the part;
+// CANCELLED on stop.
+absl::StatusOr<GeneratedPart> GenerateCadPart(std::string_view name, const CadParams& params = {},
+                                              const RunContext& ctx = {});
 
 // Returns the ground truth of `part` as a JSON document:
 //   {"name", "voxel_size", "noise" (model units), "face_count",

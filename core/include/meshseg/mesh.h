@@ -145,10 +145,11 @@ MeshStats MeshStatistics(const Mesh& mesh);
 // Returns the mean edge length l_avg of `mesh` (0 for a mesh without edges).
 double MeanEdgeLength(const TriMesh& mesh);
 
-// Writes `mesh` as PLY (binary little-endian, double coordinates) or OFF
-// (17 significant digits), chosen by the extension of `path`; both read back
-// bit-identical. Errors: INVALID_ARGUMENT for another extension; INTERNAL if
-// the file cannot be written.
+// Writes `mesh` as PLY (binary little-endian, double coordinates), OFF or OBJ
+// (17 significant digits), all three reading back bit-identical, or binary
+// STL (float32 coordinates and facet normals, as CAD systems export it),
+// chosen by the extension of `path`. Errors: INVALID_ARGUMENT for another
+// extension; INTERNAL if the file cannot be written.
 absl::Status WriteMesh(const TriMesh& mesh, const std::string& path);
 
 // Writes `mesh` as a binary PLY with one colour per face: faces with the same

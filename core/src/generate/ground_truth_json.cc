@@ -79,8 +79,9 @@ std::string GroundTruthFields(const GeneratedPart& part) {
   for (size_t k = 0; k < part.primitives.size(); ++k) {
     const PrimitiveTruth& p = part.primitives[k];
     absl::StrAppend(&out, k ? ",\n  " : "\n  ", "{\"id\": ", p.id, ", \"name\": ", Quoted(p.name),
-                    ", \"type\": \"", SurfaceTypeName(TypeOf(p.surface)), "\", ",
-                    Parameters(p.surface), "}");
+                    ", \"type\": \"",
+                    p.freeform ? "freeform" : SurfaceTypeName(TypeOf(p.surface)), "\"",
+                    p.freeform ? "" : ", " + Parameters(p.surface), "}");
   }
   absl::StrAppend(&out, "],\n \"face_primitive\": [", absl::StrJoin(part.face_primitive, ","),
                   "],\n \"face_near_boundary\": [", Flags(part.face_near_boundary), "]");

@@ -1,5 +1,5 @@
-// Writers: binary little-endian PLY (optionally with face colours), OFF, and
-// points with colours as PLY.
+// Writers: binary little-endian PLY (optionally with face colours), OFF, OBJ,
+// binary STL, and points with colours as PLY.
 #include <array>
 #include <bit>
 #include <cctype>
@@ -7,6 +7,8 @@
 #include <cstdio>
 #include <cstring>
 #include <memory>
+
+#include <Eigen/Geometry>
 
 #include "absl/strings/str_cat.h"
 #include "meshseg/label_color.h"
@@ -104,15 +106,55 @@ std::string OffBytes(const TriMesh& mesh) {
   return out;
 }
 
+// Binary STL as CAD systems export it: float32 coordinates, one unit normal
+// per facet (from its corners), no shared vertices.
+std::string StlBytes(const TriMesh& mesh) {
+  std::string out(80, '\0');
+  out.replace(0, 22, "binary STL by meshseg ");
+  Append<uint32_t>(out, static_cast<uint32_t>(mesh.n_faces()));
+  out.reserve(out.size() + mesh.n_faces() * 50);
+  for (const auto f : mesh.faces()) {
+    std::array<Eigen::Vector3d, 3> c;
+    int k = 0;
+    for (const auto v : mesh.fv_range(f)) c[k++] = ToEigen(mesh.point(v));
+    const Eigen::Vector3d n = (c[1] - c[0]).cross(c[2] - c[0]).normalized();
+    for (int i = 0; i < 3; ++i) Append<float>(out, static_cast<float>(n[i]));
+    for (const Eigen::Vector3d& p : c) {
+      for (int i = 0; i < 3; ++i) Append<float>(out, static_cast<float>(p[i]));
+    }
+    Append<uint16_t>(out, 0);
+  }
+  return out;
+}
+
+// Wavefront OBJ, 17 significant digits (reads back bit-identical).
+std::string ObjBytes(const TriMesh& mesh) {
+  std::string out = "# written by meshseg\n";
+  for (const auto v : mesh.vertices()) {
+    const TriMesh::Point& p = mesh.point(v);
+    char line[100];
+    std::snprintf(line, sizeof(line), "v %.17g %.17g %.17g\n", p[0], p[1], p[2]);
+    out += line;
+  }
+  for (const auto f : mesh.faces()) {
+    out += "f";
+    for (const auto v : mesh.fv_range(f)) absl::StrAppend(&out, " ", v.idx() + 1);
+    out += "\n";
+  }
+  return out;
+}
+
 }  // namespace
 
 absl::Status WriteMesh(const TriMesh& mesh, const std::string& path) {
   const std::string ext = Extension(path);
   if (ext == "ply") return WriteBytes(path, PlyBytes(mesh, nullptr));
   if (ext == "off") return WriteBytes(path, OffBytes(mesh));
+  if (ext == "obj") return WriteBytes(path, ObjBytes(mesh));
+  if (ext == "stl") return WriteBytes(path, StlBytes(mesh));
   return absl::InvalidArgumentError(absl::StrCat("write_mesh: \"", mesh_internal::FileName(path),
                                                  "\": unsupported extension \"", ext,
-                                                 "\" (ply, off)"));
+                                                 "\" (ply, off, obj, stl)"));
 }
 
 absl::Status WriteColoredPly(const TriMesh& mesh, const std::vector<int>& face_labels,

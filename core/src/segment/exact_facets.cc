@@ -285,8 +285,11 @@ void JoinGapPieces(const FacetMesh& fm, double tau, std::vector<int>* owner,
 }
 
 // Facets no hypothesis took: pieces over edges no sharper than `step`; a
-// piece of one facet is a plane, a larger one FREEFORM.
-void FreeformRegions(const FacetMesh& fm, double step, std::vector<int>* owner,
+// piece of one facet is a plane, a larger one FREEFORM unless every corner
+// of it lies within `tau` of one plane: a flat face tessellated into a few
+// facets (a rectangle's two triangles between two fillets) is that plane,
+// as its single facet would be.
+void FreeformRegions(const FacetMesh& fm, double step, double tau, std::vector<int>* owner,
                      std::vector<ExactRegion>* regions) {
   const int n = fm.facet_count();
   for (int f = 0; f < n; ++f) {
@@ -307,7 +310,11 @@ void FreeformRegions(const FacetMesh& fm, double step, std::vector<int>* owner,
     std::sort(piece.begin(), piece.end());
     ExactRegion region{
         .type = SurfaceType::kPlane, .surface = Plane{fm.Centroid(f), fm.normal[f]}, .facets = {}};
-    if (piece.size() > 1) {
+    const std::optional<Surface> flat =
+        piece.size() > 1 ? FitExactly(fm, SurfaceType::kPlane, piece, tau) : std::nullopt;
+    if (flat) {
+      region.surface = *flat;
+    } else if (piece.size() > 1) {
       region.type = SurfaceType::kFreeform;
       std::vector<Eigen::Vector3d> points, normals;
       for (const int g : piece) {
@@ -355,7 +362,7 @@ absl::StatusOr<ExactFacets> SegmentFacets(const FacetMesh& fm, double tau, const
   });
   JoinNeighbours(fm, tau, &owner, &out.regions);
   JoinGapPieces(fm, tau, &owner, &out.regions);
-  FreeformRegions(fm, out.angular_step, &owner, &out.regions);
+  FreeformRegions(fm, out.angular_step, tau, &owner, &out.regions);
   out.face_labels = std::move(owner);
   return out;
 }

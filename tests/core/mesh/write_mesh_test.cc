@@ -58,10 +58,46 @@ TEST(WriteMesh, RoundTripsExactlyThroughOff) {
   ExpectSameMesh(mesh->tri, back->tri);
 }
 
+TEST(WriteMesh, RoundTripsExactlyThroughObj) {
+  const absl::StatusOr<Mesh> mesh = OddCube();
+  ASSERT_TRUE(mesh.ok()) << mesh.status();
+  const std::string path = testing_files::WriteTemp("out.obj", "");
+  ASSERT_TRUE(WriteMesh(mesh->tri, path).ok());
+  const absl::StatusOr<Mesh> back = ReadMesh(path);
+  ASSERT_TRUE(back.ok()) << back.status();
+  ExpectSameMesh(mesh->tri, back->tri);
+}
+
+// STL holds float32: every vertex read back is a vertex rounded to float,
+// welded again into the same closed cube.
+TEST(WriteMesh, WritesBinaryStlInFloat32) {
+  const absl::StatusOr<Mesh> mesh = OddCube();
+  ASSERT_TRUE(mesh.ok()) << mesh.status();
+  const std::string path = testing_files::WriteTemp("out.stl", "");
+  ASSERT_TRUE(WriteMesh(mesh->tri, path).ok());
+  const absl::StatusOr<Mesh> back = ReadMesh(path);
+  ASSERT_TRUE(back.ok()) << back.status();
+  ASSERT_EQ(back->tri.n_faces(), mesh->tri.n_faces());
+  ASSERT_EQ(back->tri.n_vertices(), mesh->tri.n_vertices());
+  std::set<std::array<float, 3>> rounded;
+  for (const auto v : mesh->tri.vertices()) {
+    const auto& p = mesh->tri.point(v);
+    rounded.insert({static_cast<float>(p[0]), static_cast<float>(p[1]), static_cast<float>(p[2])});
+  }
+  for (const auto v : back->tri.vertices()) {
+    const auto& p = back->tri.point(v);
+    EXPECT_TRUE(rounded.count({static_cast<float>(p[0]), static_cast<float>(p[1]),
+                               static_cast<float>(p[2])}))
+        << "vertex " << v.idx();
+    for (int c = 0; c < 3; ++c) EXPECT_EQ(p[c], static_cast<double>(static_cast<float>(p[c])));
+  }
+  for (const auto e : back->tri.edges()) EXPECT_FALSE(back->tri.is_boundary(e));
+}
+
 TEST(WriteMesh, RejectsOtherExtensions) {
-  const absl::Status status = WriteMesh(TriMesh(), testing_files::WriteTemp("out.stl", ""));
+  const absl::Status status = WriteMesh(TriMesh(), testing_files::WriteTemp("out.xyz", ""));
   EXPECT_EQ(status.code(), absl::StatusCode::kInvalidArgument);
-  EXPECT_THAT(Message(status), HasSubstr("\"out.stl\": unsupported extension \"stl\""));
+  EXPECT_THAT(Message(status), HasSubstr("\"out.xyz\": unsupported extension \"xyz\""));
 }
 
 TEST(WriteMesh, ReportsUnwritablePathAsInternal) {
