@@ -4,6 +4,7 @@
 
 #include "fuzz/reader_targets.h"
 #include "fuzz/upload_target.h"
+#include "fuzz/volume_targets.h"
 
 namespace meshseg::fuzz {
 namespace {
@@ -35,6 +36,17 @@ int Sniffed(const uint8_t* data, size_t size) {
   return 0;
 }
 
+template <FileFormat kFormat>
+int Volume(const uint8_t* data, size_t size) {
+  FuzzVolumeFile(kFormat, Bytes(data, size));
+  return 0;
+}
+
+int RawVolume(const uint8_t* data, size_t size) {
+  FuzzRawVolume(Bytes(data, size));
+  return 0;
+}
+
 int Upload(const uint8_t* data, size_t size) {
   FuzzUploadHeader(Bytes(data, size));
   return 0;
@@ -53,6 +65,10 @@ constexpr std::array kTargets = {
     FuzzTarget{"pwn", Cloud<FileFormat::kPwn>},
     FuzzTarget{"sniffed", Sniffed},
     FuzzTarget{"upload_header", Upload},
+    FuzzTarget{"nrrd", Volume<FileFormat::kNrrd>},
+    FuzzTarget{"mha", Volume<FileFormat::kMha>},
+    FuzzTarget{"mhd", Volume<FileFormat::kMhd>},
+    FuzzTarget{"raw", RawVolume},
 };
 
 }  // namespace

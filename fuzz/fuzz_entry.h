@@ -7,8 +7,10 @@
 //
 // Readers are driven through the same functions ReadMesh / ReadPointCloud
 // call after mapping the file (mesh_internal::Read*, BuildFromRaw), so no
-// file is written per input. Targets of one reader differ only in their
-// seed corpus (fuzz/corpus/<name>/).
+// file is written per input. The volume readers take a path (they stream
+// samples from the file), so their targets write each input to a scratch
+// file (volume_targets.h). Targets of one reader differ only in their seed
+// corpus (fuzz/corpus/<name>/).
 #ifndef MESHSEG_FUZZ_FUZZ_ENTRY_H_
 #define MESHSEG_FUZZ_FUZZ_ENTRY_H_
 

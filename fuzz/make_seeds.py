@@ -12,6 +12,7 @@ Usage: python3 fuzz/make_seeds.py [SHARED_DATA_DIR]   (default ../shared/data)
 Re-running rewrites the seeds; inputs the fuzzer found are not kept here
 (scripts/fuzz.sh keeps them under build-fuzz/corpus/).
 """
+import gzip
 import os
 import struct
 import subprocess
@@ -119,6 +120,53 @@ def upload_request(text):
         input=text.encode(), check=True, capture_output=True).stdout
 
 
+# A 3 x 2 x 2 volume whose values name their index (the volume readers'
+# tests use the same kind of ramp), in every sample type.
+VOLUME_DIMS = (3, 2, 2)
+VOLUME_TYPES = {"uint8": "B", "uint16": "H", "int16": "h", "float32": "f"}
+
+
+def samples(vtype, big=False):
+    n = VOLUME_DIMS[0] * VOLUME_DIMS[1] * VOLUME_DIMS[2]
+    values = [x * 0.5 if vtype == "float32" else (x * 7 - 40 if vtype == "int16" else x * 3)
+              for x in range(n)]
+    return struct.pack((">" if big else "<") + VOLUME_TYPES[vtype] * n, *values)
+
+
+def nrrd(vtype, nrrd_type, big=False, encoding="raw", geometry="directions", crlf=False):
+    head = ["NRRD0004", "# seed", "type: %s" % nrrd_type, "dimension: 3",
+            "sizes: %d %d %d" % VOLUME_DIMS, "endian: %s" % ("big" if big else "little"),
+            "encoding: %s" % encoding]
+    if geometry == "directions":
+        head += ["space: 3D-right-handed",
+                 "space directions: (0.5,0,0) (0,0.75,0) (0,0,1.25)",
+                 "space origin: (1.5,-2,3.25)", "kinds: domain domain domain"]
+    else:
+        head += ["spacings: 0.5 0.75 1.25", "byte skip: 0", "key:=value"]
+    data = samples(vtype, big)
+    if encoding == "gzip":
+        data = gzip.compress(data, mtime=0)
+    eol = "\r\n" if crlf else "\n"
+    return (eol.join(head) + eol + eol).encode() + data
+
+
+def metaimage(vtype, big=False, data_file="LOCAL"):
+    met = {"uint8": "MET_UCHAR", "uint16": "MET_USHORT", "int16": "MET_SHORT",
+           "float32": "MET_FLOAT"}[vtype]
+    head = ("ObjectType = Image\nNDims = 3\nBinaryData = True\nBinaryDataByteOrderMSB = %s\n"
+            "CompressedData = False\nTransformMatrix = 1 0 0 0 1 0 0 0 1\nOffset = 1.5 -2 3.25\n"
+            "ElementSpacing = 0.5 0.75 1.25\nDimSize = %d %d %d\nElementType = %s\n"
+            "ElementDataFile = %s\n") % ((("True" if big else "False"),) + VOLUME_DIMS + (met, data_file))
+    return head.encode() + (samples(vtype, big) if data_file == "LOCAL" else b"")
+
+
+def raw_volume(vtype, big=False, dims=VOLUME_DIMS):
+    """fuzz/volume_targets.h FuzzRawVolume: a 73-byte layout, then the samples."""
+    flags = list(VOLUME_TYPES).index(vtype) | (4 if big else 0)
+    layout = struct.pack("<B3q3d3d", flags, *dims, 0.5, 0.75, 1.25, 1.5, -2, 3.25)
+    return layout + samples(vtype, big)
+
+
 def main():
     data = sys.argv[1] if len(sys.argv) > 1 else os.path.join(ROOT, "..", "shared", "data")
 
@@ -177,8 +225,27 @@ def main():
     put("pwn", "three_points.pwn", "3\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n0 0 1\n0 0 1\n")
     put("pwn", "crlf_exponents.pwn", "2\r\n1e-3 -2.5E+2 .5\r\n0 0 0\r\n1 0 0\r\n0 -1 0\r\n")
 
+    put("nrrd", "uint8_raw.nrrd", nrrd("uint8", "uchar"))
+    put("nrrd", "uint16_gzip.nrrd", nrrd("uint16", "unsigned short", encoding="gzip"))
+    put("nrrd", "int16_big_spacings.nrrd", nrrd("int16", "short", big=True, geometry="spacings"))
+    put("nrrd", "float_crlf.nrrd", nrrd("float32", "float", crlf=True))
+    put("nrrd", "detached.nhdr", nrrd("uint8", "uint8", geometry="spacings")[:-12]
+        .replace(b"encoding: raw\n", b"encoding: raw\ndata file: part.raw\n"))
+
+    put("mha", "uint8.mha", metaimage("uint8"))
+    put("mha", "int16_big.mha", metaimage("int16", big=True))
+    put("mha", "float.mha", metaimage("float32"))
+    put("mhd", "uint16_local.mhd", metaimage("uint16"))
+    put("mhd", "detached.mhd", metaimage("uint8", data_file="part.zraw"))
+
+    for vtype in VOLUME_TYPES:
+        put("raw", "%s_le" % vtype, raw_volume(vtype))
+    put("raw", "int16_be", raw_volume("int16", big=True))
+    put("raw", "wrong_size", raw_volume("uint8", dims=(3, 2, 3)))
+
     # Content sniffing sees every format without its extension.
-    for target in ("stl_ascii", "stl_binary", "obj", "off", "ply_ascii", "ply_binary", "xyz", "pwn"):
+    for target in ("stl_ascii", "stl_binary", "obj", "off", "ply_ascii", "ply_binary", "xyz", "pwn",
+                   "nrrd", "mha"):
         folder = os.path.join(CORPUS, target)
         for name in sorted(os.listdir(folder))[:2]:
             put("sniffed", "%s_%s" % (target, name.rsplit(".", 1)[0]), excerpt(os.path.join(folder, name)))

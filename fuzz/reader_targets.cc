@@ -6,6 +6,7 @@
 #include "absl/strings/str_cat.h"
 #include "fuzz/check.h"
 #include "fuzz/reader_targets.h"
+#include "fuzz/volume_targets.h"
 #include "mesh/file_format.h"
 #include "mesh/ply_body.h"
 #include "mesh/point_cloud_readers.h"
@@ -122,6 +123,10 @@ void FuzzSniffedFile(std::string_view bytes) {
     case FileFormat::kXyz:
     case FileFormat::kPwn: return FuzzCloudReader(format, bytes);
     case FileFormat::kPly: FuzzCloudReader(format, bytes); return FuzzMeshReader(format, bytes);
+    case FileFormat::kNrrd:
+    case FileFormat::kMha:
+    case FileFormat::kMhd:
+    case FileFormat::kRaw: return FuzzVolumeFile(format, bytes);
     default: return FuzzMeshReader(format, bytes);
   }
 }

@@ -19,7 +19,7 @@ void FuzzCloudReader(FileFormat format, std::string_view bytes);
 
 // Detects the format from the content alone (an upload without extension)
 // and runs the reader it selects; PLY through both the mesh and the cloud
-// reader.
+// reader, a volume header (NRRD, MetaImage) through FuzzVolumeFile.
 void FuzzSniffedFile(std::string_view bytes);
 
 }  // namespace meshseg::fuzz

@@ -78,6 +78,8 @@ absl::StatusOr<VolumeInfo> RawInfo(const std::string& path, const VolumeReadOpti
       return BadVolume(info.name, absl::StrCat("spacing ", a, " is ", raw.spacing[a],
                                                ", not positive and finite"));
     }
+    MESHSEG_RETURN_IF_ERROR(
+        voxel_internal::CheckAxisLength(info.name, absl::StrCat("spacing ", a), raw.spacing[a]));
     info.geometry.axes[a] = raw.spacing[a] * Eigen::Vector3d::Unit(a);
   }
   if (!raw.origin.allFinite()) return BadVolume(info.name, "origin is not finite");

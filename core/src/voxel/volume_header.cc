@@ -3,6 +3,7 @@
 #include <cctype>
 #include <cmath>
 #include <filesystem>
+#include <limits>
 #include <optional>
 #include <vector>
 
@@ -74,6 +75,11 @@ absl::Status ParseDims(std::string_view name, std::string_view key, std::string_
   return absl::OkStatus();
 }
 
+// See CheckAxisLength (volume_header.h).
+const double kMinAxisLength = std::sqrt(std::numeric_limits<double>::min());
+const double kMaxAxisLength =
+    std::sqrt(std::numeric_limits<double>::max()) / double(int64_t{1} << 33);
+
 absl::Status ParseSpacing(std::string_view name, std::string_view key, std::string_view value,
                           Fields* f) {
   const std::optional<std::vector<double>> v = Numbers(value);
@@ -85,6 +91,10 @@ absl::Status ParseSpacing(std::string_view name, std::string_view key, std::stri
     if (!std::isfinite((*v)[a]) || (*v)[a] <= 0.0) {
       return BadVolume(name, absl::StrCat(std::string(key), " \"", Clip(value), "\": spacing ", a,
                                           " must be positive and finite"));
+    }
+    if (absl::Status s = CheckAxisLength(name, absl::StrCat(std::string(key), " ", a), (*v)[a]);
+        !s.ok()) {
+      return s;
     }
     f->spacing[a] = (*v)[a];
   }
@@ -116,6 +126,14 @@ absl::Status ParseDirections(std::string_view name, std::string_view key, std::s
     if (!d[a].allFinite() || d[a].norm() == 0.0) {
       return BadVolume(name, absl::StrCat(std::string(key), " \"", Clip(value), "\": axis ", a,
                                           " must be a finite non-zero vector"));
+    }
+    // MetaImage's directions are normalised (ElementSpacing gives the length).
+    if (f->directions_carry_spacing) {
+      if (absl::Status s =
+              CheckAxisLength(name, absl::StrCat(std::string(key), " axis ", a), d[a].norm());
+          !s.ok()) {
+        return s;
+      }
     }
   }
   f->directions = d;
@@ -334,6 +352,13 @@ absl::StatusOr<VolumeInfo> ParseMetaImageHeader(std::string_view text, const std
   if (!ended) return BadVolume(name, "header has no ElementDataFile line");
   if (absl::Status s = Finish(name, f, &info); !s.ok()) return s;
   return info;
+}
+
+absl::Status CheckAxisLength(std::string_view name, std::string_view what, double length) {
+  if (length >= kMinAxisLength && length <= kMaxAxisLength) return absl::OkStatus();
+  return BadVolume(name, absl::StrCat(std::string(what), " is ", length, ", outside [",
+                                      kMinAxisLength, ", ", kMaxAxisLength,
+                                      "]: its square underflows or the squared extent overflows"));
 }
 
 absl::Status CheckDims(const VolumeInfo& info, const VolumeReadOptions& options) {

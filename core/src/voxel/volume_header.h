@@ -27,6 +27,14 @@ absl::StatusOr<VolumeInfo> ParseNrrdHeader(std::string_view text, const std::str
 // Parses a MetaImage header (.mha or .mhd) that starts `text`.
 absl::StatusOr<VolumeInfo> ParseMetaImageHeader(std::string_view text, const std::string& path);
 
+// Returns OK if `length` (a spacing, or the length of an axis vector) can
+// place samples: the surface's squared distances, areas and normals are
+// products of two such lengths, so its square must be a normal double (from
+// sqrt(DBL_MIN) ~ 1.5e-154 up), and the squared extent of the longest axis
+// the limits allow (2^33 samples) must stay finite (up to ~1.5e144).
+// Otherwise INVALID_ARGUMENT naming `what` (e.g. "spacing 2") and the value.
+absl::Status CheckAxisLength(std::string_view name, std::string_view what, double length);
+
 // Checks dims against the options' limits (before anything is allocated).
 absl::Status CheckDims(const VolumeInfo& info, const VolumeReadOptions& options);
 

@@ -252,6 +252,33 @@ TEST(ReadVolume, RawWithoutLayoutOrOfTheWrongSizeIsRefused) {
        .raw = RawVolumeLayout{.dims = {1000000, 1000000, 1000000}, .type = VoxelType::kUint8}});
 }
 
+// Lengths whose square underflows (a subnormal spacing read as positive) or
+// whose squared extent overflows give no usable geometry; the bounds hold
+// for every way a volume states its spacing.
+TEST(ReadVolume, SpacingsWhoseSquareUnderflowsOrOverflowsAreRefused) {
+  const std::string data(2 * 2 * 2, '\0');
+  const RawVolumeLayout tiny{
+      .dims = {2, 2, 2}, .spacing = {0.5, 0.75, 1e-309}, .type = VoxelType::kUint8};
+  ExpectBad("subnormal.raw", data, "spacing 2 is 1e-309, outside",
+            {.format = std::nullopt, .raw = tiny});
+  ExpectBad("tiny.nrrd", Nrrd("sizes: 2 2 2\nspacings: 1e-200 1 1") + data,
+            "spacings 0 is 1e-200, outside");
+  ExpectBad("huge.nrrd", Nrrd("sizes: 2 2 2\nspace directions: (1,0,0) (0,1e150,0) (0,0,1)") + data,
+            "space directions axis 1 is 1e+150, outside");
+  ExpectBad("tiny.mha",
+            "NDims = 3\nDimSize = 2 2 2\nElementType = MET_UCHAR\nElementSpacing = 1 1e-160 1\n"
+            "ElementDataFile = LOCAL\n" +
+                data,
+            "ElementSpacing 1 is 1e-160, outside");
+  // Just inside the bounds: read as given.
+  const std::string path = ScratchPath("small_spacing.nrrd");
+  WriteFile(path, Nrrd("sizes: 2 2 2\nspacings: 1e-150 1 1e140") + data);
+  const absl::StatusOr<VolumeInfo> info = ReadVolumeInfo(path);
+  ASSERT_TRUE(info.ok()) << info.status();
+  EXPECT_DOUBLE_EQ(info->geometry.Spacing().x(), 1e-150);
+  EXPECT_DOUBLE_EQ(info->geometry.Spacing().z(), 1e140);
+}
+
 TEST(ReadVolume, MissingFileIsNotFound) {
   const absl::StatusOr<VolumeInfo> info = ReadVolumeInfo(ScratchPath("absent.nrrd"));
   ASSERT_FALSE(info.ok());
