@@ -9,6 +9,7 @@
 
 #include <functional>
 #include <stop_token>
+#include <string>
 #include <string_view>
 
 #include "absl/status/status.h"
@@ -32,7 +33,11 @@ struct RunContext {
   // Returns CancelledError naming `stage` when a stop was requested, else OK.
   absl::Status CheckStop(std::string_view stage) const {
     if (!stop_requested()) return absl::OkStatus();
-    return absl::CancelledError(std::string(stage) + ": stop requested");
+    // append, not std::string + "...": GCC 12 reports a false -Warray-bounds
+    // on the inlined operator+ (its moved temporary) where this is inlined.
+    std::string message(stage);
+    message.append(": stop requested");
+    return absl::CancelledError(message);
   }
 };
 

@@ -1,0 +1,1 @@
+// Compiles core/pch/stages.h once; the stage libraries reuse the result.

@@ -1,0 +1,1 @@
+// Compiles proto/pch/service.h once; the service libraries reuse the result.
