@@ -217,11 +217,17 @@ absl::Status VolumeSlices::Next(std::vector<double>& values) {
   const int size = VoxelTypeSize(info_.type);
   const size_t count = static_cast<size_t>(d[0] * d[1]);
   const size_t want = count * size;
-  bytes_.resize(want);
   size_t got = 0;
   if (stream_->gz != nullptr) {
+    // How much a gzip stream holds is known only once it is inflated, and a
+    // header can claim far more than that: the buffer grows with the data
+    // (doubling from 1 MiB), so a short stream costs what it holds, not what
+    // its header claims. Raw data was checked against the file size.
+    bytes_.resize(std::min<size_t>(want, size_t{1} << 20));
     while (got < want) {
-      const unsigned chunk = static_cast<unsigned>(std::min<size_t>(want - got, 1u << 30));
+      if (got == bytes_.size()) bytes_.resize(std::min(want, 2 * bytes_.size()));
+      const unsigned chunk =
+          static_cast<unsigned>(std::min<size_t>(bytes_.size() - got, 1u << 30));
       const int n = gzread(stream_->gz, bytes_.data() + got, chunk);
       if (n < 0) {
         int err = 0;
@@ -233,6 +239,7 @@ absl::Status VolumeSlices::Next(std::vector<double>& values) {
       got += static_cast<size_t>(n);
     }
   } else {
+    bytes_.resize(want);
     got = std::fread(bytes_.data(), 1, want, stream_->file);
   }
   if (got < want) {

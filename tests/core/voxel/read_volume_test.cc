@@ -1,3 +1,5 @@
+#include <sys/resource.h>
+
 #include <cstdio>
 #include <fstream>
 #include <string>
@@ -220,6 +222,35 @@ TEST(ReadVolume, TruncatedGzipDataFailsAtTheSliceItEnds) {
   EXPECT_THAT(s.message(), HasSubstr("cut_gzip.nrrd"));
   EXPECT_THAT(s.message(),
               ::testing::AnyOf(HasSubstr("truncated data"), HasSubstr("corrupt gzip")));
+}
+
+// A gzip header can claim far more samples than its stream holds (here a
+// 256 MiB slice over 240 bytes of data): the read fails naming the truncation,
+// and the process never holds the claimed slice in memory.
+TEST(ReadVolume, GzipHeaderClaimingMoreThanItsStreamHoldsCostsOnlyTheStream) {
+  const std::string path = ScratchPath("overstated_gzip.nrrd");
+  ASSERT_TRUE(WriteNrrd(Ramp(VoxelType::kFloat32), path, /*gzip=*/true).ok());
+  std::string bytes;
+  {
+    std::ifstream in(path, std::ios::binary);
+    bytes.assign(std::istreambuf_iterator<char>(in), {});
+  }
+  const std::string sizes = "sizes: 5 4 3";
+  const std::size_t at = bytes.find(sizes);
+  ASSERT_NE(at, std::string::npos);
+  WriteFile(path, bytes.replace(at, sizes.size(), "sizes: 8192 8192 2"));
+  const absl::StatusOr<VolumeInfo> info = ReadVolumeInfo(path);
+  ASSERT_TRUE(info.ok()) << info.status();
+  absl::StatusOr<VolumeSlices> slices = VolumeSlices::Open(*info);
+  ASSERT_TRUE(slices.ok()) << slices.status();
+  std::vector<double> slice;
+  const absl::Status s = slices->Next(slice);
+  ASSERT_FALSE(s.ok());
+  EXPECT_THAT(s.message(), HasSubstr("overstated_gzip.nrrd"));
+  EXPECT_THAT(s.message(), HasSubstr("truncated data"));
+  rusage usage{};
+  ASSERT_EQ(getrusage(RUSAGE_SELF, &usage), 0);
+  EXPECT_LT(usage.ru_maxrss, 128 * 1024) << "peak KiB; the claimed slice is 256 MiB";
 }
 
 TEST(ReadVolume, BadMetaImageHeadersNameTheProblem) {
