@@ -1,13 +1,15 @@
 // File: subdiv.h
 // -----------------------------------------------------------------------------
 // The `subdiv` stage: fits a Loop subdivision surface with sharp creases to a
-// dense triangle mesh (seed 004, ALGORITHMS.md S5), for freeform surfaces that
+// dense triangle mesh (ALGORITHMS.md S5), for freeform surfaces that
 // no analytic primitive describes (castings, blades, housings).
 //
 // In: a Mesh (its vertices are the data). Steps: feature edges (dihedral
 // angle) become creases; feature-preserving QEM edge collapse gives a coarse
-// control mesh (seed 004 section 2.4); the seed's quasi-interpolation (eq. 1)
-// moves its vertices so the limit surface passes near the data; a few rounds
+// control mesh whose edges follow the sharp lines, because a smooth limit
+// surface cannot bend across them; quasi-interpolation (each vertex moved by
+// its own offset from its limit position, the first-order inverse of the
+// limit masks) moves its vertices so the limit surface passes near the data; a few rounds
 // of footpoint update + sparse linear least squares fit the control vertices
 // to the data through the Loop limit surface (Hoppe et al. 1994 rules for
 // creases and corners). Out: the control mesh with its crease and corner

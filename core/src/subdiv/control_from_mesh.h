@@ -1,6 +1,7 @@
-// The coarse control mesh of seed 004 section 2.4: feature edges tagged as
-// creases, then QEM edge collapse to a target face count that never
-// collapses across a feature line.
+// The coarse control mesh: feature edges tagged as creases, then QEM edge
+// collapse to a target face count that never collapses across a feature
+// line, since a smooth limit surface cannot follow a sharp edge that no
+// control edge lies on.
 #ifndef MESHSEG_SUBDIV_CONTROL_FROM_MESH_H_
 #define MESHSEG_SUBDIV_CONTROL_FROM_MESH_H_
 

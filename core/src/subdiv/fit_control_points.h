@@ -1,5 +1,5 @@
 // Control-vertex positions whose Loop limit surface fits data points:
-// seed 004's quasi-interpolation as the start, then rounds of footpoint
+// quasi-interpolation (a linear first guess) as the start, then rounds of footpoint
 // update and sparse linear least squares (Hoppe et al. 1994 section 5).
 #ifndef MESHSEG_SUBDIV_FIT_CONTROL_POINTS_H_
 #define MESHSEG_SUBDIV_FIT_CONTROL_POINTS_H_
@@ -18,8 +18,8 @@ namespace meshseg::subdiv_internal {
 
 // Returns `control` with each vertex moved by its own offset from its limit
 // position, v + (v - limit(v)): the first-order inverse of the limit masks.
-// For a regular smooth vertex (limit mask 1/2, 1/12 each) this is seed 004
-// eq. (1), v <- (1 - k gamma) v + gamma sum v_j with gamma = -1/(2k); for
+// For a regular smooth vertex (limit mask 1/2, 1/12 each) this is
+// v <- (1 - k gamma) v + gamma sum v_j with gamma = -1/(2k); for
 // other valences, creases and corners it uses the vertex's own mask, so a
 // corner stays and a crease vertex moves along its crease curve's inverse.
 std::vector<Eigen::Vector3d> QuasiInterpolate(const ControlMesh& control,

@@ -1,6 +1,7 @@
-// FitSubdivisionSurface(): checks params, then seed 004's steps in order:
-// control mesh (section 2.4), quasi-interpolation (section 2.5), and the
-// least-squares rounds on the limit surface.
+// FitSubdivisionSurface(): checks params, then in order: the control mesh,
+// quasi-interpolation (a linear first guess, so the least squares start near
+// the data and their footpoints are meaningful), and the least-squares rounds
+// on the limit surface.
 #include "meshseg/subdiv.h"
 
 #include <cmath>
