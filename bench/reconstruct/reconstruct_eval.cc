@@ -65,7 +65,7 @@ int main(int argc, char** argv) {
   const auto truth_triangles = test::Triangles(truth->tri);
   const test::SurfaceDistance to_mesh(mesh_triangles);
   const test::SurfaceDistance to_truth(truth_triangles);
-  const reconstruct_internal::PointIndex cloud_index(cloud->points);
+  const mesh_internal::PointIndex cloud_index(cloud->points);
   const auto near_cloud = [&](const Eigen::Vector3d& p, double radius) {
     std::vector<uint32_t> idx;
     std::vector<double> d2;

@@ -3,42 +3,24 @@
 #include <algorithm>
 #include <limits>
 
-#include <nanoflann.hpp>
 #include <tbb/parallel_for.h>
 
+#include "mesh/point_index.h"
 #include "meshseg/voxel.h"
 
 namespace meshseg::pipeline_internal {
-namespace {
-
-// nanoflann dataset adaptor over the mesh's vertex positions.
-struct VertexCloud {
-  const TriMesh* mesh;
-  size_t kdtree_get_point_count() const { return mesh->n_vertices(); }
-  double kdtree_get_pt(size_t i, size_t dim) const {
-    return mesh->point(TriMesh::VertexHandle(static_cast<int>(i)))[dim];
-  }
-  template <class Box>
-  bool kdtree_get_bbox(Box&) const { return false; }
-};
-using VertexTree = nanoflann::KDTreeSingleIndexAdaptor<
-    nanoflann::L2_Simple_Adaptor<double, VertexCloud>, VertexCloud, 3, uint32_t>;
-
-}  // namespace
-
 std::vector<int> PointLabels(const TriMesh& mesh, std::span<const int> face_labels,
                              std::span<const Eigen::Vector3d> points,
                              std::span<const uint8_t> is_outlier) {
   std::vector<int> labels(points.size(), -1);
   if (mesh.n_vertices() == 0) return labels;
-  const VertexCloud cloud{&mesh};
-  VertexTree tree(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(16));
-  tree.buildIndex();
+  std::vector<Eigen::Vector3d> vertices;
+  vertices.reserve(mesh.n_vertices());
+  for (auto v : mesh.vertices()) vertices.push_back(ToEigen(mesh.point(v)));
+  const mesh_internal::PointIndex index(vertices);
   tbb::parallel_for(size_t{0}, points.size(), [&](size_t k) {
     if (!is_outlier.empty() && is_outlier[k]) return;
-    uint32_t nearest = 0;
-    double sq = 0.0;
-    tree.knnSearch(points[k].data(), 1, &nearest, &sq);
+    const uint32_t nearest = index.Closest(points[k]);
     double best = std::numeric_limits<double>::infinity();
     for (auto f = mesh.cvf_iter(TriMesh::VertexHandle(static_cast<int>(nearest))); f.is_valid(); ++f) {
       auto v = mesh.cfv_iter(*f);

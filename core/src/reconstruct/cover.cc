@@ -31,7 +31,7 @@ absl::StatusOr<std::vector<Support>> CoverBySupports(const std::vector<OctreeLea
                                                      const RunContext& ctx) {
   std::vector<Eigen::Vector3d> centers(leaves.size());
   for (size_t i = 0; i < leaves.size(); ++i) centers[i] = leaves[i].center;
-  const PointIndex leaf_index(centers);
+  const mesh_internal::PointIndex leaf_index(centers);
   std::vector<uint8_t> covered(leaves.size(), 0);
   std::vector<Support> supports;
   std::vector<std::pair<uint32_t, double>> found;

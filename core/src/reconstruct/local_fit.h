@@ -7,7 +7,7 @@
 
 #include <Eigen/Core>
 
-#include "reconstruct/point_index.h"
+#include "mesh/point_index.h"
 
 namespace meshseg::reconstruct_internal {
 
@@ -38,7 +38,7 @@ inline double SupportWeight(double dist2, double radius) {
 struct FitInput {
   const std::vector<Eigen::Vector3d>& points;
   const std::vector<Eigen::Vector3d>& normals;  // unit, inward
-  const PointIndex& index;
+  const mesh_internal::PointIndex& index;
   double epsilon;     // ε, model units
   double max_radius;  // never grow a ball beyond this
 };

@@ -26,7 +26,7 @@ struct KnnGraph {
 // Returns the k nearest neighbours of every point (itself excluded), as
 // n × k row-major indices (fewer per row only when n ≤ k).
 std::vector<uint32_t> NearestNeighbors(const std::vector<Eigen::Vector3d>& points,
-                                       const PointIndex& index, int k) {
+                                       const mesh_internal::PointIndex& index, int k) {
   const size_t n = points.size();
   const int kk = static_cast<int>(std::min<size_t>(k, n - 1));
   std::vector<uint32_t> knn(n * kk);
@@ -166,7 +166,7 @@ bool TurnInward(const std::vector<Eigen::Vector3d>& points, const std::vector<in
 
 absl::StatusOr<OrientedNormals> InwardNormals(const std::vector<Eigen::Vector3d>& points,
                                               const std::vector<Eigen::Vector3d>& given,
-                                              const PointIndex& index, int k,
+                                              const mesh_internal::PointIndex& index, int k,
                                               const RunContext& ctx) {
   constexpr double kMaxDisagreeing = 0.1;
   const std::vector<uint32_t> knn = NearestNeighbors(points, index, k);

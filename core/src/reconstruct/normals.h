@@ -10,7 +10,7 @@
 
 #include "absl/status/statusor.h"
 #include "meshseg/run_context.h"
-#include "reconstruct/point_index.h"
+#include "mesh/point_index.h"
 
 namespace meshseg::reconstruct_internal {
 
@@ -30,7 +30,7 @@ struct OrientedNormals {
 // Errors: CANCELLED when ctx requests a stop.
 absl::StatusOr<OrientedNormals> InwardNormals(const std::vector<Eigen::Vector3d>& points,
                                               const std::vector<Eigen::Vector3d>& given,
-                                              const PointIndex& index, int k,
+                                              const mesh_internal::PointIndex& index, int k,
                                               const RunContext& ctx);
 
 }  // namespace meshseg::reconstruct_internal

@@ -17,7 +17,8 @@ constexpr double kMinCos = 0.5;
 
 std::vector<uint8_t> OutlierFlags(const std::vector<Eigen::Vector3d>& points,
                                   const std::vector<Eigen::Vector3d>& normals,
-                                  const PointIndex& index, const std::vector<double>& spread, int k,
+                                  const mesh_internal::PointIndex& index,
+                                  const std::vector<double>& spread, int k,
                                   double isolated_distance, double off_surface_distance) {
   std::vector<uint8_t> flags(points.size(), 0);
   tbb::parallel_for(tbb::blocked_range<size_t>(0, points.size()), [&](const auto& range) {
@@ -52,6 +53,23 @@ std::vector<uint8_t> OutlierFlags(const std::vector<Eigen::Vector3d>& points,
     }
   });
   return flags;
+}
+
+std::vector<double> MeanNeighborDistances(const std::vector<Eigen::Vector3d>& points,
+                                          const mesh_internal::PointIndex& index) {
+  constexpr int kNeighbors = 6;
+  std::vector<double> mean(points.size(), 0.0);
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, points.size()), [&](const auto& range) {
+    std::vector<uint32_t> idx;
+    std::vector<double> d2;
+    for (size_t i = range.begin(); i != range.end(); ++i) {
+      index.Nearest(points[i], kNeighbors + 1, &idx, &d2);
+      double sum = 0.0;
+      for (size_t j = 1; j < d2.size(); ++j) sum += std::sqrt(d2[j]);
+      mean[i] = d2.size() > 1 ? sum / static_cast<double>(d2.size() - 1) : 0.0;
+    }
+  });
+  return mean;
 }
 
 }  // namespace meshseg::reconstruct_internal

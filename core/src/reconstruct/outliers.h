@@ -10,9 +10,15 @@
 
 #include <Eigen/Core>
 
-#include "reconstruct/point_index.h"
+#include "mesh/point_index.h"
 
 namespace meshseg::reconstruct_internal {
+
+// Returns, per point, the mean distance to its 6 nearest other points
+// (≈ sqrt(area / count) on a uniformly sampled surface, large for isolated
+// outliers).
+std::vector<double> MeanNeighborDistances(const std::vector<Eigen::Vector3d>& points,
+                                          const mesh_internal::PointIndex& index);
 
 // Returns 1 per point whose mean distance to its 6 nearest neighbours
 // (`spread`) exceeds `isolated_distance`, or whose distance to the
@@ -22,7 +28,8 @@ namespace meshseg::reconstruct_internal {
 // units.
 std::vector<uint8_t> OutlierFlags(const std::vector<Eigen::Vector3d>& points,
                                   const std::vector<Eigen::Vector3d>& normals,
-                                  const PointIndex& index, const std::vector<double>& spread, int k,
+                                  const mesh_internal::PointIndex& index,
+                                  const std::vector<double>& spread, int k,
                                   double isolated_distance, double off_surface_distance);
 
 }  // namespace meshseg::reconstruct_internal

@@ -42,8 +42,8 @@ Eigen::Vector3d OntoLocalPlane(const Eigen::Vector3d& x, const std::vector<Eigen
 }  // namespace
 
 std::vector<int> ProjectToPoints(const std::vector<Eigen::Vector3d>& points,
-                                 const PointIndex& index, double radius, int iterations,
-                                 TriMesh* mesh) {
+                                 const mesh_internal::PointIndex& index, double radius,
+                                 int iterations, TriMesh* mesh) {
   const double sigma2 = radius * radius / 4.0;
   std::vector<uint8_t> left(mesh->n_vertices(), 0);
   tbb::parallel_for(tbb::blocked_range<size_t>(0, mesh->n_vertices()), [&](const auto& range) {

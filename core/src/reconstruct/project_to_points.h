@@ -10,7 +10,7 @@
 #include <Eigen/Core>
 
 #include "meshseg/mesh.h"
-#include "reconstruct/point_index.h"
+#include "mesh/point_index.h"
 
 namespace meshseg::reconstruct_internal {
 
@@ -33,8 +33,8 @@ inline constexpr double kFallbackReach = 3.0;
 // normal averages out over the ~π(radius/h)² points of a disc; sharp edges
 // are rounded over about `radius`.
 std::vector<int> ProjectToPoints(const std::vector<Eigen::Vector3d>& points,
-                                 const PointIndex& index, double radius, int iterations,
-                                 TriMesh* mesh);
+                                 const mesh_internal::PointIndex& index, double radius,
+                                 int iterations, TriMesh* mesh);
 
 }  // namespace meshseg::reconstruct_internal
 

@@ -22,7 +22,7 @@ PuFunction::PuFunction(const std::vector<Support>& supports) : supports_(support
     groups_[c].max_radius = std::max(groups_[c].max_radius, supports[i].radius);
   }
   std::erase_if(groups_, [](const Group& g) { return g.centers.empty(); });
-  for (auto& g : groups_) g.index = std::make_unique<PointIndex>(g.centers);
+  for (auto& g : groups_) g.index = std::make_unique<mesh_internal::PointIndex>(g.centers);
 }
 
 double PuFunction::operator()(const Eigen::Vector3d& x) const {

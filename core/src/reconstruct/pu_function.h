@@ -9,7 +9,7 @@
 #include <Eigen/Core>
 
 #include "reconstruct/local_fit.h"
-#include "reconstruct/point_index.h"
+#include "mesh/point_index.h"
 
 namespace meshseg::reconstruct_internal {
 
@@ -29,7 +29,7 @@ class PuFunction {
     std::vector<Eigen::Vector3d> centers;
     std::vector<int> support;  // index into supports_
     double max_radius = 0.0;
-    std::unique_ptr<PointIndex> index;
+    std::unique_ptr<mesh_internal::PointIndex> index;
   };
   const std::vector<Support>& supports_;
   std::vector<Group> groups_;

@@ -15,7 +15,7 @@
 #include "reconstruct/normals.h"
 #include "reconstruct/octree.h"
 #include "reconstruct/outliers.h"
-#include "reconstruct/point_index.h"
+#include "mesh/point_index.h"
 #include "reconstruct/pu_function.h"
 #include "reconstruct/refine.h"
 #include "reconstruct/regular_triangulation.h"
@@ -132,7 +132,7 @@ absl::StatusOr<Reconstruction> Reconstruct(const PointCloud& cloud, const Recons
   Reconstruction out;
   ReconstructStats& stats = out.stats;
   {
-    const PointIndex all_index(cloud.points);
+    const mesh_internal::PointIndex all_index(cloud.points);
     const std::vector<double> spread = MeanNeighborDistances(cloud.points, all_index);
     stats.point_spacing = Median(spread);
     out.is_outlier =
@@ -161,7 +161,7 @@ absl::StatusOr<Reconstruction> Reconstruct(const PointCloud& cloud, const Recons
                                                    extent, " with spacing ", h,
                                                    "; they (nearly) coincide"));
   }
-  const PointIndex index(points);
+  const mesh_internal::PointIndex index(points);
   ctx.Progress(kStage, 0.05);
 
   // Step 1: inward normals.

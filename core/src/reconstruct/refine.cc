@@ -35,9 +35,9 @@ Eigen::Vector3d OntoZeroSet(const PuFunction& f, Eigen::Vector3d x, double delta
 }  // namespace
 
 absl::StatusOr<Mesh> RefineOnPoints(const Mesh& mesh, const std::vector<Eigen::Vector3d>& points,
-                                    const PointIndex& index, const PuFunction& f, double h,
-                                    const ReconstructParams& params, const RunContext& ctx,
-                                    ReconstructStats* stats) {
+                                    const mesh_internal::PointIndex& index, const PuFunction& f,
+                                    double h, const ReconstructParams& params,
+                                    const RunContext& ctx, ReconstructStats* stats) {
   // An equilateral triangle of edge l has area (√3/4) l²: the edge at which
   // the surface holds refine_max_faces of them.
   const double area = Assess(mesh).surface_area;

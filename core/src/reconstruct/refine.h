@@ -29,7 +29,7 @@
 #include "meshseg/mesh.h"
 #include "meshseg/reconstruct.h"
 #include "meshseg/run_context.h"
-#include "reconstruct/point_index.h"
+#include "mesh/point_index.h"
 #include "reconstruct/pu_function.h"
 
 namespace meshseg::reconstruct_internal {
@@ -48,9 +48,9 @@ inline constexpr double kMinGradient = 1e-3;
 // stats->refine_edge_length and unsupported_vertex_count. Errors: those of
 // IsotropicRemesh.
 absl::StatusOr<Mesh> RefineOnPoints(const Mesh& mesh, const std::vector<Eigen::Vector3d>& points,
-                                    const PointIndex& index, const PuFunction& f, double h,
-                                    const ReconstructParams& params, const RunContext& ctx,
-                                    ReconstructStats* stats);
+                                    const mesh_internal::PointIndex& index, const PuFunction& f,
+                                    double h, const ReconstructParams& params,
+                                    const RunContext& ctx, ReconstructStats* stats);
 
 }  // namespace meshseg::reconstruct_internal
 

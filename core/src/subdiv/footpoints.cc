@@ -4,27 +4,12 @@
 #include <cmath>
 #include <limits>
 
-#include <nanoflann.hpp>
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include "mesh/point_index.h"
+
 namespace meshseg::subdiv_internal {
-namespace {
-
-struct Cloud {
-  const std::vector<Eigen::Vector3d>& points;
-  size_t kdtree_get_point_count() const { return points.size(); }
-  double kdtree_get_pt(size_t i, size_t dim) const { return points[i][dim]; }
-  template <class Box>
-  bool kdtree_get_bbox(Box&) const {
-    return false;
-  }
-};
-using Tree = nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, Cloud>, Cloud,
-                                                 3, uint32_t>;
-
-}  // namespace
-
 Eigen::Vector3d ClosestBarycentric(const Eigen::Vector3d& p, const Eigen::Vector3d& a,
                                    const Eigen::Vector3d& b, const Eigen::Vector3d& c) {
   const Eigen::Vector3d ab = b - a, ac = c - a, ap = p - a;
@@ -70,19 +55,17 @@ std::vector<FootPoint> FootPoints(const std::vector<Eigen::Vector3d>& vertices,
   for (size_t f = 0; f < faces.size(); ++f) {
     for (int v : faces[f]) incident[fill[v]++] = static_cast<int>(f);
   }
-  const Cloud cloud{vertices};
-  Tree tree(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(16));
-  tree.buildIndex();
-  const size_t k = std::min<size_t>(std::max(1, candidates), vertices.size());
+  const mesh_internal::PointIndex index(vertices);
+  const int k = std::max(1, candidates);
   std::vector<FootPoint> out(data.size());
   tbb::parallel_for(tbb::blocked_range<size_t>(0, data.size()), [&](const auto& range) {
-    std::vector<uint32_t> nearest(k);
-    std::vector<double> d2(k);
+    std::vector<uint32_t> nearest;
+    std::vector<double> d2;
     for (size_t i = range.begin(); i != range.end(); ++i) {
       const Eigen::Vector3d& p = data[i];
-      const size_t found = tree.knnSearch(p.data(), k, nearest.data(), d2.data());
+      index.Nearest(p, k, &nearest, &d2);
       double best = std::numeric_limits<double>::infinity();
-      for (size_t j = 0; j < found; ++j) {
+      for (size_t j = 0; j < nearest.size(); ++j) {
         for (int s = start[nearest[j]]; s < start[nearest[j] + 1]; ++s) {
           const int f = incident[s];
           const auto& t = faces[f];

@@ -1,6 +1,6 @@
 // Hausdorff(): for every query point (vertices and face centroids of one
 // mesh), the exact distance to the other mesh's nearest triangle. Candidate
-// triangles come from a kd-tree (nanoflann) of the other's centroids: the
+// triangles come from a kd-tree (mesh/point_index.h) of the other's centroids: the
 // nearest centroid's triangle bounds the distance by u, and any closer
 // triangle has its centroid within u plus the largest centroid-corner
 // distance.
@@ -8,10 +8,10 @@
 #include <cmath>
 #include <vector>
 
-#include <nanoflann.hpp>
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_reduce.h>
 
+#include "mesh/point_index.h"
 #include "meshseg/voxel.h"
 
 namespace meshseg {
@@ -21,17 +21,7 @@ struct Triangles {
   std::vector<std::array<Eigen::Vector3d, 3>> corners;
   std::vector<Eigen::Vector3d> centroids;
   double reach = 0.0;  // largest centroid-corner distance
-
-  size_t kdtree_get_point_count() const { return centroids.size(); }
-  double kdtree_get_pt(size_t i, size_t dim) const { return centroids[i][dim]; }
-  template <class Box>
-  bool kdtree_get_bbox(Box&) const {
-    return false;
-  }
 };
-using CentroidTree =
-    nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, Triangles>, Triangles,
-                                        3, uint32_t>;
 
 Triangles TrianglesOf(const TriMesh& mesh) {
   Triangles t;
@@ -63,23 +53,17 @@ std::vector<Eigen::Vector3d> QueryPoints(const TriMesh& mesh) {
 // Max over `points` of the distance to the nearest triangle of `to`.
 double OneSided(const std::vector<Eigen::Vector3d>& points, const Triangles& to) {
   if (to.centroids.empty()) return 0.0;
-  CentroidTree tree(3, to, nanoflann::KDTreeSingleIndexAdaptorParams(16));
-  tree.buildIndex();
+  const mesh_internal::PointIndex index(to.centroids);
   return tbb::parallel_reduce(
       tbb::blocked_range<size_t>(0, points.size()), 0.0,
       [&](const tbb::blocked_range<size_t>& r, double worst) {
         std::vector<std::pair<uint32_t, double>> found;
         for (size_t i = r.begin(); i < r.end(); ++i) {
           const Eigen::Vector3d& p = points[i];
-          uint32_t nearest = 0;
-          double d2 = 0.0;
-          tree.knnSearch(p.data(), 1, &nearest, &d2);
-          const auto& c = to.corners[nearest];
+          const auto& c = to.corners[index.Closest(p)];
           double best = SquaredDistanceToTriangle(p, c[0], c[1], c[2]);
           const double radius = std::sqrt(best) + to.reach;
-          found.clear();
-          tree.radiusSearch(p.data(), radius * radius, found,
-                            nanoflann::SearchParams(32, 0, false));
+          index.WithinRadius(p, radius, &found);
           for (const auto& [t, unused] : found) {
             const auto& tc = to.corners[t];
             best = std::min(best, SquaredDistanceToTriangle(p, tc[0], tc[1], tc[2]));

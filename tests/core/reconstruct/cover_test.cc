@@ -16,7 +16,7 @@ TEST(CoverBySupports, EveryLeafLiesInsideASupportAndTheOrderFollowsTheSeed) {
     points.push_back(0.4 * n);
     normals.push_back(-n);
   }
-  const PointIndex index(points);
+  const mesh_internal::PointIndex index(points);
   const Eigen::Vector3d origin = Eigen::Vector3d::Constant(-0.5);
   const auto leaves = *BalancedOctreeLeaves(points, origin, 1.0, 5, {});
   const FitInput in{points, normals, index, 0.01, 2.0};

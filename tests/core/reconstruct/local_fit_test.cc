@@ -38,7 +38,7 @@ Plane NoisyPlane(double noise) {
 
 TEST(FitSupport, GrowsOnAFlatPatchUntilTheToleranceAndFitsThePlane) {
   const Plane plane = NoisyPlane(0.2);
-  const PointIndex index(plane.points);
+  const mesh_internal::PointIndex index(plane.points);
   const FitInput in{plane.points, plane.normals, index, /*epsilon=*/1.0, /*max_radius=*/100.0};
   const Support s = FitSupport(Eigen::Vector3d(0.3, -0.2, 0.5), 2.0, in);
   EXPECT_GT(s.radius, 4.0);  // the noise stays below ε, so the ball grows
@@ -56,7 +56,7 @@ TEST(FitSupport, GrowsOnAFlatPatchUntilTheToleranceAndFitsThePlane) {
 TEST(FitSupport, StopsAtAFoldWhereTheErrorExceedsTheTolerance) {
   Plane fold = NoisyPlane(0.0);
   for (auto& p : fold.points) p.z() = 0.5 * std::abs(p.x());  // a crease along x = 0
-  const PointIndex index(fold.points);
+  const mesh_internal::PointIndex index(fold.points);
   const FitInput in{fold.points, fold.normals, index, 0.5, 100.0};
   const Support s = FitSupport(Eigen::Vector3d(0, 0, 0), 1.0, in);
   EXPECT_GE(s.radius, 1.0);
@@ -65,7 +65,7 @@ TEST(FitSupport, StopsAtAFoldWhereTheErrorExceedsTheTolerance) {
 
 TEST(FitSupport, BallInEmptySpaceReachesEnoughPoints) {
   const Plane plane = NoisyPlane(0.0);
-  const PointIndex index(plane.points);
+  const mesh_internal::PointIndex index(plane.points);
   const FitInput in{plane.points, plane.normals, index, 0.5, 100.0};
   const Support s = FitSupport(Eigen::Vector3d(0, 0, 10), 0.5, in);
   EXPECT_GT(s.radius, 10.0);

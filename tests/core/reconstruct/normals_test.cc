@@ -47,7 +47,7 @@ void SphereSamples(int count, std::vector<Eigen::Vector3d>* points,
 TEST(InwardNormals, EstimatedNormalsAreConsistentAndPointInward) {
   std::vector<Eigen::Vector3d> points, outward;
   BoxSamples(6000, &points, &outward);
-  const PointIndex index(points);
+  const mesh_internal::PointIndex index(points);
   const auto r = InwardNormals(points, {}, index, 10, {});
   ASSERT_TRUE(r.ok()) << r.status();
   EXPECT_GE(InwardFraction(r->normals, outward, 0.0), 0.995);  // consistently inward
@@ -57,7 +57,7 @@ TEST(InwardNormals, EstimatedNormalsAreConsistentAndPointInward) {
 TEST(InwardNormals, GivenOutwardNormalsAreFlipped) {
   std::vector<Eigen::Vector3d> points, outward;
   BoxSamples(2000, &points, &outward);
-  const PointIndex index(points);
+  const mesh_internal::PointIndex index(points);
   const auto r = InwardNormals(points, outward, index, 10, {});
   ASSERT_TRUE(r.ok()) << r.status();
   EXPECT_TRUE(r->flipped);
@@ -69,7 +69,7 @@ TEST(InwardNormals, GivenInwardNormalsAreKept) {
   BoxSamples(2000, &points, &outward);
   std::vector<Eigen::Vector3d> inward;
   for (const auto& n : outward) inward.push_back(-n);
-  const PointIndex index(points);
+  const mesh_internal::PointIndex index(points);
   const auto r = InwardNormals(points, inward, index, 10, {});
   ASSERT_TRUE(r.ok()) << r.status();
   EXPECT_FALSE(r->flipped);
@@ -83,7 +83,7 @@ TEST(InwardNormals, InconsistentGivenNormalsAreReoriented) {
   SphereSamples(4000, &points, &outward);
   std::vector<Eigen::Vector3d> mixed = outward;
   for (size_t i = 0; i < mixed.size(); i += 2) mixed[i] = -mixed[i];
-  const PointIndex index(points);
+  const mesh_internal::PointIndex index(points);
   const auto r = InwardNormals(points, mixed, index, 10, {});
   ASSERT_TRUE(r.ok()) << r.status();
   EXPECT_GE(InwardFraction(r->normals, outward), 0.99);

@@ -26,7 +26,7 @@ Grid PlaneWith(const std::vector<Eigen::Vector3d>& extra) {
 }
 
 std::vector<uint8_t> Flags(const Grid& g) {
-  const PointIndex index(g.points);
+  const mesh_internal::PointIndex index(g.points);
   return OutlierFlags(g.points, g.normals, index, MeanNeighborDistances(g.points, index), 10,
                       /*isolated_distance=*/2.0 * 1.2, /*off_surface_distance=*/1.0);
 }

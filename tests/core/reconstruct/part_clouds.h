@@ -20,7 +20,7 @@
 #include "meshseg/fit.h"
 #include "meshseg/generate.h"
 #include "meshseg/mesh.h"
-#include "reconstruct/point_index.h"
+#include "mesh/point_index.h"
 
 namespace meshseg::test {
 
@@ -37,7 +37,7 @@ struct PartTruth {
   std::vector<Eigen::Vector3d> vertex_normals;  // outward
   std::vector<int> vertex_primitive;
   std::vector<Surface> surfaces;                                   // by primitive id
-  std::unique_ptr<reconstruct_internal::PointIndex> vertex_index;  // over `vertices`
+  std::unique_ptr<mesh_internal::PointIndex> vertex_index;         // over `vertices`
 };
 
 }  // namespace part_clouds_internal
@@ -74,7 +74,7 @@ inline Shape PartShape(const GeneratedPart& part) {
   for (auto& n : t->vertex_normals) n.normalize();
   t->vertex_primitive = part.vertex_primitive;
   for (const PrimitiveTruth& p : part.primitives) t->surfaces.push_back(p.surface);
-  t->vertex_index = std::make_unique<reconstruct_internal::PointIndex>(t->vertices);
+  t->vertex_index = std::make_unique<mesh_internal::PointIndex>(t->vertices);
 
   Shape s;
   s.area = 0.0;
@@ -138,7 +138,7 @@ inline std::vector<int> NearestPrimitive(const GeneratedPart& part,
                                          const std::vector<Eigen::Vector3d>& points) {
   std::vector<Eigen::Vector3d> vertices;
   for (const auto v : part.mesh.tri.vertices()) vertices.push_back(ToEigen(part.mesh.tri.point(v)));
-  const reconstruct_internal::PointIndex index(vertices);
+  const mesh_internal::PointIndex index(vertices);
   std::vector<int> out;
   std::vector<uint32_t> nearest;
   std::vector<double> dist2;

@@ -37,7 +37,7 @@ TriMesh VerticesAt(const std::vector<Eigen::Vector3d>& at) {
 // weights count (0.2 / √10 ≈ 0.06 spacings rms).
 TEST(ProjectToPoints, AveragesTheNoiseOfAPlane) {
   const std::vector<Eigen::Vector3d> points = PlanePoints(0.2, 0.0);
-  const PointIndex index(points);
+  const mesh_internal::PointIndex index(points);
   std::vector<Eigen::Vector3d> at;
   for (double x = -5; x <= 5; x += 0.7) {
     for (double y = -5; y <= 5; y += 0.7) at.emplace_back(x, y, 0.3);
@@ -60,7 +60,7 @@ TEST(ProjectToPoints, AveragesTheNoiseOfAPlane) {
 // give the plane.
 TEST(ProjectToPoints, AVertexOverAHoleUsesTheNearestPoints) {
   const std::vector<Eigen::Vector3d> points = PlanePoints(0.0, 3.0);
-  const PointIndex index(points);
+  const mesh_internal::PointIndex index(points);
   TriMesh mesh = VerticesAt({{0.2, -0.1, 0.8}});
   ProjectToPoints(points, index, kRadius, 3, &mesh);
   const auto p = mesh.point(TriMesh::VertexHandle(0));
@@ -73,7 +73,7 @@ TEST(ProjectToPoints, AVertexOverAHoleUsesTheNearestPoints) {
 // (hole radius 10 spacings = 4 radii), so the vertex stays where it is.
 TEST(ProjectToPoints, AVertexFarFromEveryPointStaysWhereItIs) {
   const std::vector<Eigen::Vector3d> points = PlanePoints(0.0, 5.0);
-  const PointIndex index(points);
+  const mesh_internal::PointIndex index(points);
   TriMesh mesh = VerticesAt({{0.2, -0.1, 0.8}});
   ProjectToPoints(points, index, kRadius, 3, &mesh);
   EXPECT_EQ(mesh.point(TriMesh::VertexHandle(0)), TriMesh::Point(0.2, -0.1, 0.8));
@@ -92,7 +92,7 @@ TEST(ProjectToPoints, LandsOnASphereWithinItsSag) {
   for (int i = 0; i < count; ++i) {
     points.push_back(kR * Eigen::Vector3d(g(rng), g(rng), g(rng)).normalized());
   }
-  const PointIndex index(points);
+  const mesh_internal::PointIndex index(points);
   std::vector<Eigen::Vector3d> at;
   for (int i = 0; i < 50; ++i) {
     const double r = kR + (i % 2 ? 0.4 : -0.4);

@@ -53,7 +53,7 @@ class RefineOnPointsTest : public ::testing::Test {
   // RefineOnPoints on CoarseSphere() with `points` and this implicit.
   absl::StatusOr<Mesh> Refine(const std::vector<Eigen::Vector3d>& points,
                               const ReconstructParams& params, ReconstructStats* stats) const {
-    const PointIndex index(points);
+    const mesh_internal::PointIndex index(points);
     return RefineOnPoints(CoarseSphere(), points, index, f_, Spacing(), params, {}, stats);
   }
 

@@ -25,7 +25,7 @@
 
 #include "meshseg/mesh.h"
 #include "meshseg/voxel.h"
-#include "reconstruct/point_index.h"
+#include "mesh/point_index.h"
 
 namespace meshseg::test {
 
@@ -75,7 +75,7 @@ class SurfaceDistance {
       centroids_.push_back((triangles_[t][0] + triangles_[t][1] + triangles_[t][2]) / 3.0);
       max_radius_ = std::max(max_radius_, radius[t]);
     }
-    index_ = std::make_unique<reconstruct_internal::PointIndex>(centroids_);
+    index_ = std::make_unique<mesh_internal::PointIndex>(centroids_);
   }
 
   double operator()(const Eigen::Vector3d& p) const {
@@ -100,7 +100,7 @@ class SurfaceDistance {
   std::vector<uint32_t> small_, large_;
   std::vector<Eigen::Vector3d> centroids_;
   double max_radius_ = 0.0;
-  std::unique_ptr<reconstruct_internal::PointIndex> index_;
+  std::unique_ptr<mesh_internal::PointIndex> index_;
 };
 
 // `count` points uniform by area on `triangles` (fixed seed).
@@ -140,7 +140,7 @@ inline double Quantile(const std::vector<double>& sorted, double q) {
 // point_spacing, the median mean distance to 6 neighbours, is about twice it
 // on a uniform sample.)
 inline double MedianSpacing(const std::vector<Eigen::Vector3d>& points) {
-  const reconstruct_internal::PointIndex index(points);
+  const mesh_internal::PointIndex index(points);
   std::vector<double> nearest(points.size());
   tbb::parallel_for(size_t{0}, points.size(), [&](size_t i) {
     std::vector<uint32_t> idx;

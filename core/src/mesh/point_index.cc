@@ -1,12 +1,8 @@
-#include "reconstruct/point_index.h"
-
-#include <cmath>
+#include "mesh/point_index.h"
 
 #include <nanoflann.hpp>
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
 
-namespace meshseg::reconstruct_internal {
+namespace meshseg::mesh_internal {
 namespace {
 
 // nanoflann's dataset interface over a vector of Eigen points.
@@ -46,27 +42,17 @@ void PointIndex::Nearest(const Eigen::Vector3d& q, int k, std::vector<uint32_t>*
   dist2->resize(n);
 }
 
+uint32_t PointIndex::Closest(const Eigen::Vector3d& q) const {
+  uint32_t index = 0;
+  double dist2 = 0.0;
+  tree_->kd.knnSearch(q.data(), 1, &index, &dist2);
+  return index;
+}
+
 void PointIndex::WithinRadius(const Eigen::Vector3d& q, double radius,
                               std::vector<std::pair<uint32_t, double>>* found) const {
   found->clear();
   tree_->kd.radiusSearch(q.data(), radius * radius, *found, nanoflann::SearchParams(32, 0, true));
 }
 
-std::vector<double> MeanNeighborDistances(const std::vector<Eigen::Vector3d>& points,
-                                          const PointIndex& index) {
-  constexpr int kNeighbors = 6;
-  std::vector<double> mean(points.size(), 0.0);
-  tbb::parallel_for(tbb::blocked_range<size_t>(0, points.size()), [&](const auto& range) {
-    std::vector<uint32_t> idx;
-    std::vector<double> d2;
-    for (size_t i = range.begin(); i != range.end(); ++i) {
-      index.Nearest(points[i], kNeighbors + 1, &idx, &d2);
-      double sum = 0.0;
-      for (size_t j = 1; j < d2.size(); ++j) sum += std::sqrt(d2[j]);
-      mean[i] = d2.size() > 1 ? sum / static_cast<double>(d2.size() - 1) : 0.0;
-    }
-  });
-  return mean;
-}
-
-}  // namespace meshseg::reconstruct_internal
+}  // namespace meshseg::mesh_internal

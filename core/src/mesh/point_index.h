@@ -1,8 +1,9 @@
 // k-nearest-neighbour and radius queries over a fixed set of 3D points
-// (nanoflann k-d tree). Shared by the normal estimation, the covering and the
-// evaluation of f.
-#ifndef MESHSEG_RECONSTRUCT_POINT_INDEX_H_
-#define MESHSEG_RECONSTRUCT_POINT_INDEX_H_
+// (nanoflann k-d tree). One index for every stage that searches points:
+// reconstruction (normals, covering, f), subdivision footpoints, Hausdorff
+// distances, and labels carried from a mesh to the cloud it was built from.
+#ifndef MESHSEG_MESH_POINT_INDEX_H_
+#define MESHSEG_MESH_POINT_INDEX_H_
 
 #include <cstdint>
 #include <memory>
@@ -11,7 +12,7 @@
 
 #include <Eigen/Core>
 
-namespace meshseg::reconstruct_internal {
+namespace meshseg::mesh_internal {
 
 // An index over `points`, which must outlive it and stay unchanged.
 class PointIndex {
@@ -26,6 +27,10 @@ class PointIndex {
   void Nearest(const Eigen::Vector3d& q, int k, std::vector<uint32_t>* indices,
                std::vector<double>* dist2) const;
 
+  // The index of the point nearest to `q` (ties: any of them). The index
+  // must not be empty.
+  uint32_t Closest(const Eigen::Vector3d& q) const;
+
   // Fills `found` with (index, squared distance) of the points with
   // |p − q| < radius, nearest first.
   void WithinRadius(const Eigen::Vector3d& q, double radius,
@@ -39,12 +44,6 @@ class PointIndex {
   std::unique_ptr<Tree> tree_;
 };
 
-// Returns, per point, the mean distance to its 6 nearest other points
-// (≈ sqrt(area / count) on a uniformly sampled surface, large for isolated
-// outliers).
-std::vector<double> MeanNeighborDistances(const std::vector<Eigen::Vector3d>& points,
-                                          const PointIndex& index);
+}  // namespace meshseg::mesh_internal
 
-}  // namespace meshseg::reconstruct_internal
-
-#endif  // MESHSEG_RECONSTRUCT_POINT_INDEX_H_
+#endif  // MESHSEG_MESH_POINT_INDEX_H_
