@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -48,28 +49,47 @@ std::vector<Handle(ShapeAnalysis_Surface)> SurfacesOf(const TopoDS_Shape& shape)
 
 class StepOfCadFile : public ::testing::TestWithParam<std::string> {};
 
-TEST_P(StepOfCadFile, MatchesTheOriginalBrep) {
-  const std::string base = testing::SharedData("cad/" + GetParam());
-  const std::string path = testing_files::ScratchPath(GetParam() + ".step");
+// The pipeline on shared/data/cad/`name`.obj with a STEP file, every face
+// built (failures reported), and the file read back; nullopt on an error.
+struct Exported {
+  int patch_count = 0;
+  testing::StepModel model;
+  testing::ShapeFacts facts;
+};
+std::optional<Exported> Export(const std::string& name) {
+  const std::string path = testing_files::ScratchPath(name + ".step");
   PipelineParams params;
   params.step_path = path;
-  absl::StatusOr<PipelineResult> result = RunPipeline(base + ".obj", params);
-  ASSERT_TRUE(result.ok()) << result.status();
-  ASSERT_TRUE(result->brep.has_value()) << result->brep_error;
+  absl::StatusOr<PipelineResult> result =
+      RunPipeline(testing::SharedData("cad/" + name + ".obj"), params);
+  EXPECT_TRUE(result.ok()) << result.status();
+  if (!result.ok()) return std::nullopt;
+  EXPECT_TRUE(result->brep.has_value()) << result->brep_error;
+  if (!result->brep) return std::nullopt;
   for (const BrepFaceFailure& f : result->brep->failures) {
     ADD_FAILURE() << "region " << f.region << " patch " << f.patch << ": " << f.reason;
   }
+  absl::StatusOr<testing::StepModel> model = testing::ReadStep(path);
+  EXPECT_TRUE(model.ok()) << model.status();
+  if (!model.ok()) return std::nullopt;
+  Exported out{result->brep->patch_count, *std::move(model), {}};
+  out.facts = testing::FactsOf(out.model.shape);
+  EXPECT_TRUE(out.facts.valid);
+  EXPECT_EQ(out.facts.solids, 1);
+  EXPECT_EQ(out.facts.free_edges, 0);
+  return out;
+}
 
-  absl::StatusOr<testing::StepModel> ours = testing::ReadStep(path);
-  ASSERT_TRUE(ours.ok()) << ours.status();
-  absl::StatusOr<testing::StepModel> original = testing::ReadStep(base + ".step");
+TEST_P(StepOfCadFile, MatchesTheOriginalBrep) {
+  const std::optional<Exported> exported = Export(GetParam());
+  ASSERT_TRUE(exported.has_value());
+  const testing::StepModel& ours = exported->model;
+  const testing::ShapeFacts& facts = exported->facts;
+  absl::StatusOr<testing::StepModel> original =
+      testing::ReadStep(testing::SharedData("cad/" + GetParam() + ".step"));
   ASSERT_TRUE(original.ok()) << original.status();
-  const testing::ShapeFacts facts = testing::FactsOf(ours->shape);
   const testing::ShapeFacts truth = testing::FactsOf(original->shape);
   ASSERT_EQ(truth.solids, 1);
-  EXPECT_TRUE(facts.valid);
-  EXPECT_EQ(facts.solids, 1);
-  EXPECT_EQ(facts.free_edges, 0);
   EXPECT_EQ(facts.faces, truth.faces);
   EXPECT_NEAR(facts.volume, truth.volume, kVolumeTolerance * truth.volume);
 
@@ -77,7 +97,7 @@ TEST_P(StepOfCadFile, MatchesTheOriginalBrep) {
   // to over all its samples: its farthest sample from that surface.
   const double diagonal = Diagonal(original->shape);
   const double bound = kSurfaceTolerance * diagonal;
-  const testing::FaceSamples samples = testing::SampleFaces(ours->shape, kSampleSpacing * diagonal);
+  const testing::FaceSamples samples = testing::SampleFaces(ours.shape, kSampleSpacing * diagonal);
   EXPECT_EQ(samples.untessellated_faces, 0);
   const std::vector<Handle(ShapeAnalysis_Surface)> surfaces = SurfacesOf(original->shape);
   std::vector<std::vector<gp_Pnt>> points_of(facts.faces);
@@ -97,7 +117,7 @@ TEST_P(StepOfCadFile, MatchesTheOriginalBrep) {
       }
       best = std::min(best, worst);
     }
-    EXPECT_LE(best, bound) << "face " << f << " (" << ours->face_names[f] << ") lies "
+    EXPECT_LE(best, bound) << "face " << f << " (" << ours.face_names[f] << ") lies "
                            << best / diagonal << " x the diagonal off every original surface";
   }
 }
@@ -114,23 +134,9 @@ INSTANTIATE_TEST_SUITE_P(Cad, StepOfCadFile, ::testing::Values("hducg_MFCAD__1-5
 class ClosedStepOfCadFile : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(ClosedStepOfCadFile, IsOneValidSolid) {
-  const std::string path = testing_files::ScratchPath(GetParam() + ".step");
-  PipelineParams params;
-  params.step_path = path;
-  absl::StatusOr<PipelineResult> result =
-      RunPipeline(testing::SharedData("cad/" + GetParam() + ".obj"), params);
-  ASSERT_TRUE(result.ok()) << result.status();
-  ASSERT_TRUE(result->brep.has_value()) << result->brep_error;
-  for (const BrepFaceFailure& f : result->brep->failures) {
-    ADD_FAILURE() << "region " << f.region << " patch " << f.patch << ": " << f.reason;
-  }
-  absl::StatusOr<testing::StepModel> model = testing::ReadStep(path);
-  ASSERT_TRUE(model.ok()) << model.status();
-  const testing::ShapeFacts facts = testing::FactsOf(model->shape);
-  EXPECT_TRUE(facts.valid);
-  EXPECT_EQ(facts.solids, 1);
-  EXPECT_EQ(facts.free_edges, 0);
-  EXPECT_EQ(facts.faces, result->brep->patch_count);
+  const std::optional<Exported> exported = Export(GetParam());
+  ASSERT_TRUE(exported.has_value());
+  EXPECT_EQ(exported->facts.faces, exported->patch_count);
 }
 
 INSTANTIATE_TEST_SUITE_P(Cad, ClosedStepOfCadFile, ::testing::Values("whjdark_AAGNet__partA"),
