@@ -142,5 +142,23 @@ TEST_P(ClosedStepOfCadFile, IsOneValidSolid) {
 INSTANTIATE_TEST_SUITE_P(Cad, ClosedStepOfCadFile, ::testing::Values("whjdark_AAGNet__partA"),
                          testing::FileTestName);
 
+// Two corner clusters of this part touch the same three surfaces, which
+// meet at one point: both corners move onto it, and the curve between them
+// is contracted into the one vertex they share instead of failing its two
+// faces ("different points on a closed curve"). Other faces of the part
+// still fail (wires of fitted edges that cross), so only edges are checked.
+TEST(StepOfCadFileEdges, CornersAtOnePointShareAVertex) {
+  PipelineParams params;
+  params.step_path = testing_files::ScratchPath("cadnet_6.step");
+  absl::StatusOr<PipelineResult> result =
+      RunPipeline(testing::SharedData("cad/xupeiwust_hierarchical-cadnet__6_true.obj"), params);
+  ASSERT_TRUE(result.ok()) << result.status();
+  ASSERT_TRUE(result->brep.has_value()) << result->brep_error;
+  for (const BrepFaceFailure& f : result->brep->failures) {
+    EXPECT_EQ(f.reason.find("edge"), std::string::npos)
+        << "region " << f.region << " patch " << f.patch << ": " << f.reason;
+  }
+}
+
 }  // namespace
 }  // namespace meshseg
