@@ -128,7 +128,9 @@ std::string BrepSummary(const v1::BrepReport& brep) {
       "step: %d/%d faces, %s, %s; volume %.6g %s^3; edges %d exact, %d fitted; "
       "tolerance max %.3g (sewing %.3g) %s\n",
       brep.face_count(), brep.patch_count(),
-      brep.solid() ? "closed solid" : (brep.closed() ? "closed shell" : "open shell"),
+      !brep.solid()            ? (brep.closed() ? "closed shell" : "open shell")
+      : brep.solid_count() > 1 ? absl::StrCat(brep.solid_count(), " closed solids")
+                               : std::string("closed solid"),
       brep.valid() ? "valid" : "INVALID", brep.volume(), brep.length_unit(),
       brep.exact_edge_count(), brep.fitted_edge_count(), brep.max_tolerance(),
       brep.sewing_tolerance(), brep.length_unit());

@@ -18,6 +18,7 @@ void SetBrep(const PipelineResult& result, v1::SegmentationResult* out) {
   b->set_fitted_edge_count(r.fitted_edge_count);
   b->set_closed(r.closed);
   b->set_solid(r.solid);
+  b->set_solid_count(r.solid_count);
   b->set_valid(r.valid);
   b->set_volume(r.volume);
   b->set_sewing_tolerance(r.sewing_tolerance);

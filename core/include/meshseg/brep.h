@@ -74,9 +74,12 @@ struct BrepReport {
   int exact_edge_count = 0;
   int fitted_edge_count = 0;
   bool closed = false;  // the faces form closed shells (no free edges)
-  bool solid = false;   // written as one solid (else as a shell or shells)
+  bool solid = false;   // written as solids (else as a shell or shells)
+  // Solids written: one per body (closed shell not inside another; a shell
+  // inside one is a void of it).
+  int solid_count = 0;
   bool valid = false;   // BRepCheck_Analyzer finds the written shape valid
-  double volume = 0.0;  // of the solid, model units³; 0 when not a solid
+  double volume = 0.0;  // of the solids, model units³; 0 when not a solid
   double sewing_tolerance = 0.0;  // model units
   double max_tolerance = 0.0;     // largest edge or vertex tolerance, model units
   std::vector<BrepFaceFailure> failures;

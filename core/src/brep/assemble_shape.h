@@ -1,5 +1,6 @@
-// The faces sewn into shells (BRepBuilderAPI_Sewing), one closed shell made
-// a solid (ShapeFix_Solid orients it outward), and what BRepCheck and
+// The faces sewn into shells (BRepBuilderAPI_Sewing); closed shells made
+// solids (ShapeFix_Solid, oriented outward by BRepLib::OrientClosedSolid),
+// one per body, a shell inside a body its void; and what BRepCheck and
 // BRepGProp say about the result.
 #ifndef MESHSEG_SRC_BREP_ASSEMBLE_SHAPE_H_
 #define MESHSEG_SRC_BREP_ASSEMBLE_SHAPE_H_
@@ -12,11 +13,12 @@
 namespace meshseg::brep_internal {
 
 struct AssembledShape {
-  TopoDS_Shape shape;  // a solid, a shell, or a compound of shells
+  TopoDS_Shape shape;  // a solid, a compound of solids, a shell or a compound of shells
   bool closed = false;
-  bool solid = false;
+  bool solid = false;  // written as solids
+  int solid_count = 0;
   bool valid = false;
-  double volume = 0.0;  // of the solid
+  double volume = 0.0;  // of the solids
   double max_tolerance = 0.0;
   int face_count = 0;
 };

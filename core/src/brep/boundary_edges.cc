@@ -4,6 +4,8 @@
 #include <cmath>
 #include <map>
 #include <optional>
+#include <utility>
+#include <vector>
 
 #include <BRepBuilderAPI_MakeEdge.hxx>
 #include <BRepBuilderAPI_MakeVertex.hxx>
@@ -210,9 +212,21 @@ BoundaryEdges MakeBoundaryEdges(const TriMesh& mesh, const Topology& topology,
     }
   }
 
+  // Clusters at one point are one vertex: a point is a vertex of the B-rep
+  // (the surfaces around two clusters may meet at a single point, and both
+  // corners move onto it).
   std::map<int, TopoDS_Vertex> vertices;
+  std::vector<std::pair<Vector3d, TopoDS_Vertex>> made;
   for (const auto& [cluster, p] : position) {
-    vertices[cluster] = BRepBuilderAPI_MakeVertex(ToPnt(p)).Vertex();
+    const auto same = std::find_if(made.begin(), made.end(), [&](const auto& m) {
+      return (m.first - p).norm() <= tolerances.exact_gap;
+    });
+    if (same == made.end()) {
+      made.emplace_back(p, BRepBuilderAPI_MakeVertex(ToPnt(p)).Vertex());
+      vertices[cluster] = made.back().second;
+    } else {
+      vertices[cluster] = same->second;
+    }
   }
   std::vector<char> full_turn(topology.regions.size(), 0);
   for (const Loop& l : topology.loops) full_turn[l.region] |= l.kind == LoopKind::kAxial;
@@ -227,6 +241,12 @@ BoundaryEdges MakeBoundaryEdges(const TriMesh& mesh, const Topology& topology,
     if (c.start_corner >= 0) {
       v1 = vertices.at(cluster_of(c.start_corner));
       v2 = vertices.at(cluster_of(c.end_corner));
+      if (cluster_of(c.start_corner) != cluster_of(c.end_corner) && v1.IsSame(v2)) {
+        // A curve between two corners that became one vertex has no length
+        // in the B-rep: contracted into it, as a junction artifact.
+        out.contracted[c.id] = 1;
+        continue;
+      }
     } else {
       // A closed curve on a face that goes all the way round its axis starts
       // on that face's seam, where the seam edge will join it.

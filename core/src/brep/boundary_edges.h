@@ -1,6 +1,7 @@
 // The vertices and edges of the B-rep: one vertex per corner cluster (at its
-// CornerPoint), one edge per boundary curve (junction artifacts contracted
-// into their cluster's vertex) on the curve ChooseEdgeCurve picks, a closed
+// CornerPoint; clusters at one point share it), one edge per boundary curve
+// (junction artifacts and curves between corners at one point contracted
+// into their vertex) on the curve ChooseEdgeCurve picks, a closed
 // curve without corners getting a vertex of its own. Vertex tolerances grow
 // to cover the distance between a vertex and its edges' ends.
 #ifndef MESHSEG_SRC_BREP_BOUNDARY_EDGES_H_

@@ -206,6 +206,7 @@ absl::StatusOr<BrepReport> Build(const Mesh& mesh, std::span<const int> face_lab
   report.face_count = shape.face_count;
   report.closed = shape.closed;
   report.solid = shape.solid;
+  report.solid_count = shape.solid_count;
   report.valid = shape.valid;
   report.volume = shape.volume;
   report.max_tolerance = shape.max_tolerance;

@@ -4,10 +4,12 @@
 #include <cmath>
 #include <vector>
 
+#include <GCPnts_AbscissaPoint.hxx>
 #include <GC_MakeArcOfCircle.hxx>
 #include <GC_MakeSegment.hxx>
 #include <GeomAPI_Interpolate.hxx>
 #include <GeomAPI_PointsToBSpline.hxx>
+#include <GeomAdaptor_Curve.hxx>
 #include <Geom_Circle.hxx>
 #include <Precision.hxx>
 #include <TColgp_Array1OfPnt.hxx>
@@ -70,6 +72,34 @@ double MaxDistance(const Handle(Geom_Curve) & c, double first, double last,
   return d;
 }
 
+double ArcLength(const TrimmedCurve& t) {
+  return GCPnts_AbscissaPoint::Length(GeomAdaptor_Curve(t.curve), std::min(t.first, t.last),
+                                      std::max(t.first, t.last));
+}
+
+// A spline through `pts` (periodic when `closed`: the last repeats the
+// first) within `fit_tolerance`, trimmed along `polyline`.
+std::optional<TrimmedCurve> Spline(const std::vector<Vector3d>& pts, bool closed,
+                                   double fit_tolerance, std::span<const Vector3d> polyline,
+                                   const std::optional<Vector3d>& start,
+                                   const std::optional<Vector3d>& end) {
+  if (closed) {
+    Handle(TColgp_HArray1OfPnt) array =
+        new TColgp_HArray1OfPnt(1, static_cast<int>(pts.size()) - 1);
+    for (size_t i = 0; i + 1 < pts.size(); ++i)
+      array->SetValue(static_cast<int>(i) + 1, ToPnt(pts[i]));
+    GeomAPI_Interpolate interpolate(array, Standard_True, Precision::Confusion());
+    interpolate.Perform();
+    if (!interpolate.IsDone()) return std::nullopt;
+    return TrimAlong(interpolate.Curve(), polyline, start, end);
+  }
+  TColgp_Array1OfPnt array(1, static_cast<int>(pts.size()));
+  for (size_t i = 0; i < pts.size(); ++i) array(static_cast<int>(i) + 1) = ToPnt(pts[i]);
+  GeomAPI_PointsToBSpline approx(array, 3, 8, GeomAbs_C2, fit_tolerance);
+  if (!approx.IsDone()) return std::nullopt;
+  return TrimAlong(approx.Curve(), polyline, start, end);
+}
+
 }  // namespace
 
 std::optional<TrimmedCurve> FitEdgeCurve(
@@ -96,6 +126,8 @@ std::optional<TrimmedCurve> FitEdgeCurve(
       next[i] = 0.5 * pts[i] + 0.25 * (pts[i - 1] + pts[i + 1]);
     pts = std::move(next);
   }
+  std::vector<Vector3d> smoothed = pts;
+  if (closed) smoothed.back() = smoothed.front();
   const size_t fixed = start ? 1 : 0;
   for (size_t i = fixed; i + fixed < pts.size(); ++i) {
     pts[i] = DrawOnto(pts[i], left, right, tolerance);
@@ -125,22 +157,19 @@ std::optional<TrimmedCurve> FitEdgeCurve(
     if (MaxDistance(c, first, last, pts) > fit_tolerance) continue;
     if (std::optional<TrimmedCurve> t = TrimAlong(c, polyline, start, end)) return t;
   }
-  if (closed) {
-    // A periodic spline through the drawn points (the last repeats the first).
-    Handle(TColgp_HArray1OfPnt) array =
-        new TColgp_HArray1OfPnt(1, static_cast<int>(pts.size()) - 1);
-    for (size_t i = 0; i + 1 < pts.size(); ++i)
-      array->SetValue(static_cast<int>(i) + 1, ToPnt(pts[i]));
-    GeomAPI_Interpolate interpolate(array, Standard_True, Precision::Confusion());
-    interpolate.Perform();
-    if (!interpolate.IsDone()) return std::nullopt;
-    return TrimAlong(interpolate.Curve(), polyline, start, end);
-  }
-  TColgp_Array1OfPnt array(1, static_cast<int>(pts.size()));
-  for (size_t i = 0; i < pts.size(); ++i) array(static_cast<int>(i) + 1) = ToPnt(pts[i]);
-  GeomAPI_PointsToBSpline approx(array, 3, 8, GeomAbs_C2, fit_tolerance);
-  if (!approx.IsDone()) return std::nullopt;
-  return TrimAlong(approx.Curve(), polyline, start, end);
+  // A curve runs along its boundary, which the mesh's staircase only
+  // lengthens: a spline longer than the boundary by more than the tolerance
+  // at each end doubles back on itself (drawn points out of order along an
+  // intersection stay within the Hausdorff bound but zig-zag along it). The
+  // smoothed points before drawing are in the boundary's order; they are
+  // the fallback.
+  auto runs_along = [&](const std::optional<TrimmedCurve>& t) {
+    return t && ArcLength(*t) <= length + 2.0 * tolerance;
+  };
+  std::optional<TrimmedCurve> t = Spline(pts, closed, fit_tolerance, polyline, start, end);
+  if (runs_along(t)) return t;
+  t = Spline(smoothed, closed, kFitShare * tolerance, polyline, start, end);
+  return runs_along(t) ? t : std::nullopt;
 }
 
 }  // namespace meshseg::brep_internal

@@ -3,7 +3,8 @@
 // the mesh border): the boundary polyline drawn onto both surfaces (each
 // point moved to the midpoint of its projections, repeatedly) and fitted by
 // a line, a circular arc or a smoothing B-spline, whichever first follows
-// it within the tolerance.
+// it within the tolerance; a spline no longer than the polyline plus the
+// tolerance at each end (else it doubles back on itself).
 #ifndef MESHSEG_SRC_BREP_FITTED_CURVE_H_
 #define MESHSEG_SRC_BREP_FITTED_CURVE_H_
 
@@ -25,7 +26,8 @@ namespace meshseg::brep_internal {
 // `right` (null at the border), ending exactly at `start` and `end` (unset
 // for a closed boundary). `hint` is the topology stage's fitted line or
 // circle; `tolerance` the accepted deviation from the polyline; `l_avg`
-// the mesh's mean edge length. nullopt only for a degenerate polyline.
+// the mesh's mean edge length. nullopt for a degenerate polyline, or when
+// no spline runs along it.
 std::optional<TrimmedCurve> FitEdgeCurve(std::span<const Eigen::Vector3d> polyline,
                                          const Handle(Geom_Surface) & left,
                                          const Handle(Geom_Surface) & right,

@@ -10,10 +10,15 @@
 #include <BRepCheck_ListOfStatus.hxx>
 #include <BRepCheck_Result.hxx>
 #include <BRepCheck_Status.hxx>
+#include <BRepGProp.hxx>
 #include <BRep_Builder.hxx>
+#include <GProp_GProps.hxx>
 #include <Precision.hxx>
+#include <ShapeAnalysis.hxx>
 #include <ShapeFix_Face.hxx>
+#include <ShapeFix_Shape.hxx>
 #include <Standard_Failure.hxx>
+#include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Wire.hxx>
 
@@ -41,6 +46,19 @@ std::string CheckFace(const TopoDS_Face& face) {
   return "invalid face (BRepCheck: a wire or edge of it)";
 }
 
+// `face` healed by ShapeFix_Shape, or null unless that gives one face.
+TopoDS_Face Heal(const TopoDS_Face& face, double precision, double max_tolerance) {
+  ShapeFix_Shape fix(face);
+  fix.SetPrecision(precision);
+  fix.SetMaxTolerance(max_tolerance);
+  fix.Perform();
+  TopExp_Explorer it(fix.Shape(), TopAbs_FACE);
+  if (!it.More()) return {};
+  const TopoDS_Face healed = TopoDS::Face(it.Current());
+  it.Next();
+  return it.More() ? TopoDS_Face() : healed;
+}
+
 // One loop's edges in wire order, each oriented as the wire runs.
 struct LoopEdges {
   LoopKind kind = LoopKind::kOuter;
@@ -54,6 +72,12 @@ TopoDS_Wire WireOf(const std::vector<TopoDS_Edge>& edges) {
   for (const TopoDS_Edge& e : edges) builder.Add(wire, e);
   wire.Closed(true);
   return wire;
+}
+
+double WireLength(const TopoDS_Wire& wire) {
+  GProp_GProps props;
+  BRepGProp::LinearProperties(wire, props);
+  return props.Mass();
 }
 
 }  // namespace
@@ -124,9 +148,15 @@ RegionFace MakeRegionFace(const Topology& topology, int region, int patch,
         builder.Add(face, ring);
       }
       for (const LoopEdges& l : loops) {
-        if (l.kind != LoopKind::kAxial || axial.size() != 2 || !surface->IsUPeriodic()) {
-          builder.Add(face, WireOf(l.edges));
+        if (l.kind == LoopKind::kAxial && axial.size() == 2 && surface->IsUPeriodic()) continue;
+        const TopoDS_Wire wire = WireOf(l.edges);
+        // A hole whose loop is narrower than the precision everywhere (area
+        // over length) encloses nothing: a closed edge that doubles back.
+        if (l.kind == LoopKind::kInner &&
+            ShapeAnalysis::ContourArea(wire) < precision * WireLength(wire)) {
+          continue;
         }
+        builder.Add(face, wire);
       }
     }
     ShapeFix_Face fix(face);
@@ -137,6 +167,16 @@ RegionFace MakeRegionFace(const Topology& topology, int region, int patch,
     face = fix.Face();
     if (sign < 0) face.Reverse();
     out.failure = CheckFace(face);
+    if (!out.failure.empty()) {
+      // One more try: ShapeFix_Shape's whole face healing (on a face, the
+      // outer wire runs counter-clockwise in the parameter plane and holes
+      // clockwise, whatever the direction their edges came in).
+      const TopoDS_Face healed = Heal(face, precision, max_tolerance);
+      if (!healed.IsNull() && CheckFace(healed).empty()) {
+        face = healed;
+        out.failure.clear();
+      }
+    }
     if (out.failure.empty()) out.face = face;
   } catch (const Standard_Failure& e) {
     out.failure = absl::StrCat("OpenCASCADE: ", e.GetMessageString());
