@@ -15,6 +15,7 @@
 
 #include "meshseg/fit.h"
 #include "segment/facet_on_surface.h"
+#include "segment/fit_exclusion.h"
 
 namespace meshseg::segment_internal {
 namespace {
@@ -334,23 +335,34 @@ std::optional<Surface> FitExactly(const FacetMesh& fm, SurfaceType type,
                                   std::span<const int> facets, double tau) {
   std::vector<Eigen::Vector3d> points, normals;
   FitCornersOf(fm, facets, tau, &points, &normals);
-  const FitResult fit =
-      FitOfType(type, {.points = points, .normals = normals, .weights = {}}, kExactFit);
-  const bool fits = fit.ok() && fit.max_distance <= tau;
-  if (type != SurfaceType::kCylinder)
-    return fits ? std::optional<Surface>(fit.surface) : std::nullopt;
   // Corners on few rims lie on many cylinders (rim to rim strips: corners at
   // two heights only, and a cylinder of any tilt through them). The surface
   // is one whose axis is as perpendicular to the facets' normals as they
   // allow: a fit whose axis they tilt from by more than twice their least
   // tilt (ChordAxis) is another cylinder through the corners.
   double least_tilt = 0.0;
-  const Eigen::Vector3d axis = ChordAxis(fm, facets, &least_tilt);
+  const Eigen::Vector3d axis =
+      type == SurfaceType::kCylinder ? ChordAxis(fm, facets, &least_tilt) : Eigen::Vector3d::Zero();
+  const double max_tilt = 2.0 * least_tilt + kDistinctNormal;
+  // A fit that a proof from the corners excludes (no surface of the type,
+  // and for a cylinder none of an axis this tilt allows, lies within tau of
+  // every corner) fails whatever its iterations do: not run.
+  if (type == SurfaceType::kSphere && NoSphereWithin(points, tau)) return std::nullopt;
+  if (type == SurfaceType::kCylinder) {
+    std::vector<Eigen::Vector3d> facet_normals(facets.size());
+    for (std::size_t i = 0; i < facets.size(); ++i) facet_normals[i] = fm.normal[facets[i]];
+    if (NoCylinderWithin(points, facet_normals, max_tilt, tau)) return std::nullopt;
+  }
+  const FitResult fit =
+      FitOfType(type, {.points = points, .normals = normals, .weights = {}}, kExactFit);
+  const bool fits = fit.ok() && fit.max_distance <= tau;
+  if (type != SurfaceType::kCylinder)
+    return fits ? std::optional<Surface>(fit.surface) : std::nullopt;
   if (fits) {
     const Eigen::Vector3d& fitted = std::get<Cylinder>(fit.surface).axis_direction;
     double tilt = 0.0;
     for (const int f : facets) tilt = std::max(tilt, std::abs(fm.normal[f].dot(fitted)));
-    if (tilt <= 2.0 * least_tilt + kDistinctNormal) return fit.surface;
+    if (tilt <= max_tilt) return fit.surface;
   }
   return CylinderAbout(axis, points, tau);
 }
