@@ -29,6 +29,8 @@ constexpr int kMaxGrowRounds = 3;
 constexpr double kDistinctNormal = 1e-4;
 // Seed groups stop growing at this many facets.
 constexpr std::size_t kMaxSeedFacets = 48;
+// The corners of at most this many facets are told apart by a scan.
+constexpr std::size_t kScannedFacets = kMaxSeedFacets;
 // An exact fit iterates to the rounding of the numbers; from the initial
 // fit of exact corners it converges in under ten steps, and a group that
 // needs more lies on no surface of the type.
@@ -59,14 +61,21 @@ void FitCornersOf(const FacetMesh& fm, std::span<const int> facets, double tau,
   std::unordered_map<int, int> slot;
   std::vector<Eigen::Vector3d> sum;
   std::vector<int> order;
+  // A seed group's few corners are found by a scan; a region's by hashing.
+  const bool scan = facets.size() <= kScannedFacets;
   for (const int f : facets) {
     for (const int v : fm.corners[f]) {
-      auto [it, fresh] = slot.try_emplace(v, static_cast<int>(sum.size()));
-      if (fresh) {
+      int at = 0;
+      if (scan) {
+        at = static_cast<int>(std::find(order.begin(), order.end(), v) - order.begin());
+      } else {
+        at = slot.try_emplace(v, static_cast<int>(order.size())).first->second;
+      }
+      if (at == static_cast<int>(order.size())) {
         sum.push_back(Eigen::Vector3d::Zero());
         order.push_back(v);
       }
-      sum[it->second] += fm.area[f] * fm.normal[f];
+      sum[at] += fm.area[f] * fm.normal[f];
     }
   }
   const std::size_t stride =
