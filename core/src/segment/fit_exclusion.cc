@@ -24,22 +24,17 @@ constexpr double kTiltRounding = 1e-12;
 // The points centred on their mean and scaled to a largest distance of 1,
 // and tau in that scale; false for fewer than 5 points (a sphere's 4
 // parameters fit 4 points whatever they are) or no spread.
-bool Centre(std::span<const Eigen::Vector3d> points, double tau,
-            std::vector<Eigen::Vector3d> *q, double *scaled_tau) {
-  if (points.size() < 5)
-    return false;
+bool Centre(std::span<const Eigen::Vector3d> points, double tau, std::vector<Eigen::Vector3d> *q,
+            double *scaled_tau) {
+  if (points.size() < 5) return false;
   Eigen::Vector3d mean = Eigen::Vector3d::Zero();
-  for (const Eigen::Vector3d &p : points)
-    mean += p;
+  for (const Eigen::Vector3d &p : points) mean += p;
   mean /= static_cast<double>(points.size());
   double scale = 0.0;
-  for (const Eigen::Vector3d &p : points)
-    scale = std::max(scale, (p - mean).norm());
-  if (!(scale > 0.0) || !std::isfinite(scale))
-    return false;
+  for (const Eigen::Vector3d &p : points) scale = std::max(scale, (p - mean).norm());
+  if (!(scale > 0.0) || !std::isfinite(scale)) return false;
   q->resize(points.size());
-  for (std::size_t i = 0; i < points.size(); ++i)
-    (*q)[i] = (points[i] - mean) / scale;
+  for (std::size_t i = 0; i < points.size(); ++i) (*q)[i] = (points[i] - mean) / scale;
   *scaled_tau = tau / scale;
   return std::isfinite(*scaled_tau);
 }
@@ -52,8 +47,7 @@ std::pair<int, int> FarPair(const std::vector<Eigen::Vector3d> &v) {
     double best_distance = -1.0;
     for (int k = 0; k < static_cast<int>(v.size()); ++k) {
       const double d = (v[k] - v[from]).squaredNorm();
-      if (d > best_distance)
-        best_distance = d, best = k;
+      if (d > best_distance) best_distance = d, best = k;
     }
     return best;
   };
@@ -65,83 +59,99 @@ std::pair<int, int> FarPair(const std::vector<Eigen::Vector3d> &v) {
 // over z = (square_i, q_i, 1), B the form |b|^2 - 4 alpha g of Pratt's
 // normalisation, mu = N eps^2 / 4: no (alpha, b, g) with x^T B x = 4 has
 // |Q(q_i)| <= eps at every point.
-bool PrattExcludes(const std::vector<Eigen::Vector3d> &q,
-                   const std::vector<double> &square, double eps) {
+bool PrattExcludes(const std::vector<Eigen::Vector3d> &q, const std::vector<double> &square,
+                   double eps) {
   Eigen::Matrix<double, 5, 5> m = Eigen::Matrix<double, 5, 5>::Zero();
   Eigen::Matrix<double, 5, 1> z;
   for (std::size_t i = 0; i < q.size(); ++i) {
     z << square[i], q[i], 1.0;
     m.noalias() += z * z.transpose();
   }
-  const double mu =
-      (1.0 + kBoundMargin) * static_cast<double>(q.size()) * eps * eps / 4.0;
-  if (!std::isfinite(mu))
-    return false;
+  const double mu = (1.0 + kBoundMargin) * static_cast<double>(q.size()) * eps * eps / 4.0;
+  if (!std::isfinite(mu)) return false;
   m.diagonal().array() -= kRoundingShare * (m.trace() + 3.0 * mu);
-  for (int k = 1; k <= 3; ++k)
-    m(k, k) -= mu;
+  for (int k = 1; k <= 3; ++k) m(k, k) -= mu;
   m(0, 4) += 2.0 * mu;
   m(4, 0) += 2.0 * mu;
   return Eigen::LLT<Eigen::Matrix<double, 5, 5>>(m).info() == Eigen::Success;
 }
 
-} // namespace
+}  // namespace
+
+bool NoQuadricWithin(std::span<const Eigen::Vector3d> points, double tau) {
+  std::vector<Eigen::Vector3d> q;
+  double t = 0.0;
+  if (!Centre(points, tau, &q, &t) || q.size() < 10) return false;
+  // x = (a11, a22, a33, a12, a13, a23, b1, b2, b3, c): Q(p) = z(p) . x.
+  using Matrix10 = Eigen::Matrix<double, 10, 10>;
+  Matrix10 m = Matrix10::Zero(), k = Matrix10::Zero();
+  Eigen::Matrix<double, 10, 1> z;
+  Eigen::Matrix<double, 3, 10> g;  // rows: the gradient 2 A p + b, by x
+  for (const Eigen::Vector3d &p : q) {
+    z << p.x() * p.x(), p.y() * p.y(), p.z() * p.z(), 2.0 * p.x() * p.y(), 2.0 * p.x() * p.z(),
+        2.0 * p.y() * p.z(), p.x(), p.y(), p.z(), 1.0;
+    m.noalias() += z * z.transpose();
+    g << 2.0 * p.x(), 0.0, 0.0, 2.0 * p.y(), 2.0 * p.z(), 0.0, 1.0, 0.0, 0.0, 0.0,  //
+        0.0, 2.0 * p.y(), 0.0, 2.0 * p.x(), 0.0, 2.0 * p.z(), 0.0, 1.0, 0.0, 0.0,   //
+        0.0, 0.0, 2.0 * p.z(), 0.0, 2.0 * p.x(), 2.0 * p.y(), 0.0, 0.0, 1.0, 0.0;
+    k.noalias() += g.transpose() * g;
+  }
+  Eigen::Matrix<double, 10, 1> frobenius;  // x^T diag(frobenius) x = |A|_F^2
+  frobenius << 1.0, 1.0, 1.0, 2.0, 2.0, 2.0, 0.0, 0.0, 0.0, 0.0;
+  const double n = static_cast<double>(q.size());
+  Matrix10 bound = 2.0 * t * t * k;
+  bound.diagonal() += 18.0 * n * t * t * t * t * frobenius;
+  bound *= 1.0 + kBoundMargin;
+  if (!bound.allFinite()) return false;
+  m -= bound;
+  m.diagonal().array() -= kRoundingShare * (m.trace() + 2.0 * bound.trace());
+  return Eigen::LLT<Matrix10>(m).info() == Eigen::Success;
+}
 
 bool NoSphereWithin(std::span<const Eigen::Vector3d> points, double tau) {
   std::vector<Eigen::Vector3d> q;
   double t = 0.0;
-  if (!Centre(points, tau, &q, &t))
-    return false;
+  if (!Centre(points, tau, &q, &t)) return false;
   // Every point lies within R + t of the centre: R >= (diameter) / 2 - t.
   const auto [i, j] = FarPair(q);
   const double r_min = 0.5 * (q[i] - q[j]).norm() - t;
-  if (!(r_min > 0.0))
-    return false;
+  if (!(r_min > 0.0)) return false;
   std::vector<double> square(q.size());
-  for (std::size_t k = 0; k < q.size(); ++k)
-    square[k] = q[k].squaredNorm();
+  for (std::size_t k = 0; k < q.size(); ++k) square[k] = q[k].squaredNorm();
   return PrattExcludes(q, square, 2.0 * t + t * t / r_min);
 }
 
 bool NoCylinderWithin(std::span<const Eigen::Vector3d> points,
-                      std::span<const Eigen::Vector3d> normals, double max_tilt,
-                      double tau) {
+                      std::span<const Eigen::Vector3d> normals, double max_tilt, double tau) {
   // The axis a is within angle w of e = n1 x n2 for two normals n1, n2 of
   // `normals` as far apart as they go: its part b across e lies in their
   // plane with |n1 . b|, |n2 . b| <= max_tilt, so sin(w) = |b| <=
   // max_tilt sqrt(2 / (1 - |n1 . n2|)) (the least eigenvalue of their Gram
   // matrix is 1 - |n1 . n2|).
-  auto first =
-      std::find_if(normals.begin(), normals.end(),
-                   [](const Eigen::Vector3d &n) { return n.norm() > 0.5; });
-  if (first == normals.end())
-    return false;
+  auto first = std::find_if(normals.begin(), normals.end(),
+                            [](const Eigen::Vector3d &n) { return n.norm() > 0.5; });
+  if (first == normals.end()) return false;
   const Eigen::Vector3d n1 = first->normalized();
   Eigen::Vector3d n2 = n1;
   double widest = 0.0;
   for (const Eigen::Vector3d &n : normals) {
-    if (!(n.norm() > 0.5))
-      continue;
+    if (!(n.norm() > 0.5)) continue;
     const double across = n1.cross(n.normalized()).norm();
-    if (across > widest)
-      widest = across, n2 = n.normalized();
+    if (across > widest) widest = across, n2 = n.normalized();
   }
   const double gram = 1.0 - std::abs(n1.dot(n2));
-  if (!(gram > 0.0))
-    return false;
+  if (!(gram > 0.0)) return false;
   const double tilt = (max_tilt + kTiltRounding) / (1.0 - kTiltRounding);
   const double sine = tilt * std::sqrt(2.0 / gram);
-  if (!(sine < kMaxAxisSine))
-    return false;
+  if (!(sine < kMaxAxisSine)) return false;
   const Eigen::Vector3d e = n1.cross(n2).normalized();
 
   std::vector<Eigen::Vector3d> q;
   double t = 0.0;
-  if (!Centre(points, tau, &q, &t))
-    return false;
+  if (!Centre(points, tau, &q, &t)) return false;
   std::vector<Eigen::Vector3d> across(q.size());
   std::vector<double> square(q.size());
-  double reach = 0.0; // max |q|^2
+  double reach = 0.0;  // max |q|^2
   for (std::size_t k = 0; k < q.size(); ++k) {
     across[k] = q[k] - q[k].dot(e) * e;
     square[k] = across[k].squaredNorm();
@@ -151,12 +161,9 @@ bool NoCylinderWithin(std::span<const Eigen::Vector3d> points,
   // at most sin(w) of the points' own: R >= (|P_e (q_i - q_j)| - sin(w)
   // |q_i - q_j|) / 2 - t.
   const auto [i, j] = FarPair(across);
-  const double r_min =
-      0.5 * ((across[i] - across[j]).norm() - sine * (q[i] - q[j]).norm()) - t;
-  if (!(r_min > 0.0))
-    return false;
-  return PrattExcludes(q, square,
-                       2.0 * t + (t * t + 2.0 * sine * reach) / r_min);
+  const double r_min = 0.5 * ((across[i] - across[j]).norm() - sine * (q[i] - q[j]).norm()) - t;
+  if (!(r_min > 0.0)) return false;
+  return PrattExcludes(q, square, 2.0 * t + (t * t + 2.0 * sine * reach) / r_min);
 }
 
-} // namespace meshseg::segment_internal
+}  // namespace meshseg::segment_internal

@@ -25,11 +25,21 @@
 #ifndef MESHSEG_SRC_SEGMENT_FIT_EXCLUSION_H_
 #define MESHSEG_SRC_SEGMENT_FIT_EXCLUSION_H_
 
+#include <Eigen/Core>
 #include <span>
 
-#include <Eigen/Core>
-
 namespace meshseg::segment_internal {
+
+// True if no quadric surface (plane, sphere, cylinder, cone, ...) passes
+// within `tau` of every point of `points`. A point p within tau of the zero
+// set of Q(p) = p^T A p + b . p + c has |Q(p)| <= tau |grad Q(p)| + 3 |A|
+// tau^2 (Taylor at the nearest point of the surface, exact for a
+// quadratic), so sum Q(p_i)^2 <= x^T (2 tau^2 K + 18 N tau^4 E) x for the
+// coefficients x (K = sum of the gradients' Gram matrices, x^T E x =
+// |A|_F^2); if M minus that is positive definite, no coefficients do it.
+// Corners on two parallel planes (rim to rim strips) lie on the quadric of
+// that pair of planes: no proof for them.
+bool NoQuadricWithin(std::span<const Eigen::Vector3d> points, double tau);
 
 // True if no sphere passes within `tau` of every point of `points`.
 bool NoSphereWithin(std::span<const Eigen::Vector3d> points, double tau);
@@ -38,9 +48,8 @@ bool NoSphereWithin(std::span<const Eigen::Vector3d> points, double tau);
 // axis a for which |n . a| <= max_tilt for every n of `normals` (unit, or
 // zero for a degenerate facet).
 bool NoCylinderWithin(std::span<const Eigen::Vector3d> points,
-                      std::span<const Eigen::Vector3d> normals, double max_tilt,
-                      double tau);
+                      std::span<const Eigen::Vector3d> normals, double max_tilt, double tau);
 
-} // namespace meshseg::segment_internal
+}  // namespace meshseg::segment_internal
 
-#endif // MESHSEG_SRC_SEGMENT_FIT_EXCLUSION_H_
+#endif  // MESHSEG_SRC_SEGMENT_FIT_EXCLUSION_H_
