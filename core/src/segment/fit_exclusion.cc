@@ -24,14 +24,14 @@ constexpr double kTiltRounding = 1e-12;
 // The points centred on their mean and scaled to a largest distance of 1,
 // and tau in that scale; false for fewer than 5 points (a sphere's 4
 // parameters fit 4 points whatever they are) or no spread.
-bool Centre(std::span<const Eigen::Vector3d> points, double tau, std::vector<Eigen::Vector3d> *q,
-            double *scaled_tau) {
+bool Centre(std::span<const Eigen::Vector3d> points, double tau, std::vector<Eigen::Vector3d>* q,
+            double* scaled_tau) {
   if (points.size() < 5) return false;
   Eigen::Vector3d mean = Eigen::Vector3d::Zero();
-  for (const Eigen::Vector3d &p : points) mean += p;
+  for (const Eigen::Vector3d& p : points) mean += p;
   mean /= static_cast<double>(points.size());
   double scale = 0.0;
-  for (const Eigen::Vector3d &p : points) scale = std::max(scale, (p - mean).norm());
+  for (const Eigen::Vector3d& p : points) scale = std::max(scale, (p - mean).norm());
   if (!(scale > 0.0) || !std::isfinite(scale)) return false;
   q->resize(points.size());
   for (std::size_t i = 0; i < points.size(); ++i) (*q)[i] = (points[i] - mean) / scale;
@@ -41,7 +41,7 @@ bool Centre(std::span<const Eigen::Vector3d> points, double tau, std::vector<Eig
 
 // Two of `v` far apart (the farthest from the first, and the farthest from
 // that one): their distance is a lower bound of the set's diameter.
-std::pair<int, int> FarPair(const std::vector<Eigen::Vector3d> &v) {
+std::pair<int, int> FarPair(const std::vector<Eigen::Vector3d>& v) {
   auto farthest = [&](int from) {
     int best = from;
     double best_distance = -1.0;
@@ -59,7 +59,7 @@ std::pair<int, int> FarPair(const std::vector<Eigen::Vector3d> &v) {
 // over z = (square_i, q_i, 1), B the form |b|^2 - 4 alpha g of Pratt's
 // normalisation, mu = N eps^2 / 4: no (alpha, b, g) with x^T B x = 4 has
 // |Q(q_i)| <= eps at every point.
-bool PrattExcludes(const std::vector<Eigen::Vector3d> &q, const std::vector<double> &square,
+bool PrattExcludes(const std::vector<Eigen::Vector3d>& q, const std::vector<double>& square,
                    double eps) {
   Eigen::Matrix<double, 5, 5> m = Eigen::Matrix<double, 5, 5>::Zero();
   Eigen::Matrix<double, 5, 1> z;
@@ -87,7 +87,7 @@ bool NoQuadricWithin(std::span<const Eigen::Vector3d> points, double tau) {
   Matrix10 m = Matrix10::Zero(), k = Matrix10::Zero();
   Eigen::Matrix<double, 10, 1> z;
   Eigen::Matrix<double, 3, 10> g;  // rows: the gradient 2 A p + b, by x
-  for (const Eigen::Vector3d &p : q) {
+  for (const Eigen::Vector3d& p : q) {
     z << p.x() * p.x(), p.y() * p.y(), p.z() * p.z(), 2.0 * p.x() * p.y(), 2.0 * p.x() * p.z(),
         2.0 * p.y() * p.z(), p.x(), p.y(), p.z(), 1.0;
     m.noalias() += z * z.transpose();
@@ -129,12 +129,12 @@ bool NoCylinderWithin(std::span<const Eigen::Vector3d> points,
   // max_tilt sqrt(2 / (1 - |n1 . n2|)) (the least eigenvalue of their Gram
   // matrix is 1 - |n1 . n2|).
   auto first = std::find_if(normals.begin(), normals.end(),
-                            [](const Eigen::Vector3d &n) { return n.norm() > 0.5; });
+                            [](const Eigen::Vector3d& n) { return n.norm() > 0.5; });
   if (first == normals.end()) return false;
   const Eigen::Vector3d n1 = first->normalized();
   Eigen::Vector3d n2 = n1;
   double widest = 0.0;
-  for (const Eigen::Vector3d &n : normals) {
+  for (const Eigen::Vector3d& n : normals) {
     if (!(n.norm() > 0.5)) continue;
     const double across = n1.cross(n.normalized()).norm();
     if (across > widest) widest = across, n2 = n.normalized();
@@ -151,11 +151,16 @@ bool NoCylinderWithin(std::span<const Eigen::Vector3d> points,
   if (!Centre(points, tau, &q, &t)) return false;
   std::vector<Eigen::Vector3d> across(q.size());
   std::vector<double> square(q.size());
-  double reach = 0.0;  // max |q|^2
+  // The largest | |P_e q|^2 - |P_a q|^2 | over the points (fit_exclusion.h).
+  // With sin w <= sine: 1 - cos w <= sine^2 / (1 + sqrt(1 - sine^2)), 1 + cos w <= 2.
+  const double versine = sine * sine / (1.0 + std::sqrt(1.0 - sine * sine));
+  double turn = 0.0;
   for (std::size_t k = 0; k < q.size(); ++k) {
+    const double along = std::abs(q[k].dot(e));
     across[k] = q[k] - q[k].dot(e) * e;
     square[k] = across[k].squaredNorm();
-    reach = std::max(reach, q[k].squaredNorm());
+    const double off = sine * across[k].norm();
+    turn = std::max(turn, (versine * along + off) * (2.0 * along + off));
   }
   // Every point lies within R + t of the axis; across e, distances grow by
   // at most sin(w) of the points' own: R >= (|P_e (q_i - q_j)| - sin(w)
@@ -163,7 +168,7 @@ bool NoCylinderWithin(std::span<const Eigen::Vector3d> points,
   const auto [i, j] = FarPair(across);
   const double r_min = 0.5 * ((across[i] - across[j]).norm() - sine * (q[i] - q[j]).norm()) - t;
   if (!(r_min > 0.0)) return false;
-  return PrattExcludes(q, square, 2.0 * t + (t * t + 2.0 * sine * reach) / r_min);
+  return PrattExcludes(q, square, 2.0 * t + (t * t + turn) / r_min);
 }
 
 }  // namespace meshseg::segment_internal

@@ -6,8 +6,7 @@
 //
 // Principle (Pratt's normalisation of the algebraic sphere). A sphere of
 // centre c and radius R is the zero set of
-//   Q(p) = alpha |p|^2 + b . p + g,  alpha = 1/R, b = -2c/R, g = (|c|^2 -
-//   R^2)/R,
+//   Q(p) = alpha |p|^2 + b . p + g,  alpha = 1/R, b = -2c/R, g = (|c|^2 - R^2)/R,
 // whose coefficients x = (alpha, b, g) satisfy x^T B x = |b|^2 - 4 alpha g = 4
 // for every sphere, and Q(p) = 2d + d^2/R exactly at a point at distance d
 // from it. Points within tau of a sphere of radius R >= R_min (a bound the
@@ -20,8 +19,9 @@
 // cylinder. Its axis is known to within an angle w of a direction e when
 // the facet normals bound |n . a| (exact_hypotheses.cc: FitExactly accepts
 // only cylinders as perpendicular to the normals as they allow); then
-// | |P_e p|^2 - |P_a p|^2 | <= 2 sin(w) |p|^2 adds 2 sin(w) |p|^2 / R_min to
-// eps.
+// | |P_e p|^2 - |P_a p|^2 | = |p.(e - a)| |p.(e + a)| <= ((1 - cos w) |p.e| +
+// sin w |P_e p|) (2 |p.e| + sin w |P_e p|) adds that over R_min to eps (the
+// part of a across e is at most sin w long, and perpendicular to e).
 #ifndef MESHSEG_SRC_SEGMENT_FIT_EXCLUSION_H_
 #define MESHSEG_SRC_SEGMENT_FIT_EXCLUSION_H_
 

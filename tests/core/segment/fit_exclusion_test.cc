@@ -19,14 +19,14 @@ namespace {
 constexpr double kPi = std::numbers::pi;
 
 // A unit vector perpendicular to unit a.
-Eigen::Vector3d Across(const Eigen::Vector3d &a) { return a.unitOrthogonal(); }
+Eigen::Vector3d Across(const Eigen::Vector3d& a) { return a.unitOrthogonal(); }
 
 // Corners of a round of radius r about the x axis (arc from angle 0 to
 // `arc`, `steps` strips) followed by its tangent flat side of length
 // `side`, at the two rims x = 0 and x = length, as a CAD exporter writes a
 // rounded prism's side; `normals` gets the strip and side normals.
 std::vector<Eigen::Vector3d> RoundThenSide(double r, double arc, int steps, double side,
-                                           double length, std::vector<Eigen::Vector3d> *normals) {
+                                           double length, std::vector<Eigen::Vector3d>* normals) {
   std::vector<Eigen::Vector2d> profile;
   for (int k = 0; k <= steps; ++k) {
     const double t = arc * k / steps;
@@ -36,7 +36,7 @@ std::vector<Eigen::Vector3d> RoundThenSide(double r, double arc, int steps, doub
   profile.push_back(profile.back() + side * Eigen::Vector2d(-std::sin(arc), std::cos(arc)));
   std::vector<Eigen::Vector3d> points;
   for (const double x : {0.0, length}) {
-    for (const Eigen::Vector2d &p : profile) points.emplace_back(x, p.x(), p.y());
+    for (const Eigen::Vector2d& p : profile) points.emplace_back(x, p.x(), p.y());
   }
   normals->clear();
   for (std::size_t k = 0; k + 1 < profile.size(); ++k) {
@@ -110,7 +110,7 @@ TEST(FitExclusionTest, NeverExcludesPointsWithinTauOfAnAdmissibleCylinder) {
     // angle keeping |n . a| <= max_tilt for all of them.
     const Eigen::Vector3d mean = (normals.front() + normals.back()).normalized();
     double least = 1.0;
-    for (const Eigen::Vector3d &n : normals) least = std::min(least, n.dot(mean));
+    for (const Eigen::Vector3d& n : normals) least = std::min(least, n.dot(mean));
     const double tilt = std::asin(max_tilt / least) * 0.999;
     const Eigen::Vector3d axis = std::cos(tilt) * e + std::sin(tilt) * mean;
     const Eigen::Vector3d origin(5 * unit(rng), 5 * unit(rng), 5 * unit(rng));
