@@ -20,6 +20,9 @@ constexpr double kRoundingShare = 1e-10;
 constexpr double kMaxAxisSine = 0.5;
 // Normals are unit to rounding: |n . a| is taken this much larger.
 constexpr double kTiltRounding = 1e-12;
+// The centred and scaled coordinates (|q| <= 1) round by a few units of
+// 1e-16: tau is taken this much larger in that scale.
+constexpr double kCoordinateRounding = 1e-15;
 
 // The points centred on their mean and scaled to a largest distance of 1,
 // and tau in that scale; false for fewer than 5 points (a sphere's 4
@@ -35,7 +38,7 @@ bool Centre(std::span<const Eigen::Vector3d> points, double tau, std::vector<Eig
   if (!(scale > 0.0) || !std::isfinite(scale)) return false;
   q->resize(points.size());
   for (std::size_t i = 0; i < points.size(); ++i) (*q)[i] = (points[i] - mean) / scale;
-  *scaled_tau = tau / scale;
+  *scaled_tau = tau / scale + kCoordinateRounding;
   return std::isfinite(*scaled_tau);
 }
 
