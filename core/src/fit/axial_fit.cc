@@ -28,7 +28,7 @@ class AxialProblem : public LeastSquaresProblem {
     PerpendicularBasis(a, &b1, &b2);
     Eigen::VectorXd y = x;
     y.head<3>() += step(0) * b1 + step(1) * b2;
-    y.segment<3>(3) = RotateAxis(a, step(2), step(3));
+    y.segment<3>(3) = RotateAxis(a, b1, b2, step(2), step(3));
     y(6) += step(4);
     if (fit_angle_) y(7) += step(5);
     return y;

@@ -58,6 +58,11 @@ void PerpendicularBasis(const Eigen::Vector3d& a, Eigen::Vector3d* b1, Eigen::Ve
 Eigen::Vector3d RotateAxis(const Eigen::Vector3d& a, double t1, double t2) {
   Eigen::Vector3d b1, b2;
   PerpendicularBasis(a, &b1, &b2);
+  return RotateAxis(a, b1, b2, t1, t2);
+}
+
+Eigen::Vector3d RotateAxis(const Eigen::Vector3d& a, const Eigen::Vector3d& b1,
+                           const Eigen::Vector3d& b2, double t1, double t2) {
   const Eigen::Vector3d r = a + t1 * b1 + t2 * b2;
   return r.normalized();
 }

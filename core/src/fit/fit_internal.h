@@ -49,6 +49,9 @@ void PerpendicularBasis(const Eigen::Vector3d& a, Eigen::Vector3d* b1, Eigen::Ve
 
 // Axis rotated by the tangent step (t1, t2) along PerpendicularBasis(a).
 Eigen::Vector3d RotateAxis(const Eigen::Vector3d& a, double t1, double t2);
+// The same with PerpendicularBasis(a) = (b1, b2) already at hand.
+Eigen::Vector3d RotateAxis(const Eigen::Vector3d& a, const Eigen::Vector3d& b1,
+                           const Eigen::Vector3d& b2, double t1, double t2);
 
 // Sets rms_distance and max_distance of `result` from Project() of every
 // input point (normals, when given, start the quadric projection).

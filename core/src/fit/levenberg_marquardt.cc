@@ -22,7 +22,9 @@ LmOutcome MinimizeLevenbergMarquardt(const LeastSquaresProblem& problem,
   LmOutcome out;
   out.x = x0;
   Eigen::MatrixXd jtj(n, n), jtj_new(n, n), a(n, n);
-  Eigen::VectorXd jtr(n), jtr_new(n);
+  Eigen::VectorXd jtr(n), jtr_new(n), step(n);
+  // Kept across iterations: its storage is reused, the arithmetic is the same.
+  Eigen::LDLT<Eigen::MatrixXd> ldlt(n);
   out.cost = problem.Evaluate(out.x, &jtj, &jtr);
   out.initial_cost = out.cost;
   if (!std::isfinite(out.cost)) return out;
@@ -37,7 +39,8 @@ LmOutcome MinimizeLevenbergMarquardt(const LeastSquaresProblem& problem,
     const double floor = 1e-12 * std::max(jtj.diagonal().maxCoeff(), 1e-300);
     a = jtj;
     a.diagonal() += damping * jtj.diagonal().cwiseMax(floor);
-    const Eigen::VectorXd step = a.ldlt().solve(-jtr);
+    ldlt.compute(a);
+    step = ldlt.solve(-jtr);
     double cost_new = std::numeric_limits<double>::infinity();
     Eigen::VectorXd x_new;
     if (step.allFinite()) {

@@ -15,6 +15,7 @@
 
 #include "meshseg/fit.h"
 #include "segment/facet_on_surface.h"
+#include "segment/fit_exclusion.h"
 
 namespace meshseg::segment_internal {
 namespace {
@@ -28,6 +29,8 @@ constexpr int kMaxGrowRounds = 3;
 constexpr double kDistinctNormal = 1e-4;
 // Seed groups stop growing at this many facets.
 constexpr std::size_t kMaxSeedFacets = 48;
+// The corners of at most this many facets are told apart by a scan.
+constexpr std::size_t kScannedFacets = kMaxSeedFacets;
 // An exact fit iterates to the rounding of the numbers; from the initial
 // fit of exact corners it converges in under ten steps, and a group that
 // needs more lies on no surface of the type.
@@ -58,14 +61,21 @@ void FitCornersOf(const FacetMesh& fm, std::span<const int> facets, double tau,
   std::unordered_map<int, int> slot;
   std::vector<Eigen::Vector3d> sum;
   std::vector<int> order;
+  // A seed group's few corners are found by a scan; a region's by hashing.
+  const bool scan = facets.size() <= kScannedFacets;
   for (const int f : facets) {
     for (const int v : fm.corners[f]) {
-      auto [it, fresh] = slot.try_emplace(v, static_cast<int>(sum.size()));
-      if (fresh) {
+      int at = 0;
+      if (scan) {
+        at = static_cast<int>(std::find(order.begin(), order.end(), v) - order.begin());
+      } else {
+        at = slot.try_emplace(v, static_cast<int>(order.size())).first->second;
+      }
+      if (at == static_cast<int>(order.size())) {
         sum.push_back(Eigen::Vector3d::Zero());
         order.push_back(v);
       }
-      sum[it->second] += fm.area[f] * fm.normal[f];
+      sum[at] += fm.area[f] * fm.normal[f];
     }
   }
   const std::size_t stride =
@@ -334,23 +344,38 @@ std::optional<Surface> FitExactly(const FacetMesh& fm, SurfaceType type,
                                   std::span<const int> facets, double tau) {
   std::vector<Eigen::Vector3d> points, normals;
   FitCornersOf(fm, facets, tau, &points, &normals);
-  const FitResult fit =
-      FitOfType(type, {.points = points, .normals = normals, .weights = {}}, kExactFit);
-  const bool fits = fit.ok() && fit.max_distance <= tau;
-  if (type != SurfaceType::kCylinder)
-    return fits ? std::optional<Surface>(fit.surface) : std::nullopt;
   // Corners on few rims lie on many cylinders (rim to rim strips: corners at
   // two heights only, and a cylinder of any tilt through them). The surface
   // is one whose axis is as perpendicular to the facets' normals as they
   // allow: a fit whose axis they tilt from by more than twice their least
   // tilt (ChordAxis) is another cylinder through the corners.
   double least_tilt = 0.0;
-  const Eigen::Vector3d axis = ChordAxis(fm, facets, &least_tilt);
+  const Eigen::Vector3d axis =
+      type == SurfaceType::kCylinder ? ChordAxis(fm, facets, &least_tilt) : Eigen::Vector3d::Zero();
+  const double max_tilt = 2.0 * least_tilt + kDistinctNormal;
+  // A fit that a proof from the corners excludes (no surface of the type,
+  // and for a cylinder none of an axis this tilt allows, lies within tau of
+  // every corner) fails whatever its iterations do: not run.
+  if (type == SurfaceType::kSphere && NoSphereWithin(points, tau)) return std::nullopt;
+  if (type == SurfaceType::kCylinder) {
+    std::vector<Eigen::Vector3d> facet_normals(facets.size());
+    for (std::size_t i = 0; i < facets.size(); ++i) facet_normals[i] = fm.normal[facets[i]];
+    if (NoCylinderWithin(points, facet_normals, max_tilt, tau)) return std::nullopt;
+  }
+  if ((type == SurfaceType::kCylinder || type == SurfaceType::kCone) &&
+      NoQuadricWithin(points, tau)) {
+    return std::nullopt;
+  }
+  const FitResult fit =
+      FitOfType(type, {.points = points, .normals = normals, .weights = {}}, kExactFit);
+  const bool fits = fit.ok() && fit.max_distance <= tau;
+  if (type != SurfaceType::kCylinder)
+    return fits ? std::optional<Surface>(fit.surface) : std::nullopt;
   if (fits) {
     const Eigen::Vector3d& fitted = std::get<Cylinder>(fit.surface).axis_direction;
     double tilt = 0.0;
     for (const int f : facets) tilt = std::max(tilt, std::abs(fm.normal[f].dot(fitted)));
-    if (tilt <= 2.0 * least_tilt + kDistinctNormal) return fit.surface;
+    if (tilt <= max_tilt) return fit.surface;
   }
   return CylinderAbout(axis, points, tau);
 }

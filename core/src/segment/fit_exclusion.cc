@@ -1,0 +1,177 @@
+#include "segment/fit_exclusion.h"
+
+#include <Eigen/Cholesky>
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+#include <utility>
+#include <vector>
+
+namespace meshseg::segment_internal {
+namespace {
+
+// Rounding margins: the bound is taken this much larger, and the matrix's
+// diagonal lowered by this share of its size, so that positive definite in
+// floating point is positive definite in exact numbers (forming M and its
+// Cholesky factor are backward stable to a few units of 1e-16 of ||M||).
+constexpr double kBoundMargin = 1e-6;
+constexpr double kRoundingShare = 1e-10;
+// An axis known to no better than this (sine of the angle) is not used.
+constexpr double kMaxAxisSine = 0.5;
+// Normals are unit to rounding: |n . a| is taken this much larger.
+constexpr double kTiltRounding = 1e-12;
+// The centred and scaled coordinates (|q| <= 1) round by a few units of
+// 1e-16: tau is taken this much larger in that scale.
+constexpr double kCoordinateRounding = 1e-15;
+
+// The points centred on their mean and scaled to a largest distance of 1,
+// and tau in that scale; false for fewer than 5 points (a sphere's 4
+// parameters fit 4 points whatever they are) or no spread.
+bool Centre(std::span<const Eigen::Vector3d> points, double tau, std::vector<Eigen::Vector3d>* q,
+            double* scaled_tau) {
+  if (points.size() < 5) return false;
+  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+  for (const Eigen::Vector3d& p : points) mean += p;
+  mean /= static_cast<double>(points.size());
+  double scale = 0.0;
+  for (const Eigen::Vector3d& p : points) scale = std::max(scale, (p - mean).norm());
+  if (!(scale > 0.0) || !std::isfinite(scale)) return false;
+  q->resize(points.size());
+  for (std::size_t i = 0; i < points.size(); ++i) (*q)[i] = (points[i] - mean) / scale;
+  *scaled_tau = tau / scale + kCoordinateRounding;
+  return std::isfinite(*scaled_tau);
+}
+
+// Two of `v` far apart (the farthest from the first, and the farthest from
+// that one): their distance is a lower bound of the set's diameter.
+std::pair<int, int> FarPair(const std::vector<Eigen::Vector3d>& v) {
+  auto farthest = [&](int from) {
+    int best = from;
+    double best_distance = -1.0;
+    for (int k = 0; k < static_cast<int>(v.size()); ++k) {
+      const double d = (v[k] - v[from]).squaredNorm();
+      if (d > best_distance) best_distance = d, best = k;
+    }
+    return best;
+  };
+  const int i = farthest(0);
+  return {i, farthest(i)};
+}
+
+// True if M - mu B is positive definite (fit_exclusion.h), M = sum z z^T
+// over z = (square_i, q_i, 1), B the form |b|^2 - 4 alpha g of Pratt's
+// normalisation, mu = N eps^2 / 4: no (alpha, b, g) with x^T B x = 4 has
+// |Q(q_i)| <= eps at every point.
+bool PrattExcludes(const std::vector<Eigen::Vector3d>& q, const std::vector<double>& square,
+                   double eps) {
+  Eigen::Matrix<double, 5, 5> m = Eigen::Matrix<double, 5, 5>::Zero();
+  Eigen::Matrix<double, 5, 1> z;
+  for (std::size_t i = 0; i < q.size(); ++i) {
+    z << square[i], q[i], 1.0;
+    m.noalias() += z * z.transpose();
+  }
+  const double mu = (1.0 + kBoundMargin) * static_cast<double>(q.size()) * eps * eps / 4.0;
+  if (!std::isfinite(mu)) return false;
+  m.diagonal().array() -= kRoundingShare * (m.trace() + 3.0 * mu);
+  for (int k = 1; k <= 3; ++k) m(k, k) -= mu;
+  m(0, 4) += 2.0 * mu;
+  m(4, 0) += 2.0 * mu;
+  return Eigen::LLT<Eigen::Matrix<double, 5, 5>>(m).info() == Eigen::Success;
+}
+
+}  // namespace
+
+bool NoQuadricWithin(std::span<const Eigen::Vector3d> points, double tau) {
+  std::vector<Eigen::Vector3d> q;
+  double t = 0.0;
+  if (!Centre(points, tau, &q, &t) || q.size() < 10) return false;
+  // x = (a11, a22, a33, a12, a13, a23, b1, b2, b3, c): Q(p) = z(p) . x.
+  using Matrix10 = Eigen::Matrix<double, 10, 10>;
+  Matrix10 m = Matrix10::Zero(), k = Matrix10::Zero();
+  Eigen::Matrix<double, 10, 1> z;
+  Eigen::Matrix<double, 3, 10> g;  // rows: the gradient 2 A p + b, by x
+  for (const Eigen::Vector3d& p : q) {
+    z << p.x() * p.x(), p.y() * p.y(), p.z() * p.z(), 2.0 * p.x() * p.y(), 2.0 * p.x() * p.z(),
+        2.0 * p.y() * p.z(), p.x(), p.y(), p.z(), 1.0;
+    m.noalias() += z * z.transpose();
+    g << 2.0 * p.x(), 0.0, 0.0, 2.0 * p.y(), 2.0 * p.z(), 0.0, 1.0, 0.0, 0.0, 0.0,  //
+        0.0, 2.0 * p.y(), 0.0, 2.0 * p.x(), 0.0, 2.0 * p.z(), 0.0, 1.0, 0.0, 0.0,   //
+        0.0, 0.0, 2.0 * p.z(), 0.0, 2.0 * p.x(), 2.0 * p.y(), 0.0, 0.0, 1.0, 0.0;
+    k.noalias() += g.transpose() * g;
+  }
+  Eigen::Matrix<double, 10, 1> frobenius;  // x^T diag(frobenius) x = |A|_F^2
+  frobenius << 1.0, 1.0, 1.0, 2.0, 2.0, 2.0, 0.0, 0.0, 0.0, 0.0;
+  const double n = static_cast<double>(q.size());
+  Matrix10 bound = 2.0 * t * t * k;
+  bound.diagonal() += 18.0 * n * t * t * t * t * frobenius;
+  bound *= 1.0 + kBoundMargin;
+  if (!bound.allFinite()) return false;
+  m -= bound;
+  m.diagonal().array() -= kRoundingShare * (m.trace() + 2.0 * bound.trace());
+  return Eigen::LLT<Matrix10>(m).info() == Eigen::Success;
+}
+
+bool NoSphereWithin(std::span<const Eigen::Vector3d> points, double tau) {
+  std::vector<Eigen::Vector3d> q;
+  double t = 0.0;
+  if (!Centre(points, tau, &q, &t)) return false;
+  // Every point lies within R + t of the centre: R >= (diameter) / 2 - t.
+  const auto [i, j] = FarPair(q);
+  const double r_min = 0.5 * (q[i] - q[j]).norm() - t;
+  if (!(r_min > 0.0)) return false;
+  std::vector<double> square(q.size());
+  for (std::size_t k = 0; k < q.size(); ++k) square[k] = q[k].squaredNorm();
+  return PrattExcludes(q, square, 2.0 * t + t * t / r_min);
+}
+
+bool NoCylinderWithin(std::span<const Eigen::Vector3d> points,
+                      std::span<const Eigen::Vector3d> normals, double max_tilt, double tau) {
+  // The axis a is within angle w of e = n1 x n2 for two normals n1, n2 of
+  // `normals` as far apart as they go: its part b across e lies in their
+  // plane with |n1 . b|, |n2 . b| <= max_tilt, so sin(w) = |b| <=
+  // max_tilt sqrt(2 / (1 - |n1 . n2|)) (the least eigenvalue of their Gram
+  // matrix is 1 - |n1 . n2|).
+  auto first = std::find_if(normals.begin(), normals.end(),
+                            [](const Eigen::Vector3d& n) { return n.norm() > 0.5; });
+  if (first == normals.end()) return false;
+  const Eigen::Vector3d n1 = first->normalized();
+  Eigen::Vector3d n2 = n1;
+  double widest = 0.0;
+  for (const Eigen::Vector3d& n : normals) {
+    if (!(n.norm() > 0.5)) continue;
+    const double across = n1.cross(n.normalized()).norm();
+    if (across > widest) widest = across, n2 = n.normalized();
+  }
+  const double gram = 1.0 - std::abs(n1.dot(n2));
+  if (!(gram > 0.0)) return false;
+  const double tilt = (max_tilt + kTiltRounding) / (1.0 - kTiltRounding);
+  const double sine = tilt * std::sqrt(2.0 / gram);
+  if (!(sine < kMaxAxisSine)) return false;
+  const Eigen::Vector3d e = n1.cross(n2).normalized();
+
+  std::vector<Eigen::Vector3d> q;
+  double t = 0.0;
+  if (!Centre(points, tau, &q, &t)) return false;
+  std::vector<Eigen::Vector3d> across(q.size());
+  std::vector<double> square(q.size());
+  // The largest | |P_e q|^2 - |P_a q|^2 | over the points (fit_exclusion.h).
+  // With sin w <= sine: 1 - cos w <= sine^2 / (1 + sqrt(1 - sine^2)), 1 + cos w <= 2.
+  const double versine = sine * sine / (1.0 + std::sqrt(1.0 - sine * sine));
+  double turn = 0.0;
+  for (std::size_t k = 0; k < q.size(); ++k) {
+    const double along = std::abs(q[k].dot(e));
+    across[k] = q[k] - q[k].dot(e) * e;
+    square[k] = across[k].squaredNorm();
+    const double off = sine * across[k].norm();
+    turn = std::max(turn, (versine * along + off) * (2.0 * along + off));
+  }
+  // Every point lies within R + t of the axis; across e, distances grow by
+  // at most sin(w) of the points' own: R >= (|P_e (q_i - q_j)| - sin(w)
+  // |q_i - q_j|) / 2 - t.
+  const auto [i, j] = FarPair(across);
+  const double r_min = 0.5 * ((across[i] - across[j]).norm() - sine * (q[i] - q[j]).norm()) - t;
+  if (!(r_min > 0.0)) return false;
+  return PrattExcludes(q, square, 2.0 * t + (t * t + turn) / r_min);
+}
+
+}  // namespace meshseg::segment_internal
