@@ -14,6 +14,7 @@
 #include "meshseg/fit.h"
 #include "meshseg/status_macros.h"
 #include "segment/exact_hypotheses.h"
+#include "segment/exact_joint_hypotheses.h"
 #include "segment/exact_tolerance.h"
 #include "segment/facet_on_surface.h"
 
@@ -348,7 +349,10 @@ void FreeformRegions(const FacetMesh& fm, double step, double tau, std::vector<i
 }  // namespace
 
 absl::StatusOr<ExactFacets> SegmentFacets(const FacetMesh& fm, double tau, const RunContext& ctx) {
-  MESHSEG_ASSIGN_OR_RETURN(const std::vector<Hypothesis> hypotheses, Hypotheses(fm, tau, ctx));
+  MESHSEG_ASSIGN_OR_RETURN(std::vector<Hypothesis> hypotheses,
+                           Hypotheses(fm, tau, ctx));
+  for (Hypothesis &h : RevolvedBandHypotheses(fm, hypotheses, tau))
+    hypotheses.push_back(std::move(h));
   ExactFacets out;
   std::vector<int> owner = Claim(fm, hypotheses, &out.regions);
   MESHSEG_RETURN_IF_ERROR(ctx.CheckStop("segment"));

@@ -67,6 +67,11 @@ std::optional<Hypothesis> CurvedAt(const FacetMesh& fm, int f, double tau);
 inline constexpr int kSeedCorners[] = {16, 12, 8};
 inline constexpr double kSeedCreaseDeg = 60.0;
 
+// Grows `h` over the facets edge-connected to its support that meet the
+// criterion for its surface, refitting on what it holds (as every
+// hypothesis above is grown).
+void GrowHypothesis(const FacetMesh& fm, double tau, Hypothesis* h);
+
 // True if facet f has a neighbour across an edge that lies in its plane
 // (within tau), or the facets around it or around a neighbour fit a curved
 // type exactly with f on it: the local test behind the share of exact
