@@ -349,9 +349,8 @@ void FreeformRegions(const FacetMesh& fm, double step, double tau, std::vector<i
 }  // namespace
 
 absl::StatusOr<ExactFacets> SegmentFacets(const FacetMesh& fm, double tau, const RunContext& ctx) {
-  MESHSEG_ASSIGN_OR_RETURN(std::vector<Hypothesis> hypotheses,
-                           Hypotheses(fm, tau, ctx));
-  for (Hypothesis &h : RevolvedBandHypotheses(fm, hypotheses, tau))
+  MESHSEG_ASSIGN_OR_RETURN(std::vector<Hypothesis> hypotheses, Hypotheses(fm, tau, ctx));
+  for (Hypothesis& h : RevolvedBandHypotheses(fm, hypotheses, tau))
     hypotheses.push_back(std::move(h));
   ExactFacets out;
   std::vector<int> owner = Claim(fm, hypotheses, &out.regions);

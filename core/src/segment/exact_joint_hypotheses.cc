@@ -21,7 +21,7 @@ constexpr double kCoaxialOffset = 1e-2;
 
 struct Axis {
   Eigen::Vector3d point;
-  Eigen::Vector3d direction; // unit
+  Eigen::Vector3d direction;  // unit
 };
 
 std::optional<Axis> BandAxis(const Surface &surface) {
@@ -35,40 +35,34 @@ std::optional<Axis> BandAxis(const Surface &surface) {
 }
 
 bool Coaxial(const Axis &a, const Axis &b, double diagonal) {
-  const double angle = std::atan2(a.direction.cross(b.direction).norm(),
-                                  std::abs(a.direction.dot(b.direction)));
-  if (!(angle <= kCoaxialAngle))
-    return false;
+  const double angle =
+      std::atan2(a.direction.cross(b.direction).norm(), std::abs(a.direction.dot(b.direction)));
+  if (!(angle <= kCoaxialAngle)) return false;
   const Eigen::Vector3d w = b.point - a.point;
-  return (w - w.dot(a.direction) * a.direction).norm() <=
-         kCoaxialOffset * diagonal;
+  return (w - w.dot(a.direction) * a.direction).norm() <= kCoaxialOffset * diagonal;
 }
 
 // True if some corner of `facets` lies off `surface` (beyond tau).
-bool Departs(const FacetMesh &fm, const std::vector<int> &facets,
-             const Surface &surface, double tau) {
-  return std::any_of(facets.begin(), facets.end(), [&](int f) {
-    return !CornersOnSurface(fm, f, surface, tau);
-  });
+bool Departs(const FacetMesh &fm, const std::vector<int> &facets, const Surface &surface,
+             double tau) {
+  return std::any_of(facets.begin(), facets.end(),
+                     [&](int f) { return !CornersOnSurface(fm, f, surface, tau); });
 }
 
 std::vector<int> Union(const std::vector<int> &a, const std::vector<int> &b) {
   std::vector<int> out;
-  std::set_union(a.begin(), a.end(), b.begin(), b.end(),
-                 std::back_inserter(out));
+  std::set_union(a.begin(), a.end(), b.begin(), b.end(), std::back_inserter(out));
   return out;
 }
 
 // A sphere, else a torus, fitted exactly to `facets` with every facet on it.
-std::optional<Hypothesis>
-RevolvedFit(const FacetMesh &fm, const std::vector<int> &facets, double tau) {
+std::optional<Hypothesis> RevolvedFit(const FacetMesh &fm, const std::vector<int> &facets,
+                                      double tau) {
   for (const SurfaceType type : {SurfaceType::kSphere, SurfaceType::kTorus}) {
-    if (!HoldsEvidence(fm, type, facets))
-      continue;
+    if (!HoldsEvidence(fm, type, facets)) continue;
     const std::optional<Surface> fit = FitExactly(fm, type, facets, tau);
-    if (!fit || !std::all_of(facets.begin(), facets.end(), [&](int f) {
-          return FacetOnSurface(fm, f, *fit, tau);
-        })) {
+    if (!fit || !std::all_of(facets.begin(), facets.end(),
+                             [&](int f) { return FacetOnSurface(fm, f, *fit, tau); })) {
       continue;
     }
     return Hypothesis{.type = type, .surface = *fit, .support = facets};
@@ -76,11 +70,11 @@ RevolvedFit(const FacetMesh &fm, const std::vector<int> &facets, double tau) {
   return std::nullopt;
 }
 
-} // namespace
+}  // namespace
 
-std::vector<Hypothesis>
-RevolvedBandHypotheses(const FacetMesh &fm,
-                       const std::vector<Hypothesis> &hypotheses, double tau) {
+std::vector<Hypothesis> RevolvedBandHypotheses(const FacetMesh &fm,
+                                               const std::vector<Hypothesis> &hypotheses,
+                                               double tau) {
   std::vector<int> bands;
   std::vector<Axis> axis(hypotheses.size());
   for (std::size_t i = 0; i < hypotheses.size(); ++i) {
@@ -89,13 +83,11 @@ RevolvedBandHypotheses(const FacetMesh &fm,
       bands.push_back(static_cast<int>(i));
     }
   }
-  if (bands.size() < 3)
-    return {};
+  if (bands.size() < 3) return {};
   // (facet, band) for every facet of every band's support, sorted.
   std::vector<std::pair<int, int>> band_at;
   for (const int b : bands) {
-    for (const int f : hypotheses[b].support)
-      band_at.emplace_back(f, b);
+    for (const int f : hypotheses[b].support) band_at.emplace_back(f, b);
   }
   std::sort(band_at.begin(), band_at.end());
   // Coaxial bands across an edge of each band's support.
@@ -104,14 +96,12 @@ RevolvedBandHypotheses(const FacetMesh &fm,
     const std::vector<int> &support = hypotheses[b].support;
     for (const int f : support) {
       for (const int g : fm.across[f]) {
-        if (g < 0 || std::binary_search(support.begin(), support.end(), g))
-          continue;
-        auto [lo, hi] = std::equal_range(
-            band_at.begin(), band_at.end(), std::make_pair(g, -1),
-            [](const auto &x, const auto &y) { return x.first < y.first; });
+        if (g < 0 || std::binary_search(support.begin(), support.end(), g)) continue;
+        auto [lo, hi] =
+            std::equal_range(band_at.begin(), band_at.end(), std::make_pair(g, -1),
+                             [](const auto &x, const auto &y) { return x.first < y.first; });
         for (auto it = lo; it != hi; ++it) {
-          if (it->second != b &&
-              Coaxial(axis[b], axis[it->second], fm.diagonal)) {
+          if (it->second != b && Coaxial(axis[b], axis[it->second], fm.diagonal)) {
             next[b].push_back(it->second);
           }
         }
@@ -129,48 +119,37 @@ RevolvedBandHypotheses(const FacetMesh &fm,
   std::vector<Hypothesis> out;
   for (const int i : bands) {
     const std::vector<int> &support_i = hypotheses[i].support;
-    if (std::all_of(support_i.begin(), support_i.end(),
-                    [&](int f) { return explained[f]; })) {
+    if (std::all_of(support_i.begin(), support_i.end(), [&](int f) { return explained[f]; })) {
       continue;
     }
     int tries = 0;
     std::optional<Hypothesis> found;
     for (const int j : next[i]) {
-      if (found || tries >= kMaxBandChains)
-        break;
+      if (found || tries >= kMaxBandChains) break;
       std::vector<int> thirds = Union(next[i], next[j]);
       for (const int k : thirds) {
-        if (k == i || k == j)
-          continue;
-        if (tries >= kMaxBandChains)
-          break;
+        if (k == i || k == j) continue;
+        if (tries >= kMaxBandChains) break;
         const Hypothesis &a = hypotheses[i];
         const Hypothesis &b = hypotheses[j];
         const Hypothesis &c = hypotheses[k];
         // Three bands on three surfaces: four circles at least.
-        if (!Departs(fm, b.support, a.surface, tau) ||
-            !Departs(fm, c.support, a.surface, tau) ||
-            !Departs(fm, c.support, b.surface, tau) ||
-            !Departs(fm, a.support, b.surface, tau) ||
-            !Departs(fm, a.support, c.surface, tau) ||
-            !Departs(fm, b.support, c.surface, tau)) {
+        if (!Departs(fm, b.support, a.surface, tau) || !Departs(fm, c.support, a.surface, tau) ||
+            !Departs(fm, c.support, b.surface, tau) || !Departs(fm, a.support, b.surface, tau) ||
+            !Departs(fm, a.support, c.surface, tau) || !Departs(fm, b.support, c.surface, tau)) {
           continue;
         }
         ++tries;
-        found =
-            RevolvedFit(fm, Union(Union(a.support, b.support), c.support), tau);
-        if (found)
-          break;
+        found = RevolvedFit(fm, Union(Union(a.support, b.support), c.support), tau);
+        if (found) break;
       }
     }
-    if (!found)
-      continue;
+    if (!found) continue;
     GrowHypothesis(fm, tau, &*found);
-    for (const int f : found->support)
-      explained[f] = 1;
+    for (const int f : found->support) explained[f] = 1;
     out.push_back(*std::move(found));
   }
   return out;
 }
 
-} // namespace meshseg::segment_internal
+}  // namespace meshseg::segment_internal

@@ -26,13 +26,13 @@ namespace meshseg::segment_internal {
 // is then grown like any other. The greedy cover (exact_facets.h) prefers it
 // to the bands, as it explains all their corners. Returns the new
 // hypotheses.
-std::vector<Hypothesis>
-RevolvedBandHypotheses(const FacetMesh &fm,
-                       const std::vector<Hypothesis> &hypotheses, double tau);
+std::vector<Hypothesis> RevolvedBandHypotheses(const FacetMesh &fm,
+                                               const std::vector<Hypothesis> &hypotheses,
+                                               double tau);
 
 // Chains of bands tried from one band, at most.
 inline constexpr int kMaxBandChains = 8;
 
-} // namespace meshseg::segment_internal
+}  // namespace meshseg::segment_internal
 
-#endif // MESHSEG_SRC_SEGMENT_EXACT_JOINT_HYPOTHESES_H_
+#endif  // MESHSEG_SRC_SEGMENT_EXACT_JOINT_HYPOTHESES_H_

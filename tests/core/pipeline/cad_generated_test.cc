@@ -81,11 +81,9 @@ std::string CaseName(const ::testing::TestParamInfo<Case>& info) {
 }
 
 auto Cases(std::vector<std::string> parts,
-           std::vector<CadDeflection> deflections = {CadDeflection::kCoarse,
-                                                     CadDeflection::kFine},
+           std::vector<CadDeflection> deflections = {CadDeflection::kCoarse, CadDeflection::kFine},
            std::vector<std::string> units = {"m", "mm", "um"}) {
-  return ::testing::Combine(::testing::ValuesIn(parts),
-                            ::testing::ValuesIn(deflections),
+  return ::testing::Combine(::testing::ValuesIn(parts), ::testing::ValuesIn(deflections),
                             ::testing::ValuesIn(units));
 }
 
@@ -103,18 +101,15 @@ INSTANTIATE_TEST_SUITE_P(Parts, CadGenerated,
 // units under DISABLED_Heavy.
 INSTANTIATE_TEST_SUITE_P(Tori, CadGenerated, ::testing::ValuesIn([] {
                            std::vector<Case> cases;
-                           for (const char *unit : {"m", "mm", "um"}) {
-                             cases.emplace_back("cad_flange_shaft",
-                                                CadDeflection::kCoarse, unit);
+                           for (const char* unit : {"m", "mm", "um"}) {
+                             cases.emplace_back("cad_flange_shaft", CadDeflection::kCoarse, unit);
                            }
-                           cases.emplace_back("cad_flange_shaft",
-                                              CadDeflection::kFine, "mm");
+                           cases.emplace_back("cad_flange_shaft", CadDeflection::kFine, "mm");
                            return cases;
                          }()),
                          CaseName);
 INSTANTIATE_TEST_SUITE_P(DISABLED_Heavy, CadGenerated,
-                         Cases({"cad_flange_shaft"}, {CadDeflection::kFine},
-                               {"m", "um"}),
+                         Cases({"cad_flange_shaft"}, {CadDeflection::kFine}, {"m", "um"}),
                          CaseName);
 
 // Segmentation failures these parts reveal (measured 2026-11-26 at main
@@ -128,8 +123,7 @@ INSTANTIATE_TEST_SUITE_P(DISABLED_Heavy, CadGenerated,
 //   found; fine (1008 facets, patches of 14-27): each patch is a FREEFORM
 //   region of 25 facets plus a 2-facet plane (patches on the seam: one
 //   FREEFORM of 28), 31 regions, 100 % area, 9/23 found, shared 0/2.
-INSTANTIATE_TEST_SUITE_P(DISABLED_KnownFailures, CadGenerated,
-                         Cases({"cad_nut"}), CaseName);
+INSTANTIATE_TEST_SUITE_P(DISABLED_KnownFailures, CadGenerated, Cases({"cad_nut"}), CaseName);
 
 }  // namespace
 }  // namespace meshseg

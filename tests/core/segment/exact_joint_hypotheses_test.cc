@@ -3,6 +3,8 @@
 // between parallel circles, as CAD exporters do: a torus read as one
 // surface, not a stack of cones; coaxial cylinders and cones that meet at
 // circles stay apart.
+#include "segment/exact_joint_hypotheses.h"
+
 #include <gtest/gtest.h>
 
 #include <Eigen/Core>
@@ -16,7 +18,6 @@
 
 #include "meshseg/segment.h"
 #include "segment/exact_hypotheses.h"
-#include "segment/exact_joint_hypotheses.h"
 #include "segment/facet_mesh.h"
 
 namespace meshseg {
@@ -59,8 +60,7 @@ Mesh Revolved(const std::vector<Eigen::Vector2d> &profile, int around) {
 
 std::map<std::string, int> TypeCounts(const Segmentation &seg) {
   std::map<std::string, int> counts;
-  for (const Region &r : seg.regions)
-    ++counts[SurfaceTypeName(r.type)];
+  for (const Region &r : seg.regions) ++counts[SurfaceTypeName(r.type)];
   return counts;
 }
 
@@ -72,11 +72,9 @@ TEST(RevolvedBands, TheBandsOfATorusAreOneTorus) {
     const double t = deg * std::numbers::pi / 180.0;
     profile.emplace_back(8.0 + 2.0 * std::cos(t), 2.0 * std::sin(t));
   }
-  const absl::StatusOr<Segmentation> seg =
-      SegmentExactFacets(Revolved(profile, 36));
+  const absl::StatusOr<Segmentation> seg = SegmentExactFacets(Revolved(profile, 36));
   ASSERT_TRUE(seg.ok()) << seg.status();
-  EXPECT_EQ(TypeCounts(*seg),
-            (std::map<std::string, int>{{"plane", 2}, {"torus", 1}}));
+  EXPECT_EQ(TypeCounts(*seg), (std::map<std::string, int>{{"plane", 2}, {"torus", 1}}));
   for (const Region &r : seg->regions) {
     if (const auto *t = std::get_if<Torus>(&r.surface)) {
       EXPECT_NEAR(t->major_radius, 8.0, 1e-9);
@@ -103,13 +101,10 @@ TEST(RevolvedBands, ConesOfTheBandsOfATorusSeedTheTorus) {
   std::vector<Hypothesis> cones;
   for (int band = 0; band + 1 < static_cast<int>(profile.size()); ++band) {
     std::vector<int> facets;
-    for (int k = 0; k < 2 * kAround; ++k)
-      facets.push_back(band * 2 * kAround + k);
-    const std::optional<Surface> cone =
-        FitExactly(fm, SurfaceType::kCone, facets, tau);
+    for (int k = 0; k < 2 * kAround; ++k) facets.push_back(band * 2 * kAround + k);
+    const std::optional<Surface> cone = FitExactly(fm, SurfaceType::kCone, facets, tau);
     ASSERT_TRUE(cone.has_value()) << "band " << band;
-    cones.push_back(
-        {.type = SurfaceType::kCone, .surface = *cone, .support = facets});
+    cones.push_back({.type = SurfaceType::kCone, .surface = *cone, .support = facets});
   }
   const std::vector<Hypothesis> joint = RevolvedBandHypotheses(fm, cones, tau);
   ASSERT_EQ(joint.size(), 1u);
@@ -126,13 +121,11 @@ TEST(RevolvedBands, ConesOfTheBandsOfATorusSeedTheTorus) {
 // r 7, coaxial and adjacent. Their four circles lie on no one circle of the
 // meridian half-plane, so no torus explains them: three regions, not one.
 TEST(RevolvedBands, ACylinderAConeAndACylinderStayThree) {
-  const std::vector<Eigen::Vector2d> profile = {
-      {5.0, 0.0}, {5.0, 4.0}, {7.0, 6.0}, {7.0, 10.0}};
-  const absl::StatusOr<Segmentation> seg =
-      SegmentExactFacets(Revolved(profile, 36));
+  const std::vector<Eigen::Vector2d> profile = {{5.0, 0.0}, {5.0, 4.0}, {7.0, 6.0}, {7.0, 10.0}};
+  const absl::StatusOr<Segmentation> seg = SegmentExactFacets(Revolved(profile, 36));
   ASSERT_TRUE(seg.ok()) << seg.status();
-  EXPECT_EQ(TypeCounts(*seg), (std::map<std::string, int>{
-                                  {"cone", 1}, {"cylinder", 2}, {"plane", 2}}));
+  EXPECT_EQ(TypeCounts(*seg),
+            (std::map<std::string, int>{{"cone", 1}, {"cylinder", 2}, {"plane", 2}}));
 }
 
 // Two bands of a torus (three circles) lie on a torus whatever they are,
@@ -143,12 +136,10 @@ TEST(RevolvedBands, TwoBandsAreNoEvidenceOfATorus) {
     const double t = deg * std::numbers::pi / 180.0;
     profile.emplace_back(8.0 + 2.0 * std::cos(t), 2.0 * std::sin(t));
   }
-  const absl::StatusOr<Segmentation> seg =
-      SegmentExactFacets(Revolved(profile, 36));
+  const absl::StatusOr<Segmentation> seg = SegmentExactFacets(Revolved(profile, 36));
   ASSERT_TRUE(seg.ok()) << seg.status();
-  EXPECT_EQ(TypeCounts(*seg),
-            (std::map<std::string, int>{{"cone", 2}, {"plane", 2}}));
+  EXPECT_EQ(TypeCounts(*seg), (std::map<std::string, int>{{"cone", 2}, {"plane", 2}}));
 }
 
-} // namespace
-} // namespace meshseg
+}  // namespace
+}  // namespace meshseg
