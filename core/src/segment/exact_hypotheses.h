@@ -37,6 +37,9 @@ struct Hypothesis {
   SurfaceType type = SurfaceType::kPlane;
   Surface surface;           // in the FacetMesh's frame
   std::vector<int> support;  // facets on it, edge-connected to its seed, sorted
+  // Seeded from disjoint pieces together (exact_joint_hypotheses.h): its
+  // evidence is held by all its pieces, not by each.
+  bool joint = false;
 };
 
 // The exact fit of `type` to the corners of `facets`: nullopt unless every

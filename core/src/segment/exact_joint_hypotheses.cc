@@ -152,4 +152,44 @@ std::vector<Hypothesis> RevolvedBandHypotheses(const FacetMesh &fm,
   return out;
 }
 
+std::vector<Hypothesis> JointPieceHypotheses(const FacetMesh &fm,
+                                             std::vector<std::vector<int>> pieces, double tau) {
+  std::erase_if(pieces, [](const std::vector<int> &p) { return p.size() < kMinJointPieceFacets; });
+  std::stable_sort(pieces.begin(), pieces.end(),
+                   [](const auto &a, const auto &b) { return a.size() > b.size(); });
+  if (pieces.size() > kMaxJointPieces) pieces.resize(kMaxJointPieces);
+  const int count = static_cast<int>(pieces.size());
+  auto all_on = [&](const std::vector<int> &facets, const Surface &surface) {
+    return std::all_of(facets.begin(), facets.end(),
+                       [&](int f) { return FacetOnSurface(fm, f, surface, tau); });
+  };
+  std::vector<char> used(count, 0);
+  std::vector<Hypothesis> out;
+  for (int a = 0; a < count; ++a) {
+    for (int b = a + 1; b < count && !used[a]; ++b) {
+      if (used[b]) continue;
+      const std::vector<int> pair = Union(pieces[a], pieces[b]);
+      for (const SurfaceType type : {SurfaceType::kCylinder, SurfaceType::kCone,
+                                     SurfaceType::kSphere, SurfaceType::kTorus}) {
+        if (!HoldsEvidence(fm, type, pair)) continue;
+        const std::optional<Surface> fit = FitExactly(fm, type, pair, tau);
+        if (!fit || !all_on(pair, *fit)) continue;
+        Hypothesis h{.type = type, .surface = *fit, .support = pair, .joint = true};
+        used[a] = used[b] = 1;
+        for (int c = 0; c < count; ++c) {
+          if (used[c] || !all_on(pieces[c], *fit)) continue;
+          used[c] = 1;
+          h.support = Union(h.support, pieces[c]);
+        }
+        // Grown over the facets around its pieces on it (those a small
+        // hypothesis took, a flat pair of facets between two rulings).
+        GrowHypothesis(fm, tau, &h);
+        out.push_back(std::move(h));
+        break;
+      }
+    }
+  }
+  return out;
+}
+
 }  // namespace meshseg::segment_internal

@@ -33,6 +33,21 @@ std::vector<Hypothesis> RevolvedBandHypotheses(const FacetMesh &fm,
 // Chains of bands tried from one band, at most.
 inline constexpr int kMaxBandChains = 8;
 
+// Pieces of one surface apart. A face cut by other features into small
+// patches (a chamfer cone interrupted by the flats of a hexagon) leaves
+// pieces that no seed explains: each alone spans too little of the surface
+// to fix it, though its corners lie on it exactly. Two pieces (edge-connected
+// facets no hypothesis took, `pieces`, each sorted) are fitted together by
+// each curved type in order of simplicity; a fit that holds evidence for
+// its type on their union and has every facet of it on the surface takes
+// every other piece whose facets all lie on it too, and is a joint
+// hypothesis over them all (Hypothesis::joint), grown like any other. Only pieces of at least
+// kMinJointPieceFacets facets are tried, at most kMaxJointPieces of them, largest first.
+std::vector<Hypothesis> JointPieceHypotheses(const FacetMesh &fm,
+                                             std::vector<std::vector<int>> pieces, double tau);
+inline constexpr std::size_t kMinJointPieceFacets = 3;
+inline constexpr std::size_t kMaxJointPieces = 64;
+
 }  // namespace meshseg::segment_internal
 
 #endif  // MESHSEG_SRC_SEGMENT_EXACT_JOINT_HYPOTHESES_H_

@@ -141,5 +141,31 @@ TEST(RevolvedBands, TwoBandsAreNoEvidenceOfATorus) {
   EXPECT_EQ(TypeCounts(*seg), (std::map<std::string, int>{{"cone", 2}, {"plane", 2}}));
 }
 
+// Two small pieces of one cone band, a quarter turn apart, each too small
+// to fix the cone alone: fitted together they are one cone, grown over the
+// band; a piece of the band with a piece of the flat end is no surface.
+TEST(JointPieces, TwoPiecesOfOneConeAreThatCone) {
+  using namespace segment_internal;
+  constexpr int kAround = 36;
+  // A cone of half angle 60 degrees (rho grows by tan 60 per unit of z).
+  const std::vector<Eigen::Vector2d> profile = {{5.0, 0.0}, {5.0 + std::sqrt(3.0), 1.0}};
+  const Mesh mesh = Revolved(profile, kAround);
+  const FacetMesh fm = BuildFacetMesh(mesh.tri);
+  const double tau = 1e-12 * fm.diagonal;
+  const std::vector<int> first = {0, 1, 2, 3}, second = {18, 19, 20, 21};
+  for (const std::vector<int> &piece : {first, second}) {
+    EXPECT_FALSE(FitExactly(fm, SurfaceType::kCone, piece, tau).has_value());
+  }
+  const std::vector<Hypothesis> joint = JointPieceHypotheses(fm, {first, second}, tau);
+  ASSERT_EQ(joint.size(), 1u);
+  EXPECT_EQ(joint[0].type, SurfaceType::kCone);
+  EXPECT_TRUE(joint[0].joint);
+  EXPECT_NEAR(std::get<Cone>(joint[0].surface).half_angle, std::numbers::pi / 3.0, 1e-9);
+  EXPECT_EQ(joint[0].support.size(), 2u * kAround);
+  // The end disc's facets follow the band's (two rings of 2 * kAround).
+  const std::vector<int> disc = {2 * kAround, 2 * kAround + 2, 2 * kAround + 4};
+  EXPECT_TRUE(JointPieceHypotheses(fm, {first, disc}, tau).empty());
+}
+
 }  // namespace
 }  // namespace meshseg
