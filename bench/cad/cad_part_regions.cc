@@ -21,18 +21,18 @@
 namespace {
 
 // Type name and main parameters of `s`.
-std::string Describe(const meshseg::Surface &s) {
+std::string Describe(const meshseg::Surface& s) {
   char text[160];
-  if (const auto *p = std::get_if<meshseg::Plane>(&s)) {
+  if (const auto* p = std::get_if<meshseg::Plane>(&s)) {
     std::snprintf(text, sizeof text, "plane offset %.9g", p->normal.dot(p->point));
-  } else if (const auto *c = std::get_if<meshseg::Cylinder>(&s)) {
+  } else if (const auto* c = std::get_if<meshseg::Cylinder>(&s)) {
     std::snprintf(text, sizeof text, "cylinder r %.9g", c->radius);
-  } else if (const auto *c = std::get_if<meshseg::Cone>(&s)) {
+  } else if (const auto* c = std::get_if<meshseg::Cone>(&s)) {
     std::snprintf(text, sizeof text, "cone half_angle %.9g apex (%.6g %.6g %.6g)", c->half_angle,
                   c->apex.x(), c->apex.y(), c->apex.z());
-  } else if (const auto *c = std::get_if<meshseg::Sphere>(&s)) {
+  } else if (const auto* c = std::get_if<meshseg::Sphere>(&s)) {
     std::snprintf(text, sizeof text, "sphere r %.9g", c->radius);
-  } else if (const auto *c = std::get_if<meshseg::Torus>(&s)) {
+  } else if (const auto* c = std::get_if<meshseg::Torus>(&s)) {
     std::snprintf(text, sizeof text, "torus R %.9g r %.9g", c->major_radius, c->minor_radius);
   } else {
     std::snprintf(text, sizeof text, "freeform");
@@ -42,7 +42,7 @@ std::string Describe(const meshseg::Surface &s) {
 
 }  // namespace
 
-int main(int argc, char **argv) {
+int main(int argc, char** argv) {
   if (argc < 3) {
     std::fprintf(stderr, "usage: %s PART coarse|fine [m|mm|um] [MESH_OUT]\n", argv[0]);
     return 2;
@@ -86,9 +86,9 @@ int main(int argc, char **argv) {
     if (seg->face_labels[f] >= 0) ++counts[seg->face_labels[f]][part->face_primitive[f]];
   }
   std::map<int, std::vector<int>> regions_of_face;
-  for (const meshseg::Region &r : seg->regions) {
+  for (const meshseg::Region& r : seg->regions) {
     int face = -1, most = 0;
-    for (const auto &[k, n] : counts[r.id]) {
+    for (const auto& [k, n] : counts[r.id]) {
       if (n > most) face = k, most = n;
     }
     regions_of_face[face].push_back(r.id);
@@ -98,8 +98,8 @@ int main(int argc, char **argv) {
         r.id, static_cast<long long>(r.face_count), r.surface_id, Describe(r.surface).c_str(),
         r.rms_distance, r.max_distance, face, most);
   }
-  for (const meshseg::PrimitiveTruth &p : part->primitives) {
-    const std::vector<int> &rs = regions_of_face[p.id];
+  for (const meshseg::PrimitiveTruth& p : part->primitives) {
+    const std::vector<int>& rs = regions_of_face[p.id];
     if (rs.size() == 1) continue;
     std::printf("face %3d %-20s %-60s in %zu regions\n", p.id, p.name.c_str(),
                 p.freeform ? "freeform" : Describe(p.surface).c_str(), rs.size());

@@ -24,17 +24,17 @@ struct Axis {
   Eigen::Vector3d direction;  // unit
 };
 
-std::optional<Axis> BandAxis(const Surface &surface) {
-  if (const auto *c = std::get_if<Cylinder>(&surface)) {
+std::optional<Axis> BandAxis(const Surface& surface) {
+  if (const auto* c = std::get_if<Cylinder>(&surface)) {
     return Axis{c->axis_origin, c->axis_direction.normalized()};
   }
-  if (const auto *c = std::get_if<Cone>(&surface)) {
+  if (const auto* c = std::get_if<Cone>(&surface)) {
     return Axis{c->apex, c->axis_direction.normalized()};
   }
   return std::nullopt;
 }
 
-bool Coaxial(const Axis &a, const Axis &b, double diagonal) {
+bool Coaxial(const Axis& a, const Axis& b, double diagonal) {
   const double angle =
       std::atan2(a.direction.cross(b.direction).norm(), std::abs(a.direction.dot(b.direction)));
   if (!(angle <= kCoaxialAngle)) return false;
@@ -43,20 +43,20 @@ bool Coaxial(const Axis &a, const Axis &b, double diagonal) {
 }
 
 // True if some corner of `facets` lies off `surface` (beyond tau).
-bool Departs(const FacetMesh &fm, const std::vector<int> &facets, const Surface &surface,
+bool Departs(const FacetMesh& fm, const std::vector<int>& facets, const Surface& surface,
              double tau) {
   return std::any_of(facets.begin(), facets.end(),
                      [&](int f) { return !CornersOnSurface(fm, f, surface, tau); });
 }
 
-std::vector<int> Union(const std::vector<int> &a, const std::vector<int> &b) {
+std::vector<int> Union(const std::vector<int>& a, const std::vector<int>& b) {
   std::vector<int> out;
   std::set_union(a.begin(), a.end(), b.begin(), b.end(), std::back_inserter(out));
   return out;
 }
 
 // A sphere, else a torus, fitted exactly to `facets` with every facet on it.
-std::optional<Hypothesis> RevolvedFit(const FacetMesh &fm, const std::vector<int> &facets,
+std::optional<Hypothesis> RevolvedFit(const FacetMesh& fm, const std::vector<int>& facets,
                                       double tau) {
   for (const SurfaceType type : {SurfaceType::kSphere, SurfaceType::kTorus}) {
     if (!HoldsEvidence(fm, type, facets)) continue;
@@ -72,8 +72,8 @@ std::optional<Hypothesis> RevolvedFit(const FacetMesh &fm, const std::vector<int
 
 }  // namespace
 
-std::vector<Hypothesis> RevolvedBandHypotheses(const FacetMesh &fm,
-                                               const std::vector<Hypothesis> &hypotheses,
+std::vector<Hypothesis> RevolvedBandHypotheses(const FacetMesh& fm,
+                                               const std::vector<Hypothesis>& hypotheses,
                                                double tau) {
   std::vector<int> bands;
   std::vector<Axis> axis(hypotheses.size());
@@ -93,13 +93,13 @@ std::vector<Hypothesis> RevolvedBandHypotheses(const FacetMesh &fm,
   // Coaxial bands across an edge of each band's support.
   std::vector<std::vector<int>> next(hypotheses.size());
   for (const int b : bands) {
-    const std::vector<int> &support = hypotheses[b].support;
+    const std::vector<int>& support = hypotheses[b].support;
     for (const int f : support) {
       for (const int g : fm.across[f]) {
         if (g < 0 || std::binary_search(support.begin(), support.end(), g)) continue;
         auto [lo, hi] =
             std::equal_range(band_at.begin(), band_at.end(), std::make_pair(g, -1),
-                             [](const auto &x, const auto &y) { return x.first < y.first; });
+                             [](const auto& x, const auto& y) { return x.first < y.first; });
         for (auto it = lo; it != hi; ++it) {
           if (it->second != b && Coaxial(axis[b], axis[it->second], fm.diagonal)) {
             next[b].push_back(it->second);
@@ -118,7 +118,7 @@ std::vector<Hypothesis> RevolvedBandHypotheses(const FacetMesh &fm,
   std::vector<char> explained(fm.facet_count(), 0);
   std::vector<Hypothesis> out;
   for (const int i : bands) {
-    const std::vector<int> &support_i = hypotheses[i].support;
+    const std::vector<int>& support_i = hypotheses[i].support;
     if (std::all_of(support_i.begin(), support_i.end(), [&](int f) { return explained[f]; })) {
       continue;
     }
@@ -130,9 +130,9 @@ std::vector<Hypothesis> RevolvedBandHypotheses(const FacetMesh &fm,
       for (const int k : thirds) {
         if (k == i || k == j) continue;
         if (tries >= kMaxBandChains) break;
-        const Hypothesis &a = hypotheses[i];
-        const Hypothesis &b = hypotheses[j];
-        const Hypothesis &c = hypotheses[k];
+        const Hypothesis& a = hypotheses[i];
+        const Hypothesis& b = hypotheses[j];
+        const Hypothesis& c = hypotheses[k];
         // Three bands on three surfaces: four circles at least.
         if (!Departs(fm, b.support, a.surface, tau) || !Departs(fm, c.support, a.surface, tau) ||
             !Departs(fm, c.support, b.surface, tau) || !Departs(fm, a.support, b.surface, tau) ||
@@ -152,14 +152,14 @@ std::vector<Hypothesis> RevolvedBandHypotheses(const FacetMesh &fm,
   return out;
 }
 
-std::vector<Hypothesis> JointPieceHypotheses(const FacetMesh &fm,
+std::vector<Hypothesis> JointPieceHypotheses(const FacetMesh& fm,
                                              std::vector<std::vector<int>> pieces, double tau) {
-  std::erase_if(pieces, [](const std::vector<int> &p) { return p.size() < kMinJointPieceFacets; });
+  std::erase_if(pieces, [](const std::vector<int>& p) { return p.size() < kMinJointPieceFacets; });
   std::stable_sort(pieces.begin(), pieces.end(),
-                   [](const auto &a, const auto &b) { return a.size() > b.size(); });
+                   [](const auto& a, const auto& b) { return a.size() > b.size(); });
   if (pieces.size() > kMaxJointPieces) pieces.resize(kMaxJointPieces);
   const int count = static_cast<int>(pieces.size());
-  auto all_on = [&](const std::vector<int> &facets, const Surface &surface) {
+  auto all_on = [&](const std::vector<int>& facets, const Surface& surface) {
     return std::all_of(facets.begin(), facets.end(),
                        [&](int f) { return FacetOnSurface(fm, f, surface, tau); });
   };

@@ -26,8 +26,8 @@ namespace meshseg::segment_internal {
 // is then grown like any other. The greedy cover (exact_facets.h) prefers it
 // to the bands, as it explains all their corners. Returns the new
 // hypotheses.
-std::vector<Hypothesis> RevolvedBandHypotheses(const FacetMesh &fm,
-                                               const std::vector<Hypothesis> &hypotheses,
+std::vector<Hypothesis> RevolvedBandHypotheses(const FacetMesh& fm,
+                                               const std::vector<Hypothesis>& hypotheses,
                                                double tau);
 
 // Chains of bands tried from one band, at most.
@@ -43,7 +43,7 @@ inline constexpr int kMaxBandChains = 8;
 // every other piece whose facets all lie on it too, and is a joint
 // hypothesis over them all (Hypothesis::joint), grown like any other. Only pieces of at least
 // kMinJointPieceFacets facets are tried, at most kMaxJointPieces of them, largest first.
-std::vector<Hypothesis> JointPieceHypotheses(const FacetMesh &fm,
+std::vector<Hypothesis> JointPieceHypotheses(const FacetMesh& fm,
                                              std::vector<std::vector<int>> pieces, double tau);
 inline constexpr std::size_t kMinJointPieceFacets = 3;
 inline constexpr std::size_t kMaxJointPieces = 64;

@@ -28,10 +28,10 @@ namespace {
 // circles in long quads split in two, closed by discs fanned from a point
 // off the axis (a centre on the axis lies on the chords between opposite
 // rim vertices: exact_facets_test's disabled disc case).
-Mesh Revolved(const std::vector<Eigen::Vector2d> &profile, int around) {
+Mesh Revolved(const std::vector<Eigen::Vector2d>& profile, int around) {
   const int rings = static_cast<int>(profile.size());
   std::vector<Eigen::Vector3d> v;
-  for (const Eigen::Vector2d &p : profile) {
+  for (const Eigen::Vector2d& p : profile) {
     for (int k = 0; k < around; ++k) {
       const double a = 2.0 * std::numbers::pi * k / around;
       v.emplace_back(p.x() * std::cos(a), p.x() * std::sin(a), p.y());
@@ -58,25 +58,31 @@ Mesh Revolved(const std::vector<Eigen::Vector2d> &profile, int around) {
   return *std::move(mesh);
 }
 
-std::map<std::string, int> TypeCounts(const Segmentation &seg) {
+std::map<std::string, int> TypeCounts(const Segmentation& seg) {
   std::map<std::string, int> counts;
-  for (const Region &r : seg.regions) ++counts[SurfaceTypeName(r.type)];
+  for (const Region& r : seg.regions) ++counts[SurfaceTypeName(r.type)];
   return counts;
+}
+
+// The meridian of a torus R 8 r 2 from `from_deg` to `to_deg` of its tube
+// (0 at the outer equator) in steps of 15 degrees: each band an exact cone.
+std::vector<Eigen::Vector2d> TubeArc(int from_deg, int to_deg) {
+  std::vector<Eigen::Vector2d> profile;
+  for (int deg = from_deg; deg <= to_deg; deg += 15) {
+    const double t = deg * std::numbers::pi / 180.0;
+    profile.emplace_back(8.0 + 2.0 * std::cos(t), 2.0 * std::sin(t));
+  }
+  return profile;
 }
 
 // A barrel: the outer half of a torus R 8 r 2 between -60 and 60 degrees of
 // its tube in bands of 15 degrees (each an exact cone), with flat ends.
 TEST(RevolvedBands, TheBandsOfATorusAreOneTorus) {
-  std::vector<Eigen::Vector2d> profile;
-  for (int deg = -60; deg <= 60; deg += 15) {
-    const double t = deg * std::numbers::pi / 180.0;
-    profile.emplace_back(8.0 + 2.0 * std::cos(t), 2.0 * std::sin(t));
-  }
-  const absl::StatusOr<Segmentation> seg = SegmentExactFacets(Revolved(profile, 36));
+  const absl::StatusOr<Segmentation> seg = SegmentExactFacets(Revolved(TubeArc(-60, 60), 36));
   ASSERT_TRUE(seg.ok()) << seg.status();
   EXPECT_EQ(TypeCounts(*seg), (std::map<std::string, int>{{"plane", 2}, {"torus", 1}}));
-  for (const Region &r : seg->regions) {
-    if (const auto *t = std::get_if<Torus>(&r.surface)) {
+  for (const Region& r : seg->regions) {
+    if (const auto* t = std::get_if<Torus>(&r.surface)) {
       EXPECT_NEAR(t->major_radius, 8.0, 1e-9);
       EXPECT_NEAR(t->minor_radius, 2.0, 1e-9);
       EXPECT_EQ(r.face_count, 8 * 2 * 36);
@@ -89,11 +95,7 @@ TEST(RevolvedBands, TheBandsOfATorusAreOneTorus) {
 // torus R 8 r 2 over every band facet.
 TEST(RevolvedBands, ConesOfTheBandsOfATorusSeedTheTorus) {
   using namespace segment_internal;
-  std::vector<Eigen::Vector2d> profile;
-  for (int deg = -60; deg <= 60; deg += 15) {
-    const double t = deg * std::numbers::pi / 180.0;
-    profile.emplace_back(8.0 + 2.0 * std::cos(t), 2.0 * std::sin(t));
-  }
+  const std::vector<Eigen::Vector2d> profile = TubeArc(-60, 60);
   constexpr int kAround = 36;
   const Mesh mesh = Revolved(profile, kAround);
   const FacetMesh fm = BuildFacetMesh(mesh.tri);
@@ -109,7 +111,7 @@ TEST(RevolvedBands, ConesOfTheBandsOfATorusSeedTheTorus) {
   const std::vector<Hypothesis> joint = RevolvedBandHypotheses(fm, cones, tau);
   ASSERT_EQ(joint.size(), 1u);
   ASSERT_EQ(joint[0].type, SurfaceType::kTorus);
-  const Torus &torus = std::get<Torus>(joint[0].surface);
+  const Torus& torus = std::get<Torus>(joint[0].surface);
   EXPECT_NEAR(torus.major_radius, 8.0, 1e-9);
   EXPECT_NEAR(torus.minor_radius, 2.0, 1e-9);
   EXPECT_EQ(joint[0].support.size(), 8u * 2 * kAround);
@@ -131,12 +133,7 @@ TEST(RevolvedBands, ACylinderAConeAndACylinderStayThree) {
 // Two bands of a torus (three circles) lie on a torus whatever they are,
 // and on a cone each: they hold no evidence of the torus and stay cones.
 TEST(RevolvedBands, TwoBandsAreNoEvidenceOfATorus) {
-  std::vector<Eigen::Vector2d> profile;
-  for (int deg = -15; deg <= 15; deg += 15) {
-    const double t = deg * std::numbers::pi / 180.0;
-    profile.emplace_back(8.0 + 2.0 * std::cos(t), 2.0 * std::sin(t));
-  }
-  const absl::StatusOr<Segmentation> seg = SegmentExactFacets(Revolved(profile, 36));
+  const absl::StatusOr<Segmentation> seg = SegmentExactFacets(Revolved(TubeArc(-15, 15), 36));
   ASSERT_TRUE(seg.ok()) << seg.status();
   EXPECT_EQ(TypeCounts(*seg), (std::map<std::string, int>{{"cone", 2}, {"plane", 2}}));
 }
@@ -153,7 +150,7 @@ TEST(JointPieces, TwoPiecesOfOneConeAreThatCone) {
   const FacetMesh fm = BuildFacetMesh(mesh.tri);
   const double tau = 1e-12 * fm.diagonal;
   const std::vector<int> first = {0, 1, 2, 3}, second = {18, 19, 20, 21};
-  for (const std::vector<int> &piece : {first, second}) {
+  for (const std::vector<int>& piece : {first, second}) {
     EXPECT_FALSE(FitExactly(fm, SurfaceType::kCone, piece, tau).has_value());
   }
   const std::vector<Hypothesis> joint = JointPieceHypotheses(fm, {first, second}, tau);
