@@ -78,6 +78,7 @@ bool FacetOnSurface(const FacetMesh& fm, int f, const Surface& surface, double t
   const double own = std::atan2(2.0 * (tau + std::abs(foot.distance)), height);
   const double tilt = std::min(AngleBetween(n, foot.normal), AngleBetween(-n, foot.normal));
   if (!(tilt <= spread + own)) return false;  // (2)
+  if (std::holds_alternative<Quadric>(surface)) return true;
   // (5): the surface over a chord facet is a graph over the facet's plane,
   // so its normal at every corner points to the same side of that plane, at
   // less than a right angle to the facet's normal by more than the tilt tau
@@ -87,7 +88,6 @@ bool FacetOnSurface(const FacetMesh& fm, int f, const Surface& surface, double t
   for (const double a : along) {
     if (!((up ? a : -a) > least)) return false;
   }
-  if (std::holds_alternative<Quadric>(surface)) return true;
   // (3): a point within `reach` of corners on a surface of curvature at most
   // kappa lies under it by at most the sag of a sphere of radius 1/kappa.
   const std::array<Eigen::Vector3d, 3> corners = {
