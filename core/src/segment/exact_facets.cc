@@ -14,6 +14,7 @@
 #include "meshseg/fit.h"
 #include "meshseg/status_macros.h"
 #include "segment/exact_hypotheses.h"
+#include "segment/exact_joint_hypotheses.h"
 #include "segment/exact_tolerance.h"
 #include "segment/facet_on_surface.h"
 
@@ -148,8 +149,10 @@ std::vector<int> Claim(const FacetMesh& fm, const std::vector<Hypothesis>& hypot
     for (const int f : h.support) {
       if (owner[f] < 0) free.push_back(f);
     }
+    // A joint hypothesis's evidence is held by its pieces together.
+    const bool joint_evidence = h.joint && HoldsEvidence(fm, h.type, free);
     for (std::vector<int>& piece : Pieces(fm, free)) {
-      if (!HoldsEvidence(fm, h.type, piece)) continue;
+      if (!joint_evidence && !HoldsEvidence(fm, h.type, piece)) continue;
       const int id = static_cast<int>(regions->size());
       for (const int f : piece) owner[f] = id;
       regions->push_back({.type = h.type, .surface = h.surface, .facets = std::move(piece)});
@@ -347,10 +350,29 @@ void FreeformRegions(const FacetMesh& fm, double step, double tau, std::vector<i
 
 }  // namespace
 
+std::vector<std::vector<int>> EdgeConnectedPieces(const FacetMesh& fm,
+                                                  const std::vector<int>& facets) {
+  return Pieces(fm, facets);
+}
+
 absl::StatusOr<ExactFacets> SegmentFacets(const FacetMesh& fm, double tau, const RunContext& ctx) {
-  MESHSEG_ASSIGN_OR_RETURN(const std::vector<Hypothesis> hypotheses, Hypotheses(fm, tau, ctx));
+  MESHSEG_ASSIGN_OR_RETURN(std::vector<Hypothesis> hypotheses, Hypotheses(fm, tau, ctx));
+  for (Hypothesis& h : RevolvedBandHypotheses(fm, hypotheses, tau))
+    hypotheses.push_back(std::move(h));
   ExactFacets out;
   std::vector<int> owner = Claim(fm, hypotheses, &out.regions);
+  // Pieces left by every seed may lie on one surface together: if so, the
+  // cover is made again with their joint hypotheses.
+  std::vector<int> left;
+  for (int f = 0; f < fm.facet_count(); ++f) {
+    if (owner[f] < 0 && !fm.normal[f].isZero()) left.push_back(f);
+  }
+  if (std::vector<Hypothesis> joint = JointPieceHypotheses(fm, Pieces(fm, left), tau);
+      !joint.empty()) {
+    for (Hypothesis& h : joint) hypotheses.push_back(std::move(h));
+    out.regions.clear();
+    owner = Claim(fm, hypotheses, &out.regions);
+  }
   MESHSEG_RETURN_IF_ERROR(ctx.CheckStop("segment"));
   out.angular_step = AngularStep(fm, owner, out.regions);
   // Each analytic region refitted on all of its corners (independent fits).

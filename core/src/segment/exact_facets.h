@@ -48,6 +48,10 @@ struct ExactFacets {
 // angular deflection (0.5 rad), the coarsest common exporter setting.
 inline constexpr double kDefaultAngularStep = 0.5;
 
+// The edge-connected pieces of `facets` (sorted), each sorted.
+std::vector<std::vector<int>> EdgeConnectedPieces(const FacetMesh& fm,
+                                                  const std::vector<int>& facets);
+
 // Segments `fm` with tolerance `tau` as above.
 // Errors: CANCELLED on stop.
 absl::StatusOr<ExactFacets> SegmentFacets(const FacetMesh& fm, double tau, const RunContext& ctx);

@@ -442,6 +442,8 @@ std::optional<Hypothesis> CurvedAt(const FacetMesh& fm, int f, double tau) {
   return std::nullopt;
 }
 
+void GrowHypothesis(const FacetMesh& fm, double tau, Hypothesis* h) { Grow(fm, tau, h); }
+
 bool ExplainedLocally(const FacetMesh& fm, int f, double tau) {
   if (fm.normal[f].isZero()) return false;
   const Plane plane{fm.Centroid(f), fm.normal[f]};

@@ -37,6 +37,9 @@ struct Hypothesis {
   SurfaceType type = SurfaceType::kPlane;
   Surface surface;           // in the FacetMesh's frame
   std::vector<int> support;  // facets on it, edge-connected to its seed, sorted
+  // Seeded from disjoint pieces together (exact_joint_hypotheses.h): its
+  // evidence is held by all its pieces, not by each.
+  bool joint = false;
 };
 
 // The exact fit of `type` to the corners of `facets`: nullopt unless every
@@ -66,6 +69,11 @@ std::optional<Hypothesis> PlaneAt(const FacetMesh& fm, int f, double tau);
 std::optional<Hypothesis> CurvedAt(const FacetMesh& fm, int f, double tau);
 inline constexpr int kSeedCorners[] = {16, 12, 8};
 inline constexpr double kSeedCreaseDeg = 60.0;
+
+// Grows `h` over the facets edge-connected to its support that meet the
+// criterion for its surface, refitting on what it holds (as every
+// hypothesis above is grown).
+void GrowHypothesis(const FacetMesh& fm, double tau, Hypothesis* h);
 
 // True if facet f has a neighbour across an edge that lies in its plane
 // (within tau), or the facets around it or around a neighbour fit a curved

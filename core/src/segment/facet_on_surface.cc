@@ -59,12 +59,14 @@ bool FacetOnSurface(const FacetMesh& fm, int f, const Surface& surface, double t
   const Eigen::Vector3d centroid = fm.Centroid(f);
   const Projection foot = Project(surface, centroid);
   double spread = 0.0, reach = 0.0, longest = 0.0;
+  std::array<double, 3> along{};  // n . the surface's normal at each corner
   for (int k = 0; k < 3; ++k) {
     const Eigen::Vector3d& p = fm.points[fm.corners[f][k]];
     const Projection pr = Project(surface, p, foot.normal);
     if (!(std::abs(pr.distance) <= tau) && !ChordOnSurface(fm, fm.corners[f][k], surface, tau)) {
       return false;  // (1)
     }
+    along[k] = n.dot(pr.normal);
     spread = std::max(spread, AngleBetween(pr.normal, foot.normal));
     reach = std::max(reach, (p - centroid).norm());
     longest = std::max(longest, (fm.points[fm.corners[f][(k + 1) % 3]] - p).norm());
@@ -77,6 +79,15 @@ bool FacetOnSurface(const FacetMesh& fm, int f, const Surface& surface, double t
   const double tilt = std::min(AngleBetween(n, foot.normal), AngleBetween(-n, foot.normal));
   if (!(tilt <= spread + own)) return false;  // (2)
   if (std::holds_alternative<Quadric>(surface)) return true;
+  // (5): the surface over a chord facet is a graph over the facet's plane,
+  // so its normal at every corner points to the same side of that plane, at
+  // less than a right angle to the facet's normal by more than the tilt tau
+  // gives the facet over its least height.
+  const double least = std::sin(std::atan2(2.0 * tau, height));
+  const bool up = along[0] > 0.0;
+  for (const double a : along) {
+    if (!((up ? a : -a) > least)) return false;
+  }
   // (3): a point within `reach` of corners on a surface of curvature at most
   // kappa lies under it by at most the sag of a sphere of radius 1/kappa.
   const std::array<Eigen::Vector3d, 3> corners = {

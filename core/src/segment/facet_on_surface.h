@@ -22,6 +22,13 @@
 //      turns by a half turn or more approximates nothing of it. (CAD fans on
 //      small holes do span 100-180 degrees: a coarse export may put only a
 //      few facets around a hole.)
+//  (5) S's normal at every corner is on the same side of f's plane as at
+//      the others, at less than a right angle to f's normal by more than the
+//      tilt tau gives f's plane over its least height: the surface over a
+//      chord facet is a graph over the facet's plane. (A sliver of a disc
+//      fanned from a rim vertex has all its corners on the rim's cylinder
+//      and, spanning a quarter turn or more, passes (2)-(4); its normal,
+//      along the axis, is at a right angle to the cylinder's.)
 // On a plane the spread is 0, and (2)-(3) say that f lies in it. A facet of
 // an annular end face whose corners all lie on the rim circle has them on
 // the cylinder too, but its normal is along the axis, at 90 degrees to

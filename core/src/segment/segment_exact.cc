@@ -12,6 +12,7 @@
 #include "meshseg/status_macros.h"
 #include "segment/exact_facets.h"
 #include "segment/exact_hypotheses.h"
+#include "segment/exact_joint_hypotheses.h"
 #include "segment/exact_tolerance.h"
 #include "segment/facet_mesh.h"
 #include "segment/shared_surfaces.h"
@@ -43,6 +44,23 @@ double Tolerance(const TriMesh& mesh, const FacetMesh& fm, std::optional<double>
                                           segment_internal::PlanarityFloor(fm));
 }
 
+// The area of `facets` (sorted) that lies on a joint hypothesis of their
+// edge-connected pieces (exact_joint_hypotheses.h: JointPieceHypotheses).
+double JointlyExplainedArea(const FacetMesh& fm, const std::vector<int>& facets, double tau) {
+  double area = 0.0;
+  std::vector<char> counted(fm.facet_count(), 0);
+  for (const segment_internal::Hypothesis& h : segment_internal::JointPieceHypotheses(
+           fm, segment_internal::EdgeConnectedPieces(fm, facets), tau)) {
+    for (const int f : h.support) {
+      if (!counted[f] && std::binary_search(facets.begin(), facets.end(), f)) {
+        counted[f] = 1;
+        area += fm.area[f];
+      }
+    }
+  }
+  return area;
+}
+
 // `mean_edge`: the mean edge length of the mesh.
 Exactness Measure(const FacetMesh& fm, double tolerance, double mean_edge) {
   Exactness e;
@@ -60,6 +78,7 @@ Exactness Measure(const FacetMesh& fm, double tolerance, double mean_edge) {
   // tests), and counted in order, so the stop falls where it would one by one.
   double explained = 0.0, total = 0.0;
   int missed = 0;
+  std::vector<int> missed_facets;
   for (std::size_t start = 0; start < sample.size() && missed <= missed_limit;
        start += kExactnessBlock) {
     const std::size_t end = std::min(sample.size(), start + kExactnessBlock);
@@ -73,8 +92,15 @@ Exactness Measure(const FacetMesh& fm, double tolerance, double mean_edge) {
         explained += fm.area[sample[i]];
       } else {
         ++missed;
+        missed_facets.push_back(sample[i]);
       }
     }
+  }
+  // Sampled facets no local fit explains may still lie, piece by piece, on
+  // one surface together (small patches of a face cut apart by other
+  // features): the joint hypotheses of the segmentation explain them.
+  if (explained < kMinExactShare * total && missed <= missed_limit) {
+    explained += JointlyExplainedArea(fm, missed_facets, tolerance);
   }
   e.share = total > 0.0 ? explained / total : 0.0;
   e.resolved_sag = tolerance > 0.0 && fm.diagonal > 0.0

@@ -202,11 +202,11 @@ TEST(SegmentExactFacets, KeepsThePlanesOfAPentagonalPrism) {
 // every disc facet lies on the cylinder (the rim circle), and the disc
 // facets are chords of it in section. Their normal is along the axis, at 90
 // degrees to every normal of the cylinder: the discs stay planes.
-// DISABLED: fan slivers spanning more than a quarter of the rim still pass
-// (their spread approaches 90 degrees and their reach exceeds the radius,
-// so tests 2-4 of facet_on_surface.h bound nothing); 10 of each disc's 22
-// go to the cylinder (issue 31 note: left to do).
-TEST(SegmentExactFacets, DISABLED_DiscFacetsWithAllCornersOnTheRimStayPlanes) {
+// Fan slivers spanning more than a quarter of the rim pass tests 2-4 of
+// facet_on_surface.h (their spread approaches 90 degrees and their reach
+// exceeds the radius); their normal, along the axis, at a right angle to
+// the cylinder's at every corner, fails test 5.
+TEST(SegmentExactFacets, DiscFacetsWithAllCornersOnTheRimStayPlanes) {
   constexpr int kCount = 24;
   std::vector<Eigen::Vector3d> v;
   for (const double x : {0.0, kLength}) {
