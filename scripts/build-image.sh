@@ -10,12 +10,15 @@
 # loopback (same labels). Prints the build's wall and CPU time and the image size.
 #
 #   bash scripts/build-image.sh [TAG]          # default TAG meshseg:dev
+#   bash scripts/build-image.sh --check [TAG]  # only the smoke test, on a built image
 #   MESHSEG_DEBIAN_MIRROR=http://... bash scripts/build-image.sh
 #
 # Needs root (buildah/debootstrap); not part of the test command (a full
 # build inside the image takes tens of minutes on 2 cores).
 set -euo pipefail
 cd "$(dirname "$0")/.."
+CHECK_ONLY=0
+if [ "${1:-}" = --check ]; then CHECK_ONLY=1; shift; fi
 TAG="${1:-meshseg:dev}"
 MIRROR="${MESHSEG_DEBIAN_MIRROR:-http://deb.debian.org/debian}"
 export STORAGE_DRIVER=vfs BUILDAH_ISOLATION=chroot
@@ -26,7 +29,10 @@ for tool in buildah debootstrap; do
 done
 
 # 1. The base image.
-if "${B[@]}" inspect --type image debian:12 >/dev/null 2>&1; then
+if [ "$CHECK_ONLY" = 1 ]; then
+  "${B[@]}" inspect --type image "$TAG" >/dev/null 2>&1 ||
+    { echo "build-image: no image $TAG to check (build it first)" >&2; exit 1; }
+elif "${B[@]}" inspect --type image debian:12 >/dev/null 2>&1; then
   echo "build-image: base debian:12 already in local storage"
 elif timeout 60 "${B[@]}" pull -q docker.io/library/debian:12 >/dev/null 2>&1; then
   echo "build-image: pulled debian:12"
@@ -53,6 +59,7 @@ EOF
 fi
 
 # 2. The image (both stages of deploy/Dockerfile; the base is never pulled again).
+if [ "$CHECK_ONLY" = 0 ]; then
 # The host's ccache directory, when there is one, is lent to the build stage
 # (MESHSEG_IMAGE_CCACHE=DIR picks another, =off builds uncached).
 cache=()
@@ -69,6 +76,7 @@ fi
   { tail -30 /tmp/meshseg-image-build.log >&2; echo "build-image: build failed (full log /tmp/meshseg-image-build.log)" >&2; exit 1; }
 read -r wall user sys </tmp/meshseg-image-build.time
 echo "build-image: built $TAG in $wall s wall ($user s user + $sys s system CPU)"
+fi
 
 # 3. Smoke test inside the image.
 ctr=$("${B[@]}" from --pull=never "$TAG")
