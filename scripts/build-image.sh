@@ -60,14 +60,15 @@ fi
 
 # 2. The image (both stages of deploy/Dockerfile; the base is never pulled again).
 if [ "$CHECK_ONLY" = 0 ]; then
-# The host's ccache directory, when there is one, is lent to the build stage
-# (MESHSEG_IMAGE_CCACHE=DIR picks another, =off builds uncached).
+# The host's ccache directory, when there is one, is lent to the build stage,
+# which then builds at this checkout's path so its compilations match the
+# host's (MESHSEG_IMAGE_CCACHE=DIR picks another cache, =off builds uncached).
 cache=()
 cache_dir="${MESHSEG_IMAGE_CCACHE:-}"
 if [ -z "$cache_dir" ] && command -v ccache >/dev/null; then cache_dir=$(ccache -k cache_dir); fi
 if [ -n "$cache_dir" ] && [ "$cache_dir" != off ]; then
   mkdir -p "$cache_dir"
-  cache=(--volume "$cache_dir:/ccache" --build-arg CCACHE_DIR=/ccache)
+  cache=(--volume "$cache_dir:/ccache" --build-arg CCACHE_DIR=/ccache --build-arg SRC="$PWD")
   echo "build-image: compiler cache $cache_dir"
 fi
 /usr/bin/time -f '%e %U %S' -o /tmp/meshseg-image-build.time \
