@@ -22,6 +22,10 @@ PACKAGES=(
   libocct-ocaf-dev libocct-visualization-dev libocct-data-exchange-dev
   zlib1g-dev
 )
+# scripts/build-image.sh's tools (the image is built without Docker): only
+# with `bash scripts/setup.sh --image`, so the image's own build stage, which
+# runs this script, does not install them.
+if [ "${1:-}" = --image ]; then PACKAGES+=(buildah debootstrap); fi
 
 SUDO=""
 if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi

@@ -13,6 +13,7 @@
 #include "absl/strings/str_cat.h"
 #include "absl/strings/str_format.h"
 #include "absl/time/clock.h"
+#include "server/heap.h"
 #include "server/log.h"
 
 #ifndef MESHSEG_VERSION
@@ -276,6 +277,14 @@ std::string Metrics::Exposition() const {
   w.Sample("meshseg_worker_claims_total", {}, static_cast<double>(s.claims));
   w.Family("process_resident_memory_bytes", "gauge", "Resident memory size in bytes.");
   w.Sample("process_resident_memory_bytes", {}, static_cast<double>(ResidentBytes()));
+  if (const std::optional<HeapUsage> heap = ReadHeapUsage()) {
+    w.Family("meshseg_heap_in_use_bytes", "gauge",
+             "Heap memory allocated and not freed (grows with a leak).");
+    w.Sample("meshseg_heap_in_use_bytes", {}, static_cast<double>(heap->in_use_bytes));
+    w.Family("meshseg_heap_free_bytes", "gauge",
+             "Heap memory freed but kept by malloc for reuse (resident unless returned).");
+    w.Sample("meshseg_heap_free_bytes", {}, static_cast<double>(heap->free_bytes));
+  }
   return w.text();
 }
 

@@ -13,6 +13,7 @@
 #include "meshseg/proto/convert.h"
 #include "meshseg/proto/sha256.h"
 #include "meshseg/status_macros.h"
+#include "server/heap.h"
 #include "server/log.h"
 #include "server/metrics.h"
 #include "server/retry.h"
@@ -228,6 +229,11 @@ void WorkerPool::Run(const Lease& lease) {
        {"regions", absl::StrCat(output.region_count)},
        {"result_bytes", absl::StrCat(output.result_size)},
        {"error", std::string(status.message())}});
+  // The job's mesh, graphs and result are freed by now, but malloc keeps
+  // them in this thread's arena (and the pipeline's threads' arenas): give
+  // the pages back, so the server's memory between jobs is what it holds,
+  // not the sum of every arena's largest job (see server/heap.h).
+  ReturnFreeHeap();
 }
 
 }  // namespace meshseg::server

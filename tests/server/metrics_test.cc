@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "absl/strings/str_cat.h"
+#include "server/heap.h"
 
 namespace meshseg::server {
 namespace {
@@ -94,6 +95,10 @@ TEST(Metrics, HooksMoveTheirSamples) {
   EXPECT_THAT(text, ::testing::ContainsRegex("meshseg_build_info\\{version=\"[0-9.]+\",role=\"[a-z]+\","
                                              "backend=\"[a-z]+\"\\} 1\n"));
   EXPECT_THAT(text, ::testing::ContainsRegex("\nprocess_resident_memory_bytes [1-9][0-9]+\n"));
+  if (ReadHeapUsage()) {  // glibc: the heap split into in use and held free
+    EXPECT_THAT(text, ::testing::ContainsRegex("\nmeshseg_heap_in_use_bytes [1-9][0-9]+\n"));
+    EXPECT_THAT(text, ::testing::ContainsRegex("\nmeshseg_heap_free_bytes [0-9]+\n"));
+  }
   m.SetGauges({.queued = [] { return std::optional<int64_t>(); }, .running = {}, .admission_reserved_bytes = {}});
   EXPECT_THAT(m.Exposition(), Not(HasSubstr("\nmeshseg_jobs_queued ")))
       << "an unreachable queue leaves the sample out rather than report 0";
