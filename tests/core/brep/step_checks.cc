@@ -33,26 +33,15 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
-#include <nanoflann.hpp>
-
 #include "absl/strings/str_cat.h"
+#include "mesh/point_index.h"
 
 namespace meshseg::testing {
 namespace {
 
 using Eigen::Vector3d;
 
-struct Cloud {
-  const std::vector<Vector3d>& points;
-  size_t kdtree_get_point_count() const { return points.size(); }
-  double kdtree_get_pt(size_t i, size_t dim) const { return points[i][dim]; }
-  template <class Box>
-  bool kdtree_get_bbox(Box&) const {
-    return false;
-  }
-};
-using KdTree = nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, Cloud>,
-                                                   Cloud, 3, uint32_t>;
+using mesh_internal::PointIndex;
 
 Vector3d ToEigen(const gp_Pnt& p) { return {p.X(), p.Y(), p.Z()}; }
 
@@ -222,9 +211,7 @@ struct ShapeDistance::Impl {
   Impl(const TopoDS_Shape& shape, double spacing_in)
       : spacing(spacing_in),
         samples(SampleFaces(shape, spacing_in)),
-        cloud{samples.points},
-        tree(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(16)) {
-    tree.buildIndex();
+        tree(samples.points) {
     for (TopExp_Explorer it(shape, TopAbs_FACE); it.More(); it.Next()) {
       faces.push_back(TopoDS::Face(it.Current()));
       surfaces.push_back(new ShapeAnalysis_Surface(BRep_Tool::Surface(faces.back())));
@@ -232,8 +219,7 @@ struct ShapeDistance::Impl {
   }
   double spacing;
   FaceSamples samples;
-  Cloud cloud;
-  KdTree tree;
+  PointIndex tree;  // over samples.points
   std::vector<TopoDS_Face> faces;
   std::vector<Handle(ShapeAnalysis_Surface)> surfaces;
   TopoDS_Shape shape_;
@@ -250,9 +236,10 @@ double ShapeDistance::Distance(const Vector3d& p) const {
   const Impl& m = *impl_;
   if (m.samples.points.empty()) return INFINITY;
   constexpr int kNeighbors = 8;
-  uint32_t idx[kNeighbors] = {};
-  double d2[kNeighbors] = {};
-  const size_t found = m.tree.knnSearch(p.data(), kNeighbors, idx, d2);
+  std::vector<uint32_t> idx;
+  std::vector<double> d2;
+  m.tree.Nearest(p, kNeighbors, &idx, &d2);
+  const size_t found = idx.size();
   double best = std::sqrt(d2[0]);
   std::vector<int> tried;
   for (size_t k = 0; k < found; ++k) {
@@ -284,10 +271,7 @@ struct MeshDistance::Impl {
   explicit Impl(const TriMesh& mesh_in)
       : mesh(mesh_in),
         vertices(Vertices(mesh_in)),
-        cloud{vertices},
-        tree(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(16)) {
-    tree.buildIndex();
-  }
+        tree(vertices) {}
   static std::vector<Vector3d> Vertices(const TriMesh& mesh) {
     std::vector<Vector3d> out;
     for (OpenMesh::VertexHandle v : mesh.vertices()) out.push_back(meshseg::ToEigen(mesh.point(v)));
@@ -295,8 +279,7 @@ struct MeshDistance::Impl {
   }
   const TriMesh& mesh;
   std::vector<Vector3d> vertices;
-  Cloud cloud;
-  KdTree tree;
+  PointIndex tree;  // over vertices
 };
 
 MeshDistance::MeshDistance(const TriMesh& mesh) : impl_(new Impl(mesh)) {}
@@ -305,9 +288,10 @@ MeshDistance::~MeshDistance() { delete impl_; }
 double MeshDistance::Distance(const Vector3d& p) const {
   const Impl& m = *impl_;
   constexpr int kNeighbors = 4;
-  uint32_t idx[kNeighbors] = {};
-  double d2[kNeighbors] = {};
-  const size_t found = m.tree.knnSearch(p.data(), kNeighbors, idx, d2);
+  std::vector<uint32_t> idx;
+  std::vector<double> d2;
+  m.tree.Nearest(p, kNeighbors, &idx, &d2);
+  const size_t found = idx.size();
   if (found == 0) return INFINITY;
   double best = std::sqrt(d2[0]);
   for (size_t k = 0; k < found; ++k) {
@@ -335,14 +319,11 @@ EdgeSplitMax MaxDistanceToMesh(const MeshDistance& mesh, const TopoDS_Shape& sha
     }
   }
   EdgeSplitMax out;
-  const Cloud edge_cloud{edge_points};
-  KdTree edge_tree(3, edge_cloud, nanoflann::KDTreeSingleIndexAdaptorParams(16));
-  edge_tree.buildIndex();
+  const PointIndex edge_index(edge_points);
   for (const Vector3d& p : points) {
-    uint32_t index = 0;
-    double d2 = INFINITY;
-    if (!edge_points.empty()) edge_tree.knnSearch(p.data(), 1, &index, &d2);
-    double& max = std::sqrt(d2) < edge_margin ? out.near : out.away;
+    const double to_edge =
+        edge_points.empty() ? INFINITY : (edge_points[edge_index.Closest(p)] - p).norm();
+    double& max = to_edge < edge_margin ? out.near : out.away;
     max = std::max(max, mesh.Distance(p));
   }
   return out;
