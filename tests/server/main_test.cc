@@ -42,8 +42,10 @@ using testing_server::HealthStatus;
 using testing_server::ServerProcess;
 
 const std::string kServer = std::string(MESHSEG_BIN_DIR) + "/meshseg-server";
-// Bound on every wait for the server; the jobs here take about a second.
-constexpr absl::Duration kTimeout = absl::Seconds(20);
+// Bound on every wait for the server. The jobs here take about a second on
+// a quiet machine and over 15 s on a 2-core one running other builds; the
+// bound only ends a test that would otherwise hang, so it is generous.
+constexpr absl::Duration kTimeout = absl::Seconds(60);
 
 // Returns the index of the first line of `log` holding every one of
 // `parts`, or -1.
@@ -226,10 +228,10 @@ TEST(ServerMain, HelpDocumentsEveryFlagAndExitsZero) {
 
 // SIGTERM while a job runs and another waits: the waiting one stays queued
 // (recovery_test.cc runs it after a restart), new uploads get UNAVAILABLE, health is NOT_SERVING,
-// the running job finishes well within the 20 s grace and the process exits 0. The log has each
+// the running job finishes within the 50 s grace and the process exits 0. The log has each
 // job's queued / started / finished lines, in order around the signal.
 TEST_F(ServerMainJobs, SigtermLetsTheRunningJobFinishRefusesUploadsAndExitsZero) {
-  ServerProcess server({"--spool-dir", spool_, "--workers", "1", "--shutdown-grace", "20s"});
+  ServerProcess server({"--spool-dir", spool_, "--workers", "1", "--shutdown-grace", "50s"});
   ASSERT_FALSE(server.address().empty()) << server.first_line() << server.Log();
   // Every channel here ends before the exit is awaited: the server gives
   // open connections up to 2 s to go away.
@@ -275,7 +277,7 @@ TEST_F(ServerMainJobs, SigtermLetsTheRunningJobFinishRefusesUploadsAndExitsZero)
   const int started_a = LineOf(log, {"event=job_started", "job=" + a});
   const int queued_b = LineOf(log, {"event=job_queued", "job=" + b, "file=box.off"});
   const int signal = LineOf(log, {"event=signal", "signal=SIGTERM"});
-  const int shutdown = LineOf(log, {"event=shutdown_started", "grace=20s"});
+  const int shutdown = LineOf(log, {"event=shutdown_started", "grace=50s"});
   const int rejected = LineOf(log, {"event=upload_rejected", "code=UNAVAILABLE"});
   const int finished_a = LineOf(log, {"event=job_finished", "job=" + a, "state=SUCCEEDED",
                                       absl::StrCat("faces=", part_faces_)});
