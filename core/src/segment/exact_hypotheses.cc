@@ -362,10 +362,8 @@ std::optional<Surface> FitExactly(const FacetMesh& fm, SurfaceType type,
     for (std::size_t i = 0; i < facets.size(); ++i) facet_normals[i] = fm.normal[facets[i]];
     if (NoCylinderWithin(points, facet_normals, max_tilt, tau)) return std::nullopt;
   }
-  if ((type == SurfaceType::kCylinder || type == SurfaceType::kCone) &&
-      NoQuadricWithin(points, tau)) {
-    return std::nullopt;
-  }
+  if (type == SurfaceType::kCylinder && ExcludeAxial(points, tau).cylinder) return std::nullopt;
+  if (type == SurfaceType::kCone && ExcludeAxial(points, tau).cone) return std::nullopt;
   const FitResult fit =
       FitOfType(type, {.points = points, .normals = normals, .weights = {}}, kExactFit);
   const bool fits = fit.ok() && fit.max_distance <= tau;

@@ -1,6 +1,7 @@
 #include "segment/fit_exclusion.h"
 
 #include <Eigen/Cholesky>
+#include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
@@ -23,6 +24,17 @@ constexpr double kTiltRounding = 1e-12;
 // The centred and scaled coordinates (|q| <= 1) round by a few units of
 // 1e-16: tau is taken this much larger in that scale.
 constexpr double kCoordinateRounding = 1e-15;
+// The cone proof's shares of H's least and second eigenvalue (the line of
+// u is verified, not assumed: these only leave room for rounding).
+constexpr double kKappaShare = 1.1;
+constexpr double kLambdaShare = 0.9;
+// Eigenvalues of a 3x3 matrix are computed within a few units of 1e-16 of
+// its largest: taken this much of it wider.
+constexpr double kAxisRounding = 1e-12;
+// The cone proof's own rounding margin: this many units of rounding per
+// term summed (fit_exclusion.cc: ExcludeAxialUncached).
+constexpr double kRoundingUnits = 16.0;
+constexpr double kUnitRoundoff = 0x1p-53;
 
 // The points centred on their mean and scaled to a largest distance of 1,
 // and tau in that scale; false for fewer than 5 points (a sphere's 4
@@ -79,14 +91,16 @@ bool PrattExcludes(const std::vector<Eigen::Vector3d>& q, const std::vector<doub
   return Eigen::LLT<Eigen::Matrix<double, 5, 5>>(m).info() == Eigen::Success;
 }
 
-}  // namespace
+using Matrix10 = Eigen::Matrix<double, 10, 10>;
 
-bool NoQuadricWithin(std::span<const Eigen::Vector3d> points, double tau) {
-  std::vector<Eigen::Vector3d> q;
-  double t = 0.0;
-  if (!Centre(points, tau, &q, &t) || q.size() < 10) return false;
-  // x = (a11, a22, a33, a12, a13, a23, b1, b2, b3, c): Q(p) = z(p) . x.
-  using Matrix10 = Eigen::Matrix<double, 10, 10>;
+// H = M - (2 t^2 K + 18 N t^4 E) (fit_exclusion.h: NoQuadricWithin) over
+// the coefficients x = (a11, a22, a33, a12, a13, a23, b1, b2, b3, c) of
+// Q(p) = p^T A p + b . p + c: the quadric of x passes within t of every
+// point of q only if x^T H x <= 0. `size` = trace(H) + 2 trace(bound) (at
+// least trace(M)) is the scale of H's rounding. False for fewer than 10
+// points (a quadric fits 9 whatever they are).
+bool QuadricForm(const std::vector<Eigen::Vector3d>& q, double t, Matrix10* h, double* size) {
+  if (q.size() < 10) return false;
   Matrix10 m = Matrix10::Zero(), k = Matrix10::Zero();
   Eigen::Matrix<double, 10, 1> z;
   Eigen::Matrix<double, 3, 10> g;  // rows: the gradient 2 A p + b, by x
@@ -106,9 +120,112 @@ bool NoQuadricWithin(std::span<const Eigen::Vector3d> points, double tau) {
   bound.diagonal() += 18.0 * n * t * t * t * t * frobenius;
   bound *= 1.0 + kBoundMargin;
   if (!bound.allFinite()) return false;
-  m -= bound;
-  m.diagonal().array() -= kRoundingShare * (m.trace() + 2.0 * bound.trace());
-  return Eigen::LLT<Matrix10>(m).info() == Eigen::Success;
+  *h = m - bound;
+  *size = h->trace() + 2.0 * bound.trace();
+  return std::isfinite(*size);
+}
+
+// True if H, its diagonal lowered by the rounding share of `size`, is
+// positive definite (as NoQuadricWithin always decided).
+bool PositiveWithMargin(Matrix10 h, double size) {
+  h.diagonal().array() -= kRoundingShare * size;
+  return Eigen::LLT<Matrix10>(h).info() == Eigen::Success;
+}
+
+AxialExclusion ExcludeAxialUncached(std::span<const Eigen::Vector3d> points, double tau) {
+  std::vector<Eigen::Vector3d> q;
+  double t = 0.0;
+  Matrix10 h;
+  double size = 0.0;
+  if (!Centre(points, tau, &q, &t) || !QuadricForm(q, t, &h, &size)) return {};
+  if (PositiveWithMargin(h, size)) return {.cylinder = true, .cone = true};
+  // Rounding of forming H (each entry a sum of N terms of size at most
+  // trace(M)'s share, error gamma_N) and of a 10 x 10 Cholesky: a margin of
+  // its size, far below the 1e-10 share above, which would drown H's least
+  // eigenvalue (the pair of planes, t^2 small).
+  const double rounding =
+      kRoundingUnits * static_cast<double>(q.size() + 20) * kUnitRoundoff * size;
+  // (1) Every fitting x lies near the line of u, H's least eigenvector: if
+  // H - lambda (I - u u^T) + kappa u u^T is positive definite, x = s u + y
+  // (y across u) with x^T H x <= 0 has lambda |y|^2 < kappa s^2.
+  const Eigen::SelfAdjointEigenSolver<Matrix10> eigen(h);
+  if (eigen.info() != Eigen::Success) return {};
+  const double least = eigen.eigenvalues()(0), second = eigen.eigenvalues()(1);
+  if (!(second > 0.0)) return {};  // two quadrics come near every point
+  const Eigen::Matrix<double, 10, 1> u = eigen.eigenvectors().col(0);
+  const double kappa = kKappaShare * std::abs(least) + 2.0 * rounding;
+  const double lambda = kLambdaShare * second;
+  Matrix10 g = h + (kappa + lambda) * u * u.transpose();
+  g.diagonal().array() -= lambda + rounding;
+  if (Eigen::LLT<Matrix10>(g).info() != Eigen::Success) return {};
+  // With s = 1: |y| <= sqrt(kappa / lambda), and x's A differs from u's
+  // by at most sqrt(2) |y| (|A|_F^2 <= 2 |x_A|^2) in the 2-norm.
+  const double e = (1.0 + kBoundMargin) * std::sqrt(2.0 * kappa / lambda);
+  Eigen::Matrix3d a;
+  a << u(0), u(3), u(4), u(3), u(1), u(5), u(4), u(5), u(2);
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> axes(a);
+  Eigen::Vector3d mu = axes.eigenvalues();  // ascending
+  int big = 2;
+  if (std::abs(mu(0)) > std::abs(mu(2))) mu = -mu, big = 0;  // x and -x are one quadric
+  const Eigen::Vector3d n = axes.eigenvectors().col(big);
+  const double top = (1.0 - kAxisRounding) * mu(big);
+  const double eta = std::max(std::abs(mu(1)), std::abs(mu(2 - big))) + kAxisRounding * top;
+  // (2) Weyl: x's A has eigenvalues within e of u's (top, and two within eta
+  // of 0). A cone's A is sigma (I - k a a^T), k = 1 / cos^2(half angle),
+  // eigenvalues sigma, sigma, sigma (1 - k); a cylinder's has k = 1. With
+  // sigma >= 0 the double eigenvalue would be within e of both top and
+  // eta: no such A when top > eta + 2 e.
+  if (!(top > eta + 2.0 * e)) return {};
+  // With sigma < 0: |sigma| <= eta + e and |sigma| (k - 1) >= top - e, so
+  // a cylinder (k = 1) is excluded, and a cone has cot^2(half angle) =
+  // 1 / (k - 1) <= (eta + e) / (top - e): nearly flat. Its axis is the
+  // eigenvector of |sigma| (k - 1), within angle w of n with sin w <= e /
+  // (top - e - eta) (Davis-Kahan: u's other eigenvalues are at least that
+  // far from it).
+  const double flat = std::sqrt((eta + e) / (top - e));
+  const double sine = e / (top - e - eta) + kAxisRounding;
+  if (!(sine < 1.0)) return {.cylinder = true};
+  // (3) One nappe of a cone of axis a and cot(half angle) = delta is a graph
+  // h = delta rho over the plane across a (h along a, rho from the axis),
+  // with |h(f) - h(g)| <= delta |f - g| for any two of its points f, g.
+  // Two points within t of it then have |a . (p - q)| <= delta |p - q| + 2
+  // t (1 + delta). The two points farthest apart along n break that when a
+  // is within angle w of n: a nearly flat cone about n reaches no two
+  // parallel rims (a double cone does, one nappe each).
+  const auto [lo, hi] = std::minmax_element(
+      q.begin(), q.end(),
+      [&](const Eigen::Vector3d& x, const Eigen::Vector3d& y) { return x.dot(n) < y.dot(n); });
+  const Eigen::Vector3d d = *hi - *lo;
+  const double along = std::abs(d.dot(n));
+  const double across = (d - d.dot(n) * n).norm();
+  const double least_along = along * std::sqrt(1.0 - sine * sine) - across * sine;
+  const double most_along = (1.0 + kBoundMargin) * (flat * d.norm() + 2.0 * t * (1.0 + flat));
+  return {.cylinder = true, .cone = least_along > most_along};
+}
+}  // namespace
+
+bool NoQuadricWithin(std::span<const Eigen::Vector3d> points, double tau) {
+  std::vector<Eigen::Vector3d> q;
+  double t = 0.0;
+  Matrix10 h;
+  double size = 0.0;
+  return Centre(points, tau, &q, &t) && QuadricForm(q, t, &h, &size) && PositiveWithMargin(h, size);
+}
+
+AxialExclusion ExcludeAxial(std::span<const Eigen::Vector3d> points, double tau) {
+  // One analysis per point set and thread: a seed group's corners are
+  // asked about as a cylinder, then as a cone.
+  thread_local std::vector<Eigen::Vector3d> last_points;
+  thread_local double last_tau = 0.0;
+  thread_local AxialExclusion last;
+  if (tau == last_tau &&
+      std::equal(points.begin(), points.end(), last_points.begin(), last_points.end())) {
+    return last;
+  }
+  last = ExcludeAxialUncached(points, tau);
+  last_points.assign(points.begin(), points.end());
+  last_tau = tau;
+  return last;
 }
 
 bool NoSphereWithin(std::span<const Eigen::Vector3d> points, double tau) {

@@ -41,6 +41,27 @@ namespace meshseg::segment_internal {
 // that pair of planes: no proof for them.
 bool NoQuadricWithin(std::span<const Eigen::Vector3d> points, double tau);
 
+// What the quadric form above says of cylinders (any axis) and cones near
+// `points`: true where none passes within `tau` of every point.
+struct AxialExclusion {
+  bool cylinder = false;
+  bool cone = false;
+};
+
+// The cylinders and cones (one nappe: the surface FitExactly accepts, a
+// half-line turned about the axis) that the quadric form excludes, even
+// where a pair of planes or another quadric passes (corners on two rims).
+// The fitting quadrics x (x^T H x <= 0, H as in NoQuadricWithin) are shown
+// to lie near one line u; a cylinder's or cone's A = sigma (I - k a a^T)
+// has a double eigenvalue, which u's A, dominated by one eigenvalue (the
+// pair of planes n n^T), keeps far from it unless sigma is small and k
+// large: a nearly flat cone about n, one nappe of which is a graph of
+// small slope over the plane across n, and cannot reach points far apart
+// along n. The steps and their bounds are in fit_exclusion.cc. The last
+// answer is kept per thread (a seed group is asked about as a cylinder,
+// then as a cone).
+AxialExclusion ExcludeAxial(std::span<const Eigen::Vector3d> points, double tau);
+
 // True if no sphere passes within `tau` of every point of `points`.
 bool NoSphereWithin(std::span<const Eigen::Vector3d> points, double tau);
 

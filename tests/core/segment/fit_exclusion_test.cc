@@ -183,6 +183,76 @@ TEST(FitExclusionTest, NeverExcludesPointsWithinTauOfAConeOrCylinder) {
   }
 }
 
+// Points within tau of one nappe of a cone (or of a cylinder, half angle
+// 0): at radii from `rho0` to `rho1` from the axis, or at those two radii
+// only (the rims of a frustum: corners on two parallel planes, the pair of
+// planes beside the cone), over a fan of `fan` radians, pushed off the
+// surface along its normal by up to tau (exactly tau at every third).
+std::vector<Eigen::Vector3d> OnOneNappe(const Eigen::Vector3d& apex, const Eigen::Vector3d& axis,
+                                        double half_angle, double rho0, double rho1, double fan,
+                                        bool rims_only, double tau, std::mt19937* rng) {
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  const Eigen::Vector3d u = Across(axis), v = axis.cross(u);
+  std::vector<Eigen::Vector3d> points;
+  for (int k = 0; k < 20; ++k) {
+    const double t = fan * unit(*rng);
+    const Eigen::Vector3d e = std::cos(t) * u + std::sin(t) * v;
+    const double s = rims_only ? (k % 2) : std::abs(unit(*rng));
+    const double rho = rho0 + s * (rho1 - rho0);
+    // A cylinder (half angle 0) of radius rho0 between heights 0 and 20.
+    const double h = half_angle == 0.0 ? 20.0 * s : rho / std::tan(half_angle);
+    const Eigen::Vector3d at = apex + h * axis + (half_angle == 0.0 ? rho0 : rho) * e;
+    const Eigen::Vector3d normal = std::cos(half_angle) * e - std::sin(half_angle) * axis;
+    const double off = k % 3 == 0 ? tau * (k % 2 ? 1.0 : -1.0) : tau * unit(*rng);
+    points.push_back(at + off * normal);
+  }
+  return points;
+}
+
+TEST(FitExclusionTest, NeverExcludesPointsWithinTauOfOneNappeOrACylinder) {
+  std::mt19937 rng(17);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  for (int trial = 0; trial < 400; ++trial) {
+    const Eigen::Vector3d axis = Eigen::Vector3d(unit(rng), unit(rng), unit(rng)).normalized();
+    const Eigen::Vector3d apex(5 * unit(rng), 5 * unit(rng), 5 * unit(rng));
+    // Cylinders, cones up to 80 degrees, and nearly flat ones up to 89.9:
+    // the cones whose quadric is nearest a pair of planes.
+    const double half_angle = trial % 4 == 0   ? 0.0
+                              : trial % 4 == 1 ? 1.4 * std::abs(unit(rng))
+                                               : 1.4 + 0.17 * std::abs(unit(rng));
+    const double rho0 = std::pow(10.0, 1.5 * unit(rng));
+    const double rho1 = rho0 * (1.2 + 3.0 * std::abs(unit(rng)));
+    const double tau = rho0 * std::pow(10.0, -4.0 + 3.0 * unit(rng));
+    const double fan = 0.2 + 2.0 * std::abs(unit(rng));
+    const bool rims_only = trial % 2 == 0;
+    const AxialExclusion proof = ExcludeAxial(
+        OnOneNappe(apex, axis, half_angle, rho0, rho1, fan, rims_only, tau, &rng), tau);
+    EXPECT_FALSE(proof.cone) << "trial " << trial;
+    if (half_angle == 0.0) EXPECT_FALSE(proof.cylinder) << "trial " << trial;
+  }
+}
+
+TEST(FitExclusionTest, StripsOverATangentSideFitNoConeThoughTheirRimsFitAPairOfPlanes) {
+  // Every corner on x = 0 or x = 20: the pair of planes holds them (no
+  // quadric proof), but no cylinder of any axis, and no cone: the cone
+  // quadric nearest the pair of planes is a nearly flat double cone about
+  // x, one nappe through each rim.
+  std::vector<Eigen::Vector3d> normals;
+  const std::vector<Eigen::Vector3d> points =
+      RoundThenSide(2.54, kPi / 3.0, 6, 2.42, 20.0, &normals);
+  ASSERT_FALSE(NoQuadricWithin(points, 4e-5));
+  const AxialExclusion proof = ExcludeAxial(points, 4e-5);
+  EXPECT_TRUE(proof.cylinder);
+  EXPECT_TRUE(proof.cone);
+  // The round's strips alone lie on its cylinder: neither is excluded.
+  std::vector<Eigen::Vector3d> round = RoundThenSide(2.54, kPi / 3.0, 6, 2.42, 20.0, &normals);
+  round.erase(round.begin() + 7);  // the side's far corner at x = 0
+  round.pop_back();                // and at x = 20
+  const AxialExclusion none = ExcludeAxial(round, 4e-5);
+  EXPECT_FALSE(none.cylinder);
+  EXPECT_FALSE(none.cone);
+}
+
 TEST(FitExclusionTest, ProvesNothingFromTooLittle) {
   const std::vector<Eigen::Vector3d> four = {
       {0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 5}};  // any 4 points lie on a sphere
