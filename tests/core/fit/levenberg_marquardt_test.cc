@@ -87,5 +87,61 @@ TEST(MinimizeLevenbergMarquardt, ExactStartStopsAtOnce) {
   EXPECT_LE(out.iterations, 1);
 }
 
+// y = sum_k c_k t^k, k < P, through points (t_i, y_i) stored as (t, y, 0):
+// linear in c, so the damped steps reach the coefficients in a few
+// iterations. P = 5 and 6 take the fixed-size step solve (the axial fits'
+// step counts), P = 7 the dynamic one.
+template <int P>
+class PolynomialProblem : public LeastSquaresProblem {
+ public:
+  explicit PolynomialProblem(const FitInput& input) : input_(input) {}
+  int NumSteps() const override { return P; }
+  double Evaluate(const Eigen::VectorXd& x, Eigen::MatrixXd* jtj,
+                  Eigen::VectorXd* jtr) const override {
+    return AccumulateNormalEquations<P>(
+        input_,
+        [&](std::size_t i, Eigen::Matrix<double, 1, P>* row) {
+          const double t = input_.points[i].x();
+          double power = 1.0, y = 0.0;
+          for (int k = 0; k < P; ++k, power *= t) {
+            (*row)(k) = power;
+            y += x(k) * power;
+          }
+          return y - input_.points[i].y();
+        },
+        jtj, jtr);
+  }
+  Eigen::VectorXd Step(const Eigen::VectorXd& x, const Eigen::VectorXd& step) const override {
+    return x + step;
+  }
+
+ private:
+  const FitInput& input_;
+};
+
+template <int P>
+void ExpectPolynomialFound() {
+  Eigen::VectorXd truth(P);
+  for (int k = 0; k < P; ++k) truth(k) = (k % 2 ? -1.0 : 1.0) * (k + 1);
+  std::vector<Eigen::Vector3d> pts;
+  for (int i = 0; i <= 30; ++i) {
+    const double t = -1.0 + i / 15.0;
+    double y = 0.0;
+    for (int k = P - 1; k >= 0; --k) y = y * t + truth(k);
+    pts.emplace_back(t, y, 0.0);
+  }
+  const FitInput input{pts, {}, {}};
+  const LmOutcome out = MinimizeLevenbergMarquardt(PolynomialProblem<P>(input),
+                                                   Eigen::VectorXd::Zero(P), FitParams{});
+  EXPECT_LT(out.cost, 1e-20) << P << " coefficients";
+  for (int k = 0; k < P; ++k) EXPECT_NEAR(out.x(k), truth(k), 1e-9) << P << " coefficients";
+}
+
+TEST(MinimizeLevenbergMarquardt, FindsFiveSixAndSevenCoefficients) {
+  ExpectPolynomialFound<5>();
+  ExpectPolynomialFound<6>();
+  ExpectPolynomialFound<7>();
+}
+
 }  // namespace
 }  // namespace meshseg::fit_internal
