@@ -27,6 +27,9 @@ constexpr double kCoordinateRounding = 1e-15;
 // The cone proof's shares of H's least and second eigenvalue (the line of
 // u is verified, not assumed: these only leave room for rounding).
 constexpr double kKappaShare = 1.1;
+// Steps of inverse iteration for H's least and second eigenvector: each
+// shrinks the others by their ratio to it (below 1/5 where a proof holds).
+constexpr int kInverseIterations = 5;
 constexpr double kLambdaShare = 0.9;
 // Eigenvalues of a 3x3 matrix are computed within a few units of 1e-16 of
 // its largest: taken this much of it wider.
@@ -92,6 +95,7 @@ bool PrattExcludes(const std::vector<Eigen::Vector3d>& q, const std::vector<doub
 }
 
 using Matrix10 = Eigen::Matrix<double, 10, 10>;
+using Vector10 = Eigen::Matrix<double, 10, 1>;
 
 // H = M - (2 t^2 K + 18 N t^4 E) (fit_exclusion.h: NoQuadricWithin) over
 // the coefficients x = (a11, a22, a33, a12, a13, a23, b1, b2, b3, c) of
@@ -102,18 +106,26 @@ using Matrix10 = Eigen::Matrix<double, 10, 10>;
 bool QuadricForm(const std::vector<Eigen::Vector3d>& q, double t, Matrix10* h, double* size) {
   if (q.size() < 10) return false;
   Matrix10 m = Matrix10::Zero(), k = Matrix10::Zero();
-  Eigen::Matrix<double, 10, 1> z;
-  Eigen::Matrix<double, 3, 10> g;  // rows: the gradient 2 A p + b, by x
+  Vector10 z;
+  // The gradient 2 A p + b by x: along axis i, 2 p_i at a_ii, 2 p_j at the
+  // a_ij of each other axis j, 1 at b_i; K sums the outer products of those
+  // four entries.
+  constexpr int kDiagonal[3] = {0, 1, 2}, kLinear[3] = {6, 7, 8};
+  constexpr int kCross[3][2] = {{3, 4}, {3, 5}, {4, 5}};  // a_ij of the other axes j
+  constexpr int kOther[3][2] = {{1, 2}, {0, 2}, {0, 1}};
   for (const Eigen::Vector3d& p : q) {
     z << p.x() * p.x(), p.y() * p.y(), p.z() * p.z(), 2.0 * p.x() * p.y(), 2.0 * p.x() * p.z(),
         2.0 * p.y() * p.z(), p.x(), p.y(), p.z(), 1.0;
     m.noalias() += z * z.transpose();
-    g << 2.0 * p.x(), 0.0, 0.0, 2.0 * p.y(), 2.0 * p.z(), 0.0, 1.0, 0.0, 0.0, 0.0,  //
-        0.0, 2.0 * p.y(), 0.0, 2.0 * p.x(), 0.0, 2.0 * p.z(), 0.0, 1.0, 0.0, 0.0,   //
-        0.0, 0.0, 2.0 * p.z(), 0.0, 2.0 * p.x(), 2.0 * p.y(), 0.0, 0.0, 1.0, 0.0;
-    k.noalias() += g.transpose() * g;
+    for (int i = 0; i < 3; ++i) {
+      const int at[4] = {kDiagonal[i], kCross[i][0], kCross[i][1], kLinear[i]};
+      const double value[4] = {2.0 * p(i), 2.0 * p(kOther[i][0]), 2.0 * p(kOther[i][1]), 1.0};
+      for (int a = 0; a < 4; ++a) {
+        for (int b = 0; b < 4; ++b) k(at[a], at[b]) += value[a] * value[b];
+      }
+    }
   }
-  Eigen::Matrix<double, 10, 1> frobenius;  // x^T diag(frobenius) x = |A|_F^2
+  Vector10 frobenius;  // x^T diag(frobenius) x = |A|_F^2
   frobenius << 1.0, 1.0, 1.0, 2.0, 2.0, 2.0, 0.0, 0.0, 0.0, 0.0;
   const double n = static_cast<double>(q.size());
   Matrix10 bound = 2.0 * t * t * k;
@@ -132,6 +144,21 @@ bool PositiveWithMargin(Matrix10 h, double size) {
   return Eigen::LLT<Matrix10>(h).info() == Eigen::Success;
 }
 
+// The eigenvalue of symmetric `h` nearest 0, and its unit eigenvector in
+// `u`, by inverse iteration from the all-ones vector (its Rayleigh
+// quotient; not exact, a choice for the proof that verifies it).
+double NearestToZero(const Matrix10& h, Vector10* u) {
+  const Eigen::LDLT<Matrix10> ldlt(h);
+  *u = Vector10::Ones().normalized();
+  for (int k = 0; k < kInverseIterations; ++k) {
+    const Vector10 next = ldlt.solve(*u);
+    const double length = next.norm();
+    if (!(length > 0.0) || !std::isfinite(length)) break;
+    *u = next / length;
+  }
+  return u->dot(h * *u);
+}
+
 AxialExclusion ExcludeAxialUncached(std::span<const Eigen::Vector3d> points, double tau) {
   std::vector<Eigen::Vector3d> q;
   double t = 0.0;
@@ -148,11 +175,14 @@ AxialExclusion ExcludeAxialUncached(std::span<const Eigen::Vector3d> points, dou
   // (1) Every fitting x lies near the line of u, H's least eigenvector: if
   // H - lambda (I - u u^T) + kappa u u^T is positive definite, x = s u + y
   // (y across u) with x^T H x <= 0 has lambda |y|^2 < kappa s^2.
-  const Eigen::SelfAdjointEigenSolver<Matrix10> eigen(h);
-  if (eigen.info() != Eigen::Success) return {};
-  const double least = eigen.eigenvalues()(0), second = eigen.eigenvalues()(1);
-  if (!(second > 0.0)) return {};  // two quadrics come near every point
-  const Eigen::Matrix<double, 10, 1> u = eigen.eigenvectors().col(0);
+  // u and the two eigenvalues by inverse iteration (H is nearly singular
+  // along u, and then, u moved away, along the second): only choices, the
+  // Cholesky below decides.
+  Vector10 u;
+  const double least = NearestToZero(h, &u);
+  Vector10 v;
+  const double second = NearestToZero(h + std::abs(h.trace()) * u * u.transpose(), &v);
+  if (!(second > 0.0) || !std::isfinite(least)) return {};  // two quadrics come near
   const double kappa = kKappaShare * std::abs(least) + 2.0 * rounding;
   const double lambda = kLambdaShare * second;
   Matrix10 g = h + (kappa + lambda) * u * u.transpose();
@@ -202,6 +232,7 @@ AxialExclusion ExcludeAxialUncached(std::span<const Eigen::Vector3d> points, dou
   const double most_along = (1.0 + kBoundMargin) * (flat * d.norm() + 2.0 * t * (1.0 + flat));
   return {.cylinder = true, .cone = least_along > most_along};
 }
+
 }  // namespace
 
 bool NoQuadricWithin(std::span<const Eigen::Vector3d> points, double tau) {
