@@ -183,7 +183,8 @@ absl::StatusOr<BrepReport> Build(const Mesh& mesh, std::span<const int> face_lab
       }
       brep_internal::RegionFace face = brep_internal::MakeRegionFace(
           topology, r, patch, geoms[r], surfaces[r].sign, edges,
-          std::max(kExactGap * diagonal, Precision::Confusion()), curve_tolerance);
+          std::max(kExactGap * diagonal, Precision::Confusion()), curve_tolerance,
+          std::max(3.0 * sigma, kExactGap * diagonal));
       if (face.contracted) {
         --report.patch_count;
         ++report.contracted_patch_count;
