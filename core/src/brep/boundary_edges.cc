@@ -147,7 +147,8 @@ BoundaryEdges MakeBoundaryEdges(const TriMesh& mesh, const Topology& topology,
                         .tolerance = tolerances.curve,
                         .exact_gap = tolerances.exact_gap,
                         .l_avg = tolerances.l_avg,
-                        .transversal = Transversal(c, tolerances)};
+                        .transversal = Transversal(c, tolerances),
+                        .surface_offset = tolerances.surface_offset};
     // A region without a surface leaves its curves to the other side's.
     if (surfaces[request.left].IsNull()) std::swap(request.left, request.right);
     if (request.left < 0 || surfaces[request.left].IsNull()) {
