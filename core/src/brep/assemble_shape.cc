@@ -53,18 +53,6 @@ bool Inside(const TopoDS_Shell& inner, const TopoDS_Solid& outer, double toleran
   return classify.State() == TopAbs_IN;
 }
 
-// `shell` (any orientation) as a forward shell of the same faces, each face
-// oriented as it is seen in `shell`: a file holds no orientation of a shell
-// in its solid, only its faces'.
-TopoDS_Shell ForwardShell(const TopoDS_Shape& shell) {
-  BRep_Builder builder;
-  TopoDS_Shell out;
-  builder.MakeShell(out);
-  for (TopExp_Explorer it(shell, TopAbs_FACE); it.More(); it.Next()) builder.Add(out, it.Current());
-  out.Closed(BRep_Tool::IsClosed(shell));
-  return out;
-}
-
 // Closed shells as solids: each body's outer shell with the shells inside it
 // as voids. A shell inside an odd number of larger shells is a void of the
 // smallest of them, one inside an even number (an island in a void) a body
@@ -106,12 +94,12 @@ std::vector<TopoDS_Solid> SolidsOf(const std::vector<TopoDS_Shell>& shells, doub
     TopoDS_Solid solid;
     builder.MakeSolid(solid);
     for (TopExp_Explorer it(alone[k], TopAbs_SHELL); it.More(); it.Next()) {
-      builder.Add(solid, ForwardShell(it.Current()));
+      builder.Add(solid, it.Current());
     }
     // A void's shell faces into the void: its outward solid's shell reversed.
     for (const size_t v : voids[k]) {
       for (TopExp_Explorer it(alone[v], TopAbs_SHELL); it.More(); it.Next()) {
-        builder.Add(solid, ForwardShell(it.Current().Reversed()));
+        builder.Add(solid, it.Current().Reversed());
       }
     }
     solids.push_back(solid);
