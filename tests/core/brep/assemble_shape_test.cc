@@ -7,9 +7,13 @@
 #include "step_checks.h"
 
 #include "brep/assemble_shape.h"
+#include "brep/step_file.h"
+#include "scratch_dir.h"
 
 #include <gtest/gtest.h>
 
+#include <string>
+#include <utility>
 #include <vector>
 
 #include <BRepPrimAPI_MakeBox.hxx>
@@ -52,6 +56,28 @@ TEST(AssembleShape, FacesOrientedInwardGiveAnOutwardSolid) {
   EXPECT_TRUE(s.solid);
   EXPECT_NEAR(s.volume, 24.0, 1e-9);
   EXPECT_NEAR(testing::FactsOf(s.shape).volume, 24.0, 1e-9);
+}
+
+// Written and read back (ReadBack, what a reader sees), the solid of faces
+// that came in facing inward is outward, with positive volume, and so is a
+// body with a void.
+TEST(AssembleShape, SolidsReadBackOutward) {
+  const std::string path = testing_files::ScratchPath("assembled.step");
+  for (const auto& [faces, volume] :
+       {std::pair{BoxFaces({0, 0, 0}, {2, 3, 4}, true), 24.0},
+        std::pair{Join(BoxFaces({1, 1, 1}, {2, 2, 2}, true), BoxFaces({0, 0, 0}, {3, 3, 3})),
+                  26.0}}) {
+    const AssembledShape s = AssembleShape(faces, kSewing);
+    ASSERT_TRUE(s.solid);
+    ASSERT_TRUE(WriteStepFile(s.shape, [](const TopoDS_Face&) { return ""; }, "mm", "box", path)
+                    .ok());
+    const absl::StatusOr<ReadBackFacts> back = ReadBack(path, "mm");
+    ASSERT_TRUE(back.ok()) << back.status();
+    EXPECT_TRUE(back->valid);
+    EXPECT_EQ(back->solids, 1);
+    EXPECT_EQ(back->free_edges, 0);
+    EXPECT_NEAR(back->volume, volume, 1e-9 * volume);
+  }
 }
 
 TEST(AssembleShape, TwoBodiesAreTwoSolids) {
