@@ -93,9 +93,11 @@ TEST(AssembleShape, TwoBodiesAreTwoSolids) {
   EXPECT_NEAR(facts.volume, 3.0, 1e-9);
 }
 
+// A cavity's faces face into it (as the mesh's normals do), the other way
+// than its body's.
 TEST(AssembleShape, ABodyInsideAnotherIsItsVoid) {
-  const AssembledShape s =
-      AssembleShape(Join(BoxFaces({1, 1, 1}, {2, 2, 2}), BoxFaces({0, 0, 0}, {3, 3, 3})), kSewing);
+  const AssembledShape s = AssembleShape(
+      Join(BoxFaces({1, 1, 1}, {2, 2, 2}, true), BoxFaces({0, 0, 0}, {3, 3, 3})), kSewing);
   EXPECT_TRUE(s.solid);
   EXPECT_TRUE(s.valid);
   EXPECT_EQ(s.solid_count, 1);
@@ -107,13 +109,27 @@ TEST(AssembleShape, ABodyInsideAnotherIsItsVoid) {
 }
 
 TEST(AssembleShape, AnIslandInAVoidIsABodyOfItsOwn) {
-  const AssembledShape s =
-      AssembleShape(Join(Join(BoxFaces({0, 0, 0}, {5, 5, 5}), BoxFaces({1, 1, 1}, {4, 4, 4})),
-                         BoxFaces({2, 2, 2}, {3, 3, 3})),
-                    kSewing);
+  const AssembledShape s = AssembleShape(
+      Join(Join(BoxFaces({0, 0, 0}, {5, 5, 5}), BoxFaces({1, 1, 1}, {4, 4, 4}, true)),
+           BoxFaces({2, 2, 2}, {3, 3, 3})),
+      kSewing);
   EXPECT_TRUE(s.solid);
   EXPECT_EQ(s.solid_count, 2);
   EXPECT_NEAR(s.volume, 125.0 - 27.0 + 1.0, 1e-9);
+}
+
+// Faces facing out like its encloser's: a body inside another (an assembly's
+// part the mesh holds as a separate body), both solids, neither a void.
+TEST(AssembleShape, ABodyFacingOutInsideAnotherIsASolidOfItsOwn) {
+  const AssembledShape s =
+      AssembleShape(Join(BoxFaces({1, 1, 1}, {2, 2, 2}), BoxFaces({0, 0, 0}, {3, 3, 3})), kSewing);
+  EXPECT_TRUE(s.solid);
+  EXPECT_TRUE(s.valid);
+  EXPECT_EQ(s.solid_count, 2);
+  EXPECT_NEAR(s.volume, 28.0, 1e-9);
+  const testing::ShapeFacts facts = testing::FactsOf(s.shape);
+  EXPECT_EQ(facts.solids, 2);
+  EXPECT_NEAR(facts.volume, 28.0, 1e-9);
 }
 
 TEST(AssembleShape, AnOpenBoxStaysAShell) {
