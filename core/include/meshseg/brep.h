@@ -78,7 +78,8 @@ struct BrepReport {
   bool closed = false;
   bool solid = false;   // written as solids (else as a shell or shells)
   // Solids in the file read back: one per body (closed shell not inside
-  // another; a shell inside one is a void of it).
+  // another; a shell inside one whose faces face the other way is a void of
+  // it, one whose faces face the same way a body of its own).
   int solid_count = 0;
   // BRepCheck_Analyzer finds the shape valid both in memory and as the file
   // reads back (STEPControl_Reader), with every face, and its solids enclose
