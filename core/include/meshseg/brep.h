@@ -73,13 +73,19 @@ struct BrepReport {
   // to the mesh boundary curve (tangent or missing intersections, borders).
   int exact_edge_count = 0;
   int fitted_edge_count = 0;
-  bool closed = false;  // the faces form closed shells (no free edges)
+  // The faces form closed shells (no free edges), in memory and in the file
+  // read back.
+  bool closed = false;
   bool solid = false;   // written as solids (else as a shell or shells)
-  // Solids written: one per body (closed shell not inside another; a shell
-  // inside one is a void of it).
+  // Solids in the file read back: one per body (closed shell not inside
+  // another; a shell inside one whose faces face the other way is a void of
+  // it, one whose faces face the same way a body of its own).
   int solid_count = 0;
-  bool valid = false;   // BRepCheck_Analyzer finds the written shape valid
-  double volume = 0.0;  // of the solids, model units³; 0 when not a solid
+  // BRepCheck_Analyzer finds the shape valid both in memory and as the file
+  // reads back (STEPControl_Reader), with every face, and its solids enclose
+  // positive volume.
+  bool valid = false;
+  double volume = 0.0;  // of the solids read back, model units³; 0 when not a solid
   double sewing_tolerance = 0.0;  // model units
   double max_tolerance = 0.0;     // largest edge or vertex tolerance, model units
   std::vector<BrepFaceFailure> failures;

@@ -53,15 +53,31 @@ bool Inside(const TopoDS_Shell& inner, const TopoDS_Solid& outer, double toleran
   return classify.State() == TopAbs_IN;
 }
 
+// True if the faces of the closed `shell`, as they came, face out of it
+// (the volume it encloses, taken with their orientation, is positive).
+bool FacesOut(const TopoDS_Shell& shell) {
+  BRep_Builder builder;
+  TopoDS_Solid solid;
+  builder.MakeSolid(solid);
+  builder.Add(solid, shell);
+  return VolumeOf(solid) > 0.0;
+}
+
 // Closed shells as solids: each body's outer shell with the shells inside it
 // as voids. A shell inside an odd number of larger shells is a void of the
-// smallest of them, one inside an even number (an island in a void) a body
-// of its own. Empty if a shell encloses no volume (it folds onto itself).
+// smallest of them if its faces face the other way than that one's (the
+// faces come oriented by the mesh's normals, which face into a cavity);
+// facing the same way it is a body inside the other (parts of an assembly
+// the mesh holds as separate bodies). A shell inside an even number (an
+// island in a void) is a body of its own. Empty if a shell encloses no
+// volume (it folds onto itself).
 std::vector<TopoDS_Solid> SolidsOf(const std::vector<TopoDS_Shell>& shells, double tolerance) {
   const size_t n = shells.size();
   std::vector<TopoDS_Solid> alone(n);
   std::vector<double> volume(n);
+  std::vector<char> faces_out(n);
   for (size_t k = 0; k < n; ++k) {
+    faces_out[k] = FacesOut(shells[k]);
     alone[k] = OutwardSolid(shells[k]);
     volume[k] = VolumeOf(alone[k]);
     if (!(volume[k] > 0.0)) return {};
@@ -82,7 +98,7 @@ std::vector<TopoDS_Solid> SolidsOf(const std::vector<TopoDS_Shell>& shells, doub
         smallest = order[j];
       }
     }
-    if (depth % 2 == 1) {
+    if (depth % 2 == 1 && faces_out[k] != faces_out[smallest]) {
       owner[k] = static_cast<int>(smallest);
       voids[smallest].push_back(k);
     }

@@ -1,7 +1,7 @@
 // The faces sewn into shells (BRepBuilderAPI_Sewing); closed shells made
 // solids (ShapeFix_Solid, oriented outward by BRepLib::OrientClosedSolid),
-// one per body, a shell inside a body its void; and what BRepCheck and
-// BRepGProp say about the result.
+// one per body, a shell inside a body its void when its faces face the other
+// way; and what BRepCheck and BRepGProp say about the result.
 #ifndef MESHSEG_SRC_BREP_ASSEMBLE_SHAPE_H_
 #define MESHSEG_SRC_BREP_ASSEMBLE_SHAPE_H_
 

@@ -15,6 +15,7 @@
 #include <TopoDS_Vertex.hxx>
 
 #include "absl/strings/str_cat.h"
+#include "brep/corner_clusters.h"
 #include "brep/corner_points.h"
 #include "brep/edge_curve.h"
 #include "brep/surface_query.h"
@@ -23,20 +24,6 @@ namespace meshseg::brep_internal {
 namespace {
 
 using Eigen::Vector3d;
-
-// The regions around each corner cluster.
-std::map<int, std::vector<int>> ClusterRegions(const Topology& topology) {
-  std::map<int, std::vector<int>> out;
-  for (const Corner& c : topology.corners) {
-    std::vector<int>& regions = out[c.cluster];
-    for (const int r : c.regions) {
-      if (r >= 0 && std::find(regions.begin(), regions.end(), r) == regions.end()) {
-        regions.push_back(r);
-      }
-    }
-  }
-  return out;
-}
 
 // True if every point of `polyline` lies within `radius` of `center`.
 bool WithinOf(const std::vector<Vector3d>& polyline, const Vector3d& center, double radius) {
@@ -125,16 +112,17 @@ BoundaryEdges MakeBoundaryEdges(const TriMesh& mesh, const Topology& topology,
   out.failure.resize(n);
   out.contracted.assign(n, 0);
   // Corner clusters start on the common point of their surfaces.
+  const CornerClusters clusters = ClusterCorners(
+      mesh, topology, surfaces, std::max(tolerances.surface_offset, tolerances.exact_gap));
   std::map<int, Vector3d> position;
-  const std::map<int, std::vector<int>> cluster_regions = ClusterRegions(topology);
-  for (const auto& [cluster, regions] : cluster_regions) {
+  for (const auto& [cluster, regions] : clusters.regions) {
     std::vector<Handle(Geom_Surface)> around;
     for (const int r : regions) around.push_back(surfaces[r]);
     position[cluster] =
-        CornerPoint(topology.corners[cluster].position, around, tolerances.corner_move,
+        CornerPoint(clusters.start.at(cluster), around, tolerances.corner_move,
                     {.surface_offset = tolerances.surface_offset, .spacing = tolerances.l_avg});
   }
-  auto cluster_of = [&](int corner) { return topology.corners[corner].cluster; };
+  auto cluster_of = [&](int corner) { return clusters.cluster[corner]; };
 
   // The request of each curve that becomes an edge.
   std::vector<std::vector<Vector3d>> polylines(n);
@@ -144,7 +132,7 @@ BoundaryEdges MakeBoundaryEdges(const TriMesh& mesh, const Topology& topology,
       polylines[c.id].push_back(meshseg::ToEigen(mesh.point(OpenMesh::VertexHandle(v))));
     }
     const bool cornered = c.start_corner >= 0 && c.end_corner >= 0;
-    if (c.junction_artifact ||
+    if (clusters.artifact[c.id] ||
         (cornered && cluster_of(c.start_corner) == cluster_of(c.end_corner) &&
          WithinOf(polylines[c.id], position[cluster_of(c.start_corner)], tolerances.curve))) {
       out.contracted[c.id] = 1;
@@ -159,7 +147,8 @@ BoundaryEdges MakeBoundaryEdges(const TriMesh& mesh, const Topology& topology,
                         .tolerance = tolerances.curve,
                         .exact_gap = tolerances.exact_gap,
                         .l_avg = tolerances.l_avg,
-                        .transversal = Transversal(c, tolerances)};
+                        .transversal = Transversal(c, tolerances),
+                        .surface_offset = tolerances.surface_offset};
     // A region without a surface leaves its curves to the other side's.
     if (surfaces[request.left].IsNull()) std::swap(request.left, request.right);
     if (request.left < 0 || surfaces[request.left].IsNull()) {

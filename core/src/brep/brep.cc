@@ -183,7 +183,8 @@ absl::StatusOr<BrepReport> Build(const Mesh& mesh, std::span<const int> face_lab
       }
       brep_internal::RegionFace face = brep_internal::MakeRegionFace(
           topology, r, patch, geoms[r], surfaces[r].sign, edges,
-          std::max(kExactGap * diagonal, Precision::Confusion()), curve_tolerance);
+          std::max(kExactGap * diagonal, Precision::Confusion()), curve_tolerance,
+          std::max(3.0 * sigma, kExactGap * diagonal));
       if (face.contracted) {
         --report.patch_count;
         ++report.contracted_patch_count;
@@ -220,6 +221,19 @@ absl::StatusOr<BrepReport> Build(const Mesh& mesh, std::span<const int> face_lab
   MESHSEG_RETURN_IF_ERROR(
       brep_internal::WriteStepFile(shape.shape, face_name, params.length_unit, product, path));
   report.length_unit = params.length_unit;
+  // What was written is what a reader sees: the file read back must be as
+  // valid, closed and solid as the shape in memory (the reader rebuilds the
+  // edges' parameter-plane curves, where a wire can come out
+  // self-intersecting), and its solids must enclose positive volume (a
+  // solid's orientation is not in the file: its faces must face outward).
+  MESHSEG_ASSIGN_OR_RETURN(const brep_internal::ReadBackFacts back,
+                           brep_internal::ReadBack(path, params.length_unit));
+  report.valid = report.valid && back.valid && back.faces == report.face_count &&
+                 (back.solids == 0 || back.volume > 0.0);
+  report.closed = report.closed && back.free_edges == 0;
+  report.solid = report.solid && back.solids == report.solid_count;
+  report.solid_count = back.solids;
+  report.volume = back.volume;
   std::error_code error;
   report.step_size = static_cast<int64_t>(std::filesystem::file_size(path, error));
   ctx.Progress(kStage, 1.0);

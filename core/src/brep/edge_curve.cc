@@ -81,6 +81,9 @@ std::optional<EdgeCurve> ChooseEdgeCurve(const EdgeRequest& request,
     if (const Handle(Geom_Curve) hint = HintCurve(request.hint); !hint.IsNull()) {
       consider(hint, false);
     }
+    // A closed form within the noise of both surfaces is as close as a
+    // fitted curve can be shown to be: no fit.
+    if (best && best->trimmed.gap <= request.surface_offset) return best;
   }
   std::optional<TrimmedCurve> fitted =
       FitEdgeCurve(request.polyline, pair[0], pair[1], request.start, request.end, request.hint,

@@ -56,6 +56,10 @@ struct EdgeRequest {
   // contacts (fillets): there two fitted surfaces cross, if at all, where
   // their fit errors put them, not where the faces meet.
   bool transversal = true;
+  // How far a fitted surface may lie off the true one (3 noise sigmas): a
+  // curve whose gap to both surfaces is below it lies on them as far as the
+  // data can tell.
+  double surface_offset = 0.0;
 };
 
 // Returns the edge geometry of `request`, or nullopt when not even a fitted

@@ -84,7 +84,8 @@ double WireLength(const TopoDS_Wire& wire) {
 
 RegionFace MakeRegionFace(const Topology& topology, int region, int patch,
                           const Handle(Geom_Surface) & surface, int sign,
-                          const BoundaryEdges& edges, double precision, double max_tolerance) {
+                          const BoundaryEdges& edges, double precision, double max_tolerance,
+                          double seam_snap) {
   RegionFace out;
   try {
     std::vector<LoopEdges> loops;
@@ -142,8 +143,7 @@ RegionFace MakeRegionFace(const Topology& topology, int region, int patch,
       }
       if (axial.size() == 2 && surface->IsUPeriodic()) {
         const TopoDS_Wire ring =
-            RingWire(face, axial[0]->edges, axial[1]->edges, precision, max_tolerance,
-                     &out.failure);
+            RingWire(face, axial[0]->edges, axial[1]->edges, precision, seam_snap, &out.failure);
         if (ring.IsNull()) return out;
         builder.Add(face, ring);
       }

@@ -32,10 +32,14 @@ struct RegionFace {
 
 // Returns the face of patch `patch` of region `region` on `surface`
 // (`sign` +1 when its normal points out of the solid) bounded by `edges`.
-// `precision` and `max_tolerance` bound ShapeFix.
+// `precision` and `max_tolerance` bound ShapeFix; `seam_snap` is how far a
+// vertex of a loop may lie off the seam's parameter line and still take it
+// into its tolerance (RingWire's max_snap): a distance the surfaces' noise
+// allows, not the curve tolerance.
 RegionFace MakeRegionFace(const Topology& topology, int region, int patch,
                           const Handle(Geom_Surface) & surface, int sign,
-                          const BoundaryEdges& edges, double precision, double max_tolerance);
+                          const BoundaryEdges& edges, double precision, double max_tolerance,
+                          double seam_snap);
 
 }  // namespace meshseg::brep_internal
 

@@ -7,17 +7,26 @@
 #include <string>
 #include <utility>
 
+#include <BRepCheck_Analyzer.hxx>
+#include <BRepGProp.hxx>
+#include <BRep_Tool.hxx>
+#include <GProp_GProps.hxx>
 #include <IFSelect_ReturnStatus.hxx>
 #include <Interface_Static.hxx>
 #include <Message.hxx>
 #include <Message_Messenger.hxx>
 #include <Message_PrinterOStream.hxx>
 #include <STEPControl_Controller.hxx>
+#include <STEPControl_Reader.hxx>
 #include <STEPControl_Writer.hxx>
 #include <StepShape_AdvancedFace.hxx>
 #include <TCollection_HAsciiString.hxx>
+#include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
+#include <TopTools_IndexedDataMapOfShapeListOfShape.hxx>
+#include <TopTools_IndexedMapOfShape.hxx>
 #include <TopoDS.hxx>
+#include <TopoDS_Edge.hxx>
 #include <TransferBRep.hxx>
 #include <TransferBRep_ShapeMapper.hxx>
 #include <Transfer_FinderProcess.hxx>
@@ -28,13 +37,6 @@
 
 namespace meshseg::brep_internal {
 namespace {
-
-// OpenCASCADE 7.6 keeps the STEP writer's settings (schema, units, product
-// name) in process-wide Interface_Static values: one write at a time.
-std::mutex& WriterMutex() {
-  static std::mutex* mutex = new std::mutex;
-  return *mutex;
-}
 
 // Sets an Interface_Static value for the scope's duration.
 class ScopedStatic {
@@ -61,6 +63,11 @@ constexpr std::array<std::pair<const char*, const char*>, 10> kUnits = {{
 
 }  // namespace
 
+std::mutex& StepSessionMutex() {
+  static std::mutex* mutex = new std::mutex;
+  return *mutex;
+}
+
 std::string StepUnitName(const std::string& unit) {
   std::string lower = unit;
   for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
@@ -85,7 +92,7 @@ absl::Status WriteStepFile(const TopoDS_Shape& shape,
     return absl::InvalidArgumentError(
         absl::StrCat("brep: length unit \"", unit, "\" is not one of ", StepUnitList()));
   }
-  std::lock_guard<std::mutex> lock(WriterMutex());
+  std::lock_guard<std::mutex> lock(StepSessionMutex());
   // OpenCASCADE's default messenger prints the transfer statistics to
   // stdout; core/ never prints.
   static std::once_flag quiet;
@@ -119,6 +126,47 @@ absl::Status WriteStepFile(const TopoDS_Shape& shape,
     return absl::InternalError(absl::StrCat("brep: cannot write \"", path, "\""));
   }
   return absl::OkStatus();
+}
+
+absl::StatusOr<ReadBackFacts> ReadBack(const std::string& path, const std::string& unit) {
+  TopoDS_Shape shape;
+  {
+    // The reader converts to the session unit: the file's own, so that the
+    // shape is in the model's units.
+    std::lock_guard<std::mutex> lock(StepSessionMutex());
+    STEPControl_Controller::Init();
+    const ScopedStatic session_unit("xstep.cascade.unit", StepUnitName(unit));
+    STEPControl_Reader reader;
+    if (reader.ReadFile(path.c_str()) != IFSelect_RetDone || reader.TransferRoots() == 0) {
+      return absl::InternalError(absl::StrCat("brep: cannot read back \"", path, "\""));
+    }
+    shape = reader.OneShape();
+  }
+  ReadBackFacts facts;
+  facts.valid = BRepCheck_Analyzer(shape).IsValid();
+  TopTools_IndexedMapOfShape map;
+  TopExp::MapShapes(shape, TopAbs_SOLID, map);
+  facts.solids = map.Extent();
+  map.Clear();
+  TopExp::MapShapes(shape, TopAbs_FACE, map);
+  facts.faces = map.Extent();
+  TopTools_IndexedDataMapOfShapeListOfShape edge_faces;
+  TopExp::MapShapesAndAncestors(shape, TopAbs_EDGE, TopAbs_FACE, edge_faces);
+  for (int i = 1; i <= edge_faces.Extent(); ++i) {
+    const TopoDS_Edge& edge = TopoDS::Edge(edge_faces.FindKey(i));
+    const TopTools_ListOfShape& faces = edge_faces(i);
+    if (faces.Extent() != 1 || BRep_Tool::Degenerated(edge) ||
+        BRep_Tool::IsClosed(edge, TopoDS::Face(faces.First()))) {
+      continue;
+    }
+    ++facts.free_edges;
+  }
+  for (TopExp_Explorer it(shape, TopAbs_SOLID); it.More(); it.Next()) {
+    GProp_GProps props;
+    BRepGProp::VolumeProperties(it.Current(), props);
+    facts.volume += props.Mass();
+  }
+  return facts;
 }
 
 }  // namespace meshseg::brep_internal
