@@ -68,12 +68,17 @@ struct ReconstructParams {
   // Neighbours used for PCA normals and their orientation (Hoppe et al. 1992).
   int normal_neighbors = 10;
   // Outliers are flagged in Reconstruction::is_outlier and left out of the
-  // fits (our addition to seed 001, whose linear fits tilt towards them):
-  // points whose mean distance to their 6 nearest neighbours exceeds
-  // outlier_distance, and points farther than off_surface_distance from the
-  // least-squares plane of their normal_neighbors nearest points. In h.
+  // fits (our addition to seed 001, whose linear fits tilt towards them;
+  // reconstruct/outliers.h): points farther than the off-surface band from
+  // the least-squares plane of their normal_neighbors nearest points, and
+  // sparse points (mean distance to their 6 nearest neighbours over
+  // outlier_distance) whose neighbours scatter off their own plane by more
+  // than the band. The band is max(off_surface_distance,
+  // outlier_noise_sigmas × the cloud's noise σ) (σ from the median residual;
+  // 4 σ: a Gaussian exceeds it at 6e-5 of the points). Distances in h.
   double outlier_distance = 2.0;
   double off_surface_distance = 1.0;
+  double outlier_noise_sigmas = 4.0;
   // Randomness (order of the support covering) comes from here.
   uint64_t seed = 0;
 };
@@ -93,7 +98,9 @@ struct ReconstructStats {
   double refine_edge_length = 0.0;      // model units; 0 = not refined
   int64_t unsupported_vertex_count = 0;  // refined vertices far from every
                                          // point, put on f = 0 instead
-  int64_t outlier_count = 0;            // isolated points left out of the fits
+  int64_t outlier_count = 0;             // outliers left out of the fits
+  double noise = 0.0;                    // σ of the points about their local
+                                         // planes, model units (outliers.h)
   bool normals_estimated = false;       // the cloud had no normals
   bool normals_flipped = false;         // given normals pointed outward (or were re-oriented)
 };
@@ -101,7 +108,7 @@ struct ReconstructStats {
 struct Reconstruction {
   Mesh mesh;  // closed, manifold; faces oriented with outward normals
   // One per input point: 1 if it is an outlier (see
-  // ReconstructParams::outlier_distance), else 0.
+  // ReconstructParams::outlier_distance and off_surface_distance), else 0.
   std::vector<uint8_t> is_outlier;
   ReconstructStats stats;
 };

@@ -1,5 +1,6 @@
 #include "reconstruct/marching_tetrahedra.h"
 
+#include <algorithm>
 #include <cmath>
 #include <utility>
 
@@ -19,6 +20,9 @@ uint64_t EdgeKey(int a, int b) {
   if (a > b) std::swap(a, b);
   return (static_cast<uint64_t>(a) << 32) | static_cast<uint32_t>(b);
 }
+
+// A surface vertex lies at least this fraction of its tet edge from the ends.
+constexpr double kMinEdgeFraction = 1e-3;
 
 // Returns the zero of f on segment a–b (f(a) = fa and f(b) = fb of opposite
 // signs) by regula falsi with the Illinois modification.
@@ -41,6 +45,9 @@ Eigen::Vector3d ZeroOnSegment(const Eigen::Vector3d& a, const Eigen::Vector3d& b
     }
     t = lo + (hi - lo) * flo / (flo - fhi);
   }
+  // Strictly inside the edge (f may vanish at an end, e.g. where no support
+  // reaches): cut edges sharing that end must not share their vertex.
+  t = std::clamp(t, kMinEdgeFraction, 1.0 - kMinEdgeFraction);
   return a + t * (b - a);
 }
 
@@ -67,7 +74,14 @@ absl::StatusOr<IsoSurface> MarchingTetrahedra(const TetMesh& tets,
       const auto [a, b] = cut[i];
       const bool same_sign = (f[a] >= 0) == (f[b] >= 0);
       if (same_sign) {
-        out.vertices[i] = std::abs(f[a]) <= std::abs(f[b]) ? position[a] : position[b];
+        // The cut crosses an edge f does not change sign on: put the vertex
+        // where |f| would vanish if it did, nearer the end of smaller |f|.
+        // Never on the end itself: the other cut edges of that end would put
+        // their vertices there too, and their triangles would have no area.
+        const double sum = std::abs(f[a]) + std::abs(f[b]);
+        const double t = std::clamp(sum > 0 ? std::abs(f[a]) / sum : 0.5, kMinEdgeFraction,
+                                    1.0 - kMinEdgeFraction);
+        out.vertices[i] = position[a] + t * (position[b] - position[a]);
       } else {
         out.vertices[i] = ZeroOnSegment(position[a], position[b], f[a], f[b], pu);
       }

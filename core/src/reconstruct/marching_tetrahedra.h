@@ -26,7 +26,9 @@ struct IsoSurface {
 
 // Returns the surface of marching tetrahedra on the labels `inside`: one
 // vertex per edge with differently labelled ends, at the zero of f on it when
-// the signs of f at the ends differ, else at the end with the smaller |f|.
+// the signs of f at the ends differ, else at the fraction |f_a| / (|f_a| +
+// |f_b|) from end a (nearer the end of smaller |f|, never on it, so that no
+// triangle collapses).
 // Closed and manifold when no hull vertex is inside. `position`, `f`,
 // `inside` and `sparse` have one entry per tet vertex.
 // Errors: CANCELLED when ctx requests a stop.

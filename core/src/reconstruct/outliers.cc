@@ -1,5 +1,6 @@
 #include "reconstruct/outliers.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <Eigen/Eigenvalues>
@@ -9,50 +10,153 @@
 namespace meshseg::reconstruct_internal {
 namespace {
 
-// cos 60°: a normal farther than this from its neighbours' mean is wrong.
-// Sharp edges (45°) and cube corners (54.7°) stay below it.
+// cos 60°: neighbours' normals within this agree with a point's normal.
 constexpr double kMinCos = 0.5;
+// A normal that fewer neighbours than this agree with is astray.
+constexpr int kMinAgreeing = 2;
+// Median absolute deviation → standard deviation of a Gaussian.
+constexpr double kMadToSigma = 1.4826;
+// Fewer neighbours than this fit no plane; the point is not judged by it.
+constexpr size_t kMinFitPoints = 3;
+
+// How point i sits against the least-squares plane of `neighbors`.
+struct LocalFit {
+  double residual = 0.0;   // distance of point i to the plane
+  double thickness = 0.0;  // RMS distance of the neighbours to it
+  bool astray = false;     // normal i > 60° from all but one neighbour's
+};
+
+LocalFit FitAround(size_t i, const std::vector<uint32_t>& neighbors,
+                   const std::vector<Eigen::Vector3d>& points,
+                   const std::vector<Eigen::Vector3d>& normals) {
+  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+  for (const uint32_t j : neighbors) mean += points[j];
+  mean /= static_cast<double>(neighbors.size());
+  Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
+  for (const uint32_t j : neighbors) cov += (points[j] - mean) * (points[j] - mean).transpose();
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(cov);
+  LocalFit fit;
+  fit.residual = std::abs(eig.eigenvectors().col(0).dot(points[i] - mean));
+  fit.thickness =
+      std::sqrt(std::max(0.0, eig.eigenvalues()(0)) / static_cast<double>(neighbors.size()));
+  // A normal is astray when hardly any neighbour's normal lies within 60° of
+  // it: next to a crease a point's neighbours are mostly on the other face,
+  // and on a thin sheet on the other side, but a few share its own.
+  if (!normals.empty()) {
+    const Eigen::Vector3d n = normals[i].normalized();
+    int agreeing = 0;
+    for (const uint32_t j : neighbors) agreeing += n.dot(normals[j].normalized()) >= kMinCos;
+    fit.astray = agreeing < kMinAgreeing;
+  }
+  return fit;
+}
+
+// The first `k` of `found` that are not `i` and not flagged in `excluded`
+// (nullptr: none is).
+std::vector<uint32_t> FirstOthers(size_t i, const std::vector<uint32_t>& found, size_t k,
+                                  const std::vector<uint8_t>* excluded) {
+  std::vector<uint32_t> out;
+  for (const uint32_t j : found) {
+    if (out.size() == k) break;
+    if (j != i && !(excluded && (*excluded)[j])) out.push_back(j);
+  }
+  return out;
+}
+
+double Median(std::vector<double> values) {
+  if (values.empty()) return 0.0;
+  const auto middle = values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2);
+  std::nth_element(values.begin(), middle, values.end());
+  return *middle;
+}
+
+// True if `p` lies farther from its kept neighbours `nb` than `ratio` times
+// their own spacing: a gap that sampling of their surface does not leave
+// (beyond the edge of a scanned patch, in the plane of the patch).
+bool Detached(const Eigen::Vector3d& p, const std::vector<uint32_t>& nb,
+              const std::vector<Eigen::Vector3d>& points, const std::vector<double>& spreads,
+              double ratio) {
+  constexpr size_t kSpreadNeighbors = 6;  // as MeanNeighborDistances
+  double sum = 0.0;
+  const size_t m = std::min(kSpreadNeighbors, nb.size());
+  std::vector<double> theirs;
+  for (size_t a = 0; a < nb.size(); ++a) {
+    if (a < m) sum += (points[nb[a]] - p).norm();
+    theirs.push_back(spreads[nb[a]]);
+  }
+  return sum / static_cast<double>(m) > ratio * Median(std::move(theirs));
+}
 
 }  // namespace
 
-std::vector<uint8_t> OutlierFlags(const std::vector<Eigen::Vector3d>& points,
-                                  const std::vector<Eigen::Vector3d>& normals,
-                                  const mesh_internal::PointIndex& index,
-                                  const std::vector<double>& spread, int k,
-                                  double isolated_distance, double off_surface_distance) {
-  std::vector<uint8_t> flags(points.size(), 0);
-  tbb::parallel_for(tbb::blocked_range<size_t>(0, points.size()), [&](const auto& range) {
+Outliers FindOutliers(const std::vector<Eigen::Vector3d>& points,
+                      const std::vector<Eigen::Vector3d>& normals,
+                      const mesh_internal::PointIndex& index, const std::vector<double>& spread,
+                      const OutlierTest& test) {
+  const size_t n = points.size();
+  const size_t k = static_cast<size_t>(std::max(test.neighbors, 1));
+  std::vector<LocalFit> fits(n);
+  std::vector<uint8_t> fitted(n, 0);
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, n), [&](const auto& range) {
     std::vector<uint32_t> idx;
     std::vector<double> d2;
     for (size_t i = range.begin(); i != range.end(); ++i) {
-      if (!(spread[i] <= isolated_distance)) {
-        flags[i] = 1;
-        continue;
-      }
-      index.Nearest(points[i], k + 1, &idx, &d2);
-      Eigen::Vector3d mean = Eigen::Vector3d::Zero();
-      Eigen::Vector3d mean_normal = Eigen::Vector3d::Zero();
-      int count = 0;
-      for (const uint32_t j : idx) {
-        if (j == i) continue;
-        mean += points[j];
-        if (!normals.empty()) mean_normal += normals[j].normalized();
-        ++count;
-      }
-      if (count < 3) continue;
-      mean /= count;
-      Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
-      for (const uint32_t j : idx) {
-        if (j != i) cov += (points[j] - mean) * (points[j] - mean).transpose();
-      }
-      const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(cov);
-      const double off = std::abs(eig.eigenvectors().col(0).dot(points[i] - mean));
-      const bool astray = !normals.empty() &&
-                          normals[i].normalized().dot(mean_normal) < kMinCos * mean_normal.norm();
-      flags[i] = off > off_surface_distance || astray ? 1 : 0;
+      index.Nearest(points[i], static_cast<int>(k) + 1, &idx, &d2);
+      const std::vector<uint32_t> nb = FirstOthers(i, idx, k, nullptr);
+      if (nb.size() < kMinFitPoints) continue;
+      fits[i] = FitAround(i, nb, points, normals);
+      fitted[i] = 1;
     }
   });
-  return flags;
+  Outliers out;
+  {
+    std::vector<double> residuals;
+    residuals.reserve(n);
+    for (size_t i = 0; i < n; ++i) {
+      if (fitted[i]) residuals.push_back(fits[i].residual);
+    }
+    out.noise = kMadToSigma * Median(std::move(residuals));
+  }
+  out.band = std::max(test.min_band, test.noise_sigmas * out.noise);
+  const auto condemned = [&](size_t i, const LocalFit& fit) -> uint8_t {
+    const bool sparse = !(spread[i] <= test.sparse_distance);
+    return fit.residual > out.band || (sparse && fit.thickness > out.band) || fit.astray;
+  };
+  std::vector<uint8_t> first(n, 0);
+  for (size_t i = 0; i < n; ++i) first[i] = fitted[i] && condemned(i, fits[i]);
+
+  // Second pass: flagged and sparse points against neighbours the first kept.
+  out.flags = first;
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, n), [&](const auto& range) {
+    std::vector<uint32_t> idx;
+    std::vector<double> d2;
+    for (size_t i = range.begin(); i != range.end(); ++i) {
+      if (!fitted[i] || !(first[i] || !(spread[i] <= test.sparse_distance))) continue;
+      index.Nearest(points[i], 2 * static_cast<int>(k) + 1, &idx, &d2);
+      // Fewer than k kept among the 2k + 1 nearest: it lies among outliers
+      // (and a plane through fewer points says nothing).
+      const std::vector<uint32_t> nb = FirstOthers(i, idx, k, &first);
+      if (nb.size() < std::min(k, idx.size() - 1) || nb.size() < kMinFitPoints) {
+        out.flags[i] = 1;
+        continue;
+      }
+      out.flags[i] = condemned(i, FitAround(i, nb, points, normals)) ||
+                     Detached(points[i], nb, points, spread, test.detached_ratio);
+    }
+  });
+  return out;
+}
+
+Outliers OutliersOfCloud(const std::vector<Eigen::Vector3d>& points,
+                         const std::vector<Eigen::Vector3d>& normals,
+                         const mesh_internal::PointIndex& index, const ReconstructParams& params) {
+  const std::vector<double> spread = MeanNeighborDistances(points, index);
+  const double h = Median(spread);
+  const OutlierTest test{params.normal_neighbors, params.outlier_distance * h,
+                         params.off_surface_distance * h, params.outlier_noise_sigmas};
+  Outliers out = FindOutliers(points, normals, index, spread, test);
+  out.spacing = h;
+  return out;
 }
 
 std::vector<double> MeanNeighborDistances(const std::vector<Eigen::Vector3d>& points,

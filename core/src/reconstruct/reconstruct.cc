@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <utility>
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -80,6 +81,9 @@ absl::Status ValidateParams(const ReconstructParams& p) {
   if (!(p.off_surface_distance > 0)) {
     return bad(absl::StrCat("off_surface_distance ", p.off_surface_distance, " must be > 0"));
   }
+  if (!(p.outlier_noise_sigmas > 0)) {
+    return bad(absl::StrCat("outlier_noise_sigmas ", p.outlier_noise_sigmas, " must be > 0"));
+  }
   return absl::OkStatus();
 }
 
@@ -108,10 +112,12 @@ absl::Status ValidateCloud(const PointCloud& cloud) {
   return absl::OkStatus();
 }
 
-double Median(std::vector<double> values) {
-  auto middle = values.begin() + values.size() / 2;
-  std::nth_element(values.begin(), middle, values.end());
-  return *middle;
+// The error for points that enclose no volume the octree resolves.
+absl::Status ThinSolidError(const std::string& name, const std::string& what, double cell) {
+  return absl::InvalidArgumentError(
+      absl::StrCat(kStage, ": \"", name, "\": ", what,
+                   " supports; the points enclose no volume at least two octree leaf cells (", cell,
+                   " model units) thick; a thinner solid needs a smaller leaf_cell_size"));
 }
 
 // Evaluates f at every point of `at`, in parallel.
@@ -132,13 +138,12 @@ absl::StatusOr<Reconstruction> Reconstruct(const PointCloud& cloud, const Recons
   Reconstruction out;
   ReconstructStats& stats = out.stats;
   {
+    ctx.Progress("reconstruct: outliers", 0.0);
     const mesh_internal::PointIndex all_index(cloud.points);
-    const std::vector<double> spread = MeanNeighborDistances(cloud.points, all_index);
-    stats.point_spacing = Median(spread);
-    out.is_outlier =
-        OutlierFlags(cloud.points, cloud.normals, all_index, spread, params.normal_neighbors,
-                     params.outlier_distance * stats.point_spacing,
-                     params.off_surface_distance * stats.point_spacing);
+    Outliers outliers = OutliersOfCloud(cloud.points, cloud.normals, all_index, params);
+    stats.point_spacing = outliers.spacing;
+    stats.noise = outliers.noise;
+    out.is_outlier = std::move(outliers.flags);
   }
   const double h = stats.point_spacing;
   // Outliers take no part in the fits.
@@ -165,6 +170,7 @@ absl::StatusOr<Reconstruction> Reconstruct(const PointCloud& cloud, const Recons
   ctx.Progress(kStage, 0.05);
 
   // Step 1: inward normals.
+  ctx.Progress("reconstruct: normals", 0.0);
   MESHSEG_ASSIGN_OR_RETURN(
       const OrientedNormals normals,
       InwardNormals(points, given_normals, index, params.normal_neighbors, ctx));
@@ -175,6 +181,7 @@ absl::StatusOr<Reconstruction> Reconstruct(const PointCloud& cloud, const Recons
   // Step 2: octree, covering and the partition-of-unity implicit f.
   const double cube = extent * (1.0 + 2.0 * kCubeMargin);
   const Eigen::Vector3d origin = 0.5 * (lo + hi) - Eigen::Vector3d::Constant(0.5 * cube);
+  ctx.Progress("reconstruct: octree", 0.0);
   stats.octree_max_level = params.octree_max_level.value_or(
       std::clamp(static_cast<int>(std::ceil(std::log2(cube / (params.leaf_cell_size * h)))),
                  kMinDerivedLevel, kMaxDerivedLevel));
@@ -190,6 +197,12 @@ absl::StatusOr<Reconstruction> Reconstruct(const PointCloud& cloud, const Recons
   ctx.Progress(kStage, 0.4);
 
   // Step 3: regular tetrahedralization of the support centres.
+  ctx.Progress("reconstruct: tetrahedra", 0.0);
+  if (supports.size() < 4) {
+    // Linear fits within ε over the whole cloud: it is (nearly) flat.
+    return ThinSolidError(cloud.name, absl::StrCat("the covering has only ", supports.size()),
+                          cube / (1 << stats.octree_max_level));
+  }
   MESHSEG_ASSIGN_OR_RETURN(const TetMesh tets, RegularTetrahedralization(supports, ctx));
   stats.tet_vertex_count = static_cast<int64_t>(tets.support.size());
   stats.tet_count = static_cast<int64_t>(tets.tets.size());
@@ -205,6 +218,7 @@ absl::StatusOr<Reconstruction> Reconstruct(const PointCloud& cloud, const Recons
   ctx.Progress(kStage, 0.6);
 
   // Step 4: inside/outside labels.
+  ctx.Progress("reconstruct: labels", 0.0);
   const std::vector<uint8_t> by_sign = SignLabels(tets, f_at);
   std::vector<uint8_t> inside = by_sign;
   if (params.use_graph_cut) {
@@ -214,14 +228,13 @@ absl::StatusOr<Reconstruction> Reconstruct(const PointCloud& cloud, const Recons
   ctx.Progress(kStage, 0.75);
 
   // Steps 5-6: marching tetrahedra and selective smoothing.
+  ctx.Progress("reconstruct: surface", 0.0);
   MESHSEG_ASSIGN_OR_RETURN(IsoSurface surface,
                            MarchingTetrahedra(tets, position, f_at, inside, sparse, f, ctx));
   if (surface.triangles.empty()) {
-    return absl::InvalidArgumentError(absl::StrCat(
-        kStage, ": \"", cloud.name, "\": no inside region found among ", tets.support.size(),
-        " supports; the points enclose no volume at least two octree leaf cells (",
-        cube / (1 << stats.octree_max_level),
-        " model units) thick; a thinner solid needs a smaller leaf_cell_size"));
+    return ThinSolidError(cloud.name,
+                          absl::StrCat("no inside region found among ", tets.support.size()),
+                          cube / (1 << stats.octree_max_level));
   }
   stats.dropped_component_count = DropSmallComponents(params.min_component_fraction, &surface);
   for (const uint8_t s : surface.to_smooth) stats.smoothed_vertex_count += s;

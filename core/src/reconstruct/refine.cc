@@ -48,6 +48,17 @@ absl::StatusOr<Mesh> RefineOnPoints(const Mesh& mesh, const std::vector<Eigen::V
   remesh.small_radius_edges = 0.0;   // a staircase, not facets of a CAD surface
   MESHSEG_ASSIGN_OR_RETURN(Mesh fine,
                            IsotropicRemesh(mesh, stats->refine_edge_length, remesh, ctx));
+  // The remesher may collapse across a sheet thinner than its edges and
+  // pinch it; the mesh builder then drops the faces it cannot hold. The
+  // refinement must keep the closed 2-manifold, so then the marching-
+  // tetrahedra mesh stays.
+  for (const auto e : fine.tri.edges()) {
+    if (fine.tri.is_boundary(e)) {
+      stats->refine_edge_length = 0.0;
+      return mesh;
+    }
+  }
+  ctx.Progress("reconstruct: projection", 0.0);
   const double radius = params.projection_radius * h;
   const std::vector<int> left =
       ProjectToPoints(points, index, radius, kProjectionIterations, &fine.tri);

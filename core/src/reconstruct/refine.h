@@ -45,8 +45,9 @@ inline constexpr double kMinGradient = 1e-3;
 // Returns `mesh` remeshed and projected onto `points` (the non-outliers,
 // indexed by `index`) with point spacing `h`, or onto the zero set of `f`
 // far from them, per the refine_* parameters of `params`; sets
-// stats->refine_edge_length and unsupported_vertex_count. Errors: those of
-// IsotropicRemesh.
+// stats->refine_edge_length and unsupported_vertex_count. Returns `mesh`
+// itself (refine_edge_length 0) when the remeshed mesh is not closed (the
+// remesher pinched a thin sheet). Errors: those of IsotropicRemesh.
 absl::StatusOr<Mesh> RefineOnPoints(const Mesh& mesh, const std::vector<Eigen::Vector3d>& points,
                                     const mesh_internal::PointIndex& index, const PuFunction& f,
                                     double h, const ReconstructParams& params,

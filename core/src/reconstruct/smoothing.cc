@@ -87,6 +87,7 @@ void SmoothSelected(const std::vector<std::array<int, 3>>& triangles,
   const Neighbors nb = VertexNeighbors(triangles, vertices->size());
   const double min_length =
       std::max(kMinLengthInMeanEdges * MeanEdgeLength(triangles, *vertices), 1e-300);
+  const std::vector<Eigen::Vector3d> start = *vertices;
   std::vector<Eigen::Vector3d> next(moving.size());
   for (int step = 0; step < 2 * iterations; ++step) {
     const double l = step % 2 == 0 ? lambda : -lambda;
@@ -97,6 +98,17 @@ void SmoothSelected(const std::vector<std::array<int, 3>>& triangles,
       }
     });
     for (size_t i = 0; i < moving.size(); ++i) (*vertices)[moving[i]] = next[i];
+  }
+  // A +λ step with λ × (the umbrella operator's eigenvalue) = 1 cancels a
+  // mode exactly: two adjacent vertices with the same other neighbours (a
+  // fin of the marching-tetrahedra surface) end on the same point and their
+  // triangles lose all area. Such triangles' vertices go back to where
+  // marching tetrahedra put them.
+  const double tiny = 1e-12 * min_length * min_length;
+  for (const auto& t : triangles) {
+    const Eigen::Vector3d& a = (*vertices)[t[0]];
+    if (((*vertices)[t[1]] - a).cross((*vertices)[t[2]] - a).norm() > tiny) continue;
+    for (const int v : t) (*vertices)[v] = start[v];
   }
 }
 
