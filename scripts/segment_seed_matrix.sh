@@ -7,7 +7,7 @@
 #
 # usage: scripts/segment_seed_matrix.sh [BUILD_DIR] [SEEDS...]
 #   default: build 1 2 3 4 5 6 7 8 9 10 11
-#   SEGMENT_TEST_BINARY=path runs that binary instead of BUILD_DIR/bin/segment_test.
+#   SEGMENT_TEST_BINARY=path runs that binary instead of BUILD_DIR/bin/core_segment_tests.
 #   JOBS=n runs n seeds at a time (default: the number of cores).
 #   MESHSEG_VOXEL_SCALE=x runs every part at x times its voxel size (finer
 #   below 1; the parameter bounds are in voxels, so they scale with it).
@@ -21,7 +21,7 @@ build=${1:-build}
 shift || true
 seeds=("$@")
 [[ ${#seeds[@]} -gt 0 ]] || seeds=(1 2 3 4 5 6 7 8 9 10 11)
-binary="${SEGMENT_TEST_BINARY:-$build/bin/segment_test}"
+binary="${SEGMENT_TEST_BINARY:-$build/bin/core_segment_tests}"
 [[ -x $binary ]] || { echo "segment_seed_matrix: no $binary; build first" >&2; exit 1; }
 jobs=${JOBS:-$(nproc)}
 [[ $jobs =~ ^[1-9][0-9]*$ ]] || { echo "segment_seed_matrix: JOBS must be a positive integer, got '$jobs'" >&2; exit 1; }

@@ -12,6 +12,15 @@ void ReturnFreeHeap() {
 #endif
 }
 
+bool MapLargeBlocks(int64_t threshold_bytes) {
+#if defined(__GLIBC__)
+  // Setting it disables glibc's dynamic threshold (and its trim threshold's).
+  return mallopt(M_MMAP_THRESHOLD, static_cast<int>(threshold_bytes)) == 1;
+#else
+  return false;
+#endif
+}
+
 std::optional<HeapUsage> ReadHeapUsage() {
 #if defined(__GLIBC__) && (__GLIBC__ > 2 || __GLIBC_MINOR__ >= 33)
   const struct mallinfo2 info = mallinfo2();

@@ -22,6 +22,19 @@
 
 namespace meshseg::server {
 
+// Gives every block of at least `threshold_bytes` a mapping of its own, unmapped
+// when the block is freed, for the rest of the process. glibc does that from
+// 128 KiB by default, but raises the threshold to the largest such block freed
+// so far, so after a few jobs a job's large buffers (meshes, graphs, uploads,
+// results) come from the arenas, where small blocks allocated between them
+// keep their pages resident and only ReturnFreeHeap, run by a worker after a
+// job, gives the rest back (buffers a gRPC thread frees after it, e.g. a
+// result just sent, wait for the next job's). With a fixed threshold the
+// arenas hold only small blocks, and freeing a large buffer returns it at
+// once, from any thread. Cost: a system call and fresh zeroed pages per large
+// block. Call once, at startup; returns false where the C library cannot.
+bool MapLargeBlocks(int64_t threshold_bytes = int64_t{1} << 20);
+
 // Returns the heap's whole free pages to the system. Takes each arena's lock
 // in turn (milliseconds for a few hundred MiB of heap); call it between jobs,
 // not per allocation. A no-op on C libraries without malloc_trim.

@@ -48,33 +48,23 @@ LocalJobStore::Recovery LocalJobStore::Recover(absl::Time cutoff) {
       }
       out.requeue.push_back(job.job_id());
     }
-    const std::string id = job.job_id();
-    jobs_[id] = std::move(record);
+    records_.Put(record);
   }
   job_changes_.BumpAll();
   changes_.Bump();
   return out;
 }
 
-std::optional<std::string> LocalJobStore::FindRequestLocked(const std::string& tenant,
-                                                            const std::string& request_id) const {
-  if (request_id.empty()) return std::nullopt;
-  for (const auto& [id, record] : jobs_) {
-    if (record.job().request_id() == request_id && record.job().tenant() == tenant) return id;
-  }
-  return std::nullopt;
-}
-
 absl::StatusOr<std::optional<std::string>> LocalJobStore::FindRequest(
     const std::string& tenant, const std::string& request_id) const {
   absl::ReaderMutexLock lock(&mu_);
-  return FindRequestLocked(tenant, request_id);
+  return records_.FindRequest(tenant, request_id);
 }
 
 absl::StatusOr<std::string> LocalJobStore::Create(JobRecord record) {
   absl::MutexLock lock(&mu_);
   if (std::optional<std::string> existing =
-          FindRequestLocked(record.job().tenant(), record.job().request_id())) {
+          records_.FindRequest(record.job().tenant(), record.job().request_id())) {
     return *existing;
   }
   record.set_format_version(kRecordFormat);
@@ -82,14 +72,14 @@ absl::StatusOr<std::string> LocalJobStore::Create(JobRecord record) {
   record.mutable_job()->set_state(v1::JOB_STATE_QUEUED);
   if (absl::Status s = spool_.WriteRecord(record); !s.ok()) return s;
   const std::string id = record.job().job_id();
-  jobs_[id] = std::move(record);
+  records_.Put(record);
   Changed(id, /*queue_moved=*/false);
   return id;
 }
 
 void LocalJobStore::Remove(const std::string& id) {
   absl::MutexLock lock(&mu_);
-  jobs_.erase(id);
+  records_.Erase(id);
   spool_.RemoveJob(id);
   Changed(id, /*queue_moved=*/true);
 }
@@ -102,16 +92,17 @@ v1::Job LocalJobStore::View(const JobRecord& record) const {
 
 absl::StatusOr<v1::Job> LocalJobStore::Get(const std::string& id) const {
   absl::ReaderMutexLock lock(&mu_);
-  const auto it = jobs_.find(id);
-  if (it == jobs_.end()) return JobNotFound(id);
-  return View(it->second);
+  const std::optional<JobRecord> record = records_.Get(id);
+  if (!record) return JobNotFound(id);
+  return View(*record);
 }
 
 absl::StatusOr<std::vector<v1::Job>> LocalJobStore::List() const {
   std::vector<std::pair<int64_t, v1::Job>> jobs;
   {
     absl::ReaderMutexLock lock(&mu_);
-    for (const auto& [id, record] : jobs_) jobs.emplace_back(record.sequence(), View(record));
+    records_.ForEach(
+        [&](const JobRecord& record) { jobs.emplace_back(record.sequence(), View(record)); });
   }
   std::sort(jobs.begin(), jobs.end(),
             [](const auto& a, const auto& b) { return a.first < b.first; });
@@ -122,9 +113,9 @@ absl::StatusOr<std::vector<v1::Job>> LocalJobStore::List() const {
 
 absl::StatusOr<JobStore::Started> LocalJobStore::Start(const std::string& id, int max_attempts) {
   absl::MutexLock lock(&mu_);
-  const auto it = jobs_.find(id);
-  if (it == jobs_.end()) return Started{};
-  JobRecord& record = it->second;
+  std::optional<JobRecord> found = records_.Get(id);
+  if (!found) return Started{};
+  JobRecord& record = *found;
   v1::Job& job = *record.mutable_job();
   if (job.state() != v1::JOB_STATE_QUEUED && job.state() != v1::JOB_STATE_RUNNING) {
     return Started{};
@@ -143,6 +134,7 @@ absl::StatusOr<JobStore::Started> LocalJobStore::Start(const std::string& id, in
     out.outcome = StartOutcome::kRun;
     out.spec = RunSpec{record, running_.Add(id)};
   }
+  records_.Put(record);
   // Durable before the job runs: a crash during the run counts this attempt.
   Persist(record);
   Changed(id, /*queue_moved=*/true);
@@ -151,26 +143,27 @@ absl::StatusOr<JobStore::Started> LocalJobStore::Start(const std::string& id, in
 
 void LocalJobStore::Progress(const std::string& id, std::string_view stage, double fraction) {
   absl::MutexLock lock(&mu_);
-  const auto it = jobs_.find(id);
-  if (it == jobs_.end() || it->second.job().state() != v1::JOB_STATE_RUNNING) return;
-  v1::Job& job = *it->second.mutable_job();
+  std::optional<JobRecord> record = RunningRecord(id);
+  if (!record) return;
+  v1::Job& job = *record->mutable_job();
   job.set_stage(std::string(stage));
   job.set_fraction(std::clamp(fraction, 0.0, 1.0));
+  records_.Put(*record);
   Changed(id, /*queue_moved=*/false);
 }
 
-JobRecord* LocalJobStore::RunningRecord(const std::string& id) {
-  const auto it = jobs_.find(id);
-  if (it == jobs_.end() || it->second.job().state() != v1::JOB_STATE_RUNNING) return nullptr;
-  return &it->second;
+std::optional<JobRecord> LocalJobStore::RunningRecord(const std::string& id) const {
+  std::optional<JobRecord> record = records_.Get(id);
+  if (!record || record->job().state() != v1::JOB_STATE_RUNNING) return std::nullopt;
+  return record;
 }
 
 absl::Status LocalJobStore::Finish(const std::string& id, const absl::Status& status,
                                    const JobOutput& output) {
   running_.Erase(id);
   absl::MutexLock lock(&mu_);
-  JobRecord* record = RunningRecord(id);
-  if (record == nullptr) return absl::OkStatus();
+  std::optional<JobRecord> record = RunningRecord(id);
+  if (!record) return absl::OkStatus();
   v1::Job& job = *record->mutable_job();
   job.set_state(TerminalState(status));
   job.set_finished_unix_ms(NowUnixMs());
@@ -184,6 +177,7 @@ absl::Status LocalJobStore::Finish(const std::string& id, const absl::Status& st
   } else {
     SetJobError(status, &job);
   }
+  records_.Put(*record);
   Persist(*record);
   Changed(id, /*queue_moved=*/false);
   return absl::OkStatus();
@@ -192,14 +186,15 @@ absl::Status LocalJobStore::Finish(const std::string& id, const absl::Status& st
 absl::Status LocalJobStore::Release(const std::string& id) {
   running_.Erase(id);
   absl::MutexLock lock(&mu_);
-  JobRecord* record = RunningRecord(id);
-  if (record == nullptr) return absl::OkStatus();
+  std::optional<JobRecord> record = RunningRecord(id);
+  if (!record) return absl::OkStatus();
   v1::Job& job = *record->mutable_job();
   job.set_state(v1::JOB_STATE_QUEUED);
   job.set_attempts(std::max(0, job.attempts() - 1));
   job.clear_stage();
   job.clear_fraction();
   job.clear_started_unix_ms();
+  records_.Put(*record);
   Persist(*record);
   Changed(id, /*queue_moved=*/true);
   return absl::OkStatus();
@@ -208,9 +203,9 @@ absl::Status LocalJobStore::Release(const std::string& id) {
 absl::StatusOr<JobStore::CancelOutcome> LocalJobStore::Cancel(const std::string& id,
                                                               std::string_view reason) {
   absl::MutexLock lock(&mu_);
-  const auto it = jobs_.find(id);
-  if (it == jobs_.end()) return JobNotFound(id);
-  v1::Job& job = *it->second.mutable_job();
+  std::optional<JobRecord> record = records_.Get(id);
+  if (!record) return JobNotFound(id);
+  v1::Job& job = *record->mutable_job();
   if (IsTerminal(job.state())) {
     return absl::FailedPreconditionError(
         absl::StrCat("job \"", id, "\" already finished (", v1::JobState_Name(job.state()), ")"));
@@ -222,24 +217,18 @@ absl::StatusOr<JobStore::CancelOutcome> LocalJobStore::Cancel(const std::string&
   job.set_state(v1::JOB_STATE_CANCELLED);
   job.set_finished_unix_ms(NowUnixMs());
   SetJobError(absl::CancelledError(std::string(reason)), &job);
-  Persist(it->second);
+  records_.Put(*record);
+  Persist(*record);
   Changed(id, /*queue_moved=*/true);
   return CancelOutcome::kWasQueued;
 }
 
 std::vector<std::string> LocalJobStore::Expire(absl::Time cutoff) {
-  const int64_t cutoff_ms = absl::ToUnixMillis(cutoff);
-  std::vector<std::string> expired;
   absl::MutexLock lock(&mu_);
-  for (auto it = jobs_.begin(); it != jobs_.end();) {
-    const v1::Job& job = it->second.job();
-    if (IsTerminal(job.state()) && job.finished_unix_ms() < cutoff_ms) {
-      expired.push_back(it->first);
-      spool_.RemoveJob(it->first);
-      it = jobs_.erase(it);
-    } else {
-      ++it;
-    }
+  std::vector<std::string> expired = records_.FinishedBefore(absl::ToUnixMillis(cutoff));
+  for (const std::string& id : expired) {
+    spool_.RemoveJob(id);
+    records_.Erase(id);
   }
   for (const std::string& id : expired) job_changes_.Bump(id);
   if (!expired.empty()) changes_.Bump();

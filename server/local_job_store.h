@@ -1,17 +1,17 @@
 // File: local_job_store.h
 // -----------------------------------------------------------------------------
-// The embedded mode's JobStore: every job in memory, and its record written
-// to the spool on every state change (not on progress), so Recover() after a
-// crash or a restart finds every accepted job again.
+// The embedded mode's JobStore: every job in memory (its record on a
+// RecordShelf, apart from the jobs' working memory, for the result TTL), and
+// its record written to the spool on every state change (not on progress), so
+// Recover() after a crash or a restart finds every accepted job again.
 #ifndef MESHSEG_SERVER_LOCAL_JOB_STORE_H_
 #define MESHSEG_SERVER_LOCAL_JOB_STORE_H_
-
-#include <map>
 
 #include "absl/synchronization/mutex.h"
 #include "server/change_counter.h"
 #include "server/job_queue.h"
 #include "server/job_store.h"
+#include "server/record_shelf.h"
 #include "server/spool.h"
 
 namespace meshseg::server {
@@ -54,8 +54,9 @@ class LocalJobStore final : public JobStore {
   // Writes `record` to the spool; a failure is logged (the job goes on in
   // memory, and the next state change writes it again).
   void Persist(const JobRecord& record) const;
-  // The record of `id` if it is RUNNING, else nullptr.
-  JobRecord* RunningRecord(const std::string& id) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
+  // The record of `id` if it is RUNNING, else nullopt.
+  std::optional<JobRecord> RunningRecord(const std::string& id) const
+      ABSL_SHARED_LOCKS_REQUIRED(mu_);
   // `id` changed; `queue_moved`: a job entered or left the queue's front
   // part, so queued jobs' positions changed.
   void Changed(const std::string& id, bool queue_moved) {
@@ -63,15 +64,10 @@ class LocalJobStore final : public JobStore {
     job_changes_.Bump(id);
     if (queue_moved) job_changes_.BumpQueued();
   }
-  // The id of the job of `tenant` created with `request_id`, or nullopt.
-  std::optional<std::string> FindRequestLocked(const std::string& tenant,
-                                               const std::string& request_id) const
-      ABSL_SHARED_LOCKS_REQUIRED(mu_);
-
   const JobQueue& queue_;
   const Spool& spool_;
   mutable absl::Mutex mu_;
-  std::map<std::string, JobRecord> jobs_ ABSL_GUARDED_BY(mu_);
+  RecordShelf records_ ABSL_GUARDED_BY(mu_);
   ChangeCounter changes_;
   int64_t next_sequence_ ABSL_GUARDED_BY(mu_) = 1;
 };

@@ -14,6 +14,7 @@
 #include "absl/flags/usage.h"
 #include "absl/flags/usage_config.h"
 #include "absl/strings/str_cat.h"
+#include "server/heap.h"
 #include "server/log.h"
 #include "server/server.h"
 #include "server/usage.h"
@@ -116,6 +117,8 @@ int main(int argc, char** argv) {
     return 1;
   }
   meshseg::server::SetLogFormat(*log_format);
+  // A job's large buffers go back to the system when freed (server/heap.h).
+  meshseg::server::MapLargeBlocks();
 
   // Block the shutdown signals in every thread; this one waits for them.
   sigset_t signals;

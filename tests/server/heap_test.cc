@@ -61,5 +61,31 @@ TEST(Heap, ReturnFreeHeapGivesFreedPagesBackToTheSystem) {
   EXPECT_EQ(blocks.size(), 1u);
 }
 
+// With large blocks mapped on their own, a large buffer freed below a block
+// still in use goes back to the system at once, without ReturnFreeHeap, even
+// after a larger block was freed (which would raise glibc's own threshold).
+TEST(Heap, MapLargeBlocksReturnsAFreedLargeBufferAtOnce) {
+  if (!MapLargeBlocks()) GTEST_SKIP() << "no mallopt in this C library";
+  {
+    // Freed, this mapped 16 MiB block would raise glibc's dynamic threshold to
+    // 16 MiB (and put the 2 MiB buffers below in the arena).
+    std::unique_ptr<char[]> large(new char[16 * kMiB]);
+    char* volatile escaped = large.get();  // the allocation cannot be elided
+    escaped[0] = 1;
+  }
+  std::vector<std::unique_ptr<char[]>> buffers;
+  for (int i = 0; i < 16; ++i) {
+    buffers.emplace_back(new char[2 * kMiB]);
+    for (int64_t b = 0; b < 2 * kMiB; b += 512) buffers.back()[b] = static_cast<char>(b);
+  }
+  auto small = Blocks(1);  // allocated after the buffers: an arena could not shrink under it
+  const int64_t held = ResidentBytes();
+  buffers.clear();
+  const int64_t after = ResidentBytes();
+  EXPECT_GE(held - after, 28 * kMiB)
+      << "resident " << held / kMiB << " MiB before the free, " << after / kMiB << " MiB after";
+  EXPECT_EQ(small.size(), 1u);
+}
+
 }  // namespace
 }  // namespace meshseg::server

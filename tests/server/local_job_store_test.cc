@@ -7,6 +7,7 @@
 #include <filesystem>
 
 #include "scratch_dir.h"
+#include "server/heap.h"
 #include "server/in_memory_job_queue.h"
 
 namespace meshseg::server {
@@ -194,6 +195,39 @@ TEST_F(LocalJobStoreTest, ReleaseRequeuesWithoutCountingTheAttempt) {
   EXPECT_EQ(store_->Get(id)->state(), v1::JOB_STATE_QUEUED);
   EXPECT_EQ(store_->Get(id)->attempts(), 0);
   EXPECT_EQ(Reopen().requeue, std::vector<std::string>{id});
+}
+
+// A finished job's record is kept for the result TTL, but not in malloc's
+// heap, where each record would sit between the job buffers of the threads
+// that changed it and keep their pages resident after the buffers are freed.
+TEST_F(LocalJobStoreTest, FinishedJobsKeepNothingInMallocsHeap) {
+  constexpr int kJobs = 24;
+  std::vector<std::string> ids;
+  for (int i = 0; i < kJobs; ++i) ids.push_back(NewRecord().job().job_id());
+  const std::optional<HeapUsage> before = ReadHeapUsage();
+  if (!before) GTEST_SKIP() << "no mallinfo2 on this C library";
+  for (const std::string& id : ids) {
+    JobRecord record = NewRecord();
+    record.mutable_job()->set_job_id(id);
+    record.set_upload_key(UploadKey(id, "part.stl"));
+    ASSERT_TRUE(store_->Create(record).ok());
+    ASSERT_EQ(store_->Start(id, 3)->outcome, JobStore::StartOutcome::kRun);
+    store_->Progress(id, "segment", 0.5);
+    const JobOutput output{.result_size = 4242,
+                           .result_sha256 = std::string(64, 'f'),
+                           .face_count = 1200,
+                           .region_count = 7};
+    ASSERT_TRUE(store_->Finish(id, absl::OkStatus(), output).ok());
+  }
+  const HeapUsage after = *ReadHeapUsage();
+  // In the heap, 24 records of ~1 KB (the record's message and its strings)
+  // would add ~24 KiB.
+  EXPECT_LT(after.in_use_bytes - before->in_use_bytes, 8 << 10)
+      << "heap in use grew by " << after.in_use_bytes - before->in_use_bytes << " bytes";
+  const v1::Job last = *store_->Get(ids.back());
+  EXPECT_EQ(last.state(), v1::JOB_STATE_SUCCEEDED);
+  EXPECT_EQ(last.result_sha256(), std::string(64, 'f'));
+  EXPECT_EQ(store_->List()->size(), static_cast<size_t>(kJobs));
 }
 
 }  // namespace
