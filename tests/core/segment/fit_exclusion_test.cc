@@ -228,7 +228,9 @@ TEST(FitExclusionTest, NeverExcludesPointsWithinTauOfOneNappeOrACylinder) {
     const AxialExclusion proof = ExcludeAxial(
         OnOneNappe(apex, axis, half_angle, rho0, rho1, fan, rims_only, tau, &rng), tau);
     EXPECT_FALSE(proof.cone) << "trial " << trial;
-    if (half_angle == 0.0) EXPECT_FALSE(proof.cylinder) << "trial " << trial;
+    if (half_angle == 0.0) {
+      EXPECT_FALSE(proof.cylinder) << "trial " << trial;
+    }
   }
 }
 
