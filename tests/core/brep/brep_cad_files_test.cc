@@ -7,7 +7,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <limits>
+#include <numeric>
 #include <optional>
 #include <string>
 #include <vector>
@@ -23,7 +25,10 @@
 #include <Bnd_Box.hxx>
 #include <Geom_Surface.hxx>
 #include <ShapeAnalysis_Surface.hxx>
+#include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
+#include <TopTools_IndexedDataMapOfShapeListOfShape.hxx>
+#include <TopTools_IndexedMapOfShape.hxx>
 #include <TopoDS.hxx>
 
 namespace meshseg {
@@ -58,7 +63,7 @@ struct Exported {
   testing::ShapeFacts facts;
   PipelineResult result;
 };
-std::optional<Exported> Export(const std::string& file) {
+std::optional<Exported> Export(const std::string& file, int solids = 1) {
   std::string name = file.substr(file.find_last_of('/') + 1);
   const std::string path = testing_files::ScratchPath(name + ".step");
   PipelineParams params;
@@ -77,28 +82,90 @@ std::optional<Exported> Export(const std::string& file) {
   Exported out{result->brep->patch_count, *std::move(model), {}, *std::move(result)};
   out.facts = testing::FactsOf(out.model.shape);
   EXPECT_TRUE(out.facts.valid);
-  EXPECT_EQ(out.facts.solids, 1);
+  EXPECT_EQ(out.facts.solids, solids);
   EXPECT_EQ(out.facts.free_edges, 0);
   return out;
 }
 
+// The original STEP file beside a tessellation (its extension in either case).
+std::string OriginalStep(const std::string& stem) {
+  const std::string lower = testing::SharedData("cad/" + stem + ".step");
+  return std::filesystem::exists(lower) ? lower : testing::SharedData("cad/" + stem + ".STEP");
+}
+
+// The unit to read an original in: its numbers as they stand ("M": no
+// scaling) where shared/data/cad/SOURCES.md says the file declares metres but
+// holds millimetre values, as the tessellations do; otherwise millimetres.
+std::string OriginalUnit(const std::string& stem) {
+  for (const char* mislabelled : {"whjdark_AAGNet__partA", "whjdark_AAGNet__partB"}) {
+    if (stem == mislabelled) return "M";
+  }
+  return "";
+}
+
+// Faces of `shape` once faces that share an edge and lie on one surface are
+// merged (a CAD system splits a full cylinder at seams into two half faces; a
+// segmentation sees one surface): two adjacent faces are on one surface when
+// every sample of each lies within `bound` of the other's surface.
+int FacesOnDistinctSurfaces(const TopoDS_Shape& shape, double spacing, double bound) {
+  TopTools_IndexedMapOfShape faces;
+  for (TopExp_Explorer it(shape, TopAbs_FACE); it.More(); it.Next()) faces.Add(it.Current());
+  const testing::FaceSamples samples = testing::SampleFaces(shape, spacing);
+  const std::vector<Handle(ShapeAnalysis_Surface)> surfaces = SurfacesOf(shape);
+  std::vector<std::vector<gp_Pnt>> points_of(faces.Extent());
+  for (size_t i = 0; i < samples.points.size(); ++i) {
+    const Eigen::Vector3d& p = samples.points[i];
+    points_of[samples.face[i]].emplace_back(p.x(), p.y(), p.z());
+  }
+  const auto on_surface = [&](int face, int surface) {
+    for (const gp_Pnt& p : points_of[face]) {
+      surfaces[surface]->ValueOfUV(p, 0.1 * bound);
+      if (surfaces[surface]->Gap() > bound) return false;
+    }
+    return true;
+  };
+  std::vector<int> group(faces.Extent());
+  std::iota(group.begin(), group.end(), 0);
+  const auto root = [&](int f) {
+    while (group[f] != f) f = group[f] = group[group[f]];
+    return f;
+  };
+  TopTools_IndexedDataMapOfShapeListOfShape faces_of_edge;
+  TopExp::MapShapesAndAncestors(shape, TopAbs_EDGE, TopAbs_FACE, faces_of_edge);
+  int count = faces.Extent();
+  for (int e = 1; e <= faces_of_edge.Extent(); ++e) {
+    const TopTools_ListOfShape& around = faces_of_edge(e);
+    if (around.Extent() != 2) continue;
+    const int a = faces.FindIndex(around.First()) - 1, b = faces.FindIndex(around.Last()) - 1;
+    if (a < 0 || b < 0 || root(a) == root(b)) continue;
+    if (on_surface(a, b) && on_surface(b, a)) {
+      group[root(a)] = root(b);
+      --count;
+    }
+  }
+  return count;
+}
+
 TEST_P(StepOfCadFile, MatchesTheOriginalBrep) {
-  const std::optional<Exported> exported = Export("cad/" + GetParam() + ".obj");
+  absl::StatusOr<testing::StepModel> original =
+      testing::ReadStep(OriginalStep(GetParam()), OriginalUnit(GetParam()));
+  ASSERT_TRUE(original.ok()) << original.status();
+  const testing::ShapeFacts truth = testing::FactsOf(original->shape);
+  ASSERT_GE(truth.solids, 1);
+  // One solid per body of the original (a part may be several bodies).
+  const std::optional<Exported> exported = Export("cad/" + GetParam() + ".obj", truth.solids);
   ASSERT_TRUE(exported.has_value());
   const testing::StepModel& ours = exported->model;
   const testing::ShapeFacts& facts = exported->facts;
-  absl::StatusOr<testing::StepModel> original =
-      testing::ReadStep(testing::SharedData("cad/" + GetParam() + ".step"));
-  ASSERT_TRUE(original.ok()) << original.status();
-  const testing::ShapeFacts truth = testing::FactsOf(original->shape);
-  ASSERT_EQ(truth.solids, 1);
-  EXPECT_EQ(facts.faces, truth.faces);
   EXPECT_NEAR(facts.volume, truth.volume, kVolumeTolerance * truth.volume);
+  const double diagonal = Diagonal(original->shape);
+  const double bound = kSurfaceTolerance * diagonal;
+  // The issue allows faces on one surface to be merged (and says so).
+  EXPECT_EQ(facts.faces, FacesOnDistinctSurfaces(original->shape, kSampleSpacing * diagonal, bound))
+      << "the original has " << truth.faces << " faces";
 
   // Each of our faces against the original face whose surface it is nearest
   // to over all its samples: its farthest sample from that surface.
-  const double diagonal = Diagonal(original->shape);
-  const double bound = kSurfaceTolerance * diagonal;
   const testing::FaceSamples samples = testing::SampleFaces(ours.shape, kSampleSpacing * diagonal);
   EXPECT_EQ(samples.untessellated_faces, 0);
   const std::vector<Handle(ShapeAnalysis_Surface)> surfaces = SurfacesOf(original->shape);
@@ -124,9 +191,15 @@ TEST_P(StepOfCadFile, MatchesTheOriginalBrep) {
   }
 }
 
-// MFCAD parts where segmentation finds every face of the original.
-INSTANTIATE_TEST_SUITE_P(Cad, StepOfCadFile, ::testing::Values("hducg_MFCAD__1-5-7-10-14-23"),
-                         testing::FileTestName);
+// Every gmsh tessellation in shared/data/cad whose original STEP file is there.
+INSTANTIATE_TEST_SUITE_P(
+    Cad, StepOfCadFile,
+    ::testing::Values("hducg_MFCAD__1-5-7-10-14-23", "hducg_MFCAD__3-7-11-13-14-23",
+                      "hducg_MFCAD__7-10-11-11-14-23", "whjdark_AAGNet__partA",
+                      "whjdark_AAGNet__partB", "whjdark_AAGNet__partC", "whjdark_AAGNet__test",
+                      "mikedh_trimesh__base_interface_AP214",
+                      "deep-geometry_abc-dataset__00000050_80d90bfdd2e74e709956122a_step_000"),
+    testing::FileTestName);
 
 // Parts whose regions are all analytic (the segmentation may merge small
 // faces of the original, so face count and volume differ from the original

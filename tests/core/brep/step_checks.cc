@@ -14,6 +14,7 @@
 #include <Geom_Surface.hxx>
 #include <IFSelect_ReturnStatus.hxx>
 #include <Interface_InterfaceModel.hxx>
+#include <Interface_Static.hxx>
 #include <Poly_Triangulation.hxx>
 #include <STEPControl_Reader.hxx>
 #include <ShapeAnalysis_Surface.hxx>
@@ -72,12 +73,16 @@ double PointTriangleDistance(const Vector3d& p, const Vector3d& a, const Vector3
 
 }  // namespace
 
-absl::StatusOr<StepModel> ReadStep(const std::string& path) {
-  STEPControl_Reader reader;
+absl::StatusOr<StepModel> ReadStep(const std::string& path, const std::string& session_unit) {
+  STEPControl_Reader reader;  // initialises the STEP session's parameters
   if (reader.ReadFile(path.c_str()) != IFSelect_RetDone) {
     return absl::InvalidArgumentError(absl::StrCat("cannot read STEP \"", path, "\""));
   }
-  if (reader.TransferRoots() == 0) {
+  const std::string default_unit = Interface_Static::CVal("xstep.cascade.unit");
+  if (!session_unit.empty()) Interface_Static::SetCVal("xstep.cascade.unit", session_unit.c_str());
+  const int roots = reader.TransferRoots();
+  Interface_Static::SetCVal("xstep.cascade.unit", default_unit.c_str());
+  if (roots == 0) {
     return absl::InvalidArgumentError(absl::StrCat("no shape in \"", path, "\""));
   }
   StepModel out;

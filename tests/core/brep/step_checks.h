@@ -26,7 +26,9 @@ struct StepModel {
 };
 
 // Returns the shape in `path` (all roots), its face names and unit.
-absl::StatusOr<StepModel> ReadStep(const std::string& path);
+// `session_unit` (e.g. "M"), when given, is the unit the shape is read in
+// ("xstep.cascade.unit"); by default OpenCASCADE's, millimetres.
+absl::StatusOr<StepModel> ReadStep(const std::string& path, const std::string& session_unit = "");
 
 struct ShapeFacts {
   bool valid = false;  // BRepCheck_Analyzer
