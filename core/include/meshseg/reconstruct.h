@@ -68,7 +68,8 @@ struct ReconstructParams {
   // Neighbours used for PCA normals and their orientation (Hoppe et al. 1992).
   int normal_neighbors = 10;
   // Outliers are flagged in Reconstruction::is_outlier and left out of the
-  // fits (our addition to seed 001, whose linear fits tilt towards them;
+  // fits (our addition to the reconstruction of ALGORITHMS.md S3, whose
+  // linear fits tilt towards them;
   // reconstruct/outliers.h): points farther than the off-surface band from
   // the least-squares plane of their normal_neighbors nearest points, and
   // sparse points (mean distance to their 6 nearest neighbours over

@@ -160,10 +160,13 @@ absl::StatusOr<BrepReport> Build(const Mesh& mesh, std::span<const int> face_lab
   }
   ctx.Progress(kStage, 0.3);
   MESHSEG_RETURN_IF_ERROR(ctx.CheckStop(kStage));
+  // How far apart exact surfaces may leave a shared edge, floored at OCCT's
+  // confusion distance.
+  const double exact_gap = std::max(kExactGap * diagonal, Precision::Confusion());
   const brep_internal::BoundaryEdges edges = brep_internal::MakeBoundaryEdges(
       tri, topology, geoms,
       {.curve = curve_tolerance,
-       .exact_gap = std::max(kExactGap * diagonal, Precision::Confusion()),
+       .exact_gap = exact_gap,
        .corner_move = kCornerMove * l_avg + 3.0 * sigma,
        .l_avg = l_avg,
        .surface_offset = 3.0 * sigma});
@@ -182,8 +185,7 @@ absl::StatusOr<BrepReport> Build(const Mesh& mesh, std::span<const int> face_lab
         continue;
       }
       brep_internal::RegionFace face = brep_internal::MakeRegionFace(
-          topology, r, patch, geoms[r], surfaces[r].sign, edges,
-          std::max(kExactGap * diagonal, Precision::Confusion()), curve_tolerance,
+          topology, r, patch, geoms[r], surfaces[r].sign, edges, exact_gap, curve_tolerance,
           std::max(3.0 * sigma, kExactGap * diagonal));
       if (face.contracted) {
         --report.patch_count;

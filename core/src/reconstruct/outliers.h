@@ -1,7 +1,7 @@
 // Outlier flags for the input points: points off the surface their
 // neighbours describe, and points in sparse places whose neighbours describe
-// no surface at all. Our addition to seed 001: its linear local fits (eq. 3)
-// tilt towards such points, most when their normals are random; the graph
+// no surface at all. Our addition to Nagai, Ohtake and Suzuki's reconstruction
+// (ALGORITHMS.md S3): its linear local fits (eq. 3) tilt towards such points, most when their normals are random; the graph
 // cut then only has to repair what remains.
 //
 // The tests are relative to the cloud itself, so that genuine points are
