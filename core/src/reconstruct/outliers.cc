@@ -118,9 +118,10 @@ Outliers FindOutliers(const std::vector<Eigen::Vector3d>& points,
     out.noise = kMadToSigma * Median(std::move(residuals));
   }
   out.band = std::max(test.min_band, test.noise_sigmas * out.noise);
+  // Sparse: farther from its neighbours than the sparse distance (or NaN).
+  const auto sparse = [&](size_t i) { return !(spread[i] <= test.sparse_distance); };
   const auto condemned = [&](size_t i, const LocalFit& fit) -> uint8_t {
-    const bool sparse = !(spread[i] <= test.sparse_distance);
-    return fit.residual > out.band || (sparse && fit.thickness > out.band) || fit.astray;
+    return fit.residual > out.band || (sparse(i) && fit.thickness > out.band) || fit.astray;
   };
   std::vector<uint8_t> first(n, 0);
   for (size_t i = 0; i < n; ++i) first[i] = fitted[i] && condemned(i, fits[i]);
@@ -131,7 +132,7 @@ Outliers FindOutliers(const std::vector<Eigen::Vector3d>& points,
     std::vector<uint32_t> idx;
     std::vector<double> d2;
     for (size_t i = range.begin(); i != range.end(); ++i) {
-      if (!fitted[i] || !(first[i] || !(spread[i] <= test.sparse_distance))) continue;
+      if (!fitted[i] || !(first[i] || sparse(i))) continue;
       index.Nearest(points[i], 2 * static_cast<int>(k) + 1, &idx, &d2);
       // Fewer than k kept among the 2k + 1 nearest: it lies among outliers
       // (and a plane through fewer points says nothing).
