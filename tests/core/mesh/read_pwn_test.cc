@@ -1,3 +1,5 @@
+#include <ostream>
+
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -26,6 +28,11 @@ struct BadPwn {
   const char* text;
   const char* message;
 };
+
+// GoogleTest prints a parameter without PrintTo as its bytes, pointers included,
+// and ctest's test names carry that text: printing the file keeps the names
+// the same from build to build.
+void PrintTo(const BadPwn& c, std::ostream* os) { *os << c.file; }
 
 class ReadPwnRejects : public testing::TestWithParam<BadPwn> {};
 
