@@ -97,7 +97,11 @@ else
   run meshseg generate small_block -o /tmp/part.stl
 fi
 run meshseg info /tmp/part.stl
-run meshseg segment /tmp/part.stl -o /tmp/offline.json >/dev/null
+run meshseg segment /tmp/part.stl -o /tmp/offline.json --step /tmp/part.step >/dev/null
+# The STEP writer is the one user of the OpenCASCADE libraries copied into
+# the image: its file must be there and be ISO 10303-21.
+run sh -c 'head -c 13 /tmp/part.step' | grep -qx 'ISO-10303-21;' ||
+  { echo "build-image: meshseg segment --step wrote no STEP file in the image" >&2; exit 1; }
 run sh -c '
   meshseg-server --listen 127.0.0.1:0 --spool-dir /tmp/spool >/tmp/server.out 2>/tmp/server.log &
   server=$!
