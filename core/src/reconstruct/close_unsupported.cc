@@ -70,7 +70,8 @@ bool RemoveSmallPieces(const TriMesh& tri, double min_fraction, std::vector<uint
   const int64_t largest = *std::max_element(size.begin(), size.end());
   bool changed = false;
   for (size_t f = 0; f < parent.size(); ++f) {
-    if ((*removed)[f] || size[Find(parent, static_cast<int>(f))] >= min_fraction * largest) continue;
+    if ((*removed)[f] || size[Find(parent, static_cast<int>(f))] >= min_fraction * largest)
+      continue;
     (*removed)[f] = 1;
     changed = true;
   }
@@ -121,7 +122,7 @@ std::vector<Sm::Halfedge_index> BorderLoops(const Sm& sm, std::vector<size_t>* l
 void FanClose(Sm::Halfedge_index h, Sm* sm) {
   Kernel::Vector_3 sum(0, 0, 0);
   int n = 0;
-  for (auto g = h;; ) {
+  for (auto g = h;;) {
     sum = sum + (sm->point(sm->target(g)) - CGAL::ORIGIN);
     ++n;
     g = sm->next(g);
@@ -141,7 +142,8 @@ int Components(const TriMesh& tri) {
         Find(parent, tri.to_vertex_handle(h).idx());
   }
   int count = 0;
-  for (size_t v = 0; v < parent.size(); ++v) count += Find(parent, static_cast<int>(v)) == static_cast<int>(v);
+  for (size_t v = 0; v < parent.size(); ++v)
+    count += Find(parent, static_cast<int>(v)) == static_cast<int>(v);
   return count;
 }
 
@@ -171,13 +173,15 @@ absl::StatusOr<ClosedSurface> CloseUnsupported(const Mesh& mesh,
     bool changed = true;
     while (changed) {
       changed = RemovePinches(tri, &removed);
-      if (min_component_fraction > 0 && std::find(removed.begin(), removed.end(), 0) != removed.end()) {
+      if (min_component_fraction > 0 &&
+          std::find(removed.begin(), removed.end(), 0) != removed.end()) {
         changed = RemoveSmallPieces(tri, min_component_fraction, &removed) || changed;
       }
     }
   }
   out.removed_face_count = std::count(removed.begin(), removed.end(), 1);
-  if (out.removed_face_count == 0 || out.removed_face_count == static_cast<int64_t>(removed.size())) {
+  if (out.removed_face_count == 0 ||
+      out.removed_face_count == static_cast<int64_t>(removed.size())) {
     // Nothing unsupported, or nothing supported (no surface to close onto).
     out.removed_face_count = 0;
     out.mesh = mesh;
@@ -195,7 +199,7 @@ absl::StatusOr<ClosedSurface> CloseUnsupported(const Mesh& mesh,
       PMP::triangulate_refine_and_fair_hole(
           sm, loops[i], std::back_inserter(faces), std::back_inserter(vertices),
           PMP::parameters::fairing_continuity(0).do_not_use_cubic_algorithm(lengths[i] >
-                                                                             kMaxCubicLoop));
+                                                                            kMaxCubicLoop));
       if (faces.empty() && sm.is_border(loops[i])) FanClose(loops[i], &sm);
     }
   }
@@ -216,7 +220,8 @@ absl::StatusOr<ClosedSurface> CloseUnsupported(const Mesh& mesh,
       if (k < 3) t[k] = index[v];
       ++k;
     }
-    if (k != 3) return absl::InternalError(absl::StrCat(mesh.name, ": filled face with ", k, " corners"));
+    if (k != 3)
+      return absl::InternalError(absl::StrCat(mesh.name, ": filled face with ", k, " corners"));
     triangles.push_back(t);
     triangle_filled.push_back(filled[f]);
   }

@@ -29,7 +29,7 @@ namespace meshseg::reconstruct_internal {
 
 struct ClosedSurface {
   Mesh mesh;
-  std::vector<uint8_t> filled;  // one per face of `mesh`: 1 = a patch face
+  std::vector<uint8_t> filled;     // one per face of `mesh`: 1 = a patch face
   int64_t removed_face_count = 0;  // faces of the input mesh removed
   int64_t hole_count = 0;          // border loops (closed, or left open)
   double filled_area = 0.0;        // of the patch faces, model units²

@@ -13,7 +13,8 @@ namespace {
 
 // A flat strip [0, 2] × [0, 1] in z = 0, triangulated on a grid of `step`.
 Mesh Strip(double step) {
-  const int nx = static_cast<int>(std::lround(2.0 / step)), ny = static_cast<int>(std::lround(1.0 / step));
+  const int nx = static_cast<int>(std::lround(2.0 / step)),
+            ny = static_cast<int>(std::lround(1.0 / step));
   std::vector<Eigen::Vector3d> vertices;
   std::vector<std::array<int, 3>> triangles;
   for (int j = 0; j <= ny; ++j) {
