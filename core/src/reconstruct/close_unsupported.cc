@@ -13,6 +13,8 @@
 #include <CGAL/boost/graph/Euler_operations.h>
 
 #include "absl/strings/str_cat.h"
+#include "meshseg/status_macros.h"
+#include "reconstruct/surface_mesh.h"
 
 namespace meshseg::reconstruct_internal {
 namespace {
@@ -211,42 +213,19 @@ absl::StatusOr<ClosedSurface> CloseUnsupported(const Mesh& mesh,
     const auto& p = sm.point(v);
     points.emplace_back(p.x(), p.y(), p.z());
   }
+  // Every face is a triangle: the kept ones, CGAL's patches and the fans.
   std::vector<std::array<int, 3>> triangles;
-  std::vector<uint8_t> triangle_filled;
   for (const auto f : sm.faces()) {
-    std::array<int, 3> t{};
-    int k = 0;
-    for (const auto v : CGAL::vertices_around_face(sm.halfedge(f), sm)) {
-      if (k < 3) t[k] = index[v];
-      ++k;
-    }
-    if (k != 3)
-      return absl::InternalError(absl::StrCat(mesh.name, ": filled face with ", k, " corners"));
-    triangles.push_back(t);
-    triangle_filled.push_back(filled[f]);
+    const auto h = sm.halfedge(f);
+    triangles.push_back({index[sm.source(h)], index[sm.target(h)], index[sm.target(sm.next(h))]});
+    out.filled.push_back(filled[f]);
+    if (!filled[f]) continue;
+    const Eigen::Vector3d& a = points[triangles.back()[0]];
+    out.filled_area +=
+        0.5 * (points[triangles.back()[1]] - a).cross(points[triangles.back()[2]] - a).norm();
   }
-  Mesh result;
-  result.name = mesh.name;
-  result.input_vertex_count = static_cast<int64_t>(points.size());
-  std::vector<TriMesh::VertexHandle> handle(points.size());
-  for (size_t v = 0; v < points.size(); ++v) {
-    handle[v] = result.tri.add_vertex(TriMesh::Point(points[v].x(), points[v].y(), points[v].z()));
-  }
-  for (size_t t = 0; t < triangles.size(); ++t) {
-    const auto face = result.tri.add_face(handle[triangles[t][0]], handle[triangles[t][1]],
-                                          handle[triangles[t][2]]);
-    if (!face.is_valid()) {
-      return absl::InternalError(absl::StrCat("reconstruct: \"", mesh.name, "\": closing triangle ",
-                                              t, " makes the surface non-manifold"));
-    }
-    result.face_of_input.push_back(face.idx());
-    out.filled.push_back(triangle_filled[t]);
-    if (triangle_filled[t]) {
-      const Eigen::Vector3d& a = points[triangles[t][0]];
-      out.filled_area +=
-          0.5 * (points[triangles[t][1]] - a).cross(points[triangles[t][2]] - a).norm();
-    }
-  }
+  // SurfaceMesh refuses a triangle that would make the result non-manifold.
+  MESHSEG_ASSIGN_OR_RETURN(Mesh result, SurfaceMesh(points, triangles, mesh.name));
   if (!leave_open) {
     for (const auto e : result.tri.edges()) {
       if (result.tri.is_boundary(e)) {
@@ -255,7 +234,6 @@ absl::StatusOr<ClosedSurface> CloseUnsupported(const Mesh& mesh,
       }
     }
   }
-  result.tri.update_normals();
   out.mesh = std::move(result);
   return out;
 }
