@@ -62,7 +62,9 @@ TEST(MeshsegReconstruct, AnUnscannedAreaIsFilledOrWithOpenLeftOpen) {
   mesh = ReadMesh(dir + "/open.ply");
   ASSERT_TRUE(mesh.ok()) << mesh.status();
   const MeshStats s = MeshStatistics(*mesh);
-  EXPECT_GT(s.boundary_edge_count, 20) << "the loop around the unscanned top";
+  // One loop round the unscanned rectangle, inset by the support reach (its
+  // edges are the refined mesh's, about 0.2 long here).
+  EXPECT_GE(s.boundary_edge_count, 8) << "the loop around the unscanned top";
   EXPECT_EQ(s.non_manifold_edge_count, 0);
   EXPECT_EQ(s.non_manifold_vertex_count, 0);
   // The loop runs on the top, around the unscanned rectangle.

@@ -104,10 +104,12 @@ TEST(MeshsegSegment, FilledFacesOfACloudAreFlaggedAndOpenLeavesThemOut) {
   for (const bool f : result.face_filled()) filled += f;
   EXPECT_GT(filled, 0);
   EXPECT_EQ(result.mesh().filled_face_count(), filled);
-  // The patch spans the unscanned 1.5 x 1.0 rectangle (its loop runs up to
-  // ~3 spacings inside the scanned rim, so a little less).
-  EXPECT_GT(result.mesh().filled_area(), 0.8);
-  EXPECT_LT(result.mesh().filled_area(), 1.5 * 1.0 * 1.1);
+  // The patch spans the unscanned 1.5 x 1.0 rectangle inset by the support
+  // reach on every side (2 local spacings of ~0.13 plus the noise band of
+  // ~0.1: ~0.35), about (1.5 - 0.7) x (1.0 - 0.7) = 0.24; never more than the
+  // flat rectangle.
+  EXPECT_GT(result.mesh().filled_area(), 0.15);
+  EXPECT_LT(result.mesh().filled_area(), 1.5 * 1.0);
   EXPECT_EQ(result.mesh().boundary_edge_count(), 0);
 
   for (const bool on_server : {false, true}) {
@@ -118,7 +120,7 @@ TEST(MeshsegSegment, FilledFacesOfACloudAreFlaggedAndOpenLeavesThemOut) {
     ASSERT_EQ(r.exit_code, 0) << r.err;
     result = ParseResult(ReadText(dir + "/open.json"));
     EXPECT_EQ(result.mesh().filled_face_count(), 0) << on_server;
-    EXPECT_GT(result.mesh().boundary_edge_count(), 20) << on_server;
+    EXPECT_GE(result.mesh().boundary_edge_count(), 8) << on_server;  // the loop round the hole
     for (const bool f : result.face_filled()) EXPECT_FALSE(f);
   }
 }
