@@ -1,6 +1,7 @@
-// meshseg reconstruct CLOUD -o MESH.ply|.off [--format FMT]
+// meshseg reconstruct CLOUD -o MESH.ply|.off [--format FMT] [--open]
 // Reconstructs a watertight mesh from a point cloud (seed 001) with the
-// default ReconstructParams and writes it with the mesh writers.
+// default ReconstructParams and writes it with the mesh writers. Areas no
+// point supports are closed by minimal patches, or with --open left open.
 #include <cstdio>
 
 #include "absl/strings/str_cat.h"
@@ -15,7 +16,7 @@
 namespace meshseg::cli {
 
 absl::Status RunReconstruct(const Argv& argv) {
-  MESHSEG_ASSIGN_OR_RETURN(const Args args, Args::Parse(argv, {"-o", "--format"}, {}, 1));
+  MESHSEG_ASSIGN_OR_RETURN(const Args args, Args::Parse(argv, {"-o", "--format"}, {"--open"}, 1));
   const std::string& input = args.positional(0);
   const std::optional<std::string> out = args.Value("-o");
   if (!out) return absl::InvalidArgumentError("-o MESH.ply is required (.ply or .off)");
@@ -32,7 +33,9 @@ absl::Status RunReconstruct(const Argv& argv) {
   ProgressPrinter progress;
   RunContext ctx;
   ctx.on_progress = [&](std::string_view stage, double f) { progress.Update(stage, f); };
-  const absl::StatusOr<Reconstruction> r = Reconstruct(cloud, ReconstructParams{}, ctx);
+  ReconstructParams params;
+  params.leave_unsupported_open = args.Has("--open");
+  const absl::StatusOr<Reconstruction> r = Reconstruct(cloud, params, ctx);
   progress.Finish();
   if (!r.ok()) return r.status();
   MESHSEG_RETURN_IF_ERROR(WriteMesh(r->mesh.tri, *out));
@@ -43,6 +46,19 @@ absl::Status RunReconstruct(const Argv& argv) {
       static_cast<long long>(r->stats.outlier_count), r->stats.point_spacing,
       r->stats.refine_edge_length, static_cast<long long>(r->stats.unsupported_vertex_count),
       r->stats.normals_estimated ? ", normals estimated" : "");
+  const ReconstructStats& s = r->stats;
+  if (params.leave_unsupported_open) {
+    std::printf("%lld faces no point supports removed, %lld holes left open, genus %d\n",
+                static_cast<long long>(s.unsupported_face_count),
+                static_cast<long long>(s.hole_count), s.genus);
+  } else {
+    std::printf(
+        "%lld faces no point supports replaced by %lld filled faces in %lld holes "
+        "(area %.6g), genus %d (before %d)\n",
+        static_cast<long long>(s.unsupported_face_count),
+        static_cast<long long>(s.filled_face_count), static_cast<long long>(s.hole_count),
+        s.filled_area, s.genus, s.genus_before_support);
+  }
   return absl::OkStatus();
 }
 

@@ -122,7 +122,7 @@ absl::Status RunSegment(const Argv& argv) {
                    "--server", "--report", "--step", "--unit", "--length-unit", "--request-id",
                    "--path", "--exact-tolerance", "--iso", "--volume-mode", "--dims", "--spacing",
                    "--origin", "--type"},
-                  {"--include-mesh", kBigEndianSwitch}, 1));
+                  {"--include-mesh", kBigEndianSwitch, "--open"}, 1));
   const std::string& input = args.positional(0);
   const std::optional<std::string> out = args.Value("-o");
   if (!out) return absl::InvalidArgumentError("-o RESULT.json is required");
@@ -146,6 +146,7 @@ absl::Status RunSegment(const Argv& argv) {
   }
   MESHSEG_ASSIGN_OR_RETURN(const std::optional<double> exact_tol, args.Double("--exact-tolerance"));
   if (exact_tol) options.segment.set_exact_tolerance(*exact_tol);
+  options.segment.set_open_unsupported(args.Has("--open"));
   // Same validation on both paths (the server repeats it).
   MESHSEG_RETURN_IF_ERROR(FromProto(options.segment).status());
   MESHSEG_ASSIGN_OR_RETURN(const std::optional<FileFormat> format,

@@ -28,6 +28,7 @@ absl::StatusOr<std::string> ResultForPage(const v1::SegmentationResult& result) 
   page.clear_face_labels();
   page.clear_vertex_labels();
   page.clear_point_labels();
+  page.clear_face_filled();  // per face; MeshInfo keeps the count and area
   for (v1::BoundaryCurve& curve : *page.mutable_curves()) curve.clear_vertices();
   return ResultJson(page);
 }

@@ -91,6 +91,10 @@ std::string RegionTable(const v1::SegmentationResult& result) {
       "%d faces, %d vertices, mean edge %.4g; %d regions cover %d faces\n",
       result.mesh().face_count(), result.mesh().vertex_count(), result.mesh().mean_edge_length(),
       result.regions_size(), labelled);
+  if (result.mesh().filled_face_count() > 0) {
+    absl::StrAppendFormat(&out, "%d faces close areas no point supports (area %.4g)\n",
+                          result.mesh().filled_face_count(), result.mesh().filled_area());
+  }
   if (result.regions_size() == 0) return out;
   absl::StrAppendFormat(&out, "%4s  %-9s %8s  %-44s %10s\n", "id", "type", "faces",
                         "parameters", "rms");

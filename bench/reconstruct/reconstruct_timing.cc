@@ -4,7 +4,7 @@
 // name=value sets a ReconstructParams field: error_tolerance, leaf_cell_size,
 // graph_cut_k, refine_edge_length, projection_radius, outlier_distance,
 // off_surface_distance, min_component_fraction, smoothing_iterations,
-// use_graph_cut, seed.
+// use_graph_cut, seed, support_spacings, leave_unsupported_open.
 #include <sys/resource.h>
 
 #include <chrono>
@@ -43,6 +43,7 @@ bool SetParam(const std::string& name, double value, meshseg::ReconstructParams*
       {"outlier_distance", &p->outlier_distance},
       {"off_surface_distance", &p->off_surface_distance},
       {"min_component_fraction", &p->min_component_fraction},
+      {"support_spacings", &p->support_spacings},
   };
   if (const auto it = fields.find(name); it != fields.end()) {
     *it->second = value;
@@ -52,6 +53,8 @@ bool SetParam(const std::string& name, double value, meshseg::ReconstructParams*
     p->smoothing_iterations = static_cast<int>(value);
   } else if (name == "use_graph_cut") {
     p->use_graph_cut = value != 0.0;
+  } else if (name == "leave_unsupported_open") {
+    p->leave_unsupported_open = value != 0.0;
   } else if (name == "seed") {
     p->seed = static_cast<uint64_t>(value);
   } else {
@@ -121,5 +124,9 @@ int main(int argc, char** argv) {
       (long long)st.relabelled_count, (long long)st.smoothed_vertex_count,
       (long long)st.dropped_component_count, st.refine_edge_length,
       (long long)st.unsupported_vertex_count, r->mesh.tri.n_vertices(), r->mesh.tri.n_faces());
+  std::printf(
+      "support: %lld faces removed, %lld holes, %lld faces filled (area %.6g), genus %d -> %d\n",
+      (long long)st.unsupported_face_count, (long long)st.hole_count,
+      (long long)st.filled_face_count, st.filled_area, st.genus_before_support, st.genus);
   return 0;
 }

@@ -80,6 +80,7 @@ absl::StatusOr<PipelineParams> FromProto(const v1::SegmentOptions& options) {
     }
     params.segment.exact_tolerance = options.exact_tolerance();
   }
+  params.reconstruct.leave_unsupported_open = options.open_unsupported();
   return params;
 }
 

@@ -94,6 +94,13 @@ absl::StatusOr<PipelineResult> FromProto(const v1::SegmentationResult& result) {
   out.point_labels.assign(result.point_labels().begin(), result.point_labels().end());
   out.from_point_cloud = result.point_labels_size() > 0;
   out.point_count = result.point_labels_size();
+  if (result.face_filled_size() != 0 && result.face_filled_size() != result.face_labels_size()) {
+    return Bad(absl::StrCat("face_filled has ", result.face_filled_size(), " entries for ",
+                            result.face_labels_size(), " faces"));
+  }
+  out.face_filled.assign(result.face_filled().begin(), result.face_filled().end());
+  out.filled_face_count = result.mesh().filled_face_count();
+  out.filled_area = result.mesh().filled_area();
   if (result.has_mesh_geometry()) {
     MESHSEG_ASSIGN_OR_RETURN(out.mesh_geometry, MeshGeometryFromProto(result.mesh_geometry(),
                                                                       result.face_labels_size()));

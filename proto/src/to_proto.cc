@@ -141,6 +141,9 @@ v1::SegmentationResult ToProto(const PipelineResult& result) {
   e->set_exact_share(result.estimates.exact_share);
   SetTopology(result.topology, result.features, &out);
   out.mutable_point_labels()->Add(result.point_labels.begin(), result.point_labels.end());
+  for (const uint8_t filled : result.face_filled) out.add_face_filled(filled != 0);
+  out.mutable_mesh()->set_filled_face_count(result.filled_face_count);
+  out.mutable_mesh()->set_filled_area(result.filled_area);
   SetBrep(result, &out);
   if (result.mesh_geometry) SetMeshGeometry(*result.mesh_geometry, out.mutable_mesh_geometry());
   out.set_length_unit(result.length_unit);

@@ -85,6 +85,46 @@ TEST(MeshsegSegment, BadToleranceExitsOneBeforeReadingTheFile) {
   EXPECT_THAT(r.err, HasSubstr("-3"));
 }
 
+// Issue 38: a cloud with an unscanned area says which faces close it; with
+// --open (both paths: the option travels in SegmentOptions) none is filled
+// and the mesh is open there.
+TEST(MeshsegSegment, FilledFacesOfACloudAreFlaggedAndOpenLeavesThemOut) {
+  TestServer server;
+  const std::string dir = FreshDir("files");
+  testing_files::TestMesh box = testing_files::SplitBox(16, {2.0, 1.5, 1.0});
+  std::erase_if(box.v, [](const Eigen::Vector3d& p) {
+    return p.z() == 1.0 && p.x() > 0.25 && p.x() < 1.75 && p.y() > 0.25 && p.y() < 1.25;
+  });
+  testing_files::WriteXyz(box, dir + "/open_top.xyz");
+  testing_cli::CliRun r = RunCli({"segment", dir + "/open_top.xyz", "-o", dir + "/closed.json"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  v1::SegmentationResult result = ParseResult(ReadText(dir + "/closed.json"));
+  ASSERT_EQ(result.face_filled_size(), result.face_labels_size());
+  int64_t filled = 0;
+  for (const bool f : result.face_filled()) filled += f;
+  EXPECT_GT(filled, 0);
+  EXPECT_EQ(result.mesh().filled_face_count(), filled);
+  // The patch spans the unscanned 1.5 x 1.0 rectangle inset by the support
+  // reach on every side (2 local spacings of ~0.13 plus the noise band of
+  // ~0.1: ~0.35), about (1.5 - 0.7) x (1.0 - 0.7) = 0.24; never more than the
+  // flat rectangle.
+  EXPECT_GT(result.mesh().filled_area(), 0.15);
+  EXPECT_LT(result.mesh().filled_area(), 1.5 * 1.0);
+  EXPECT_EQ(result.mesh().boundary_edge_count(), 0);
+
+  for (const bool on_server : {false, true}) {
+    std::vector<std::string> args = {"segment", dir + "/open_top.xyz", "-o", dir + "/open.json",
+                                     "--open"};
+    if (on_server) args.insert(args.end(), {"--server", server.address()});
+    r = RunCli(args);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    result = ParseResult(ReadText(dir + "/open.json"));
+    EXPECT_EQ(result.mesh().filled_face_count(), 0) << on_server;
+    EXPECT_GE(result.mesh().boundary_edge_count(), 8) << on_server;  // the loop round the hole
+    for (const bool f : result.face_filled()) EXPECT_FALSE(f);
+  }
+}
+
 TEST(MeshsegSegment, ServerPathWritesTheOfflineBytes) {
   TestServer server;
   const std::string dir = FreshDir("files");

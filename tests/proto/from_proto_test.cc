@@ -20,6 +20,15 @@ TEST(FromProto, UnsetOptionsGiveTheDefaults) {
   EXPECT_FALSE(p->segment.angle_tolerance_deg.has_value());
 }
 
+TEST(FromProto, OpenUnsupportedLeavesTheReconstructionOpen) {
+  EXPECT_FALSE(FromProto(v1::SegmentOptions())->reconstruct.leave_unsupported_open);
+  v1::SegmentOptions o;
+  o.set_open_unsupported(true);
+  const absl::StatusOr<PipelineParams> p = FromProto(o);
+  ASSERT_TRUE(p.ok()) << p.status();
+  EXPECT_TRUE(p->reconstruct.leave_unsupported_open);
+}
+
 TEST(FromProto, CopiesTolerances) {
   v1::SegmentOptions o;
   o.set_distance_tolerance(0.8);

@@ -147,6 +147,34 @@ TEST(ResultFromProto, MeshGeometryAndLengthUnitRoundTrip) {
   EXPECT_THAT(bad.message(), HasSubstr("3 numbers per element"));
 }
 
+// Issue 38: which reconstructed faces close an unsupported area, and how much.
+TEST(ResultFromProto, FilledFacesAndAreaRoundTrip) {
+  PipelineResult r = Sample();
+  r.face_filled.assign(r.face_labels.size(), 0);
+  r.face_filled[1] = r.face_filled.back() = 1;
+  r.filled_face_count = 2;
+  r.filled_area = 0.375;
+  const absl::StatusOr<std::string> json = ResultJson(ToProto(r));
+  ASSERT_TRUE(json.ok()) << json.status();
+  EXPECT_THAT(*json, HasSubstr("\"filled_face_count\":\"2\""));
+  EXPECT_THAT(*json, HasSubstr("\"filled_area\":0.375"));
+  EXPECT_THAT(*json, HasSubstr("\"face_filled\":[false,true,"));
+  const absl::StatusOr<v1::SegmentationResult> message = ParseResultJson(*json);
+  ASSERT_TRUE(message.ok()) << message.status();
+  const absl::StatusOr<PipelineResult> back = FromProto(*message);
+  ASSERT_TRUE(back.ok()) << back.status();
+  EXPECT_EQ(back->face_filled, r.face_filled);
+  EXPECT_EQ(back->filled_face_count, 2);
+  EXPECT_EQ(back->filled_area, 0.375);
+  EXPECT_TRUE(FromProto(ToProto(Sample()))->face_filled.empty()) << "a mesh input has none";
+
+  v1::SegmentationResult m = ToProto(r);
+  m.add_face_filled(true);
+  const absl::Status bad = FromProto(m).status();
+  EXPECT_TRUE(absl::IsInvalidArgument(bad)) << bad;
+  EXPECT_THAT(bad.message(), HasSubstr("face_filled has 6 entries for 5 faces"));
+}
+
 TEST(ParseResultJson, MalformedJsonIsInvalidArgument) {
   const absl::Status s = ParseResultJson("{\"regions\": [ {\"id\": ").status();
   EXPECT_TRUE(absl::IsInvalidArgument(s)) << s;

@@ -120,6 +120,12 @@ struct PipelineResult {
   bool from_point_cloud = false;
   int64_t point_count = 0;
   std::vector<int> point_labels;
+  // Point-cloud input: one per face of the reconstructed mesh, 1 where the
+  // face closes an area no input point supports (Reconstruction::is_filled),
+  // and the count and total area (model units²) of those faces.
+  std::vector<uint8_t> face_filled;
+  int64_t filled_face_count = 0;
+  double filled_area = 0.0;
   // When PipelineParams::step_path is set: what the `brep` stage wrote, or
   // (brep unset) why it wrote nothing; the segmentation stands either way.
   std::optional<BrepReport> brep;

@@ -82,6 +82,19 @@ struct ReconstructParams {
   double outlier_noise_sigmas = 4.0;
   // Randomness (order of the support covering) comes from here.
   uint64_t seed = 0;
+  // No invented surface (issue 38; our addition, reconstruct/support.h and
+  // close_unsupported.h): a face is supported when an input point lies
+  // within support_spacings × the local spacing at that point (its mean
+  // distance to the 6 nearest) plus the off-surface band of its centroid
+  // (sampling condition: every point of a sampled surface lies within about
+  // one local spacing of a sample; 2 leaves a factor 2 for random sampling).
+  // Unsupported faces are removed and each hole closed by a minimal
+  // (membrane-faired) patch whose faces Reconstruction::is_filled flags.
+  // 0 keeps the surface the graph cut gives, flaps included.
+  double support_spacings = 2.0;
+  // Leave the unsupported areas open instead of closing them (`--open`):
+  // every edge then has one or two faces.
+  bool leave_unsupported_open = false;
 };
 
 // What the stage measured and derived.
@@ -104,13 +117,28 @@ struct ReconstructStats {
                                          // planes, model units (outliers.h)
   bool normals_estimated = false;       // the cloud had no normals
   bool normals_flipped = false;         // given normals pointed outward (or were re-oriented)
+  // The support test (support_spacings): faces removed as unsupported, the
+  // holes they left (closed, or open with leave_unsupported_open), the patch
+  // faces and their area (model units²), and the total genus of the surface
+  // before the test and of the result.
+  int64_t unsupported_face_count = 0;
+  int64_t hole_count = 0;
+  int64_t filled_face_count = 0;
+  double filled_area = 0.0;
+  int genus_before_support = 0;
+  int genus = 0;
 };
 
 struct Reconstruction {
-  Mesh mesh;  // closed, manifold; faces oriented with outward normals
+  // Closed, manifold; faces oriented with outward normals (open where the
+  // points give no support when leave_unsupported_open is set).
+  Mesh mesh;
   // One per input point: 1 if it is an outlier (see
   // ReconstructParams::outlier_distance and off_surface_distance), else 0.
   std::vector<uint8_t> is_outlier;
+  // One per face of `mesh`: 1 if it closes an area the points do not
+  // support (ReconstructParams::support_spacings), else 0.
+  std::vector<uint8_t> is_filled;
   ReconstructStats stats;
 };
 

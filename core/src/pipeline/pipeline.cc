@@ -310,6 +310,9 @@ absl::StatusOr<PipelineResult> RunOnPointCloud(const std::string& input_path,
       ExportStep(reconstruction.mesh, result.face_labels, params, ctx, &result));
   result.point_labels = pipeline_internal::PointLabels(
       reconstruction.mesh.tri, result.face_labels, cloud.points, reconstruction.is_outlier);
+  result.face_filled = reconstruction.is_filled;
+  result.filled_face_count = reconstruction.stats.filled_face_count;
+  result.filled_area = reconstruction.stats.filled_area;
   AttachMesh(reconstruction.mesh, {}, params, &result);
   return result;
 }

@@ -10,6 +10,7 @@
 
 #include "absl/strings/str_cat.h"
 #include "meshseg/status_macros.h"
+#include "reconstruct/close_unsupported.h"
 #include "reconstruct/cover.h"
 #include "reconstruct/graph_cut.h"
 #include "reconstruct/marching_tetrahedra.h"
@@ -22,6 +23,7 @@
 #include "reconstruct/regular_triangulation.h"
 #include "reconstruct/small_components.h"
 #include "reconstruct/smoothing.h"
+#include "reconstruct/support.h"
 #include "reconstruct/surface_mesh.h"
 
 namespace meshseg {
@@ -80,6 +82,9 @@ absl::Status ValidateParams(const ReconstructParams& p) {
   }
   if (!(p.off_surface_distance > 0)) {
     return bad(absl::StrCat("off_surface_distance ", p.off_surface_distance, " must be > 0"));
+  }
+  if (!(p.support_spacings >= 0)) {
+    return bad(absl::StrCat("support_spacings ", p.support_spacings, " must be >= 0"));
   }
   if (!(p.outlier_noise_sigmas > 0)) {
     return bad(absl::StrCat("outlier_noise_sigmas ", p.outlier_noise_sigmas, " must be > 0"));
@@ -247,6 +252,28 @@ absl::StatusOr<Reconstruction> Reconstruct(const PointCloud& cloud, const Recons
   if (params.refine_edge_length > 0) {
     MESHSEG_ASSIGN_OR_RETURN(out.mesh,
                              RefineOnPoints(out.mesh, points, index, f, h, params, ctx, &stats));
+  }
+
+  // Step 8 (our addition, issue 38): no surface where no point supports it.
+  out.is_filled.assign(out.mesh.tri.n_faces(), 0);
+  stats.genus = stats.genus_before_support = Genus(out.mesh.tri);
+  if (params.support_spacings > 0) {
+    ctx.Progress("reconstruct: support", 0.0);
+    const double band =
+        std::max(params.off_surface_distance * h, params.outlier_noise_sigmas * stats.noise);
+    const std::vector<uint8_t> supported =
+        SupportedFaces(out.mesh.tri, points, index, params.support_spacings, band);
+    MESHSEG_RETURN_IF_ERROR(ctx.CheckStop(kStage));
+    MESHSEG_ASSIGN_OR_RETURN(ClosedSurface closed,
+                             CloseUnsupported(out.mesh, supported, params.min_component_fraction,
+                                              params.leave_unsupported_open));
+    stats.unsupported_face_count = closed.removed_face_count;
+    stats.hole_count = closed.hole_count;
+    stats.filled_area = closed.filled_area;
+    for (const uint8_t f : closed.filled) stats.filled_face_count += f;
+    out.mesh = std::move(closed.mesh);
+    out.is_filled = std::move(closed.filled);
+    stats.genus = Genus(out.mesh.tri);
   }
 
   ctx.Progress(kStage, 1.0);

@@ -1,0 +1,241 @@
+#include "reconstruct/close_unsupported.h"
+
+#include <algorithm>
+#include <array>
+#include <numeric>
+#include <utility>
+
+#include <Eigen/Geometry>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/triangulate_hole.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/Euler_operations.h>
+
+#include "absl/strings/str_cat.h"
+#include "meshseg/status_macros.h"
+#include "reconstruct/surface_mesh.h"
+
+namespace meshseg::reconstruct_internal {
+namespace {
+
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Sm = CGAL::Surface_mesh<Kernel::Point_3>;
+namespace PMP = CGAL::Polygon_mesh_processing;
+
+// Loops longer than this skip CGAL's cubic search over all triangles of the
+// loop when the Delaunay search space fails (O(n³) time); the fan closes them.
+constexpr size_t kMaxCubicLoop = 150;
+
+int Find(std::vector<int>& parent, int a) {
+  while (parent[a] != a) a = parent[a] = parent[parent[a]];
+  return a;
+}
+
+// Marks every face of a vertex whose fan alternates kept/removed more than
+// once; returns whether it marked any.
+bool RemovePinches(const TriMesh& tri, std::vector<uint8_t>* removed) {
+  bool changed = false;
+  for (const auto v : tri.vertices()) {
+    int changes = 0;
+    uint8_t first = 2, last = 2;
+    for (const auto f : tri.vf_range(v)) {
+      const uint8_t r = (*removed)[f.idx()];
+      if (first == 2) first = r;
+      if (last != 2 && r != last) ++changes;
+      last = r;
+    }
+    if (last != first) ++changes;  // the fan is a cycle
+    if (changes <= 2) continue;
+    for (const auto f : tri.vf_range(v)) (*removed)[f.idx()] = 1;
+    changed = true;
+  }
+  return changed;
+}
+
+// Marks the kept edge-connected pieces with fewer faces than min_fraction of
+// the largest; returns whether it marked any.
+bool RemoveSmallPieces(const TriMesh& tri, double min_fraction, std::vector<uint8_t>* removed) {
+  std::vector<int> parent(tri.n_faces());
+  std::iota(parent.begin(), parent.end(), 0);
+  for (const auto e : tri.edges()) {
+    if (tri.is_boundary(e)) continue;
+    const int a = tri.face_handle(tri.halfedge_handle(e, 0)).idx();
+    const int b = tri.face_handle(tri.halfedge_handle(e, 1)).idx();
+    if ((*removed)[a] || (*removed)[b]) continue;
+    parent[Find(parent, a)] = Find(parent, b);
+  }
+  std::vector<int64_t> size(tri.n_faces(), 0);
+  for (size_t f = 0; f < parent.size(); ++f) {
+    if (!(*removed)[f]) ++size[Find(parent, static_cast<int>(f))];
+  }
+  const int64_t largest = *std::max_element(size.begin(), size.end());
+  bool changed = false;
+  for (size_t f = 0; f < parent.size(); ++f) {
+    if ((*removed)[f] || size[Find(parent, static_cast<int>(f))] >= min_fraction * largest)
+      continue;
+    (*removed)[f] = 1;
+    changed = true;
+  }
+  return changed;
+}
+
+// The kept faces as a Surface_mesh; `filled` is 1 on every face added later.
+Sm KeptFaces(const TriMesh& tri, const std::vector<uint8_t>& removed) {
+  Sm sm;
+  std::vector<Sm::Vertex_index> vertex(tri.n_vertices());
+  std::vector<uint8_t> used(tri.n_vertices(), 0);
+  for (const auto f : tri.faces()) {
+    if (removed[f.idx()]) continue;
+    for (const auto v : tri.fv_range(f)) used[v.idx()] = 1;
+  }
+  for (const auto v : tri.vertices()) {
+    if (!used[v.idx()]) continue;
+    const auto& p = tri.point(v);
+    vertex[v.idx()] = sm.add_vertex(Kernel::Point_3(p[0], p[1], p[2]));
+  }
+  for (const auto f : tri.faces()) {
+    if (removed[f.idx()]) continue;
+    std::array<Sm::Vertex_index, 3> corner;
+    int k = 0;
+    for (const auto v : tri.fv_range(f)) corner[k++] = vertex[v.idx()];
+    sm.add_face(corner[0], corner[1], corner[2]);
+  }
+  auto filled = sm.add_property_map<Sm::Face_index, uint8_t>("f:filled", 1).first;
+  for (const auto f : sm.faces()) filled[f] = 0;
+  return sm;
+}
+
+// One border halfedge per border loop of `sm`.
+std::vector<Sm::Halfedge_index> BorderLoops(const Sm& sm, std::vector<size_t>* lengths) {
+  std::vector<Sm::Halfedge_index> loops;
+  std::vector<uint8_t> seen(sm.num_halfedges(), 0);
+  for (const auto h : sm.halfedges()) {
+    if (!sm.is_border(h) || seen[h]) continue;
+    loops.push_back(h);
+    size_t n = 0;
+    for (auto g = h; !seen[g]; g = sm.next(g), ++n) seen[g] = 1;
+    lengths->push_back(n);
+  }
+  return loops;
+}
+
+// Closes the loop of `h` by a fan around the centroid of its vertices.
+void FanClose(Sm::Halfedge_index h, Sm* sm) {
+  Kernel::Vector_3 sum(0, 0, 0);
+  int n = 0;
+  for (auto g = h;;) {
+    sum = sum + (sm->point(sm->target(g)) - CGAL::ORIGIN);
+    ++n;
+    g = sm->next(g);
+    if (g == h) break;
+  }
+  CGAL::Euler::fill_hole(h, *sm);  // h now borders the new polygon
+  const auto spoke = CGAL::Euler::add_center_vertex(h, *sm);
+  sm->point(sm->target(spoke)) = CGAL::ORIGIN + sum / n;
+}
+
+int Components(const TriMesh& tri) {
+  std::vector<int> parent(tri.n_vertices());
+  std::iota(parent.begin(), parent.end(), 0);
+  for (const auto e : tri.edges()) {
+    const auto h = tri.halfedge_handle(e, 0);
+    parent[Find(parent, tri.from_vertex_handle(h).idx())] =
+        Find(parent, tri.to_vertex_handle(h).idx());
+  }
+  int count = 0;
+  for (size_t v = 0; v < parent.size(); ++v)
+    count += Find(parent, static_cast<int>(v)) == static_cast<int>(v);
+  return count;
+}
+
+}  // namespace
+
+int Genus(const TriMesh& tri) {
+  int64_t loops = 0;
+  std::vector<uint8_t> seen(tri.n_halfedges(), 0);
+  for (const auto h : tri.halfedges()) {
+    if (!tri.is_boundary(h) || seen[h.idx()]) continue;
+    ++loops;
+    for (auto g = h; !seen[g.idx()]; g = tri.next_halfedge_handle(g)) seen[g.idx()] = 1;
+  }
+  const int64_t chi = static_cast<int64_t>(tri.n_vertices()) - static_cast<int64_t>(tri.n_edges()) +
+                      static_cast<int64_t>(tri.n_faces());
+  return static_cast<int>((2 * Components(tri) - chi - loops) / 2);
+}
+
+absl::StatusOr<ClosedSurface> CloseUnsupported(const Mesh& mesh,
+                                               const std::vector<uint8_t>& supported,
+                                               double min_component_fraction, bool leave_open) {
+  const TriMesh& tri = mesh.tri;
+  ClosedSurface out;
+  std::vector<uint8_t> removed(tri.n_faces());
+  for (size_t f = 0; f < removed.size(); ++f) removed[f] = !supported[f];
+  if (std::find(removed.begin(), removed.end(), 1) != removed.end()) {
+    bool changed = true;
+    while (changed) {
+      changed = RemovePinches(tri, &removed);
+      if (min_component_fraction > 0 &&
+          std::find(removed.begin(), removed.end(), 0) != removed.end()) {
+        changed = RemoveSmallPieces(tri, min_component_fraction, &removed) || changed;
+      }
+    }
+  }
+  out.removed_face_count = std::count(removed.begin(), removed.end(), 1);
+  if (out.removed_face_count == 0 ||
+      out.removed_face_count == static_cast<int64_t>(removed.size())) {
+    // Nothing unsupported, or nothing supported (no surface to close onto).
+    out.removed_face_count = 0;
+    out.mesh = mesh;
+    out.filled.assign(tri.n_faces(), 0);
+    return out;
+  }
+  Sm sm = KeptFaces(tri, removed);
+  std::vector<size_t> lengths;
+  const std::vector<Sm::Halfedge_index> loops = BorderLoops(sm, &lengths);
+  out.hole_count = static_cast<int64_t>(loops.size());
+  if (!leave_open) {
+    for (size_t i = 0; i < loops.size(); ++i) {
+      std::vector<Sm::Face_index> faces;
+      std::vector<Sm::Vertex_index> vertices;
+      PMP::triangulate_refine_and_fair_hole(
+          sm, loops[i], std::back_inserter(faces), std::back_inserter(vertices),
+          PMP::parameters::fairing_continuity(0).do_not_use_cubic_algorithm(lengths[i] >
+                                                                            kMaxCubicLoop));
+      if (faces.empty() && sm.is_border(loops[i])) FanClose(loops[i], &sm);
+    }
+  }
+  const auto filled = sm.property_map<Sm::Face_index, uint8_t>("f:filled").first;
+  std::vector<Eigen::Vector3d> points;
+  std::vector<int> index(sm.num_vertices(), -1);
+  for (const auto v : sm.vertices()) {
+    index[v] = static_cast<int>(points.size());
+    const auto& p = sm.point(v);
+    points.emplace_back(p.x(), p.y(), p.z());
+  }
+  // Every face is a triangle: the kept ones, CGAL's patches and the fans.
+  std::vector<std::array<int, 3>> triangles;
+  for (const auto f : sm.faces()) {
+    const auto h = sm.halfedge(f);
+    triangles.push_back({index[sm.source(h)], index[sm.target(h)], index[sm.target(sm.next(h))]});
+    out.filled.push_back(filled[f]);
+    if (!filled[f]) continue;
+    const Eigen::Vector3d& a = points[triangles.back()[0]];
+    out.filled_area +=
+        0.5 * (points[triangles.back()[1]] - a).cross(points[triangles.back()[2]] - a).norm();
+  }
+  // SurfaceMesh refuses a triangle that would make the result non-manifold.
+  MESHSEG_ASSIGN_OR_RETURN(Mesh result, SurfaceMesh(points, triangles, mesh.name));
+  if (!leave_open) {
+    for (const auto e : result.tri.edges()) {
+      if (result.tri.is_boundary(e)) {
+        return absl::InternalError(
+            absl::StrCat("reconstruct: \"", mesh.name, "\": a closed hole left an open edge"));
+      }
+    }
+  }
+  out.mesh = std::move(result);
+  return out;
+}
+
+}  // namespace meshseg::reconstruct_internal

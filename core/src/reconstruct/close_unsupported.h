@@ -1,0 +1,53 @@
+// Unsupported faces of the reconstructed surface removed, and the holes they
+// leave closed by minimal patches (issue 38: "no invented surface"; the faces
+// come from support.h). Our addition to seed 001, whose graph cut closes
+// every gap of the scan with the zero set of f extrapolated from the nearest
+// fits: flaps and tubes (spurious handles) where no point is.
+//
+// The removed set is first made a union of disks and annuli a manifold can
+// lose: a vertex whose fan would alternate between kept and removed faces
+// more than once (a pinch) loses all its faces, and kept pieces smaller than
+// min_component_fraction of the largest are removed too (filling every loop
+// on its own would otherwise seal such an island into a bubble). Each border
+// loop is then closed by CGAL's hole filling (Liepa 2003): the minimal-weight
+// triangulation of the loop (area, then dihedral angles), refined to the
+// density of the loop's edges and faired with harmonic (membrane, continuity
+// 0) weights: the least-area smooth patch the loop spans, not an
+// extrapolation of the fits. A removed tube of a handle leaves two loops,
+// each closed by a disk: the handle the points did not support is cut.
+#ifndef MESHSEG_RECONSTRUCT_CLOSE_UNSUPPORTED_H_
+#define MESHSEG_RECONSTRUCT_CLOSE_UNSUPPORTED_H_
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "absl/status/statusor.h"
+#include "meshseg/mesh.h"
+
+namespace meshseg::reconstruct_internal {
+
+struct ClosedSurface {
+  Mesh mesh;
+  std::vector<uint8_t> filled;     // one per face of `mesh`: 1 = a patch face
+  int64_t removed_face_count = 0;  // faces of the input mesh removed
+  int64_t hole_count = 0;          // border loops (closed, or left open)
+  double filled_area = 0.0;        // of the patch faces, model units²
+};
+
+// Removes the faces of the closed manifold `mesh` whose `supported` flag is
+// 0 (grown as above) and, unless `leave_open`, closes every hole. The result
+// is an oriented manifold; closed unless `leave_open` (then every edge has one
+// or two faces). A loop CGAL cannot triangulate is closed by a fan around its
+// centroid. Errors: INTERNAL if the result breaks these invariants.
+absl::StatusOr<ClosedSurface> CloseUnsupported(const Mesh& mesh,
+                                               const std::vector<uint8_t>& supported,
+                                               double min_component_fraction, bool leave_open);
+
+// Total genus of `tri`: (2 C − χ − B) / 2 with C components, χ = V − E + F
+// and B border loops (a closed mesh has B = 0).
+int Genus(const TriMesh& tri);
+
+}  // namespace meshseg::reconstruct_internal
+
+#endif  // MESHSEG_RECONSTRUCT_CLOSE_UNSUPPORTED_H_

@@ -1,0 +1,183 @@
+#include "reconstruct/close_unsupported.h"
+
+#include <cmath>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "clouds.h"
+#include "meshseg/reconstruct.h"
+#include "reconstruct/surface_mesh.h"
+
+namespace meshseg::reconstruct_internal {
+namespace {
+
+constexpr double kR = 1.0, kr = 0.3;  // torus radii
+constexpr int kNu = 48, kNv = 16;     // grid around the axis and around the tube
+
+Eigen::Vector3d TorusPoint(int i, int j) {
+  const double u = 2 * M_PI * i / kNu, v = 2 * M_PI * j / kNv;
+  return {(kR + kr * std::cos(v)) * std::cos(u), (kR + kr * std::cos(v)) * std::sin(u),
+          kr * std::sin(v)};
+}
+
+// A closed torus mesh (genus 1); face 2 (i kNv + j) + k lies in the grid cell (i, j).
+Mesh TorusMesh() {
+  std::vector<Eigen::Vector3d> vertices;
+  std::vector<std::array<int, 3>> triangles;
+  for (int i = 0; i < kNu; ++i) {
+    for (int j = 0; j < kNv; ++j) vertices.push_back(TorusPoint(i, j));
+  }
+  const auto id = [](int i, int j) { return (i % kNu) * kNv + j % kNv; };
+  for (int i = 0; i < kNu; ++i) {
+    for (int j = 0; j < kNv; ++j) {
+      triangles.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
+      triangles.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+    }
+  }
+  return *SurfaceMesh(vertices, triangles, "torus");
+}
+
+int CellI(int face) { return face / 2 / kNv; }
+
+// The flat kNv-gon a cut through the tube leaves.
+double LoopArea() { return 0.5 * kNv * kr * kr * std::sin(2 * M_PI / kNv); }
+
+void ExpectEveryEdgeTwoFaces(const TriMesh& tri) {
+  EXPECT_EQ(test::BoundaryEdgeCount(tri), 0);
+  EXPECT_EQ(test::NonManifoldVertexCount(tri), 0);
+}
+
+// Faces of cells i in [0, 4) unsupported: a band around the tube. Its two
+// border loops are flat circles, so the minimal patches are the two discs:
+// the handle the points do not support is cut (genus 1 → 0).
+TEST(CloseUnsupported, AnUnsupportedBandAroundATubeIsClosedByTwoFlatDiscs) {
+  const Mesh torus = TorusMesh();
+  ASSERT_EQ(Genus(torus.tri), 1);
+  std::vector<uint8_t> supported(torus.tri.n_faces(), 1);
+  for (size_t f = 0; f < supported.size(); ++f) supported[f] = CellI(static_cast<int>(f)) >= 4;
+  const auto closed = CloseUnsupported(torus, supported, 0.01, false);
+  ASSERT_TRUE(closed.ok()) << closed.status();
+  EXPECT_EQ(closed->removed_face_count, 4 * kNv * 2);
+  EXPECT_EQ(closed->hole_count, 2);
+  ExpectEveryEdgeTwoFaces(closed->mesh.tri);
+  EXPECT_EQ(Genus(closed->mesh.tri), 0);
+  EXPECT_EQ(test::ComponentCount(closed->mesh.tri), 1);
+  EXPECT_NEAR(closed->filled_area, 2 * LoopArea(), 0.02 * 2 * LoopArea());
+  ASSERT_EQ(closed->filled.size(), closed->mesh.tri.n_faces());
+  // Every patch face lies in one of the two cut planes, u = 0 (y = 0, x > 0)
+  // and u = 4 cells (through the axis at angle 30°).
+  const Eigen::Vector3d cut_normal(-std::sin(2 * M_PI * 4 / kNu), std::cos(2 * M_PI * 4 / kNu), 0);
+  int filled = 0;
+  for (const auto f : closed->mesh.tri.faces()) {
+    if (!closed->filled[f.idx()]) continue;
+    ++filled;
+    Eigen::Vector3d c = Eigen::Vector3d::Zero();
+    for (const auto v : closed->mesh.tri.fv_range(f)) c += ToEigen(closed->mesh.tri.point(v)) / 3;
+    EXPECT_LT(std::min(std::abs(c.y()), std::abs(c.dot(cut_normal))), 1e-6) << c.transpose();
+  }
+  EXPECT_GE(filled, 2 * (kNv - 2));
+}
+
+TEST(CloseUnsupported, OpenLeavesTheTwoBorderLoopsOfTheBand) {
+  const Mesh torus = TorusMesh();
+  std::vector<uint8_t> supported(torus.tri.n_faces(), 1);
+  for (size_t f = 0; f < supported.size(); ++f) supported[f] = CellI(static_cast<int>(f)) >= 4;
+  const auto open = CloseUnsupported(torus, supported, 0.01, true);
+  ASSERT_TRUE(open.ok()) << open.status();
+  EXPECT_EQ(open->hole_count, 2);
+  EXPECT_EQ(test::BoundaryEdgeCount(open->mesh.tri), 2 * kNv);
+  EXPECT_EQ(test::NonManifoldVertexCount(open->mesh.tri), 0);
+  EXPECT_EQ(open->filled_area, 0.0);
+  EXPECT_EQ(open->mesh.tri.n_faces(), torus.tri.n_faces() - 4 * kNv * 2);
+}
+
+// Two unsupported cells meeting at one vertex only would pinch it; a small
+// supported island inside an unsupported band would be sealed into a bubble.
+// Both are removed with their neighbours, and the result stays one closed
+// manifold.
+TEST(CloseUnsupported, PinchesAndIslandsAreRemovedSoTheResultStaysOneManifold) {
+  const Mesh torus = TorusMesh();
+  std::vector<uint8_t> supported(torus.tri.n_faces(), 1);
+  const auto cell = [](int i, int j) { return 2 * (i * kNv + j); };
+  // Cells (10, 5) and (11, 6) touch at the grid vertex (11, 6) only.
+  for (const int c : {cell(10, 5), cell(11, 6)}) supported[c] = supported[c + 1] = 0;
+  // Band i in [20, 26) with the island cell (23, 8) supported.
+  for (size_t f = 0; f < supported.size(); ++f) {
+    const int i = CellI(static_cast<int>(f));
+    if (i >= 20 && i < 26) supported[f] = 0;
+  }
+  supported[cell(23, 8)] = supported[cell(23, 8) + 1] = 1;
+  const auto closed = CloseUnsupported(torus, supported, 0.01, false);
+  ASSERT_TRUE(closed.ok()) << closed.status();
+  EXPECT_GT(closed->removed_face_count, 4 + 6 * kNv * 2 - 2);  // the pinch grew
+  ExpectEveryEdgeTwoFaces(closed->mesh.tri);
+  EXPECT_EQ(test::ComponentCount(closed->mesh.tri), 1);
+  EXPECT_EQ(Genus(closed->mesh.tri), 0);
+}
+
+TEST(CloseUnsupported, AllSupportedChangesNothing) {
+  const Mesh torus = TorusMesh();
+  const auto closed =
+      CloseUnsupported(torus, std::vector<uint8_t>(torus.tri.n_faces(), 1), 0.01, false);
+  ASSERT_TRUE(closed.ok());
+  EXPECT_EQ(closed->removed_face_count, 0);
+  EXPECT_EQ(closed->mesh.tri.n_faces(), torus.tri.n_faces());
+  EXPECT_EQ(Genus(closed->mesh.tri), 1);
+}
+
+// Ground truth through the whole reconstruction: a unit sphere scanned
+// everywhere but its cap z > 0.5 (as a part standing on that side). The
+// reconstruction must close the cap minimally: its patch faces lie above the
+// scanned edge and their area is that of the flat disc spanned by the
+// border loop `--open` leaves (a membrane over a near-planar circle), well
+// under the cap's own area 2π (1 − z) that an extrapolated surface would have.
+TEST(CloseUnsupported, AnOccludedCapOfASphereIsClosedByTheDiscOfItsBorder) {
+  const test::Shape sphere = test::Sphere(1.0);
+  PointCloud cloud = test::MakeCloud(sphere, test::CloudSpec{.points = 5000, .normals = false});
+  const double z0 = 0.5;
+  std::erase_if(cloud.points, [&](const Eigen::Vector3d& p) { return p.z() > z0; });
+  ReconstructParams params;
+  params.leave_unsupported_open = true;
+  const auto open = Reconstruct(cloud, params);
+  ASSERT_TRUE(open.ok()) << open.status();
+  EXPECT_EQ(open->stats.hole_count, 1);
+  EXPECT_EQ(open->stats.filled_face_count, 0);
+  const TriMesh& o = open->mesh.tri;
+  // The border loop: its vector area and height.
+  Eigen::Vector3d vector_area = Eigen::Vector3d::Zero();
+  double loop_z_min = 1e9, loop_z_max = -1e9;
+  int border_edges = 0;
+  for (const auto h : o.halfedges()) {
+    if (!o.is_boundary(h)) continue;
+    ++border_edges;
+    const Eigen::Vector3d a = ToEigen(o.point(o.from_vertex_handle(h)));
+    const Eigen::Vector3d b = ToEigen(o.point(o.to_vertex_handle(h)));
+    vector_area += 0.5 * a.cross(b);
+    loop_z_min = std::min(loop_z_min, a.z());
+    loop_z_max = std::max(loop_z_max, a.z());
+  }
+  ASSERT_GT(border_edges, 10);
+  const double h = open->stats.point_spacing;
+  EXPECT_GT(loop_z_min, z0 - h) << "the loop runs through scanned surface";
+  EXPECT_LT(loop_z_max, z0 + 6 * h) << "scanned-edge support reaches at most ~3 spacings";
+  const double disc = vector_area.norm();
+
+  const auto closed = Reconstruct(cloud);
+  ASSERT_TRUE(closed.ok()) << closed.status();
+  const TriMesh& c = closed->mesh.tri;
+  ExpectEveryEdgeTwoFaces(c);
+  EXPECT_EQ(test::ComponentCount(c), 1);
+  EXPECT_EQ(closed->stats.genus, 0);
+  ASSERT_EQ(closed->is_filled.size(), c.n_faces());
+  EXPECT_NEAR(closed->stats.filled_area, disc, 0.05 * disc);
+  const double cap = 2 * M_PI * (1 - 0.5 * (loop_z_min + loop_z_max));
+  EXPECT_LT(closed->stats.filled_area, 0.9 * cap);
+  for (const auto f : c.faces()) {
+    if (!closed->is_filled[f.idx()]) continue;
+    for (const auto v : c.fv_range(f)) EXPECT_GT(c.point(v)[2], z0 - h);
+  }
+}
+
+}  // namespace
+}  // namespace meshseg::reconstruct_internal
