@@ -12,10 +12,8 @@
 // segmented by the pipeline (untimed): a true surface is kept when some
 // region's faces lie mostly on it (an output face lies on the surface two of
 // its corners, which are input vertices, lie on).
-// Usage: voxel_simplify_bench [PART] [--voxel-size H] [--noise S] [--share F]
-// [--out OUT.ply]
-//        [--crease-deg D] [--max-error-h E (rms error bound in h, default 0.2;
-//        0 = none)]
+// Usage: voxel_simplify_bench [PART] [--voxel-size H] [--noise S] [--share F] [--out OUT.ply]
+//          [--crease-deg D] [--max-error-h E]   (E: rms error bound in h, default 0.2; 0 = none)
 #include <sys/resource.h>
 
 #include <algorithm>
@@ -58,9 +56,9 @@ double Seconds(std::chrono::steady_clock::time_point t0) {
 
 // The true surface of each output face: the primitive two of its corners lie
 // on (-1 if none).
-std::vector<int> OutputFaceTruth(const meshseg::GeneratedPart &g,
-                                 const meshseg::Simplification &s) {
-  const meshseg::TriMesh &m = s.mesh.tri;
+std::vector<int> OutputFaceTruth(const meshseg::GeneratedPart& g,
+                                 const meshseg::Simplification& s) {
+  const meshseg::TriMesh& m = s.mesh.tri;
   std::vector<int> truth(m.n_faces(), -1);
   for (auto f : m.faces()) {
     int p[3], c = 0;
@@ -73,8 +71,8 @@ std::vector<int> OutputFaceTruth(const meshseg::GeneratedPart &g,
 // Segments the simplified mesh written at `path` and prints, per true
 // surface, the region whose faces lie mostly on it; true if every surface
 // with faces has one.
-bool CheckRegions(const meshseg::GeneratedPart &g, const meshseg::Simplification &s,
-                  const std::string &path) {
+bool CheckRegions(const meshseg::GeneratedPart& g, const meshseg::Simplification& s,
+                  const std::string& path) {
   const auto t0 = std::chrono::steady_clock::now();
   const absl::StatusOr<meshseg::PipelineResult> r = meshseg::RunPipeline(path);
   if (!r.ok()) {
@@ -92,9 +90,9 @@ bool CheckRegions(const meshseg::GeneratedPart &g, const meshseg::Simplification
     if (r->face_labels[f] >= 0) ++faces[r->face_labels[f]][truth[f]];
   }
   std::vector<int> kept_by(g.primitives.size(), -1);
-  for (const auto &[region, counts] : faces) {
+  for (const auto& [region, counts] : faces) {
     int best = -1, total = 0;
-    for (const auto &[p, n] : counts) {
+    for (const auto& [p, n] : counts) {
       total += n;
       if (best < 0 || n > counts.at(best)) best = p;
     }
@@ -117,7 +115,7 @@ bool CheckRegions(const meshseg::GeneratedPart &g, const meshseg::Simplification
 
 }  // namespace
 
-int main(int argc, char **argv) {
+int main(int argc, char** argv) {
   std::string part = "test_piece", out = "/tmp/voxel_simplify_bench.ply";
   meshseg::GenerateParams gen{.voxel_size = 0.21, .noise = 0.05};
   double share = 0.1;
@@ -149,7 +147,7 @@ int main(int argc, char **argv) {
     return 1;
   }
   const double h = g->voxel_size;
-  const meshseg::TriMesh &in = g->mesh.tri;
+  const meshseg::TriMesh& in = g->mesh.tri;
   std::printf("%s: %zu faces, h %g, noise %g h (generated in %.1f s)\n", part.c_str(), in.n_faces(),
               h, gen.noise, Seconds(t0));
   params.target_faces = static_cast<int64_t>(share * in.n_faces());
@@ -175,7 +173,7 @@ int main(int argc, char **argv) {
       hd.input_to_output / h, hd.output_to_input / h, hausdorff_s, meshseg::bench::PeakRssMiB());
 
   // Sharp feature edges of the ground truth, sampled at edge midpoints.
-  const meshseg::TriMesh &sm = s->mesh.tri;
+  const meshseg::TriMesh& sm = s->mesh.tri;
   std::vector<Eigen::Vector3d> centroid(sm.n_faces()), normal(sm.n_faces());
   for (auto f : sm.faces()) {
     centroid[f.idx()] = ToEigen(sm.calc_face_centroid(f));
@@ -185,7 +183,7 @@ int main(int argc, char **argv) {
   // comes within kRadiusH h of p has its centroid in p's cell or next door
   // (triangles are at most ~3 h from their centroid at this share).
   const double cell = (kRadiusH + 3.0) * h;
-  const auto key = [&](const Eigen::Vector3d &q, int dx, int dy, int dz) {
+  const auto key = [&](const Eigen::Vector3d& q, int dx, int dy, int dz) {
     const int64_t x = static_cast<int64_t>(std::floor(q.x() / cell)) + dx;
     const int64_t y = static_cast<int64_t>(std::floor(q.y() / cell)) + dy;
     const int64_t z = static_cast<int64_t>(std::floor(q.z() / cell)) + dz;
@@ -238,13 +236,13 @@ int main(int argc, char **argv) {
       faces_b |= normal[f].dot(nb) >= cos_facing;
     }
     kept += near && faces_a && faces_b;
-    auto &[pair_kept, pair_samples] = by_edge[g->primitives[std::min(pa, pb)].name + " / " +
+    auto& [pair_kept, pair_samples] = by_edge[g->primitives[std::min(pa, pb)].name + " / " +
                                               g->primitives[std::max(pa, pb)].name];
     pair_kept += near && faces_a && faces_b;
     ++pair_samples;
   }
   double worst_edge = 100.0;
-  for (const auto &[pair, counts] : by_edge) {
+  for (const auto& [pair, counts] : by_edge) {
     const double share_kept = 100.0 * counts.first / counts.second;
     worst_edge = std::min(worst_edge, share_kept);
     std::printf("  sharp edge %-32s %5d of %5d samples kept (%.1f %%)\n", pair.c_str(),

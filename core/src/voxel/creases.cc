@@ -13,7 +13,7 @@
 
 namespace meshseg::voxel_internal {
 
-std::vector<uint8_t> CreaseEdges(const TriMesh &mesh, double min_deg) {
+std::vector<uint8_t> CreaseEdges(const TriMesh& mesh, double min_deg) {
   // Area-weighted face normals (the cross product's length is twice the area).
   std::vector<Eigen::Vector3d> weighted(mesh.n_faces(), Eigen::Vector3d::Zero());
   for (auto f : mesh.faces()) {

@@ -33,7 +33,7 @@ class EntryHeap {
  public:
   bool empty() const { return items_.empty(); }
   size_t size() const { return items_.size(); }
-  const Entry &top() const { return items_.front(); }
+  const Entry& top() const { return items_.front(); }
   void Reserve(size_t n) { items_.reserve(n); }
   // Drops the entries `stale` says are stale and rebuilds the heap order
   // bottom-up (linear time).
@@ -42,7 +42,7 @@ class EntryHeap {
     std::erase_if(items_, stale);
     for (size_t i = items_.size(); i-- > 0;) SiftDown(i, items_[i]);
   }
-  void Push(const Entry &e) {
+  void Push(const Entry& e) {
     size_t i = items_.size();
     items_.push_back(e);
     while (i > 0) {
@@ -83,7 +83,7 @@ class EntryHeap {
 
 // argmin q over space if A is well conditioned (determinant against the cube
 // of its trace) and the optimum is near the edge, else over the segment.
-Eigen::Vector3d OnSegment(const Quadric &q, const Eigen::Vector3d &p0, const Eigen::Vector3d &p1) {
+Eigen::Vector3d OnSegment(const Quadric& q, const Eigen::Vector3d& p0, const Eigen::Vector3d& p1) {
   const Eigen::Vector3d d = p1 - p0;
   const double dad = d.dot(q.a * d);
   double t = 0.5;
@@ -91,7 +91,7 @@ Eigen::Vector3d OnSegment(const Quadric &q, const Eigen::Vector3d &p0, const Eig
   return p0 + t * d;
 }
 
-Eigen::Vector3d Optimum(const Quadric &q, const Eigen::Vector3d &p0, const Eigen::Vector3d &p1) {
+Eigen::Vector3d Optimum(const Quadric& q, const Eigen::Vector3d& p0, const Eigen::Vector3d& p1) {
   const double trace = q.a.trace();
   const double det = q.a.determinant();
   if (trace > 0.0 && det > 1e-6 * trace * trace * trace) {
@@ -104,7 +104,7 @@ Eigen::Vector3d Optimum(const Quadric &q, const Eigen::Vector3d &p0, const Eigen
 
 class Collapser {
  public:
-  Collapser(TriMesh &mesh, const CollapseParams &params, std::span<const uint8_t> locked,
+  Collapser(TriMesh& mesh, const CollapseParams& params, std::span<const uint8_t> locked,
             std::span<const uint8_t> crease)
       : m_(mesh), params_(params) {
     kind_.assign(m_.n_vertices(), kFree);
@@ -122,7 +122,7 @@ class Collapser {
     InitQuadrics();
   }
 
-  absl::Status Run(const RunContext &ctx) {
+  absl::Status Run(const RunContext& ctx) {
     heap_.Reserve(2 * m_.n_edges());
     for (auto e : m_.edges()) Push(e);
     size_t faces = m_.n_faces();
@@ -135,7 +135,7 @@ class Collapser {
         // Most popped entries are stale (a collapse invalidates about a
         // dozen); when they outnumber the edges, drop them all at once.
         if (heap_.size() > 2 * m_.n_edges() - 2 * 3 * done) {
-          heap_.Purge([&](const Entry &e) { return stamp_[e.halfedge / 2] != e.stamp; });
+          heap_.Purge([&](const Entry& e) { return stamp_[e.halfedge / 2] != e.stamp; });
         }
         continue;
       }
@@ -246,7 +246,7 @@ class Collapser {
 
   // No face around v0 or v1 that survives the collapse turns by more than
   // the limit or loses almost all its area when the merged vertex goes to x.
-  bool NormalsKept(HalfedgeHandle h, const Eigen::Vector3d &x) const {
+  bool NormalsKept(HalfedgeHandle h, const Eigen::Vector3d& x) const {
     const VertexHandle v0 = m_.from_vertex_handle(h), v1 = m_.to_vertex_handle(h);
     const auto fl = m_.face_handle(h), fr = m_.face_handle(m_.opposite_halfedge_handle(h));
     for (const VertexHandle vh : {v0, v1}) {
@@ -272,7 +272,7 @@ class Collapser {
 
   // Collapses h with the kept vertex at x; the crease flags of the edges
   // that merge are or-ed (an edge v1-w is a crease if v0-w or v1-w was).
-  void Collapse(HalfedgeHandle h, const Eigen::Vector3d &x) {
+  void Collapse(HalfedgeHandle h, const Eigen::Vector3d& x) {
     const VertexHandle v0 = m_.from_vertex_handle(h), v1 = m_.to_vertex_handle(h);
     was_crease_.clear();
     for (const VertexHandle vh : {v0, v1}) {
@@ -293,7 +293,7 @@ class Collapser {
     for (auto e : m_.ve_range(v1)) Push(e);
   }
 
-  TriMesh &m_;
+  TriMesh& m_;
   const CollapseParams params_;
   std::vector<uint8_t> kind_;
   std::vector<uint32_t> stamp_;
@@ -305,9 +305,9 @@ class Collapser {
 
 }  // namespace
 
-absl::Status CollapseEdges(TriMesh &mesh, const CollapseParams &params,
+absl::Status CollapseEdges(TriMesh& mesh, const CollapseParams& params,
                            std::span<const uint8_t> locked, std::span<const uint8_t> crease,
-                           const RunContext &ctx) {
+                           const RunContext& ctx) {
   if (!locked.empty() && locked.size() != mesh.n_vertices()) {
     return absl::InvalidArgumentError(absl::StrCat(
         "simplify: ", locked.size(), " vertex flags for ", mesh.n_vertices(), " vertices"));

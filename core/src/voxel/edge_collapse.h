@@ -39,17 +39,17 @@ struct Quadric {
   double c = 0.0;
   double area = 0.0;
 
-  void AddPlane(const Eigen::Vector3d &n, double d, double w) {
+  void AddPlane(const Eigen::Vector3d& n, double d, double w) {
     a += w * n * n.transpose();
     b += w * d * n;
     c += w * d * d;
     area += w;
   }
-  Quadric &operator+=(const Quadric &q) {
+  Quadric& operator+=(const Quadric& q) {
     a += q.a, b += q.b, c += q.c, area += q.area;
     return *this;
   }
-  double Error(const Eigen::Vector3d &x) const {
+  double Error(const Eigen::Vector3d& x) const {
     return std::max(0.0, x.dot(a * x) + 2.0 * b.dot(x) + c);
   }
 };
@@ -57,7 +57,7 @@ struct Quadric {
 // One flag per edge of `mesh`: the edge is a crease, i.e. its two faces'
 // normals differ by more than `min_deg` after the face normals were
 // denoised (see creases.cc).
-std::vector<uint8_t> CreaseEdges(const TriMesh &mesh, double min_deg);
+std::vector<uint8_t> CreaseEdges(const TriMesh& mesh, double min_deg);
 
 struct CollapseParams {
   size_t target_faces = 0;      // stop at this many faces (0 = none)
@@ -69,9 +69,9 @@ struct CollapseParams {
 // quadric error until `target_faces` or no legal collapse is left.
 // `locked` has one flag per vertex, `crease` one per edge (either may be
 // empty). Deleted elements are only marked; the caller compacts.
-absl::Status CollapseEdges(TriMesh &mesh, const CollapseParams &params,
+absl::Status CollapseEdges(TriMesh& mesh, const CollapseParams& params,
                            std::span<const uint8_t> locked, std::span<const uint8_t> crease,
-                           const RunContext &ctx);
+                           const RunContext& ctx);
 
 }  // namespace meshseg::voxel_internal
 

@@ -14,7 +14,7 @@
 namespace meshseg {
 namespace {
 
-absl::Status ValidateParams(const TriMesh &mesh, const SimplifyParams &params,
+absl::Status ValidateParams(const TriMesh& mesh, const SimplifyParams& params,
                             std::span<const uint8_t> feature_vertex,
                             std::span<const int> face_labels) {
   if (params.target_faces <= 0 && !(params.max_error > 0.0)) {
@@ -44,9 +44,9 @@ absl::Status ValidateParams(const TriMesh &mesh, const SimplifyParams &params,
 
 }  // namespace
 
-absl::StatusOr<Simplification> Simplify(const TriMesh &mesh, const SimplifyParams &params,
+absl::StatusOr<Simplification> Simplify(const TriMesh& mesh, const SimplifyParams& params,
                                         std::span<const uint8_t> feature_vertex,
-                                        std::span<const int> face_labels, const RunContext &ctx) {
+                                        std::span<const int> face_labels, const RunContext& ctx) {
   MESHSEG_RETURN_IF_ERROR(ValidateParams(mesh, params, feature_vertex, face_labels));
   ctx.Progress("simplify", 0.0);
   TriMesh work = mesh;

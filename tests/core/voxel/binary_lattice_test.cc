@@ -1,8 +1,8 @@
-#include <gtest/gtest.h>
-
 #include <algorithm>
 #include <cmath>
 #include <iostream>
+
+#include <gtest/gtest.h>
 
 #include "meshseg/voxel.h"
 #include "scratch_dir.h"

@@ -1,7 +1,7 @@
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <iostream>
+
+#include <gtest/gtest.h>
 
 #include "meshseg/voxel.h"
 #include "scratch_dir.h"

@@ -1,9 +1,9 @@
 #include "voxel/mc_table.h"
 
-#include <gtest/gtest.h>
-
 #include <map>
 #include <utility>
+
+#include <gtest/gtest.h>
 
 namespace meshseg::voxel_internal {
 namespace {

@@ -3,11 +3,11 @@
 // the volume yields. Issue #33's bar for binary volumes: face accuracy >= 98 %,
 // regions <= 1.1 x true surfaces, the right type for every surface of >= 200
 // faces, full-cylinder radius within 0.15 h, plane normals within 0.3 deg.
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <numbers>
 #include <string>
+
+#include <gtest/gtest.h>
 
 #include "meshseg/generate.h"
 #include "meshseg/pipeline.h"
