@@ -303,7 +303,8 @@ struct SimplifyParams {
   double max_normal_flip_deg = 60.0;
   // On a mesh without given feature points, an edge across which the surface
   // turns by more than this (one-ring scale) is a crease: its vertices slide
-  // only along their crease line, corners stay. 0 = no creases.
+  // only along their crease edges, and constraint planes (Garland-Heckbert)
+  // price moving a line or a corner. 0 = no creases.
   double crease_deg = 30.0;
   // Measure Simplification::hausdorff (a second pass over both meshes).
   bool measure_hausdorff = true;
@@ -332,8 +333,8 @@ struct Simplification {
 // quadric's optimum. Edges between faces of different `face_labels` (one per
 // face, may be empty) are feature edges: their ends are feature points.
 // Without feature points, the mesh's creases (params.crease_deg) and open
-// borders are feature lines: their vertices slide along them only, their
-// corners and ends stay. Stops at params.target_faces or when no collapse
+// borders are feature lines: their vertices slide along them only, priced
+// by constraint planes through them. Stops at params.target_faces or when no collapse
 // within params.max_error is left. Reports progress as "simplify".
 // Errors (INVALID_ARGUMENT): neither target set, sizes that do not match the
 // mesh, a mesh without faces; CANCELLED on stop.
