@@ -13,9 +13,9 @@
 //   generator): grey volumes at a given iso value or Otsu's threshold, with
 //   vertices interpolated between samples; binary volumes (two values) at the
 //   mid value, with seed 003's feature voxels marking the vertices QEM keeps.
-// - Simplify: Garland-Heckbert QEM edge collapse on OpenMesh's decimater, with
-//   seed 003's rules for feature vertices, and the Hausdorff distance of the
-//   result to the input.
+// - Simplify: Garland-Heckbert QEM edge collapse on OpenMesh's mesh, with
+//   seed 003's rules for feature vertices (creases of plain meshes are
+//   feature lines), and the Hausdorff distance of the result to the input.
 // - Binary-occupancy meshes (terraced marching-cubes output of a thresholded
 //   scan): detected from their vertex lattice and turned back into voxels.
 //
@@ -301,6 +301,11 @@ struct SimplifyParams {
   double max_error = 0.0;
   // A collapse that turns a face normal by more than this is refused.
   double max_normal_flip_deg = 60.0;
+  // On a mesh without given feature points, an edge across which the surface
+  // turns by more than this (one-ring scale) is a crease: its vertices slide
+  // only along their crease edges, and constraint planes (Garland-Heckbert)
+  // price moving a line or a corner. 0 = no creases.
+  double crease_deg = 30.0;
   // Measure Simplification::hausdorff (a second pass over both meshes).
   bool measure_hausdorff = true;
 };
@@ -321,12 +326,16 @@ struct Simplification {
   HausdorffDistance hausdorff;
 };
 
-// Returns `mesh` simplified by QEM edge collapse (OpenMesh's decimater):
-// `feature_vertex` (one per vertex, may be empty) marks seed 003's feature
-// points: an edge between two never collapses, an edge with one collapses
-// onto it; otherwise the vertex goes to the quadric's optimum. Edges between
-// faces of different `face_labels` (one per face, may be empty) are feature
-// edges: their ends are feature points. Reports progress as "simplify".
+// Returns `mesh` simplified by QEM edge collapse (Garland-Heckbert quadrics,
+// cheapest collapse first): `feature_vertex` (one per vertex, may be empty)
+// marks seed 003's feature points: an edge between two never collapses, an
+// edge with one collapses onto it; otherwise the vertex goes to the
+// quadric's optimum. Edges between faces of different `face_labels` (one per
+// face, may be empty) are feature edges: their ends are feature points.
+// Without feature points, the mesh's creases (params.crease_deg) and open
+// borders are feature lines: their vertices slide along them only, priced
+// by constraint planes through them. Stops at params.target_faces or when no collapse
+// within params.max_error is left. Reports progress as "simplify".
 // Errors (INVALID_ARGUMENT): neither target set, sizes that do not match the
 // mesh, a mesh without faces; CANCELLED on stop.
 absl::StatusOr<Simplification> Simplify(const TriMesh& mesh, const SimplifyParams& params,

@@ -1,22 +1,18 @@
-// Simplify(): copies the mesh, marks feature points (given, and the ends of
-// edges between differently labelled faces), runs OpenMesh's decimater with
-// the feature-quadric module, and rebuilds a compact Mesh with the labels of
-// the surviving faces and the Hausdorff distance to the input.
+// Simplify(): copies the mesh, locks feature points (given, and the ends of
+// edges between differently labelled faces), finds the creases of a plain
+// mesh, runs the quadric collapse loop (edge_collapse.h), and rebuilds a
+// compact Mesh with the labels of the surviving faces and the Hausdorff
+// distance to the input.
 #include <cmath>
 #include <numbers>
-
-#include <OpenMesh/Tools/Decimater/DecimaterT.hh>
 
 #include "absl/strings/str_cat.h"
 #include "meshseg/status_macros.h"
 #include "meshseg/voxel.h"
-#include "voxel/feature_quadric_module.h"
+#include "voxel/edge_collapse.h"
 
 namespace meshseg {
 namespace {
-
-using Decimater = OpenMesh::Decimater::DecimaterT<TriMesh>;
-using Module = voxel_internal::ModFeatureQuadricT<TriMesh>;
 
 absl::Status ValidateParams(const TriMesh& mesh, const SimplifyParams& params,
                             std::span<const uint8_t> feature_vertex,
@@ -46,21 +42,6 @@ absl::Status ValidateParams(const TriMesh& mesh, const SimplifyParams& params,
   return absl::OkStatus();
 }
 
-// Reports progress and honours stop requests every few thousand collapses.
-class Progress : public OpenMesh::Decimater::Observer {
- public:
-  Progress(const RunContext& ctx, size_t total) : Observer(4096), ctx_(ctx), total_(total) {}
-  void notify(size_t step) override {
-    ctx_.Progress("simplify",
-                  std::min(0.9, static_cast<double>(step) / std::max<size_t>(1, total_)));
-  }
-  bool abort() const override { return ctx_.stop_requested(); }
-
- private:
-  const RunContext& ctx_;
-  size_t total_;
-};
-
 }  // namespace
 
 absl::StatusOr<Simplification> Simplify(const TriMesh& mesh, const SimplifyParams& params,
@@ -69,39 +50,35 @@ absl::StatusOr<Simplification> Simplify(const TriMesh& mesh, const SimplifyParam
   MESHSEG_RETURN_IF_ERROR(ValidateParams(mesh, params, feature_vertex, face_labels));
   ctx.Progress("simplify", 0.0);
   TriMesh work = mesh;
-  OpenMesh::VPropHandleT<int> origin_vertex;
-  OpenMesh::FPropHandleT<int> origin_face;
-  work.add_property(origin_vertex);
-  work.add_property(origin_face);
-  for (auto v : work.vertices()) work.property(origin_vertex, v) = v.idx();
-  for (auto f : work.faces()) work.property(origin_face, f) = f.idx();
-
-  Decimater decimater(work);
-  typename Module::Handle module;
-  decimater.add(module);
-  Module& mod = decimater.module(module);
-  mod.set_max_error(params.max_error);
-  mod.set_min_cos_normal(std::cos(params.max_normal_flip_deg * std::numbers::pi / 180.0));
-  for (auto v : work.vertices()) {
-    mod.set_feature(v, !feature_vertex.empty() && feature_vertex[v.idx()]);
-  }
+  // Locked: the given feature points and the ends of label-boundary edges.
+  std::vector<uint8_t> locked(work.n_vertices(), 0);
+  if (!feature_vertex.empty())
+    std::copy(feature_vertex.begin(), feature_vertex.end(), locked.begin());
   if (!face_labels.empty()) {
     for (auto e : work.edges()) {
       if (work.is_boundary(e)) continue;
       const int a = face_labels[work.face_handle(work.halfedge_handle(e, 0)).idx()];
       const int b = face_labels[work.face_handle(work.halfedge_handle(e, 1)).idx()];
       if (a == b) continue;
-      mod.set_feature(work.to_vertex_handle(work.halfedge_handle(e, 0)), true);
-      mod.set_feature(work.to_vertex_handle(work.halfedge_handle(e, 1)), true);
+      locked[work.to_vertex_handle(work.halfedge_handle(e, 0)).idx()] = 1;
+      locked[work.to_vertex_handle(work.halfedge_handle(e, 1)).idx()] = 1;
     }
   }
-  if (!decimater.initialize())
-    return absl::InternalError("simplify: the decimater did not initialise");
-  const size_t target = params.target_faces > 0 ? static_cast<size_t>(params.target_faces) : 0;
-  Progress progress(ctx, work.n_faces() > target ? (work.n_faces() - target) / 2 : 1);
-  decimater.set_observer(&progress);
-  decimater.decimate_to_faces(0, target);
-  decimater.set_observer(nullptr);
+  // Creases are found on plain meshes; given feature points (a binary
+  // surface's feature voxels) already say where the features are, and there
+  // every terrace step would count as a crease.
+  std::vector<uint8_t> crease;
+  if (feature_vertex.empty() && params.crease_deg > 0.0) {
+    crease = voxel_internal::CreaseEdges(work, params.crease_deg);
+  } else {
+    crease.assign(work.n_edges(), 0);
+    for (auto e : work.edges()) crease[e.idx()] = work.is_boundary(e);
+  }
+  const voxel_internal::CollapseParams collapse{
+      .target_faces = static_cast<size_t>(params.target_faces),
+      .max_error = params.max_error,
+      .min_cos_normal = std::cos(params.max_normal_flip_deg * std::numbers::pi / 180.0)};
+  MESHSEG_RETURN_IF_ERROR(voxel_internal::CollapseEdges(work, collapse, locked, crease, ctx));
   MESHSEG_RETURN_IF_ERROR(ctx.CheckStop("simplify"));
 
   // A compact copy: surviving vertices in input order, faces likewise.
@@ -112,7 +89,7 @@ absl::StatusOr<Simplification> Simplify(const TriMesh& mesh, const SimplifyParam
     if (work.status(v).deleted()) continue;
     new_index[v.idx()] = static_cast<int>(points.size());
     points.push_back(ToEigen(work.point(v)));
-    out.input_vertex.push_back(work.property(origin_vertex, v));
+    out.input_vertex.push_back(v.idx());
   }
   std::vector<std::array<int, 3>> triangles;
   for (auto f : work.faces()) {
@@ -121,7 +98,7 @@ absl::StatusOr<Simplification> Simplify(const TriMesh& mesh, const SimplifyParam
     int c = 0;
     for (auto v : work.fv_range(f)) t[c++] = new_index[v.idx()];
     triangles.push_back(t);
-    if (!face_labels.empty()) out.face_labels.push_back(face_labels[work.property(origin_face, f)]);
+    if (!face_labels.empty()) out.face_labels.push_back(face_labels[f.idx()]);
   }
   MESHSEG_ASSIGN_OR_RETURN(out.mesh, BuildMesh(std::move(points), triangles, "simplified"));
   if (!face_labels.empty()) {
