@@ -14,10 +14,10 @@
 #include <variant>
 #include <vector>
 
-#include "meshseg/generate.h"
 #include "meshseg/mesh.h"
 #include "segment/exact_tolerance.h"
 #include "segment/facet_mesh.h"
+#include "shared_data_files.h"
 
 namespace meshseg::segment_internal {
 namespace {
@@ -126,16 +126,16 @@ TEST(ExactSeedWalk, PrismGridGivesTheOneThreadHypothesesOnAnyThreads) {
   ExpectSameOnAnyThreads(mesh);
 }
 
-// One connected part whose faces are seeded far apart in the order (faces
-// inside first, borders last): walking ahead guesses wrong there, and the
-// walk computes what the guess skipped.
-TEST(ExactSeedWalk, CadPartsGiveTheOneThreadHypothesesOnAnyThreads) {
-  for (const std::string name : {"cad_nut", "cad_cross_bore", "cad_plate_holes"}) {
+// Real CAD exports, each one connected part whose faces are seeded far
+// apart in the order (inside first, borders last): walking ahead guesses
+// wrong there, and the walk computes what the guess skipped.
+TEST(ExactSeedWalk, RealCadPartsGiveTheOneThreadHypothesesOnAnyThreads) {
+  for (const std::string name :
+       {"cad/xupeiwust_hierarchical-cadnet__6_true.obj", "cad/whjdark_AAGNet__partA_stl.obj"}) {
     SCOPED_TRACE(name);
-    const absl::StatusOr<GeneratedPart> part =
-        GenerateCadPart(name, {.deflection = CadDeflection::kFine});
-    ASSERT_TRUE(part.ok()) << part.status();
-    ExpectSameOnAnyThreads(part->mesh);
+    const absl::StatusOr<Mesh> mesh = ReadMesh(testing::SharedData(name));
+    ASSERT_TRUE(mesh.ok()) << mesh.status();
+    ExpectSameOnAnyThreads(*mesh);
   }
 }
 
