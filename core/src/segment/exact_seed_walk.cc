@@ -1,5 +1,8 @@
 #include "segment/exact_seed_walk.h"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/parallel_sort.h>
 #include <tbb/task_arena.h>
 #include <tbb/task_group.h>
 
@@ -34,15 +37,19 @@ double Dihedral(const FacetMesh& fm, int f, int g) {
 std::vector<int> SeedOrder(const FacetMesh& fm) {
   const int n = fm.facet_count();
   std::vector<float> sharpest(n, 0.0f);
-  for (int f = 0; f < n; ++f) {
-    for (const int g : fm.across[f]) {
-      if (g >= 0) sharpest[f] = std::max(sharpest[f], static_cast<float>(Dihedral(fm, f, g)));
+  tbb::parallel_for(tbb::blocked_range<int>(0, n, 4096), [&](const tbb::blocked_range<int>& range) {
+    for (int f = range.begin(); f < range.end(); ++f) {
+      for (const int g : fm.across[f]) {
+        if (g >= 0) sharpest[f] = std::max(sharpest[f], static_cast<float>(Dihedral(fm, f, g)));
+      }
     }
-  }
+  });
   std::vector<int> order(n);
   std::iota(order.begin(), order.end(), 0);
-  std::stable_sort(order.begin(), order.end(),
-                   [&](int a, int b) { return sharpest[a] < sharpest[b]; });
+  // (sharpest, index) is a strict total order: the sort is the stable one.
+  tbb::parallel_sort(order.begin(), order.end(), [&](int a, int b) {
+    return sharpest[a] < sharpest[b] || (sharpest[a] == sharpest[b] && a < b);
+  });
   return order;
 }
 
