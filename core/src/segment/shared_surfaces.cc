@@ -110,9 +110,10 @@ std::vector<SharedSurface> GroupSharedSurfaces(const FacetMesh& fm,
     by_key[{static_cast<int>(regions[r].type), KeyOf(regions[r].surface, fm.diagonal)}].push_back(
         r);
   }
+  // a and b: of one key, so of one type.
   auto try_join = [&](int a, int b) {
     int root_a = Find(parent, a), root_b = Find(parent, b);
-    if (regions[b].type != regions[a].type || root_a == root_b) return;
+    if (root_a == root_b) return;
     const Surface& sa = regions[a].surface;
     const Surface& sb = regions[b].surface;
     if (!AllOn(fm, corners[b], sa, tau, kQuickCorners) ||
