@@ -141,10 +141,12 @@ std::vector<SharedSurface> GroupSharedSurfaces(const FacetMesh& fm,
       for (int k = 0; k < 4; ++k) next[k] += step[k];
       const auto near = by_key.find({key.first, next});
       if (near == by_key.end()) continue;
-      for (const int a : members) {
-        for (const int b : near->second) {
-          if (near->first == key && b <= a) continue;
-          try_join(a, b);
+      // Members ascend: within one key, each pair once (b after a).
+      const std::vector<int>& others = near->second;
+      const bool same_key = &others == &members;
+      for (std::size_t i = 0; i < members.size(); ++i) {
+        for (std::size_t j = same_key ? i + 1 : 0; j < others.size(); ++j) {
+          try_join(members[i], others[j]);
         }
       }
     }
