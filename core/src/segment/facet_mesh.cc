@@ -48,8 +48,10 @@ void FindChordVertices(const TriMesh& mesh, FacetMesh* fm) {
   fm->chord_offset.assign(n, std::numeric_limits<double>::infinity());
   tbb::parallel_for(tbb::blocked_range<int>(0, n, 4096), [&](const tbb::blocked_range<int>& range) {
     std::vector<int> ring;
-    for (int v = range.begin(); v < range.end(); ++v) {
-      FindChordVertex(mesh, TriMesh::VertexHandle(v), fm, &ring);
+    for (int index = range.begin(); index < range.end(); ++index) {
+      const TriMesh::VertexHandle v(index);
+      if (mesh.has_vertex_status() && mesh.status(v).deleted()) continue;
+      FindChordVertex(mesh, v, fm, &ring);
     }
   });
 }
@@ -77,22 +79,28 @@ FacetMesh BuildFacetMesh(const TriMesh& mesh) {
   fm.across.resize(n_faces);
   fm.normal.resize(n_faces);
   fm.area.resize(n_faces);
-  for (const auto f : mesh.faces()) {
-    int k = 0;
-    for (const auto h : mesh.fh_range(f)) {
-      if (k == 3) break;
-      fm.corners[f.idx()][k] = mesh.from_vertex_handle(h).idx();
-      const auto g = mesh.opposite_face_handle(h);
-      fm.across[f.idx()][k] = g.is_valid() ? g.idx() : -1;
-      ++k;
-    }
-    const std::array<int, 3>& c = fm.corners[f.idx()];
-    const Eigen::Vector3d cross =
-        (fm.points[c[1]] - fm.points[c[0]]).cross(fm.points[c[2]] - fm.points[c[0]]);
-    const double norm = cross.norm();
-    fm.area[f.idx()] = 0.5 * norm;
-    fm.normal[f.idx()] = norm > 0.0 ? Eigen::Vector3d(cross / norm) : Eigen::Vector3d::Zero();
-  }
+  // Each facet on its own (independent; the mesh is only read).
+  tbb::parallel_for(
+      tbb::blocked_range<int>(0, n_faces, 4096), [&](const tbb::blocked_range<int>& range) {
+        for (int index = range.begin(); index < range.end(); ++index) {
+          const TriMesh::FaceHandle f(index);
+          if (mesh.has_face_status() && mesh.status(f).deleted()) continue;
+          int k = 0;
+          for (const auto h : mesh.fh_range(f)) {
+            if (k == 3) break;
+            fm.corners[index][k] = mesh.from_vertex_handle(h).idx();
+            const auto g = mesh.opposite_face_handle(h);
+            fm.across[index][k] = g.is_valid() ? g.idx() : -1;
+            ++k;
+          }
+          const std::array<int, 3>& c = fm.corners[index];
+          const Eigen::Vector3d cross =
+              (fm.points[c[1]] - fm.points[c[0]]).cross(fm.points[c[2]] - fm.points[c[0]]);
+          const double norm = cross.norm();
+          fm.area[index] = 0.5 * norm;
+          fm.normal[index] = norm > 0.0 ? Eigen::Vector3d(cross / norm) : Eigen::Vector3d::Zero();
+        }
+      });
   FindChordVertices(mesh, &fm);
   return fm;
 }
