@@ -148,8 +148,8 @@ class Walk {
 
   // One helper: walks stretches ahead until none is worth it.
   void WalkAhead() {
-    std::vector<int> held(n_,
-                          0);  // == stamp: held by a hypothesis of this stretch
+    // held[f] == stamp: f is held by a hypothesis of this stretch.
+    std::vector<int> held(n_, 0);
     for (int stamp = 1; !done_.load(); ++stamp) {
       Stretch* stretch = NextStretch();
       if (stretch == nullptr) return;
