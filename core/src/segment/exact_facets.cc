@@ -3,7 +3,6 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
-#include <numeric>
 #include <optional>
 #include <queue>
 #include <tuple>
@@ -15,6 +14,7 @@
 #include "meshseg/status_macros.h"
 #include "segment/exact_hypotheses.h"
 #include "segment/exact_joint_hypotheses.h"
+#include "segment/exact_seed_walk.h"
 #include "segment/exact_tolerance.h"
 #include "segment/facet_on_surface.h"
 
@@ -22,67 +22,9 @@ namespace meshseg::segment_internal {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-constexpr int kStopCheckStride = 1024;
 
 double Dihedral(const FacetMesh& fm, int f, int g) {
   return std::atan2(fm.normal[f].cross(fm.normal[g]).norm(), fm.normal[f].dot(fm.normal[g]));
-}
-
-// Facets in the order they seed: the flattest among their neighbours
-// first (the inside of a face before its border, where the facets around a
-// seed reach into the next face), then by index.
-std::vector<int> SeedOrder(const FacetMesh& fm) {
-  const int n = fm.facet_count();
-  std::vector<float> sharpest(n, 0.0f);
-  for (int f = 0; f < n; ++f) {
-    for (const int g : fm.across[f]) {
-      if (g >= 0) sharpest[f] = std::max(sharpest[f], static_cast<float>(Dihedral(fm, f, g)));
-    }
-  }
-  std::vector<int> order(n);
-  std::iota(order.begin(), order.end(), 0);
-  std::stable_sort(order.begin(), order.end(),
-                   [&](int a, int b) { return sharpest[a] < sharpest[b]; });
-  return order;
-}
-
-// Every facet's hypotheses: seeds in SeedOrder, skipping facets a
-// hypothesis already holds; each seed gives its plane, and, unless that
-// plane holds all its smooth neighbours, the first curved type that fits
-// around it.
-absl::StatusOr<std::vector<Hypothesis>> Hypotheses(const FacetMesh& fm, double tau,
-                                                   const RunContext& ctx) {
-  const int n = fm.facet_count();
-  const double crease = kSeedCreaseDeg * kPi / 180.0;
-  std::vector<char> covered(n, 0);
-  std::vector<Hypothesis> out;
-  const std::vector<int> order = SeedOrder(fm);
-  for (int k = 0; k < n; ++k) {
-    const int f = order[k];
-    if (k % kStopCheckStride == 0) {
-      MESHSEG_RETURN_IF_ERROR(ctx.CheckStop("segment"));
-      ctx.Progress("segment", 0.8 * k / n);
-    }
-    if (covered[f]) continue;
-    covered[f] = 1;
-    std::optional<Hypothesis> plane = PlaneAt(fm, f, tau);
-    bool flat_around = plane.has_value();
-    if (plane) {
-      for (const int g : fm.across[f]) {
-        if (g < 0 || fm.normal[g].isZero() || Dihedral(fm, f, g) >= crease) continue;
-        flat_around =
-            flat_around && std::binary_search(plane->support.begin(), plane->support.end(), g);
-      }
-      for (const int g : plane->support) covered[g] = 1;
-      out.push_back(*std::move(plane));
-    }
-    if (flat_around) continue;
-    if (std::optional<Hypothesis> curved = CurvedAt(fm, f, tau)) {
-      for (const int g : curved->support) covered[g] = 1;
-      out.push_back(*std::move(curved));
-    }
-  }
-  return out;
 }
 
 // The edge-connected pieces of `facets` (sorted).
@@ -356,7 +298,7 @@ std::vector<std::vector<int>> EdgeConnectedPieces(const FacetMesh& fm,
 }
 
 absl::StatusOr<ExactFacets> SegmentFacets(const FacetMesh& fm, double tau, const RunContext& ctx) {
-  MESHSEG_ASSIGN_OR_RETURN(std::vector<Hypothesis> hypotheses, Hypotheses(fm, tau, ctx));
+  MESHSEG_ASSIGN_OR_RETURN(std::vector<Hypothesis> hypotheses, SeedHypotheses(fm, tau, ctx));
   for (Hypothesis& h : RevolvedBandHypotheses(fm, hypotheses, tau))
     hypotheses.push_back(std::move(h));
   ExactFacets out;

@@ -59,10 +59,16 @@ int ParameterCount(SurfaceType type) {
 void FitCornersOf(const FacetMesh& fm, std::span<const int> facets, double tau,
                   std::vector<Eigen::Vector3d>* points, std::vector<Eigen::Vector3d>* normals) {
   std::unordered_map<int, int> slot;
-  std::vector<Eigen::Vector3d> sum;
-  std::vector<int> order;
-  // A seed group's few corners are found by a scan; a region's by hashing.
+  // A seed group's few corners are found by a scan (in scratch kept per
+  // thread: allocating it cost as much); a region's by hashing.
   const bool scan = facets.size() <= kScannedFacets;
+  thread_local std::vector<Eigen::Vector3d> scan_sum;
+  thread_local std::vector<int> scan_order;
+  std::vector<Eigen::Vector3d> region_sum;
+  std::vector<int> region_order;
+  std::vector<Eigen::Vector3d>& sum = scan ? scan_sum : region_sum;
+  std::vector<int>& order = scan ? scan_order : region_order;
+  sum.clear(), order.clear();
   for (const int f : facets) {
     for (const int v : fm.corners[f]) {
       int at = 0;
@@ -342,7 +348,8 @@ std::optional<Hypothesis> StripsAt(const FacetMesh& fm, int f, double tau) {
 
 std::optional<Surface> FitExactly(const FacetMesh& fm, SurfaceType type,
                                   std::span<const int> facets, double tau) {
-  std::vector<Eigen::Vector3d> points, normals;
+  // Per thread (at most kMaxFitCorners each; nothing here calls FitExactly).
+  thread_local std::vector<Eigen::Vector3d> points, normals;
   FitCornersOf(fm, facets, tau, &points, &normals);
   // Corners on few rims lie on many cylinders (rim to rim strips: corners at
   // two heights only, and a cylinder of any tilt through them). The surface

@@ -8,6 +8,9 @@
 #include <utility>
 #include <variant>
 
+#include <tbb/parallel_for.h>
+#include <tbb/parallel_sort.h>
+
 #include "meshseg/fit.h"
 #include "segment/facet_on_surface.h"
 
@@ -89,10 +92,11 @@ std::vector<Hypothesis> RevolvedBandHypotheses(const FacetMesh& fm,
   for (const int b : bands) {
     for (const int f : hypotheses[b].support) band_at.emplace_back(f, b);
   }
-  std::sort(band_at.begin(), band_at.end());
-  // Coaxial bands across an edge of each band's support.
+  tbb::parallel_sort(band_at.begin(), band_at.end());  // distinct pairs: one order
+  // Coaxial bands across an edge of each band's support (each band on its own).
   std::vector<std::vector<int>> next(hypotheses.size());
-  for (const int b : bands) {
+  tbb::parallel_for(std::size_t{0}, bands.size(), [&](std::size_t i) {
+    const int b = bands[i];
     const std::vector<int>& support = hypotheses[b].support;
     for (const int f : support) {
       for (const int g : fm.across[f]) {
@@ -109,7 +113,7 @@ std::vector<Hypothesis> RevolvedBandHypotheses(const FacetMesh& fm,
     }
     std::sort(next[b].begin(), next[b].end());
     next[b].erase(std::unique(next[b].begin(), next[b].end()), next[b].end());
-  }
+  });
   // The widest bands first; a band inside a joint hypothesis found seeds no
   // other.
   std::stable_sort(bands.begin(), bands.end(), [&](int a, int b) {

@@ -6,6 +6,9 @@
 #include <type_traits>
 #include <variant>
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 namespace meshseg::segment_internal {
 
 namespace {
@@ -14,32 +17,43 @@ namespace {
 // its ends' tenth of it (a vertex put on an edge, not a corner of a fan).
 constexpr double kChordInside = 0.1;
 
-// fm->chord_ends and chord_offset (facet_mesh.h).
+// fm->chord_ends and chord_offset of vertex v (`ring`: scratch).
+void FindChordVertex(const TriMesh& mesh, TriMesh::VertexHandle v, FacetMesh* fm,
+                     std::vector<int>* ring) {
+  ring->clear();
+  for (const auto w : mesh.vv_range(v)) ring->push_back(w.idx());
+  const Eigen::Vector3d& p = fm->points[v.idx()];
+  for (std::size_t i = 0; i < ring->size(); ++i) {
+    for (std::size_t j = i + 1; j < ring->size(); ++j) {
+      const Eigen::Vector3d& a = fm->points[(*ring)[i]];
+      const Eigen::Vector3d ab = fm->points[(*ring)[j]] - a;
+      const double length2 = ab.squaredNorm();
+      if (!(length2 > 0.0)) continue;
+      const double t = (p - a).dot(ab) / length2;
+      if (t < kChordInside || t > 1.0 - kChordInside) continue;
+      const double offset = (a + t * ab - p).norm();
+      if (offset < fm->chord_offset[v.idx()]) {
+        fm->chord_offset[v.idx()] = offset;
+        fm->chord_ends[v.idx()] = {(*ring)[i], (*ring)[j]};
+      }
+    }
+  }
+}
+
+// fm->chord_ends and chord_offset (facet_mesh.h), each vertex on its own
+// (independent; the mesh is only read).
 void FindChordVertices(const TriMesh& mesh, FacetMesh* fm) {
   const int n = static_cast<int>(fm->points.size());
   fm->chord_ends.assign(n, {-1, -1});
   fm->chord_offset.assign(n, std::numeric_limits<double>::infinity());
-  std::vector<int> ring;
-  for (const auto v : mesh.vertices()) {
-    ring.clear();
-    for (const auto w : mesh.vv_range(v)) ring.push_back(w.idx());
-    const Eigen::Vector3d& p = fm->points[v.idx()];
-    for (std::size_t i = 0; i < ring.size(); ++i) {
-      for (std::size_t j = i + 1; j < ring.size(); ++j) {
-        const Eigen::Vector3d& a = fm->points[ring[i]];
-        const Eigen::Vector3d ab = fm->points[ring[j]] - a;
-        const double length2 = ab.squaredNorm();
-        if (!(length2 > 0.0)) continue;
-        const double t = (p - a).dot(ab) / length2;
-        if (t < kChordInside || t > 1.0 - kChordInside) continue;
-        const double offset = (a + t * ab - p).norm();
-        if (offset < fm->chord_offset[v.idx()]) {
-          fm->chord_offset[v.idx()] = offset;
-          fm->chord_ends[v.idx()] = {ring[i], ring[j]};
-        }
-      }
+  tbb::parallel_for(tbb::blocked_range<int>(0, n, 4096), [&](const tbb::blocked_range<int>& range) {
+    std::vector<int> ring;
+    for (int index = range.begin(); index < range.end(); ++index) {
+      const TriMesh::VertexHandle v(index);
+      if (mesh.has_vertex_status() && mesh.status(v).deleted()) continue;
+      FindChordVertex(mesh, v, fm, &ring);
     }
-  }
+  });
 }
 
 }  // namespace
@@ -65,22 +79,28 @@ FacetMesh BuildFacetMesh(const TriMesh& mesh) {
   fm.across.resize(n_faces);
   fm.normal.resize(n_faces);
   fm.area.resize(n_faces);
-  for (const auto f : mesh.faces()) {
-    int k = 0;
-    for (const auto h : mesh.fh_range(f)) {
-      if (k == 3) break;
-      fm.corners[f.idx()][k] = mesh.from_vertex_handle(h).idx();
-      const auto g = mesh.opposite_face_handle(h);
-      fm.across[f.idx()][k] = g.is_valid() ? g.idx() : -1;
-      ++k;
-    }
-    const std::array<int, 3>& c = fm.corners[f.idx()];
-    const Eigen::Vector3d cross =
-        (fm.points[c[1]] - fm.points[c[0]]).cross(fm.points[c[2]] - fm.points[c[0]]);
-    const double norm = cross.norm();
-    fm.area[f.idx()] = 0.5 * norm;
-    fm.normal[f.idx()] = norm > 0.0 ? Eigen::Vector3d(cross / norm) : Eigen::Vector3d::Zero();
-  }
+  // Each facet on its own (independent; the mesh is only read).
+  tbb::parallel_for(
+      tbb::blocked_range<int>(0, n_faces, 4096), [&](const tbb::blocked_range<int>& range) {
+        for (int index = range.begin(); index < range.end(); ++index) {
+          const TriMesh::FaceHandle f(index);
+          if (mesh.has_face_status() && mesh.status(f).deleted()) continue;
+          int k = 0;
+          for (const auto h : mesh.fh_range(f)) {
+            if (k == 3) break;
+            fm.corners[index][k] = mesh.from_vertex_handle(h).idx();
+            const auto g = mesh.opposite_face_handle(h);
+            fm.across[index][k] = g.is_valid() ? g.idx() : -1;
+            ++k;
+          }
+          const std::array<int, 3>& c = fm.corners[index];
+          const Eigen::Vector3d cross =
+              (fm.points[c[1]] - fm.points[c[0]]).cross(fm.points[c[2]] - fm.points[c[0]]);
+          const double norm = cross.norm();
+          fm.area[index] = 0.5 * norm;
+          fm.normal[index] = norm > 0.0 ? Eigen::Vector3d(cross / norm) : Eigen::Vector3d::Zero();
+        }
+      });
   FindChordVertices(mesh, &fm);
   return fm;
 }

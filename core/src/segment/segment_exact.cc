@@ -158,8 +158,10 @@ Segmentation Assemble(const Mesh& mesh, const FacetMesh& fm,
       if (seg.vertex_labels[v] < 0) seg.vertex_labels[v] = seg.face_labels[f];
     }
   }
-  for (std::size_t r = 0; r < regions.size(); ++r) {
-    Region region;
+  // Each region and each surface on its own facets (independent).
+  seg.regions.resize(regions.size());
+  tbb::parallel_for(std::size_t{0}, regions.size(), [&](std::size_t r) {
+    Region& region = seg.regions[r];
     region.id = static_cast<int>(r);
     region.type = regions[r].type;
     region.surface = segment_internal::Translated(regions[r].surface, fm.origin);
@@ -169,17 +171,17 @@ Segmentation Assemble(const Mesh& mesh, const FacetMesh& fm,
     region.vertex_count = static_cast<int64_t>(corners.size());
     Distances(fm, corners, regions[r].surface, tau, &region.rms_distance, &region.max_distance);
     region.surface_id = surface_of_region[r];
-    seg.regions.push_back(std::move(region));
-  }
-  for (SharedSurface s : shared) {
+  });
+  seg.surfaces = shared;
+  tbb::parallel_for(std::size_t{0}, shared.size(), [&](std::size_t i) {
+    SharedSurface& s = seg.surfaces[i];
     std::vector<int> facets;
     for (const int r : s.regions) {
       facets.insert(facets.end(), regions[r].facets.begin(), regions[r].facets.end());
     }
     Distances(fm, CornersOf(fm, facets), s.surface, tau, &s.rms_distance, &s.max_distance);
     s.surface = segment_internal::Translated(s.surface, fm.origin);
-    seg.surfaces.push_back(std::move(s));
-  }
+  });
   return seg;
 }
 

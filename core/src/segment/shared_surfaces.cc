@@ -3,10 +3,14 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <map>
+#include <functional>
 #include <numeric>
+#include <optional>
+#include <unordered_map>
 #include <utility>
 #include <variant>
+
+#include <tbb/parallel_for.h>
 
 #include "meshseg/fit.h"
 #include "segment/exact_hypotheses.h"
@@ -73,8 +77,20 @@ Key KeyOf(const Surface& s, double diagonal) {
   return {0, 0, 0, 0};
 }
 
-int Find(std::vector<int>& parent, int x) {
-  while (parent[x] != x) x = parent[x] = parent[parent[x]];
+// Union by size keeps every tree shallow, so the root is found by reading
+// alone: the pairs of a large group of one surface (every cap of a pin
+// array in one plane) are mostly found joined already, at two reads each.
+using TypedKey = std::pair<int, Key>;  // (type, key)
+struct TypedKeyHash {
+  std::size_t operator()(const TypedKey& k) const {
+    std::size_t h = std::hash<int>()(k.first);
+    for (const long long x : k.second) h = h * 1000003u ^ std::hash<long long>()(x);
+    return h;
+  }
+};
+
+int Find(const std::vector<int>& parent, int x) {
+  while (parent[x] != x) x = parent[x];
   return x;
 }
 
@@ -85,17 +101,19 @@ std::vector<SharedSurface> GroupSharedSurfaces(const FacetMesh& fm,
                                                std::vector<int>* surface_of_region) {
   const int n = static_cast<int>(regions.size());
   std::vector<std::vector<int>> corners(n);
-  for (int r = 0; r < n; ++r) corners[r] = CornersOf(fm, regions[r].facets);
-  std::vector<int> parent(n);
+  tbb::parallel_for(0, n, [&](int r) { corners[r] = CornersOf(fm, regions[r].facets); });
+  std::vector<int> parent(n), size(n, 1);
   std::iota(parent.begin(), parent.end(), 0);
-  std::map<std::pair<int, Key>, std::vector<int>> by_key;
+  std::unordered_map<TypedKey, std::vector<int>, TypedKeyHash> by_key;
   for (int r = 0; r < n; ++r) {
     if (regions[r].type == SurfaceType::kFreeform) continue;
     by_key[{static_cast<int>(regions[r].type), KeyOf(regions[r].surface, fm.diagonal)}].push_back(
         r);
   }
+  // a and b: of one key, so of one type.
   auto try_join = [&](int a, int b) {
-    if (regions[b].type != regions[a].type || Find(parent, a) == Find(parent, b)) return;
+    int root_a = Find(parent, a), root_b = Find(parent, b);
+    if (root_a == root_b) return;
     const Surface& sa = regions[a].surface;
     const Surface& sb = regions[b].surface;
     if (!AllOn(fm, corners[b], sa, tau, kQuickCorners) ||
@@ -104,18 +122,31 @@ std::vector<SharedSurface> GroupSharedSurfaces(const FacetMesh& fm,
         !AllOn(fm, corners[a], sb, tau, kMaxCheckedCorners)) {
       return;
     }
-    parent[Find(parent, a)] = Find(parent, b);
+    if (size[root_a] < size[root_b]) std::swap(root_a, root_b);
+    parent[root_b] = root_a;
+    size[root_a] += size[root_b];
   };
+  // The key and its neighbours one step in each place, each pair of keys
+  // once: the offsets whose first step that is not 0 is +1, and 0.
+  std::vector<Key> forward;
+  for (int d = 0; d < 81; ++d) {
+    Key step;
+    for (int k = 0, m = d; k < 4; ++k, m /= 3) step[k] = m % 3 - 1;
+    const auto first = std::find_if(step.begin(), step.end(), [](long long x) { return x != 0; });
+    if (first == step.end() || *first > 0) forward.push_back(step);
+  }
   for (const auto& [key, members] : by_key) {
-    for (int d = 0; d < 81; ++d) {  // the key and its neighbours, one step in each place
+    for (const Key& step : forward) {
       Key next = key.second;
-      for (int k = 0, m = d; k < 4; ++k, m /= 3) next[k] += m % 3 - 1;
+      for (int k = 0; k < 4; ++k) next[k] += step[k];
       const auto near = by_key.find({key.first, next});
-      if (near == by_key.end() || near->first < key) continue;
-      for (const int a : members) {
-        for (const int b : near->second) {
-          if (near->first == key && b <= a) continue;
-          try_join(a, b);
+      if (near == by_key.end()) continue;
+      // Members ascend: within one key, each pair once (b after a).
+      const std::vector<int>& others = near->second;
+      const bool same_key = &others == &members;
+      for (std::size_t i = 0; i < members.size(); ++i) {
+        for (std::size_t j = same_key ? i + 1 : 0; j < others.size(); ++j) {
+          try_join(members[i], others[j]);
         }
       }
     }
@@ -134,19 +165,28 @@ std::vector<SharedSurface> GroupSharedSurfaces(const FacetMesh& fm,
     for (const int r : members) (*surface_of_region)[r] = id;
     out.push_back(std::move(s));
   };
+  // The joint fit of each group of several regions (independent fits).
+  std::vector<int> joined;  // roots of such groups
   for (int r = 0; r < n; ++r) {
-    if ((*surface_of_region)[r] >= 0 || groups[Find(parent, r)].empty()) continue;
-    const std::vector<int>& members = groups[Find(parent, r)];
-    if (members.size() == 1) {
-      add(members, regions[r].surface);
-      continue;
-    }
+    if (parent[r] == r && groups[r].size() > 1) joined.push_back(r);
+  }
+  std::vector<std::optional<Surface>> joint(n);
+  tbb::parallel_for(std::size_t{0}, joined.size(), [&](std::size_t i) {
+    const std::vector<int>& members = groups[joined[i]];
     std::vector<int> facets;
     for (const int m : members) {
       facets.insert(facets.end(), regions[m].facets.begin(), regions[m].facets.end());
     }
-    if (const std::optional<Surface> joint = FitExactly(fm, regions[r].type, facets, tau)) {
-      add(members, *joint);
+    joint[joined[i]] = FitExactly(fm, regions[members.front()].type, facets, tau);
+  });
+  for (int r = 0; r < n; ++r) {
+    const int root = Find(parent, r);
+    if ((*surface_of_region)[r] >= 0 || groups[root].empty()) continue;
+    const std::vector<int>& members = groups[root];
+    if (members.size() == 1) {
+      add(members, regions[r].surface);
+    } else if (joint[root]) {
+      add(members, *joint[root]);
     } else {
       for (const int m : members) add({m}, regions[m].surface);
     }
