@@ -45,7 +45,7 @@ absl::StatusOr<std::vector<Support>> CoverBySupports(const std::vector<OctreeLea
     const double diagonal = std::sqrt(3.0) * leaves[i].size;
     const Support s = FitSupport(leaves[i].center, 0.75 * diagonal, in);  // seed 001 §2.1.1
     // Covered: all 8 corners inside, i.e. the farthest corner is.
-    leaf_index.WithinRadius(s.center, s.radius, &found);
+    leaf_index.WithinRadiusUnordered(s.center, s.radius, &found);
     for (const auto& [j, unused] : found) {
       const Eigen::Vector3d far =
           (leaves[j].center - s.center).cwiseAbs().array() + 0.5 * leaves[j].size;
