@@ -191,8 +191,7 @@ bool TurnInward(const std::vector<Eigen::Vector3d>& points, const std::vector<in
 
 absl::StatusOr<OrientedNormals> InwardNormals(const std::vector<Eigen::Vector3d>& points,
                                               const std::vector<Eigen::Vector3d>& given,
-                                              const NeighborTable& nearest,
-                                              const RunContext& ctx) {
+                                              const NeighborTable& nearest, const RunContext& ctx) {
   constexpr double kMaxDisagreeing = 0.1;
   const std::vector<uint32_t>& knn = nearest.index;
   OrientedNormals out;

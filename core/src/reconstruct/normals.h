@@ -31,8 +31,7 @@ struct OrientedNormals {
 // Errors: CANCELLED when ctx requests a stop.
 absl::StatusOr<OrientedNormals> InwardNormals(const std::vector<Eigen::Vector3d>& points,
                                               const std::vector<Eigen::Vector3d>& given,
-                                              const NeighborTable& nearest,
-                                              const RunContext& ctx);
+                                              const NeighborTable& nearest, const RunContext& ctx);
 
 }  // namespace meshseg::reconstruct_internal
 

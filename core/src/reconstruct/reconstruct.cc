@@ -176,7 +176,9 @@ absl::StatusOr<Reconstruction> Reconstruct(const PointCloud& cloud, const Recons
   ctx.Progress("reconstruct: normals", 0.0);
   NeighborTable nearest = KeptNeighbors(all_nearest, out.is_outlier, points, index);
   all_nearest = {};
-  if (nearest.k != params.normal_neighbors) nearest = FirstColumns(nearest, params.normal_neighbors);
+  if (nearest.k != params.normal_neighbors) {
+    nearest = FirstColumns(nearest, params.normal_neighbors);
+  }
   MESHSEG_ASSIGN_OR_RETURN(const OrientedNormals normals,
                            InwardNormals(points, given_normals, nearest, ctx));
   nearest = {};

@@ -81,8 +81,8 @@ absl::StatusOr<Mesh> RefineOnPoints(const Mesh& mesh, const std::vector<Eigen::V
   // (24 s for 456K triangles); a large surface is remeshed at twice the edge
   // and split in four, which gives the same edge and count, and the
   // projection below (on all cores) puts the midpoints on the points too.
-  const double faces = area / (std::sqrt(3.0) / 4.0 * stats->refine_edge_length *
-                               stats->refine_edge_length);
+  const double faces =
+      area / (std::sqrt(3.0) / 4.0 * stats->refine_edge_length * stats->refine_edge_length);
   const bool split = faces > kSerialRemeshFaces;
   MESHSEG_ASSIGN_OR_RETURN(
       Mesh fine,

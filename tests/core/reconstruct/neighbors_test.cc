@@ -35,8 +35,7 @@ TEST(NearestOthers, RowsAreTheKNearestOtherPointsNearestFirst) {
   const NeighborTable table = NearestOthers(points, index, 8);
   ASSERT_EQ(table.size(), points.size());
   for (size_t i = 0; i < points.size(); ++i) {
-    EXPECT_EQ(std::vector<uint32_t>(table.Row(i), table.Row(i) + 8), BruteForce(points, i, 8))
-        << i;
+    EXPECT_EQ(std::vector<uint32_t>(table.Row(i), table.Row(i) + 8), BruteForce(points, i, 8)) << i;
   }
   const NeighborTable first = FirstColumns(table, 3);
   EXPECT_EQ(std::vector<uint32_t>(first.Row(7), first.Row(7) + 3), BruteForce(points, 7, 3));

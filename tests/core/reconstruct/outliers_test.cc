@@ -34,8 +34,7 @@ Grid PlaneWith(const std::vector<Eigen::Vector3d>& extra) {
 Outliers Find(const Grid& g) {
   const mesh_internal::PointIndex index(g.points);
   const NeighborTable nearest = NearestOthers(g.points, index, 10);
-  return FindOutliers(g.points, g.normals, index, nearest,
-                      MeanNeighborDistances(g.points, nearest),
+  return FindOutliers(g.points, g.normals, index, nearest, MeanNeighborDistances(g.points, nearest),
                       {.neighbors = 10, .sparse_distance = 2.0 * 1.2, .min_band = 1.0});
 }
 
