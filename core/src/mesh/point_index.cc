@@ -55,4 +55,14 @@ void PointIndex::WithinRadius(const Eigen::Vector3d& q, double radius,
   tree_->kd.radiusSearch(q.data(), radius * radius, *found, nanoflann::SearchParams(32, 0, true));
 }
 
+void PointIndex::WithinRadiusUnordered(const Eigen::Vector3d& q, double radius,
+                                       std::vector<std::pair<uint32_t, double>>* found) const {
+  found->clear();
+  tree_->kd.radiusSearch(q.data(), radius * radius, *found, nanoflann::SearchParams(32, 0, false));
+}
+
+std::vector<uint32_t> PointIndex::SpatialOrder() const {
+  return std::vector<uint32_t>(tree_->kd.vAcc.begin(), tree_->kd.vAcc.end());
+}
+
 }  // namespace meshseg::mesh_internal

@@ -36,6 +36,16 @@ class PointIndex {
   void WithinRadius(const Eigen::Vector3d& q, double radius,
                     std::vector<std::pair<uint32_t, double>>* found) const;
 
+  // As WithinRadius, in no particular order (saves the sort; for callers
+  // that visit every point found).
+  void WithinRadiusUnordered(const Eigen::Vector3d& q, double radius,
+                             std::vector<std::pair<uint32_t, double>>* found) const;
+
+  // Every point's index once, in the tree's order: points of one leaf
+  // bucket, then of the next, depth first. Queries issued in this order touch
+  // the tree and the points in a cache-friendly sequence.
+  std::vector<uint32_t> SpatialOrder() const;
+
   size_t size() const { return points_.size(); }
 
  private:

@@ -1,13 +1,14 @@
 #include "reconstruct/normals.h"
 
 #include <algorithm>
+#include <bit>
 #include <cstdint>
-#include <queue>
-#include <tuple>
+#include <numeric>
 
 #include <Eigen/Eigenvalues>
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_sort.h>
 
 #include "meshseg/status_macros.h"
 
@@ -15,58 +16,6 @@ namespace meshseg::reconstruct_internal {
 namespace {
 
 constexpr char kStage[] = "reconstruct: normals";
-
-// Symmetric k-NN graph in compressed rows: neighbours of i are
-// adj[offset[i] .. offset[i + 1]).
-struct KnnGraph {
-  std::vector<uint32_t> offset;
-  std::vector<uint32_t> adj;
-};
-
-// Returns the k nearest neighbours of every point (itself excluded), as
-// n × k row-major indices (fewer per row only when n ≤ k).
-std::vector<uint32_t> NearestNeighbors(const std::vector<Eigen::Vector3d>& points,
-                                       const mesh_internal::PointIndex& index, int k) {
-  const size_t n = points.size();
-  const int kk = static_cast<int>(std::min<size_t>(k, n - 1));
-  std::vector<uint32_t> knn(n * kk);
-  tbb::parallel_for(tbb::blocked_range<size_t>(0, n), [&](const auto& range) {
-    std::vector<uint32_t> idx;
-    std::vector<double> d2;
-    for (size_t i = range.begin(); i != range.end(); ++i) {
-      index.Nearest(points[i], kk + 1, &idx, &d2);
-      int out = 0;
-      for (size_t j = 0; j < idx.size() && out < kk; ++j) {
-        if (idx[j] != i) knn[i * kk + out++] = idx[j];
-      }
-      while (out < kk) knn[i * kk + out++] = static_cast<uint32_t>(i);
-    }
-  });
-  return knn;
-}
-
-KnnGraph SymmetricGraph(const std::vector<uint32_t>& knn, size_t n) {
-  const size_t k = knn.size() / n;
-  KnnGraph g;
-  g.offset.assign(n + 1, 0);
-  for (size_t i = 0; i < n; ++i) {
-    for (size_t j = 0; j < k; ++j) {
-      ++g.offset[i + 1];
-      ++g.offset[knn[i * k + j] + 1];
-    }
-  }
-  for (size_t i = 0; i < n; ++i) g.offset[i + 1] += g.offset[i];
-  g.adj.resize(g.offset[n]);
-  std::vector<uint32_t> fill(g.offset.begin(), g.offset.end() - 1);
-  for (size_t i = 0; i < n; ++i) {
-    for (size_t j = 0; j < k; ++j) {
-      const uint32_t o = knn[i * k + j];
-      g.adj[fill[i]++] = o;
-      g.adj[fill[o]++] = static_cast<uint32_t>(i);
-    }
-  }
-  return g;
-}
 
 // Unit normals of the least-variance direction of each point's neighbours.
 std::vector<Eigen::Vector3d> PcaNormals(const std::vector<Eigen::Vector3d>& points,
@@ -91,34 +40,110 @@ std::vector<Eigen::Vector3d> PcaNormals(const std::vector<Eigen::Vector3d>& poin
   return normals;
 }
 
-// Flips normals so that neighbours along a minimum spanning tree agree;
-// returns the component id of every point.
-absl::StatusOr<std::vector<int>> PropagateOrientation(const KnnGraph& g,
+// Union-find whose elements carry a parity: whether an element's normal must
+// flip to agree with its root's.
+class ParityForest {
+ public:
+  explicit ParityForest(size_t n) : parent_(n), parity_(n, 0), rank_(n, 0) {
+    std::iota(parent_.begin(), parent_.end(), 0u);
+  }
+
+  // Returns the root of i and sets *parity to i's flip relative to it;
+  // points the path at the root.
+  uint32_t Find(uint32_t i, uint8_t* parity) {
+    uint32_t root = i;
+    uint8_t total = 0;
+    while (parent_[root] != root) {
+      total ^= parity_[root];
+      root = parent_[root];
+    }
+    uint32_t x = i;
+    uint8_t px = total;  // x's flip relative to root
+    while (x != root && parent_[x] != root) {
+      const uint32_t next = parent_[x];
+      const uint8_t next_parity = px ^ parity_[x];
+      parent_[x] = root;
+      parity_[x] = px;
+      x = next;
+      px = next_parity;
+    }
+    *parity = total;
+    return root;
+  }
+
+  // Joins the trees of a and b so that flip(a) ^ flip(b) = `relative`;
+  // false if they are one tree already.
+  bool Join(uint32_t a, uint32_t b, uint8_t relative) {
+    uint8_t pa = 0, pb = 0;
+    uint32_t ra = Find(a, &pa), rb = Find(b, &pb);
+    if (ra == rb) return false;
+    if (rank_[ra] < rank_[rb]) std::swap(ra, rb);
+    parent_[rb] = ra;
+    parity_[rb] = pa ^ pb ^ relative;
+    rank_[ra] += rank_[ra] == rank_[rb];
+    return true;
+  }
+
+ private:
+  std::vector<uint32_t> parent_;
+  std::vector<uint8_t> parity_;
+  std::vector<uint8_t> rank_;
+};
+
+// Flips normals so that neighbours along a minimum spanning tree of the
+// symmetric k-NN graph (weight 1 − |n_i·n_j|) agree, the first point of each
+// component keeping its sign; returns the component id of every point
+// (numbered in the order of their first points). Kruskal's algorithm: the
+// edges sorted by weight (in parallel), joined by union-find; it finds the
+// tree Prim's propagation from the first point finds (the same minimum
+// spanning tree when weights are distinct; with ties, another of equal
+// weight), and the flips along a tree do not depend on the order they are
+// made in.
+absl::StatusOr<std::vector<int>> PropagateOrientation(const std::vector<uint32_t>& knn,
                                                       std::vector<Eigen::Vector3d>* normals,
                                                       const RunContext& ctx) {
   const size_t n = normals->size();
-  std::vector<int> component(n, -1);
-  using Item = std::tuple<double, uint32_t, uint32_t>;  // weight, to, from
-  std::priority_queue<Item, std::vector<Item>, std::greater<Item>> heap;
-  int components = 0;
-  size_t done = 0;
-  for (size_t root = 0; root < n; ++root) {
-    if (component[root] >= 0) continue;
-    heap.emplace(0.0, static_cast<uint32_t>(root), static_cast<uint32_t>(root));
-    while (!heap.empty()) {
-      const auto [w, to, from] = heap.top();
-      heap.pop();
-      if (component[to] >= 0) continue;
-      component[to] = components;
-      Eigen::Vector3d& nt = (*normals)[to];
-      if (nt.dot((*normals)[from]) < 0) nt = -nt;
-      if (++done % 65536 == 0) MESHSEG_RETURN_IF_ERROR(ctx.CheckStop(kStage));
-      for (uint32_t e = g.offset[to]; e < g.offset[to + 1]; ++e) {
-        const uint32_t o = g.adj[e];
-        if (component[o] < 0) heap.emplace(1.0 - std::abs(nt.dot((*normals)[o])), o, to);
+  const size_t k = knn.size() / n;
+  const auto& nm = *normals;
+  // Edge key: the weight's bits (a non-negative float orders as its bits)
+  // above the edge's position i·k + j in `knn`. An edge listed both ways is
+  // kept once.
+  std::vector<uint64_t> keys;
+  keys.reserve(knn.size());
+  for (size_t i = 0; i < n; ++i) {
+    for (size_t j = 0; j < k; ++j) {
+      const uint32_t o = knn[i * k + j];
+      if (o == i) continue;
+      if (o < i && std::find(knn.begin() + o * k, knn.begin() + (o + 1) * k, i) !=
+                       knn.begin() + (o + 1) * k) {
+        continue;
       }
+      const float w = static_cast<float>(std::max(0.0, 1.0 - std::abs(nm[i].dot(nm[o]))));
+      keys.push_back((uint64_t{std::bit_cast<uint32_t>(w)} << 32) | (i * k + j));
     }
-    ++components;
+  }
+  MESHSEG_RETURN_IF_ERROR(ctx.CheckStop(kStage));
+  tbb::parallel_sort(keys.begin(), keys.end());
+  MESHSEG_RETURN_IF_ERROR(ctx.CheckStop(kStage));
+  ParityForest forest(n);
+  for (const uint64_t key : keys) {
+    const uint32_t e = static_cast<uint32_t>(key);
+    const uint32_t i = e / k, o = knn[e];
+    forest.Join(i, o, nm[i].dot(nm[o]) < 0);
+  }
+  std::vector<int> component(n, -1);
+  std::vector<int> of_root(n, -1);
+  std::vector<uint8_t> root_flip(n, 0);
+  int components = 0;
+  for (size_t i = 0; i < n; ++i) {
+    uint8_t parity = 0;
+    const uint32_t root = forest.Find(static_cast<uint32_t>(i), &parity);
+    if (of_root[root] < 0) {
+      of_root[root] = components++;
+      root_flip[root] = parity;
+    }
+    component[i] = of_root[root];
+    if (parity != root_flip[root]) (*normals)[i] = -(*normals)[i];
   }
   return component;
 }
@@ -166,11 +191,9 @@ bool TurnInward(const std::vector<Eigen::Vector3d>& points, const std::vector<in
 
 absl::StatusOr<OrientedNormals> InwardNormals(const std::vector<Eigen::Vector3d>& points,
                                               const std::vector<Eigen::Vector3d>& given,
-                                              const mesh_internal::PointIndex& index, int k,
-                                              const RunContext& ctx) {
+                                              const NeighborTable& nearest, const RunContext& ctx) {
   constexpr double kMaxDisagreeing = 0.1;
-  const std::vector<uint32_t> knn = NearestNeighbors(points, index, k);
-  MESHSEG_RETURN_IF_ERROR(ctx.CheckStop(kStage));
+  const std::vector<uint32_t>& knn = nearest.index;
   OrientedNormals out;
   if (!given.empty()) {
     out.normals.resize(given.size());
@@ -184,9 +207,8 @@ absl::StatusOr<OrientedNormals> InwardNormals(const std::vector<Eigen::Vector3d>
     out.normals = PcaNormals(points, knn);
   }
   MESHSEG_RETURN_IF_ERROR(ctx.CheckStop(kStage));
-  const KnnGraph graph = SymmetricGraph(knn, points.size());
   MESHSEG_ASSIGN_OR_RETURN(const std::vector<int> component,
-                           PropagateOrientation(graph, &out.normals, ctx));
+                           PropagateOrientation(knn, &out.normals, ctx));
   out.flipped = TurnInward(points, component, &out.normals) || out.flipped;
   return out;
 }

@@ -10,7 +10,7 @@
 
 #include "absl/status/statusor.h"
 #include "meshseg/run_context.h"
-#include "mesh/point_index.h"
+#include "reconstruct/neighbors.h"
 
 namespace meshseg::reconstruct_internal {
 
@@ -20,7 +20,8 @@ struct OrientedNormals {
 };
 
 // Returns inward unit normals for `points`. With `given` empty they are the
-// least-variance directions of the k nearest neighbours, made consistent by
+// least-variance directions of the k nearest neighbours (`nearest`, k =
+// nearest.k), made consistent by
 // propagation along a minimum spanning tree of the symmetric k-NN graph
 // (weight 1 − |n_i·n_j|), one tree per connected component. Given normals
 // are kept unless more than 10 % of confident neighbour pairs disagree, in
@@ -30,8 +31,7 @@ struct OrientedNormals {
 // Errors: CANCELLED when ctx requests a stop.
 absl::StatusOr<OrientedNormals> InwardNormals(const std::vector<Eigen::Vector3d>& points,
                                               const std::vector<Eigen::Vector3d>& given,
-                                              const mesh_internal::PointIndex& index, int k,
-                                              const RunContext& ctx);
+                                              const NeighborTable& nearest, const RunContext& ctx);
 
 }  // namespace meshseg::reconstruct_internal
 

@@ -18,6 +18,8 @@ constexpr int kMinAgreeing = 2;
 constexpr double kMadToSigma = 1.4826;
 // Fewer neighbours than this fit no plane; the point is not judged by it.
 constexpr size_t kMinFitPoints = 3;
+// The spread of a point is its mean distance to this many nearest others.
+constexpr int kSpreadNeighbors = 6;
 
 // How point i sits against the least-squares plane of `neighbors`.
 struct LocalFit {
@@ -76,9 +78,8 @@ double Median(std::vector<double> values) {
 bool Detached(const Eigen::Vector3d& p, const std::vector<uint32_t>& nb,
               const std::vector<Eigen::Vector3d>& points, const std::vector<double>& spreads,
               double ratio) {
-  constexpr size_t kSpreadNeighbors = 6;  // as MeanNeighborDistances
   double sum = 0.0;
-  const size_t m = std::min(kSpreadNeighbors, nb.size());
+  const size_t m = std::min<size_t>(kSpreadNeighbors, nb.size());
   std::vector<double> theirs;
   for (size_t a = 0; a < nb.size(); ++a) {
     if (a < m) sum += (points[nb[a]] - p).norm();
@@ -91,18 +92,16 @@ bool Detached(const Eigen::Vector3d& p, const std::vector<uint32_t>& nb,
 
 Outliers FindOutliers(const std::vector<Eigen::Vector3d>& points,
                       const std::vector<Eigen::Vector3d>& normals,
-                      const mesh_internal::PointIndex& index, const std::vector<double>& spread,
-                      const OutlierTest& test) {
+                      const mesh_internal::PointIndex& index, const NeighborTable& nearest,
+                      const std::vector<double>& spread, const OutlierTest& test) {
   const size_t n = points.size();
-  const size_t k = static_cast<size_t>(std::max(test.neighbors, 1));
+  const size_t k = static_cast<size_t>(std::clamp(test.neighbors, 1, nearest.k));
   std::vector<LocalFit> fits(n);
   std::vector<uint8_t> fitted(n, 0);
   tbb::parallel_for(tbb::blocked_range<size_t>(0, n), [&](const auto& range) {
-    std::vector<uint32_t> idx;
-    std::vector<double> d2;
     for (size_t i = range.begin(); i != range.end(); ++i) {
-      index.Nearest(points[i], static_cast<int>(k) + 1, &idx, &d2);
-      const std::vector<uint32_t> nb = FirstOthers(i, idx, k, nullptr);
+      const std::vector<uint32_t> nb =
+          FirstOthers(i, std::vector<uint32_t>(nearest.Row(i), nearest.Row(i) + k), k, nullptr);
       if (nb.size() < kMinFitPoints) continue;
       fits[i] = FitAround(i, nb, points, normals);
       fitted[i] = 1;
@@ -151,27 +150,35 @@ Outliers FindOutliers(const std::vector<Eigen::Vector3d>& points,
 Outliers OutliersOfCloud(const std::vector<Eigen::Vector3d>& points,
                          const std::vector<Eigen::Vector3d>& normals,
                          const mesh_internal::PointIndex& index, const ReconstructParams& params) {
-  const std::vector<double> spread = MeanNeighborDistances(points, index);
+  // One k-NN pass serves the spread, the plane fits and (via Outliers) the
+  // normals.
+  NeighborTable nearest =
+      NearestOthers(points, index, std::max(params.normal_neighbors, kSpreadNeighbors));
+  const std::vector<double> spread = MeanNeighborDistances(points, nearest);
   const double h = Median(spread);
   const OutlierTest test{params.normal_neighbors, params.outlier_distance * h,
                          params.off_surface_distance * h, params.outlier_noise_sigmas};
-  Outliers out = FindOutliers(points, normals, index, spread, test);
+  Outliers out = FindOutliers(points, normals, index, nearest, spread, test);
   out.spacing = h;
+  out.nearest = std::move(nearest);
   return out;
 }
 
 std::vector<double> MeanNeighborDistances(const std::vector<Eigen::Vector3d>& points,
-                                          const mesh_internal::PointIndex& index) {
-  constexpr int kNeighbors = 6;
+                                          const NeighborTable& nearest) {
   std::vector<double> mean(points.size(), 0.0);
+  const int m = std::min(nearest.k, kSpreadNeighbors);
   tbb::parallel_for(tbb::blocked_range<size_t>(0, points.size()), [&](const auto& range) {
-    std::vector<uint32_t> idx;
-    std::vector<double> d2;
     for (size_t i = range.begin(); i != range.end(); ++i) {
-      index.Nearest(points[i], kNeighbors + 1, &idx, &d2);
       double sum = 0.0;
-      for (size_t j = 1; j < d2.size(); ++j) sum += std::sqrt(d2[j]);
-      mean[i] = d2.size() > 1 ? sum / static_cast<double>(d2.size() - 1) : 0.0;
+      int count = 0;
+      for (int j = 0; j < m; ++j) {
+        const uint32_t o = nearest.Row(i)[j];
+        if (o == i) continue;  // padding: fewer others than m
+        sum += (points[o] - points[i]).norm();
+        ++count;
+      }
+      mean[i] = count > 0 ? sum / count : 0.0;
     }
   });
   return mean;

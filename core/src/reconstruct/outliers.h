@@ -22,14 +22,15 @@
 
 #include "mesh/point_index.h"
 #include "meshseg/reconstruct.h"
+#include "reconstruct/neighbors.h"
 
 namespace meshseg::reconstruct_internal {
 
 // Returns, per point, the mean distance to its 6 nearest other points
 // (≈ sqrt(area / count) on a uniformly sampled surface, large for isolated
-// outliers).
+// outliers), from the first 6 columns of `nearest`.
 std::vector<double> MeanNeighborDistances(const std::vector<Eigen::Vector3d>& points,
-                                          const mesh_internal::PointIndex& index);
+                                          const NeighborTable& nearest);
 
 struct OutlierTest {
   int neighbors = 10;  // k of the local plane fits
@@ -51,20 +52,24 @@ struct Outliers {
   double noise = 0.0;          // σ, model units
   double band = 0.0;           // the off-surface band used, model units
   double spacing = 0.0;        // h: median spread (OutliersOfCloud only)
+  // The k-NN table of all the points, k = max(normal_neighbors, 6)
+  // (OutliersOfCloud only; the normals reuse it).
+  NeighborTable nearest;
 };
 
 // Flags a point whose distance to the least-squares plane of its k nearest
 // other points exceeds the band; a sparse point also when those neighbours
 // lie farther than the band from their own plane (RMS: they scatter in 3-D);
 // with `normals` given, also a point whose normal is more than 60° from the
-// normals of all but one of those neighbours. The second pass takes the neighbours among
+// normals of all but one of those neighbours. The first pass takes the k
+// nearest from `nearest` (k ≤ nearest.k). The second pass takes the neighbours among
 // the points the first kept, k of its 2k + 1 nearest (a point with fewer of
 // them is flagged: it lies among outliers), and flags a sparse point also
 // when it is detached from them (detached_ratio).
 Outliers FindOutliers(const std::vector<Eigen::Vector3d>& points,
                       const std::vector<Eigen::Vector3d>& normals,
-                      const mesh_internal::PointIndex& index, const std::vector<double>& spread,
-                      const OutlierTest& test);
+                      const mesh_internal::PointIndex& index, const NeighborTable& nearest,
+                      const std::vector<double>& spread, const OutlierTest& test);
 
 // The test Reconstruct() runs: spread and h (the median spread) of all the
 // points, then FindOutliers with `params`' distances in h.

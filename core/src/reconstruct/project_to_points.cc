@@ -55,7 +55,7 @@ std::vector<int> ProjectToPoints(const std::vector<Eigen::Vector3d>& points,
       const TriMesh::VertexHandle vh(static_cast<int>(v));
       Eigen::Vector3d x = ToEigen(mesh->point(vh));
       for (int step = 0; step < iterations; ++step) {
-        index.WithinRadius(x, radius, &found);
+        index.WithinRadiusUnordered(x, radius, &found);
         double widened = sigma2;
         if (found.size() < kMinProjectionPoints) {
           index.Nearest(x, kMinProjectionPoints, &nearest, &nearest_d2);

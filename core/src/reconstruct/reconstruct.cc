@@ -14,6 +14,7 @@
 #include "reconstruct/cover.h"
 #include "reconstruct/graph_cut.h"
 #include "reconstruct/marching_tetrahedra.h"
+#include "reconstruct/neighbors.h"
 #include "reconstruct/normals.h"
 #include "reconstruct/octree.h"
 #include "reconstruct/outliers.h"
@@ -142,6 +143,7 @@ absl::StatusOr<Reconstruction> Reconstruct(const PointCloud& cloud, const Recons
   MESHSEG_RETURN_IF_ERROR(ValidateCloud(cloud));
   Reconstruction out;
   ReconstructStats& stats = out.stats;
+  NeighborTable all_nearest;
   {
     ctx.Progress("reconstruct: outliers", 0.0);
     const mesh_internal::PointIndex all_index(cloud.points);
@@ -149,6 +151,7 @@ absl::StatusOr<Reconstruction> Reconstruct(const PointCloud& cloud, const Recons
     stats.point_spacing = outliers.spacing;
     stats.noise = outliers.noise;
     out.is_outlier = std::move(outliers.flags);
+    all_nearest = std::move(outliers.nearest);
   }
   const double h = stats.point_spacing;
   // Outliers take no part in the fits.
@@ -174,11 +177,16 @@ absl::StatusOr<Reconstruction> Reconstruct(const PointCloud& cloud, const Recons
   const mesh_internal::PointIndex index(points);
   ctx.Progress(kStage, 0.05);
 
-  // Step 1: inward normals.
+  // Step 1: inward normals, from the outlier test's neighbours.
   ctx.Progress("reconstruct: normals", 0.0);
-  MESHSEG_ASSIGN_OR_RETURN(
-      const OrientedNormals normals,
-      InwardNormals(points, given_normals, index, params.normal_neighbors, ctx));
+  NeighborTable nearest = KeptNeighbors(all_nearest, out.is_outlier, points, index);
+  all_nearest = {};
+  if (nearest.k != params.normal_neighbors) {
+    nearest = FirstColumns(nearest, params.normal_neighbors);
+  }
+  MESHSEG_ASSIGN_OR_RETURN(const OrientedNormals normals,
+                           InwardNormals(points, given_normals, nearest, ctx));
+  nearest = {};
   stats.normals_estimated = !cloud.has_normals();
   stats.normals_flipped = cloud.has_normals() && normals.flipped;
   ctx.Progress(kStage, 0.15);

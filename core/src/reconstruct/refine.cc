@@ -1,7 +1,9 @@
 #include "reconstruct/refine.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <vector>
 
 #include "meshseg/remesh.h"
 #include "meshseg/status_macros.h"
@@ -34,6 +36,35 @@ Eigen::Vector3d OntoZeroSet(const PuFunction& f, Eigen::Vector3d x, double delta
 
 }  // namespace
 
+absl::StatusOr<Mesh> SplitInFour(const Mesh& mesh) {
+  const TriMesh& tri = mesh.tri;
+  const int nv = static_cast<int>(tri.n_vertices());
+  std::vector<Eigen::Vector3d> vertices;
+  vertices.reserve(tri.n_vertices() + tri.n_edges());
+  for (const auto v : tri.vertices()) vertices.push_back(ToEigen(tri.point(v)));
+  for (const auto e : tri.edges()) {
+    const auto h = tri.halfedge_handle(e, 0);
+    vertices.push_back(0.5 * (ToEigen(tri.point(tri.from_vertex_handle(h))) +
+                              ToEigen(tri.point(tri.to_vertex_handle(h)))));
+  }
+  std::vector<std::array<int, 3>> triangles;
+  triangles.reserve(4 * tri.n_faces());
+  for (const auto f : tri.faces()) {
+    const auto h0 = tri.halfedge_handle(f);
+    const auto h1 = tri.next_halfedge_handle(h0);
+    const auto h2 = tri.next_halfedge_handle(h1);
+    const int a = tri.from_vertex_handle(h0).idx(), b = tri.from_vertex_handle(h1).idx(),
+              c = tri.from_vertex_handle(h2).idx();
+    const int ab = nv + tri.edge_handle(h0).idx(), bc = nv + tri.edge_handle(h1).idx(),
+              ca = nv + tri.edge_handle(h2).idx();
+    triangles.push_back({a, ab, ca});
+    triangles.push_back({ab, b, bc});
+    triangles.push_back({ca, bc, c});
+    triangles.push_back({ab, bc, ca});
+  }
+  return BuildMesh(std::move(vertices), triangles, mesh.name);
+}
+
 absl::StatusOr<Mesh> RefineOnPoints(const Mesh& mesh, const std::vector<Eigen::Vector3d>& points,
                                     const mesh_internal::PointIndex& index, const PuFunction& f,
                                     double h, const ReconstructParams& params,
@@ -46,8 +77,16 @@ absl::StatusOr<Mesh> RefineOnPoints(const Mesh& mesh, const std::vector<Eigen::V
   RemeshParams remesh;
   remesh.feature_angle_deg = 180.0;  // no feature edges, see refine.h
   remesh.small_radius_edges = 0.0;   // a staircase, not facets of a CAD surface
-  MESHSEG_ASSIGN_OR_RETURN(Mesh fine,
-                           IsotropicRemesh(mesh, stats->refine_edge_length, remesh, ctx));
+  // CGAL's remesher runs on one thread at a cost in proportion to its output
+  // (24 s for 456K triangles); a large surface is remeshed at twice the edge
+  // and split in four, which gives the same edge and count, and the
+  // projection below (on all cores) puts the midpoints on the points too.
+  const double faces =
+      area / (std::sqrt(3.0) / 4.0 * stats->refine_edge_length * stats->refine_edge_length);
+  const bool split = faces > kSerialRemeshFaces;
+  MESHSEG_ASSIGN_OR_RETURN(
+      Mesh fine,
+      IsotropicRemesh(mesh, (split ? 2.0 : 1.0) * stats->refine_edge_length, remesh, ctx));
   // The remesher may collapse across a sheet thinner than its edges and
   // pinch it; the mesh builder then drops the faces it cannot hold. The
   // refinement must keep the closed 2-manifold, so then the marching-
@@ -57,6 +96,9 @@ absl::StatusOr<Mesh> RefineOnPoints(const Mesh& mesh, const std::vector<Eigen::V
       stats->refine_edge_length = 0.0;
       return mesh;
     }
+  }
+  if (split) {
+    MESHSEG_ASSIGN_OR_RETURN(fine, SplitInFour(fine));
   }
   ctx.Progress("reconstruct: projection", 0.0);
   const double radius = params.projection_radius * h;

@@ -41,6 +41,14 @@ inline constexpr int kProjectionIterations = 3;
 // gradient norm f is flat (no support reaches there) and the vertex stays.
 inline constexpr int kZeroSetIterations = 10;
 inline constexpr double kMinGradient = 1e-3;
+// Above this many triangles the surface is remeshed at twice the edge and
+// split in four (CGAL's remesher takes ~5 s for as many here, on one thread).
+inline constexpr double kSerialRemeshFaces = 100'000;
+
+// Returns `mesh` with every triangle split into four at the midpoints of its
+// edges: edges halve, triangle shapes and the surface stay, a closed oriented
+// 2-manifold stays one. Errors: those of BuildMesh.
+absl::StatusOr<Mesh> SplitInFour(const Mesh& mesh);
 
 // Returns `mesh` remeshed and projected onto `points` (the non-outliers,
 // indexed by `index`) with point spacing `h`, or onto the zero set of `f`

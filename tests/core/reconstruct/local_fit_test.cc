@@ -73,5 +73,45 @@ TEST(FitSupport, BallInEmptySpaceReachesEnoughPoints) {
   EXPECT_NEAR(s.g(s.center), -10.0, 0.5);  // outside, about its distance
 }
 
+// The fit FitSupport returns is eqs. (2)-(3) over exactly the points inside
+// its ball, recomputed here from all points, and within ε there (eq. 6);
+// on a curved surface, where the radius search doubles and bisects.
+TEST(FitSupport, TheFitIsTheWeightedMeanOfThePointsInsideItsBallAndWithinTheTolerance) {
+  std::mt19937 rng(5);
+  std::normal_distribution<double> g;
+  std::vector<Eigen::Vector3d> points, normals;
+  for (int i = 0; i < 20000; ++i) {
+    const Eigen::Vector3d n = Eigen::Vector3d(g(rng), g(rng), g(rng)).normalized();
+    points.push_back(20.0 * n);
+    normals.push_back(-n);
+  }
+  const mesh_internal::PointIndex index(points);
+  const FitInput in{points, normals, index, /*epsilon=*/0.3, /*max_radius=*/100.0};
+  for (const Eigen::Vector3d& c : {Eigen::Vector3d(0.5, 0.2, 19.8), Eigen::Vector3d(12, -3, 15)}) {
+    const Support s = FitSupport(c, 0.5, in);
+    Eigen::Vector3d sum_n = Eigen::Vector3d::Zero(), sum_p = Eigen::Vector3d::Zero();
+    double sum_w = 0.0, worst = 0.0;
+    int inside = 0;
+    for (size_t j = 0; j < points.size(); ++j) {
+      const double d2 = (points[j] - c).squaredNorm();
+      if (d2 >= s.radius * s.radius) continue;
+      const double w = SupportWeight(d2, s.radius);
+      sum_n += w * normals[j];
+      sum_p += w * points[j];
+      sum_w += w;
+      ++inside;
+    }
+    for (size_t j = 0; j < points.size(); ++j) {
+      if ((points[j] - c).norm() < s.radius) worst = std::max(worst, std::abs(s.g(points[j])));
+    }
+    EXPECT_GT(s.radius, 2.0);  // grown beyond the minimum, short of the sphere
+    EXPECT_LT(s.radius, 20.0);
+    EXPECT_EQ(s.point_count, inside);
+    EXPECT_LT((s.m - sum_n.normalized()).norm(), 1e-12);
+    EXPECT_LT((s.d - sum_p / sum_w).norm(), 1e-9);
+    EXPECT_LE(worst, in.epsilon);
+  }
+}
+
 }  // namespace
 }  // namespace meshseg::reconstruct_internal

@@ -48,7 +48,7 @@ TEST(InwardNormals, EstimatedNormalsAreConsistentAndPointInward) {
   std::vector<Eigen::Vector3d> points, outward;
   BoxSamples(6000, &points, &outward);
   const mesh_internal::PointIndex index(points);
-  const auto r = InwardNormals(points, {}, index, 10, {});
+  const auto r = InwardNormals(points, {}, NearestOthers(points, index, 10), {});
   ASSERT_TRUE(r.ok()) << r.status();
   EXPECT_GE(InwardFraction(r->normals, outward, 0.0), 0.995);  // consistently inward
   EXPECT_GE(InwardFraction(r->normals, outward), 0.9);         // PCA tilts them at the edges
@@ -58,7 +58,7 @@ TEST(InwardNormals, GivenOutwardNormalsAreFlipped) {
   std::vector<Eigen::Vector3d> points, outward;
   BoxSamples(2000, &points, &outward);
   const mesh_internal::PointIndex index(points);
-  const auto r = InwardNormals(points, outward, index, 10, {});
+  const auto r = InwardNormals(points, outward, NearestOthers(points, index, 10), {});
   ASSERT_TRUE(r.ok()) << r.status();
   EXPECT_TRUE(r->flipped);
   EXPECT_DOUBLE_EQ(InwardFraction(r->normals, outward), 1.0);
@@ -70,7 +70,7 @@ TEST(InwardNormals, GivenInwardNormalsAreKept) {
   std::vector<Eigen::Vector3d> inward;
   for (const auto& n : outward) inward.push_back(-n);
   const mesh_internal::PointIndex index(points);
-  const auto r = InwardNormals(points, inward, index, 10, {});
+  const auto r = InwardNormals(points, inward, NearestOthers(points, index, 10), {});
   ASSERT_TRUE(r.ok()) << r.status();
   EXPECT_FALSE(r->flipped);
   EXPECT_DOUBLE_EQ(InwardFraction(r->normals, outward), 1.0);
@@ -84,7 +84,7 @@ TEST(InwardNormals, InconsistentGivenNormalsAreReoriented) {
   std::vector<Eigen::Vector3d> mixed = outward;
   for (size_t i = 0; i < mixed.size(); i += 2) mixed[i] = -mixed[i];
   const mesh_internal::PointIndex index(points);
-  const auto r = InwardNormals(points, mixed, index, 10, {});
+  const auto r = InwardNormals(points, mixed, NearestOthers(points, index, 10), {});
   ASSERT_TRUE(r.ok()) << r.status();
   EXPECT_GE(InwardFraction(r->normals, outward), 0.99);
 }

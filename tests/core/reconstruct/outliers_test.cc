@@ -33,7 +33,8 @@ Grid PlaneWith(const std::vector<Eigen::Vector3d>& extra) {
 // h of the grid is 1.2 (mean distance to the 6 nearest).
 Outliers Find(const Grid& g) {
   const mesh_internal::PointIndex index(g.points);
-  return FindOutliers(g.points, g.normals, index, MeanNeighborDistances(g.points, index),
+  const NeighborTable nearest = NearestOthers(g.points, index, 10);
+  return FindOutliers(g.points, g.normals, index, nearest, MeanNeighborDistances(g.points, nearest),
                       {.neighbors = 10, .sparse_distance = 2.0 * 1.2, .min_band = 1.0});
 }
 

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "core/curvature/test_meshes.h"
+#include "meshseg/remesh.h"
 #include "reconstruct/project_to_points.h"
 #include "grid_supports.h"
 
@@ -44,6 +45,35 @@ std::vector<Eigen::Vector3d> SpherePoints(double min_z = -2 * kRadius) {
     if (p.z() > min_z) points.push_back(p);
   }
   return points;
+}
+
+TEST(SplitInFour, QuartersEveryTriangleKeepingTheClosedSurface) {
+  const absl::StatusOr<Mesh> mesh = testing::MakeSphere(kRadius, 2);
+  ASSERT_TRUE(mesh.ok()) << mesh.status();
+  const absl::StatusOr<Mesh> split = SplitInFour(*mesh);
+  ASSERT_TRUE(split.ok()) << split.status();
+  EXPECT_EQ(split->tri.n_faces(), 4 * mesh->tri.n_faces());
+  EXPECT_EQ(split->tri.n_vertices(), mesh->tri.n_vertices() + mesh->tri.n_edges());
+  for (const auto e : split->tri.edges()) ASSERT_FALSE(split->tri.is_boundary(e));
+  EXPECT_NEAR(Assess(*split).surface_area, Assess(*mesh).surface_area, 1e-9);
+  double longest = 0.0, longest_split = 0.0;
+  for (const auto e : mesh->tri.edges()) longest = std::max(longest, mesh->tri.calc_edge_length(e));
+  for (const auto e : split->tri.edges()) {
+    longest_split = std::max(longest_split, split->tri.calc_edge_length(e));
+  }
+  EXPECT_NEAR(longest_split, 0.5 * longest, 1e-12);
+  // Outward orientation kept: the signed volume is unchanged.
+  const auto volume = [](const Mesh& m) {
+    double v = 0.0;
+    for (const auto f : m.tri.faces()) {
+      auto fv = m.tri.cfv_iter(f);
+      const Eigen::Vector3d a = ToEigen(m.tri.point(*fv)), b = ToEigen(m.tri.point(*++fv)),
+                            c = ToEigen(m.tri.point(*++fv));
+      v += a.dot(b.cross(c)) / 6.0;
+    }
+    return v;
+  };
+  EXPECT_NEAR(volume(*split), volume(*mesh), 1e-9);
 }
 
 // The implicit of the unit sphere (f = 1 − |x| to first order, positive
