@@ -171,8 +171,11 @@ TEST(CloseUnsupported, AnOccludedCapOfASphereIsClosedByTheDiscOfItsBorder) {
   EXPECT_EQ(closed->stats.genus, 0);
   ASSERT_EQ(closed->is_filled.size(), c.n_faces());
   EXPECT_NEAR(closed->stats.filled_area, disc, 0.05 * disc);
+  // Nearer the disc than the cap: the two hypotheses differ by only
+  // (1 - z) / 2 of the cap for a loop at height z, so the test splits the
+  // difference rather than asking for a fixed fraction of the cap.
   const double cap = 2 * M_PI * (1 - 0.5 * (loop_z_min + loop_z_max));
-  EXPECT_LT(closed->stats.filled_area, 0.9 * cap);
+  EXPECT_LT(closed->stats.filled_area, 0.5 * (disc + cap)) << "disc " << disc << ", cap " << cap;
   for (const auto f : c.faces()) {
     if (!closed->is_filled[f.idx()]) continue;
     for (const auto v : c.fv_range(f)) EXPECT_GT(c.point(v)[2], z0 - h);
