@@ -14,8 +14,9 @@
 //   vertices interpolated between samples; binary volumes (two values) at the
 //   mid value, with seed 003's feature voxels marking the vertices QEM keeps.
 // - Simplify: Garland-Heckbert QEM edge collapse on OpenMesh's mesh, with
-//   seed 003's rules for feature vertices (creases of plain meshes are
-//   feature lines), and the Hausdorff distance of the result to the input.
+//   the binary-volume method's rules for feature vertices (ALGORITHMS.md S4;
+//   creases of plain meshes are feature lines), and the Hausdorff distance
+//   of the result to the input.
 // - Binary-occupancy meshes (terraced marching-cubes output of a thresholded
 //   scan): detected from their vertex lattice and turned back into voxels.
 //
@@ -328,7 +329,8 @@ struct Simplification {
 
 // Returns `mesh` simplified by QEM edge collapse (Garland-Heckbert quadrics,
 // cheapest collapse first): `feature_vertex` (one per vertex, may be empty)
-// marks seed 003's feature points: an edge between two never collapses, an
+// marks feature points (the morphological feature voxels of ALGORITHMS.md S4 on a
+// binary surface): an edge between two never collapses, an
 // edge with one collapses onto it; otherwise the vertex goes to the
 // quadric's optimum. Edges between faces of different `face_labels` (one per
 // face, may be empty) are feature edges: their ends are feature points.

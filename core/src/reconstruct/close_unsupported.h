@@ -1,6 +1,7 @@
 // Unsupported faces of the reconstructed surface removed, and the holes they
 // leave closed by minimal patches (issue 38: "no invented surface"; the faces
-// come from support.h). Our addition to seed 001, whose graph cut closes
+// come from support.h). Our addition to the reconstruction method (ALGORITHMS.md S3),
+// whose graph cut closes
 // every gap of the scan with the zero set of f extrapolated from the nearest
 // fits: flaps and tubes (spurious handles) where no point is.
 //

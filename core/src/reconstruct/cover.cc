@@ -65,7 +65,7 @@ absl::StatusOr<std::vector<Support>> CoverBySupports(const std::vector<OctreeLea
       for (size_t b = range.begin(); b != range.end(); ++b) {
         const OctreeLeaf& leaf = leaves[batch[b]];
         fitted[b] = FitSupport(leaf.center, 0.75 * std::sqrt(3.0) * leaf.size,
-                               in);  // seed 001 §2.1.1: 0.75 × the cell diagonal
+                               in);  // ALGORITHMS.md S3: start at 0.75 × the cell diagonal
       }
     });
     // ... and taken in order, each only if still uncovered: the serial

@@ -1,6 +1,6 @@
 // Which faces of the reconstructed surface the points support (issue 38:
 // "no invented surface"). Where a scan has no points (occlusion gaps, the
-// side a part stood on), the implicit f of seed 001 still has a zero set:
+// side a part stood on), the implicit f (ALGORITHMS.md S3) still has a zero set:
 // linear fits extrapolated from the nearest supports, which the graph cut and
 // marching tetrahedra turn into flaps and tubes hanging into empty space.
 //

@@ -8,7 +8,7 @@
 //              crease edges, staying on the segment; the constraint planes
 //              of the crease edges (Garland-Heckbert) price moving a line
 //              sideways, and the face planes moving a corner where lines meet;
-//   locked  -> never removed (seed 003 section 2.2's feature points and the
+//   locked  -> never removed (the feature points of ALGORITHMS.md S4 and the
 //              ends of label-boundary edges).
 // An edge whose two ends are both crease or locked vertices collapses only if
 // it is itself a crease edge (otherwise it would cut across a feature).
