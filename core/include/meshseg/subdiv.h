@@ -126,6 +126,20 @@ struct SubdivFit {
 absl::StatusOr<SubdivFit> FitSubdivisionSurface(const Mesh& mesh, const SubdivParams& params = {},
                                                 const RunContext& ctx = {});
 
+// The limit surface of a control mesh, sampled as a triangle mesh.
+struct LimitMesh {
+  std::vector<Eigen::Vector3d> vertices;  // exact limit positions
+  std::vector<std::array<int, 3>> faces;
+};
+
+// Returns the limit surface of `control` at subdivision `level` in [0, 5]:
+// the limit positions of the level's vertices (Hoppe et al. 1994 masks),
+// triangulated as the level's faces (faces x 4^level triangles).
+// Errors: INVALID_ARGUMENT for a level outside [0, 5] or a control mesh that
+// is not a manifold triangle mesh (an edge with three faces, a vertex index
+// out of range, a non-finite coordinate, a crease that is no edge).
+absl::StatusOr<LimitMesh> EvaluateLimitSurface(const ControlMesh& control, int level = 2);
+
 // Writes `control` to `path` as Wavefront OBJ: `v` and `f` lines (f 1-based
 // as OBJ wants), then one line per crease edge, `t crease 2/1/0 A B 10`, and
 // per corner, `t corner 1/1/0 V 10`, with 0-based vertex indices: the tag
