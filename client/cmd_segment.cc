@@ -2,6 +2,7 @@
 //   [--step OUT.step [--unit U]] [--include-mesh] [--length-unit U]
 //   [--distance-tolerance X] [--angle-tolerance DEG] [--format FMT]
 //   [--server HOST:PORT [--request-id ID]] [--path exact|scan] [--exact-tolerance X]
+//   [--freeform-fit on|off] [--freeform-fraction F]
 //   [volume flags: client/volume_args.h]
 // In-process by default; with --server the same result comes from the service.
 #include <cstdio>
@@ -121,7 +122,7 @@ absl::Status RunSegment(const Argv& argv) {
                   {"-o", "--colored-ply", "--distance-tolerance", "--angle-tolerance", "--format",
                    "--server", "--report", "--step", "--unit", "--length-unit", "--request-id",
                    "--path", "--exact-tolerance", "--iso", "--volume-mode", "--dims", "--spacing",
-                   "--origin", "--type"},
+                   "--origin", "--type", "--freeform-fit", "--freeform-fraction"},
                   {"--include-mesh", kBigEndianSwitch, "--open"}, 1));
   const std::string& input = args.positional(0);
   const std::optional<std::string> out = args.Value("-o");
@@ -147,6 +148,16 @@ absl::Status RunSegment(const Argv& argv) {
   MESHSEG_ASSIGN_OR_RETURN(const std::optional<double> exact_tol, args.Double("--exact-tolerance"));
   if (exact_tol) options.segment.set_exact_tolerance(*exact_tol);
   options.segment.set_open_unsupported(args.Has("--open"));
+  if (const std::optional<std::string> fit = args.Value("--freeform-fit")) {
+    if (*fit != "on" && *fit != "off") {
+      return absl::InvalidArgumentError(
+          absl::StrCat("--freeform-fit must be on or off, got \"", fit->substr(0, 64), "\""));
+    }
+    options.segment.set_freeform_fit(*fit == "on");
+  }
+  MESHSEG_ASSIGN_OR_RETURN(const std::optional<double> fraction,
+                           args.Double("--freeform-fraction"));
+  if (fraction) options.segment.set_freeform_face_fraction(*fraction);
   // Same validation on both paths (the server repeats it).
   MESHSEG_RETURN_IF_ERROR(FromProto(options.segment).status());
   MESHSEG_ASSIGN_OR_RETURN(const std::optional<FileFormat> format,

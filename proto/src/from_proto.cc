@@ -22,6 +22,10 @@ struct Range {
 // (0, 90) degrees as SegmentParams requires (90 would accept any face).
 constexpr Range kDistanceTolerance{0.0, true, 100.0, false};
 constexpr Range kAngleToleranceDeg{0.0, true, 90.0, true};
+// Control mesh size per region face (#35): SubdivParams::max_face_fraction
+// bounds it; more control vertices than a quarter of the data points leave
+// too few points per unknown to average the noise out.
+constexpr Range kFreeformFaceFraction{0.0, true, 0.25, false};
 
 // Returns OK if `value` lies in `range`; else INVALID_ARGUMENT naming the
 // field, its range in interval notation and the value.
@@ -81,6 +85,12 @@ absl::StatusOr<PipelineParams> FromProto(const v1::SegmentOptions& options) {
     params.segment.exact_tolerance = options.exact_tolerance();
   }
   params.reconstruct.leave_unsupported_open = options.open_unsupported();
+  if (options.has_freeform_fit()) params.freeform.enabled = options.freeform_fit();
+  if (options.has_freeform_face_fraction()) {
+    MESHSEG_RETURN_IF_ERROR(CheckRange("freeform_face_fraction", options.freeform_face_fraction(),
+                                       kFreeformFaceFraction));
+    params.freeform.subdiv.face_fraction = options.freeform_face_fraction();
+  }
   return params;
 }
 

@@ -7,6 +7,7 @@
 #include "meshseg/proto/convert.h"
 #include "meshseg/status_macros.h"
 #include "proto/src/mesh_geometry_proto.h"
+#include "proto/src/subdivision_proto.h"
 #include "proto/src/topology_from_proto.h"
 
 namespace meshseg {
@@ -81,6 +82,7 @@ absl::StatusOr<PipelineResult> FromProto(const v1::SegmentationResult& result) {
     region.max_distance = r.max_distance();
     out.regions.push_back(region);
   }
+  MESHSEG_ASSIGN_OR_RETURN(out.subdivisions, SubdivisionsFromProto(result));
   out.estimates.mean_edge_length = result.mesh().mean_edge_length();
   out.estimates.noise_sigma = result.estimates().noise_sigma();
   out.estimates.distance_tolerance = result.estimates().distance_tolerance();

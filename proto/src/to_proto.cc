@@ -4,6 +4,7 @@
 #include "meshseg/proto/convert.h"
 #include "proto/src/brep_to_proto.h"
 #include "proto/src/mesh_geometry_proto.h"
+#include "proto/src/subdivision_proto.h"
 #include "proto/src/topology_to_proto.h"
 
 namespace meshseg {
@@ -101,6 +102,7 @@ v1::SegmentationResult ToProto(const PipelineResult& result) {
     SetSurface(region.surface, r);
     r->set_surface_id(region.surface_id);
   }
+  SetSubdivisions(result.subdivisions, &out);
   for (const SharedSurface& surface : result.surfaces) {
     v1::SharedSurface* s = out.add_surfaces();
     s->set_id(surface.id);

@@ -193,3 +193,30 @@ TEST(FromProto, RefusesANonPositiveExactToleranceAndTheRemeshedPath) {
 
 }  // namespace
 }  // namespace meshseg
+
+namespace meshseg {
+namespace {
+
+TEST(FromProto, FreeformFitIsOnUnlessTurnedOffAndTakesAFractionInRange) {
+  v1::SegmentOptions o;
+  absl::StatusOr<PipelineParams> p = FromProto(o);
+  ASSERT_TRUE(p.ok()) << p.status();
+  EXPECT_TRUE(p->freeform.enabled);
+  EXPECT_EQ(p->freeform.subdiv.face_fraction, 0.05);
+  o.set_freeform_fit(false);
+  o.set_freeform_face_fraction(0.1);
+  p = FromProto(o);
+  ASSERT_TRUE(p.ok()) << p.status();
+  EXPECT_FALSE(p->freeform.enabled);
+  EXPECT_EQ(p->freeform.subdiv.face_fraction, 0.1);
+  for (double bad : {0.0, -0.1, 0.3, std::nan("")}) {
+    o.set_freeform_face_fraction(bad);
+    p = FromProto(o);
+    ASSERT_FALSE(p.ok()) << bad;
+    EXPECT_THAT(p.status().message(),
+                ::testing::HasSubstr("freeform_face_fraction must be in (0, 0.25]"));
+  }
+}
+
+}  // namespace
+}  // namespace meshseg

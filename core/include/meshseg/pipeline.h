@@ -25,10 +25,34 @@
 #include "meshseg/remesh.h"
 #include "meshseg/run_context.h"
 #include "meshseg/segment.h"
+#include "meshseg/subdiv.h"
 #include "meshseg/topology.h"
 #include "meshseg/voxel.h"
 
 namespace meshseg {
+
+// Which regions get a Loop subdivision surface (issue #35, ALGORITHMS.md
+// S5) and how large their control meshes are.
+struct FreeformFitParams {
+  // On by default: a region no analytic surface describes is otherwise
+  // reported only as a quadric that misses it, and the control mesh is what
+  // a CAD user needs of such a surface. It costs time only on parts that
+  // have such regions (about 1 s per 10K region faces on one core).
+  bool enabled = true;
+  // A QUADRIC region qualifies when its rms distance exceeds this many noise
+  // sigmas (SegmentEstimates::noise_sigma; on an exact tessellation its
+  // tolerance): the rms of n >= 30 residuals of pure Gaussian noise stays
+  // below 1.43 sigma with probability 0.999 (chi-square with 30 degrees of
+  // freedom), so a larger rms means the quadric misses the shape, not noise.
+  // FREEFORM regions always qualify.
+  double noise_factor = 1.5;
+  // Smallest region fitted: with SubdivParams::face_fraction 0.05 a region
+  // of 80 faces gets the smallest control mesh (4 faces) the stage builds.
+  int64_t min_region_faces = 80;
+  // The fit itself; the region's faces are its input, its border the
+  // control mesh's boundary (a sharp B-spline edge of the limit surface).
+  SubdivParams subdiv;
+};
 
 struct PipelineParams {
   // Overrides format detection (e.g. the upload's format hint).
@@ -79,6 +103,17 @@ struct PipelineParams {
   // case. With step_path set, brep.length_unit must name the same unit
   // (coordinates are written unscaled).
   std::string length_unit;
+  // Loop subdivision surfaces of freeform regions (PipelineResult::subdivisions).
+  FreeformFitParams freeform;
+};
+
+// The Loop subdivision surface fitted to one region's faces (#35).
+struct RegionSubdivision {
+  int region = -1;  // Region::id
+  ControlMesh control;
+  // From the region's mesh vertices to the limit surface, model units.
+  double rms_distance = 0.0;
+  double max_distance = 0.0;
 };
 
 // The mesh the result's vertex ids (vertex_labels, curves, corners) and mesh
@@ -146,6 +181,9 @@ struct PipelineResult {
   std::optional<MeshGeometry> mesh_geometry;
   // PipelineParams::length_unit, lowercase ("" = unspecified).
   std::string length_unit;
+  // With PipelineParams::freeform.enabled: one per qualifying region, by
+  // ascending region id.
+  std::vector<RegionSubdivision> subdivisions;
 };
 
 // A job's predicted peak resident memory, from the size its input declares

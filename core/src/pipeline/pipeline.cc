@@ -14,6 +14,7 @@
 #include "meshseg/status_macros.h"
 #include "pipeline/binary_types.h"
 #include "pipeline/finite_result.h"
+#include "pipeline/freeform_regions.h"
 #include "pipeline/input_labels.h"
 #include "pipeline/memory_model.h"
 #include "pipeline/mesh_geometry.h"
@@ -287,6 +288,8 @@ absl::StatusOr<PipelineResult> RunOnVolume(const std::string& input_path,
                       : SegmentMesh(surface->mesh, params, ctx, &result));
   result.face_labels = pipeline_internal::InputFaceLabels(surface->mesh.face_of_input, labels);
   MESHSEG_RETURN_IF_ERROR(ExportStep(surface->mesh, labels, params, ctx, &result));
+  MESHSEG_RETURN_IF_ERROR(
+      pipeline_internal::FitFreeform(surface->mesh, labels, params, ctx, &result));
   AttachMesh(surface->mesh, {}, params, &result);  // the extracted surface; no input faces
   return result;
 }
@@ -308,6 +311,8 @@ absl::StatusOr<PipelineResult> RunOnPointCloud(const std::string& input_path,
                            SegmentMesh(reconstruction.mesh, params, ctx, &result));
   MESHSEG_RETURN_IF_ERROR(
       ExportStep(reconstruction.mesh, result.face_labels, params, ctx, &result));
+  MESHSEG_RETURN_IF_ERROR(pipeline_internal::FitFreeform(reconstruction.mesh, result.face_labels,
+                                                         params, ctx, &result));
   result.point_labels = pipeline_internal::PointLabels(
       reconstruction.mesh.tri, result.face_labels, cloud.points, reconstruction.is_outlier);
   result.face_filled = reconstruction.is_filled;
@@ -333,6 +338,7 @@ absl::StatusOr<PipelineResult> RunOnMesh(const std::string& input_path,
         const std::vector<int> labels,
         SegmentBinary(mesh, binary, lattice->spacing.minCoeff(), params, ctx, &result));
     result.face_labels = pipeline_internal::InputFaceLabels(mesh.face_of_input, labels);
+    MESHSEG_RETURN_IF_ERROR(pipeline_internal::FitFreeform(mesh, labels, params, ctx, &result));
     AttachMesh(mesh, mesh.face_of_input, params, &result);
     return result;
   }
@@ -346,6 +352,7 @@ absl::StatusOr<PipelineResult> RunOnMesh(const std::string& input_path,
                                SegmentExact(mesh, exactness, params, ctx, &result));
       result.face_labels = pipeline_internal::InputFaceLabels(mesh.face_of_input, labels);
       MESHSEG_RETURN_IF_ERROR(ExportStep(mesh, labels, params, ctx, &result));
+      MESHSEG_RETURN_IF_ERROR(pipeline_internal::FitFreeform(mesh, labels, params, ctx, &result));
       AttachMesh(mesh, mesh.face_of_input, params, &result);
       return result;
     }
@@ -363,6 +370,7 @@ absl::StatusOr<PipelineResult> RunOnMesh(const std::string& input_path,
   result.estimates.exact_tolerance = exactness.tolerance;
   result.estimates.exact_share = exactness.share;
   MESHSEG_RETURN_IF_ERROR(ExportStep(mesh, mesh_labels, params, ctx, &result));
+  MESHSEG_RETURN_IF_ERROR(pipeline_internal::FitFreeform(mesh, mesh_labels, params, ctx, &result));
   AttachMesh(mesh, mesh.face_of_input, params, &result);
   return result;
 }
