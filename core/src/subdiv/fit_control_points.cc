@@ -30,21 +30,23 @@ struct Rows {
   Eigen::VectorXd rhs;
 };
 
+// Rows of the data points [begin, end).
 Rows FootpointRows(const LimitSurface& limit, const std::vector<FootPoint>& feet,
-                   const std::vector<Eigen::Vector3d>& data, double alpha) {
+                   const std::vector<Eigen::Vector3d>& data, double alpha, size_t begin,
+                   size_t end) {
   std::vector<Eigen::Triplet<double>> w;
-  w.reserve(feet.size() * 36 * 6);
+  w.reserve((end - begin) * 36 * 6);
   Rows rows;
-  rows.rhs.resize(4 * feet.size());
+  rows.rhs.resize(4 * (end - begin));
   const double ta = std::sqrt(alpha);
-  for (size_t i = 0; i < feet.size(); ++i) {
+  for (size_t i = begin; i < end; ++i) {
     const auto& t = limit.mesh.faces[feet[i].face];
     const auto& x = limit.mesh.vertices;
     Eigen::Vector3d normal = (x[t[1]] - x[t[0]]).cross(x[t[2]] - x[t[0]]);
     const double area2 = normal.norm();
     normal = area2 > 0.0 ? Eigen::Vector3d(normal / area2) : Eigen::Vector3d::Zero();
     const double tw = area2 > 0.0 ? ta : 1.0;  // a degenerate face: point-to-point
-    const int row = static_cast<int>(4 * i);
+    const int row = static_cast<int>(4 * (i - begin));
     for (int c = 0; c < 3; ++c) {
       for (SparseMatrix::InnerIterator it(limit.from_control, t[c]); it; ++it) {
         const double r = feet[i].barycentric[c] * it.value();
@@ -58,9 +60,33 @@ Rows FootpointRows(const LimitSurface& limit, const std::vector<FootPoint>& feet
     rows.rhs[row] = normal.dot(data[i]);
     for (int k = 0; k < 3; ++k) rows.rhs[row + 1 + k] = tw * data[i][k];
   }
-  rows.a.resize(4 * feet.size(), 3 * limit.from_control.cols());
+  rows.a.resize(4 * (end - begin), 3 * limit.from_control.cols());
   rows.a.setFromTriplets(w.begin(), w.end());
   return rows;
+}
+
+// The normal equations A^T A, A^T b of all footpoint rows, summed over
+// chunks of data points: the tall A (4 rows and about 150 non-zeros per
+// point) of a million points would take gigabytes, its products with
+// itself only the size of the control mesh's 2-ring stencil.
+struct NormalEquations {
+  ColMatrix ata;
+  Eigen::VectorXd atb;
+};
+
+NormalEquations Normal(const LimitSurface& limit, const std::vector<FootPoint>& feet,
+                       const std::vector<Eigen::Vector3d>& data, double alpha) {
+  constexpr size_t kChunk = size_t{1} << 15;
+  const Eigen::Index unknowns = 3 * limit.from_control.cols();
+  NormalEquations out{ColMatrix(unknowns, unknowns), Eigen::VectorXd::Zero(unknowns)};
+  for (size_t begin = 0; begin < feet.size(); begin += kChunk) {
+    const Rows rows =
+        FootpointRows(limit, feet, data, alpha, begin, std::min(feet.size(), begin + kChunk));
+    const ColMatrix at = rows.a.transpose();
+    out.ata += ColMatrix(at * rows.a);
+    out.atb += at * rows.rhs;
+  }
+  return out;
 }
 
 // The membrane term's edge-difference operator of the control mesh, per
@@ -121,15 +147,14 @@ absl::StatusOr<ControlFit> FitControlPoints(const ControlMesh& control,
   fit.rms_per_round.push_back(dist.rms);
   for (int round = 0; round < rounds; ++round) {
     MESHSEG_RETURN_IF_ERROR(ctx.CheckStop("subdiv"));
-    const Rows rows = FootpointRows(fit.limit, feet, data, tangent_weight);
-    const ColMatrix at = rows.a.transpose();
-    const ColMatrix normal = data_weight * ColMatrix(at * rows.a) + membrane;
+    const NormalEquations eq = Normal(fit.limit, feet, data, tangent_weight);
+    const ColMatrix normal = data_weight * eq.ata + membrane;
     Eigen::SimplicialLDLT<ColMatrix> solver(normal);
     if (solver.info() != Eigen::Success) {
       return absl::InternalError(absl::StrCat("subdiv: the least-squares system of ", n,
                                               " control vertices cannot be factored"));
     }
-    const Eigen::VectorXd p = solver.solve(data_weight * (at * rows.rhs));
+    const Eigen::VectorXd p = solver.solve(data_weight * eq.atb);
     if (solver.info() != Eigen::Success || !p.allFinite()) {
       return absl::InternalError(
           absl::StrCat("subdiv: the least-squares solve failed in round ", round + 1));
