@@ -85,6 +85,20 @@ TEST(MeshsegSegment, BadToleranceExitsOneBeforeReadingTheFile) {
   EXPECT_THAT(r.err, HasSubstr("-3"));
 }
 
+// Issue 35: the freeform-fit options are checked before the file is read.
+TEST(MeshsegSegment, BadFreeformOptionsExitOneBeforeReadingTheFile) {
+  for (const auto& [flag, value, message] :
+       std::vector<std::array<std::string, 3>>{
+           {"--freeform-fit", "maybe", "--freeform-fit must be on or off, got \"maybe\""},
+           {"--freeform-fraction", "0.5", "freeform_face_fraction must be in (0, 0.25], got 0.5"}}) {
+    const testing_cli::CliRun r =
+        RunCli({"segment", "/nonexistent.stl", "-o", "/tmp/x.json", flag, value});
+    EXPECT_EQ(r.exit_code, 1) << flag;
+    EXPECT_THAT(Lines(r.err), SizeIs(1)) << r.err;
+    EXPECT_THAT(r.err, HasSubstr(message));
+  }
+}
+
 // Issue 38: a cloud with an unscanned area says which faces close it; with
 // --open (both paths: the option travels in SegmentOptions) none is filled
 // and the mesh is open there.
