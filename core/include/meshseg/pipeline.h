@@ -37,7 +37,8 @@ struct FreeformFitParams {
   // On by default: a region no analytic surface describes is otherwise
   // reported only as a quadric that misses it, and the control mesh is what
   // a CAD user needs of such a surface. It costs time only on parts that
-  // have such regions (about 1 s per 10K region faces on one core).
+  // have such regions (measured: 0.13-0.16 s for an 1819-face region; the
+  // bunny scan's two quadric regions add 0.12 s to its 1.4 s).
   bool enabled = true;
   // A QUADRIC region qualifies when its rms distance exceeds this many noise
   // sigmas (SegmentEstimates::noise_sigma; on an exact tessellation its

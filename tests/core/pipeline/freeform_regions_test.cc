@@ -40,12 +40,9 @@ TEST(FitFreeformRegions, FitsFreeformRegionsWithinTheNoiseBound) {
   // cut by two planes z = +-3 into a freeform cap, a quadric band that fits
   // to the noise and a quadric cap that does not.
   const testing::Superellipsoid shape;
-  testing::Triangles t = testing::UnitIcosphere(4);
-  for (auto& v : t.vertices) v = shape.Project(v);
-  const double h = testing::MeanEdge(t);
-  const double sigma = 0.05 * h;
-  testing::AddNoise(
-      t, sigma, [&](const Eigen::Vector3d& p) { return shape.Gradient(p); }, 5);
+  const testing::NoisySample sample = testing::NoisySuperellipsoid(shape, 4, 0.05, 5);
+  const testing::Triangles& t = sample.mesh;
+  const double h = sample.h, sigma = sample.sigma;
   absl::StatusOr<Mesh> mesh = testing::ToMesh(t, "body");
   ASSERT_TRUE(mesh.ok()) << mesh.status();
   std::vector<int> labels;

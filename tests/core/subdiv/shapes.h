@@ -96,6 +96,23 @@ void AddNoise(Triangles& m, double sigma, Normal normal, unsigned seed) {
   for (auto& v : m.vertices) v += noise(rng) * normal(v).normalized();
 }
 
+// The superellipsoid `shape` at the vertices of UnitIcosphere(levels), moved
+// along its normal by Gaussian noise of noise_in_h times the mean edge h.
+struct NoisySample {
+  Triangles mesh;
+  double h = 0.0;
+  double sigma = 0.0;
+};
+inline NoisySample NoisySuperellipsoid(const Superellipsoid& shape, int levels, double noise_in_h,
+                                       unsigned seed) {
+  NoisySample out{UnitIcosphere(levels)};
+  for (auto& v : out.mesh.vertices) v = shape.Project(v);
+  out.h = MeanEdge(out.mesh);
+  out.sigma = noise_in_h * out.h;
+  AddNoise(out.mesh, out.sigma, [&](const Eigen::Vector3d& p) { return shape.Gradient(p); }, seed);
+  return out;
+}
+
 // A cube [-s, s]^3, each side an n x n grid of squares split along a
 // diagonal (the service tests' SplitBox, centred).
 inline Triangles Cube(double s, int n) {

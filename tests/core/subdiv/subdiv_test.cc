@@ -1,5 +1,7 @@
 #include "meshseg/subdiv.h"
 
+#include <optional>
+
 #include "shapes.h"
 
 namespace meshseg {
@@ -24,27 +26,37 @@ Distances LimitToTruth(const SubdivFit& fit, Distance distance) {
   return d;
 }
 
+// Fits `t` (a smooth body with noise sigma) with the default params and
+// expects issue #35's bar: a control mesh of at most 5 % of the input's
+// faces, no creases, and the limit surface within rms 1.2 sigma + 0.05 h of
+// the true surface (`distance`, signed). Returns the fit (nullopt if none).
+template <class Distance>
+std::optional<SubdivFit> FitSmoothWithinNoiseBound(const testing::Triangles& t, double sigma,
+                                                   Distance distance) {
+  const double h = testing::MeanEdge(t);
+  absl::StatusOr<Mesh> mesh = testing::ToMesh(t, "smooth body");
+  EXPECT_TRUE(mesh.ok()) << mesh.status();
+  if (!mesh.ok()) return std::nullopt;
+  absl::StatusOr<SubdivFit> fit = FitSubdivisionSurface(*mesh);
+  EXPECT_TRUE(fit.ok()) << fit.status();
+  if (!fit.ok()) return std::nullopt;
+  EXPECT_LE(fit->control.faces.size(), 0.05 * t.faces.size() + 2);
+  EXPECT_TRUE(fit->control.creases.empty());
+  const Distances d = LimitToTruth(*fit, distance);
+  EXPECT_LE(d.rms, 1.2 * sigma + 0.05 * h) << "h " << h << " max " << d.max;
+  return *std::move(fit);
+}
+
 TEST(FitSubdivisionSurface, SuperellipsoidWithinNoiseBound) {
   // A freeform body without creases: |x|^3 + |y|^3 + |z|^3 = 10^3, 5120
   // faces, noise 0.05 h along the normal. Issue #35's bar: the limit surface
   // within rms 1.2 sigma + 0.05 h of the true surface, with a control mesh of
   // at most 5 % of the input's faces.
   const testing::Superellipsoid shape;
-  testing::Triangles t = testing::UnitIcosphere(4);
-  for (auto& v : t.vertices) v = shape.Project(v);
-  const double h = testing::MeanEdge(t);
-  const double sigma = 0.05 * h;
-  testing::AddNoise(
-      t, sigma, [&](const Eigen::Vector3d& p) { return shape.Gradient(p); }, 7);
-  auto mesh = testing::ToMesh(t, "superellipsoid");
-  ASSERT_TRUE(mesh.ok()) << mesh.status();
-  auto fit = FitSubdivisionSurface(*mesh);
-  ASSERT_TRUE(fit.ok()) << fit.status();
-  EXPECT_LE(fit->control.faces.size(), 0.05 * t.faces.size() + 2);
-  EXPECT_TRUE(fit->control.creases.empty());
-  const Distances d =
-      LimitToTruth(*fit, [&](const Eigen::Vector3d& p) { return shape.Distance(p); });
-  EXPECT_LE(d.rms, 1.2 * sigma + 0.05 * h) << "h " << h << " max " << d.max;
+  const testing::NoisySample sample = testing::NoisySuperellipsoid(shape, 4, 0.05, 7);
+  const std::optional<SubdivFit> fit = FitSmoothWithinNoiseBound(
+      sample.mesh, sample.sigma, [&](const Eigen::Vector3d& p) { return shape.Distance(p); });
+  ASSERT_TRUE(fit.has_value());
   // The rounds improve on quasi-interpolation alone.
   ASSERT_EQ(fit->rms_per_round.size(), 4u);
   EXPECT_LT(fit->rms_per_round.back(), fit->rms_per_round.front());
@@ -89,17 +101,9 @@ TEST(FitSubdivisionSurface, KnotTubeWithinNoiseBound) {
   const testing::KnotTube tube;
   const double h0 = testing::MeanEdge(tube.Mesh(200, 20, 0.0, 1));
   const double sigma = 0.05 * h0;
-  const testing::Triangles t = tube.Mesh(200, 20, sigma, 3);
-  const double h = testing::MeanEdge(t);
-  auto mesh = testing::ToMesh(t, "tube");
-  ASSERT_TRUE(mesh.ok()) << mesh.status();
-  auto fit = FitSubdivisionSurface(*mesh);
-  ASSERT_TRUE(fit.ok()) << fit.status();
-  EXPECT_LE(fit->control.faces.size(), 0.05 * t.faces.size() + 2);
-  EXPECT_TRUE(fit->control.creases.empty());
-  const Distances d =
-      LimitToTruth(*fit, [&](const Eigen::Vector3d& p) { return tube.Distance(p); });
-  EXPECT_LE(d.rms, 1.2 * sigma + 0.05 * h) << "h " << h << " max " << d.max;
+  EXPECT_TRUE(FitSmoothWithinNoiseBound(tube.Mesh(200, 20, sigma, 3), sigma,
+                                        [&](const Eigen::Vector3d& p) { return tube.Distance(p); })
+                  .has_value());
 }
 
 TEST(FitSubdivisionSurface, BlendedBodyResolvesItsCreasesWithinOneH) {
