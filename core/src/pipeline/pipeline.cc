@@ -308,8 +308,10 @@ absl::StatusOr<PipelineResult> RunOnPointCloud(const std::string& input_path,
                            SegmentMesh(reconstruction.mesh, params, ctx, &result));
   MESHSEG_RETURN_IF_ERROR(
       ExportStep(reconstruction.mesh, result.face_labels, params, ctx, &result));
-  result.point_labels = pipeline_internal::PointLabels(
-      reconstruction.mesh.tri, result.face_labels, cloud.points, reconstruction.is_outlier);
+  result.point_labels = pipeline_internal::PointLabelsBySurface(
+      reconstruction.mesh.tri, result.face_labels, result.regions, cloud.points,
+      reconstruction.is_outlier);
+  result.point_outlier_count = reconstruction.stats.outlier_count;
   result.face_filled = reconstruction.is_filled;
   result.filled_face_count = reconstruction.stats.filled_face_count;
   result.filled_area = reconstruction.stats.filled_area;

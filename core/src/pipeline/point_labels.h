@@ -9,6 +9,7 @@
 #include <Eigen/Core>
 
 #include "meshseg/mesh.h"
+#include "meshseg/segment.h"
 
 namespace meshseg::pipeline_internal {
 
@@ -19,6 +20,22 @@ namespace meshseg::pipeline_internal {
 std::vector<int> PointLabels(const TriMesh& mesh, std::span<const int> face_labels,
                              std::span<const Eigen::Vector3d> points,
                              std::span<const uint8_t> is_outlier);
+
+// Returns one label per point as PointLabels, except that each labelled
+// point takes, among the regions of the faces within two rings of its
+// nearest vertex, the one whose fitted surface (regions[label].surface) is
+// nearest to it. The reconstruction rounds a crease over about one point
+// spacing and the segmentation assigns that rounded band to one side, so
+// the nearest face can lie on the wrong side of the true edge; the fitted
+// surfaces run on to the edge itself, and a point of one surface, off it
+// only by noise, is nearer to that surface than to a neighbour's, which
+// leaves the edge at an angle. The two rings (about three spacings on the
+// refined mesh) cover the rounded band and keep surfaces of regions
+// elsewhere on the part, which extend far beyond their faces, out.
+std::vector<int> PointLabelsBySurface(const TriMesh& mesh, std::span<const int> face_labels,
+                                      std::span<const Region> regions,
+                                      std::span<const Eigen::Vector3d> points,
+                                      std::span<const uint8_t> is_outlier);
 
 }  // namespace meshseg::pipeline_internal
 
