@@ -11,7 +11,8 @@
 //   regions         regions of the result / primitives with points
 //   build/bin/scan_regions [parts=a,b,...] [seeds=1,2,3] [points=40000]
 //                          [views=4] [noise=0.3] [outliers=0] [normals=0]
-//                          [verbose=0] [dir=/tmp]
+//                          [verbose=0] [open=0] [dir=/tmp]
+// open=1 leaves the areas no point supports open (meshseg segment --open).
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -87,7 +88,7 @@ struct Row {
 };
 
 Row OneScan(const std::string& part, uint64_t seed, const meshseg::ScanParams& base,
-            const std::string& dir, bool verbose) {
+            const meshseg::PipelineParams& pipeline, const std::string& dir, bool verbose) {
   meshseg::ScanParams params = base;
   params.seed = seed;
   Row row;
@@ -103,7 +104,7 @@ Row OneScan(const std::string& part, uint64_t seed, const meshseg::ScanParams& b
     return row;
   }
   const auto start = std::chrono::steady_clock::now();
-  const auto r = meshseg::RunPipeline(path);
+  const auto r = meshseg::RunPipeline(path, pipeline);
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::filesystem::remove(path);
@@ -126,12 +127,33 @@ Row OneScan(const std::string& part, uint64_t seed, const meshseg::ScanParams& b
     row.typed += typed;
     if (!typed || verbose) {
       char buf[256];
-      std::snprintf(buf, sizeof buf, "\n      %s %s (%.1f %% of seen area): %s region %d, %.3f right",
+      std::snprintf(buf, sizeof buf,
+                    "\n      %s %s (%.1f %% of seen area): %s region %d (%ld faces, rms %.3g), "
+                    "%.3f right",
                     typed ? "  " : "!!", s.name.c_str(),
                     100.0 * scan->primitive_seen_area[s.primitive] / seen,
                     s.region >= 0 ? meshseg::SurfaceTypeName(r->regions[s.region].type) : "no",
-                    s.region, s.covered);
+                    s.region, s.region >= 0 ? static_cast<long>(r->regions[s.region].face_count) : 0L,
+                    s.region >= 0 ? r->regions[s.region].rms_distance : 0.0, s.covered);
       misses += buf;
+      if (verbose) {  // where the rest of its points went
+        std::map<int, int64_t> to;
+        int64_t n = 0;
+        for (size_t i = 0; i < r->point_labels.size(); ++i) {
+          if (scan->point_primitive[i] != s.primitive || scan->is_outlier[i]) continue;
+          ++n;
+          ++to[r->point_labels[i]];
+        }
+        for (const auto& [region, count] : to) {
+          if (region == s.region || count < 0.01 * n) continue;
+          const int p = region >= 0 ? e.region_primitive[region] : -1;
+          std::snprintf(buf, sizeof buf, " | %.3f in region %d (%s, of %s)",
+                        static_cast<double>(count) / n, region,
+                        region >= 0 ? meshseg::SurfaceTypeName(r->regions[region].type) : "-",
+                        p >= 0 ? scan->part.primitives[p].name.c_str() : "-");
+          misses += buf;
+        }
+      }
     }
   }
   int64_t unlabelled = 0, genuine = 0;
@@ -166,6 +188,7 @@ int main(int argc, char** argv) {
       {"outliers", "0"},
       {"normals", "0"},
       {"verbose", "0"},
+      {"open", "0"},
       {"dir", "/tmp"}};
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
@@ -182,6 +205,8 @@ int main(int argc, char** argv) {
   params.noise = std::stod(arg["noise"]);
   params.outliers = std::stod(arg["outliers"]);
   params.normals = arg["normals"] == "1";
+  meshseg::PipelineParams pipeline;
+  pipeline.reconstruct.leave_unsupported_open = arg["open"] == "1";
   std::printf("%d views, range noise %g spacings, outliers %g\n", params.views, params.noise,
               params.outliers);
   std::printf("%-14s %4s %7s %5s %7s %8s %5s %5s %5s %9s %8s %7s\n", "part", "seed", "points",
@@ -190,7 +215,8 @@ int main(int argc, char** argv) {
   double worst = 1.0;
   for (const std::string& part : Split(arg["parts"])) {
     for (const std::string& seed : Split(arg["seeds"])) {
-      const Row row = OneScan(part, std::stoull(seed), params, arg["dir"], arg["verbose"] == "1");
+      const Row row = OneScan(part, std::stoull(seed), params, pipeline, arg["dir"],
+                              arg["verbose"] == "1");
       ++runs;
       worst = std::min(worst, row.ok ? row.accuracy : 0.0);
       met += row.ok && row.accuracy >= 0.95 && row.typed == row.surfaces;

@@ -33,25 +33,27 @@ int NearestFaceLabel(const TriMesh& mesh, std::span<const int> face_labels, uint
   return label;
 }
 
-// Regions of these types have a surface with an exact distance; a quadric's
-// is an iteration and a freeform region has none.
-bool Analytic(const Region& r) {
-  return r.type == SurfaceType::kPlane || r.type == SurfaceType::kCylinder ||
-         r.type == SurfaceType::kCone || r.type == SurfaceType::kSphere ||
-         r.type == SurfaceType::kTorus;
+bool Trusted(const Region& r, const SurfaceLabelParams& params) {
+  const bool analytic = r.type == SurfaceType::kPlane || r.type == SurfaceType::kCylinder ||
+                        r.type == SurfaceType::kCone || r.type == SurfaceType::kSphere ||
+                        r.type == SurfaceType::kTorus;
+  return analytic && params.trusted[r.id] != 0;
 }
 
 // The region among those of the faces within two rings of `nearest` whose
 // surface is nearest to `p`; `label` (the nearest face's) wins ties and
-// stays when it or all others are not Analytic.
+// stays when it is not Trusted or within keep_distance of its surface.
 int NearestSurfaceLabel(const TriMesh& mesh, std::span<const int> face_labels,
-                        std::span<const Region> regions, uint32_t nearest,
-                        const Eigen::Vector3d& p, int label) {
+                        std::span<const Region> regions, const SurfaceLabelParams& params,
+                        uint32_t nearest, const Eigen::Vector3d& p, int label) {
+  if (!Trusted(regions[label], params)) return label;
+  double best = std::abs(SignedDistance(regions[label].surface, p));
+  if (!(best > params.keep_distance)) return label;
   std::vector<int> candidates;
   const auto add_faces_of = [&](TriMesh::VertexHandle v) {
     for (auto f = mesh.cvf_iter(v); f.is_valid(); ++f) {
       const int l = face_labels[f->idx()];
-      if (l >= 0 && l != label && Analytic(regions[l]) &&
+      if (l >= 0 && l != label && Trusted(regions[l], params) &&
           std::find(candidates.begin(), candidates.end(), l) == candidates.end()) {
         candidates.push_back(l);
       }
@@ -60,8 +62,6 @@ int NearestSurfaceLabel(const TriMesh& mesh, std::span<const int> face_labels,
   const TriMesh::VertexHandle centre(static_cast<int>(nearest));
   add_faces_of(centre);
   for (auto v = mesh.cvv_iter(centre); v.is_valid(); ++v) add_faces_of(*v);
-  if (candidates.empty() || !Analytic(regions[label])) return label;
-  double best = std::abs(SignedDistance(regions[label].surface, p));
   for (const int l : candidates) {
     const double d = std::abs(SignedDistance(regions[l].surface, p));
     if (d < best) best = d, label = l;  // NaN never wins
@@ -74,11 +74,12 @@ int NearestSurfaceLabel(const TriMesh& mesh, std::span<const int> face_labels,
 std::vector<int> PointLabels(const TriMesh& mesh, std::span<const int> face_labels,
                              std::span<const Eigen::Vector3d> points,
                              std::span<const uint8_t> is_outlier) {
-  return PointLabelsBySurface(mesh, face_labels, {}, points, is_outlier);
+  return PointLabelsBySurface(mesh, face_labels, {}, {}, points, is_outlier);
 }
 
 std::vector<int> PointLabelsBySurface(const TriMesh& mesh, std::span<const int> face_labels,
                                       std::span<const Region> regions,
+                                      const SurfaceLabelParams& params,
                                       std::span<const Eigen::Vector3d> points,
                                       std::span<const uint8_t> is_outlier) {
   std::vector<int> labels(points.size(), -1);
@@ -91,8 +92,9 @@ std::vector<int> PointLabelsBySurface(const TriMesh& mesh, std::span<const int> 
     if (!is_outlier.empty() && is_outlier[k]) return;
     const uint32_t nearest = index.Closest(points[k]);
     labels[k] = NearestFaceLabel(mesh, face_labels, nearest, points[k]);
-    if (!regions.empty() && labels[k] >= 0) {
-      labels[k] = NearestSurfaceLabel(mesh, face_labels, regions, nearest, points[k], labels[k]);
+    if (!regions.empty() && !params.trusted.empty() && labels[k] >= 0) {
+      labels[k] =
+          NearestSurfaceLabel(mesh, face_labels, regions, params, nearest, points[k], labels[k]);
     }
   });
   return labels;

@@ -43,16 +43,24 @@ void RefitOnInputVertices(const TriMesh& mesh, std::span<const int> face_labels,
       members[r].push_back(v.idx());
     }
   }
-  std::vector<Eigen::Vector3d> points, normals;
-  for (Region& region : *regions) {
-    std::vector<int>& ids = members[region.id];
+  std::vector<std::vector<Eigen::Vector3d>> points(regions->size());
+  for (std::size_t r = 0; r < members.size(); ++r) {
+    std::vector<int>& ids = members[r];
     std::sort(ids.begin(), ids.end());
     ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
-    points.clear();
+    for (const int v : ids) points[r].push_back(ToEigen(mesh.point(TriMesh::VertexHandle(v))));
+  }
+  RefitToPoints(points, distance_tolerance, regions);
+}
+
+void RefitToPoints(std::span<const std::vector<Eigen::Vector3d>> points_of_region,
+                   double distance_tolerance, std::vector<Region>* regions) {
+  std::vector<Eigen::Vector3d> normals;
+  for (Region& region : *regions) {
+    const std::vector<Eigen::Vector3d>& points = points_of_region[region.id];
+    if (points.empty()) continue;  // nothing to refit to, nothing to measure
     normals.clear();
-    for (const int v : ids) {
-      const Eigen::Vector3d p = ToEigen(mesh.point(TriMesh::VertexHandle(v)));
-      points.push_back(p);
+    for (const Eigen::Vector3d& p : points) {
       normals.push_back(Project(region.surface, p, Eigen::Vector3d::Zero()).normal);
     }
     const Distances before = DistancesTo(region.surface, points);

@@ -32,6 +32,13 @@ void RefitOnInputVertices(const TriMesh& mesh, std::span<const int> face_labels,
 // within half its distance to its own surface and its own farther than
 // `exact`. Run after RefitOnInputVertices (surfaces fitted to the input's
 // vertices); returns how many faces moved.
+// The refit of RefitOnInputVertices on given points: points_of_region[r]
+// are the points of region r (one list per region, by id); a region with
+// fewer points than its type needs keeps its surface (the fit is invalid),
+// with rms/max distances of its points; one without points is left as it is.
+void RefitToPoints(std::span<const std::vector<Eigen::Vector3d>> points_of_region,
+                   double distance_tolerance, std::vector<Region>* regions);
+
 int RelabelFacesOffTheirSurface(const TriMesh& mesh, std::span<const Region> regions, double exact,
                                 std::vector<int>* face_labels);
 
