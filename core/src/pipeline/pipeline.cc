@@ -333,6 +333,8 @@ absl::StatusOr<std::vector<int>> SegmentReconstruction(const Reconstruction& rec
     trusted[region.id] = !points[region.id].empty();
   }
   pipeline_internal::RefitToPoints(points, tolerance, &segmentation.regions);
+  pipeline_internal::RetypeToPoints(points, reconstruction.stats.noise, &segmentation.regions,
+                                    &segmentation.surfaces);
   // A point keeps its face's region within its noise band (2 sigma of the
   // cloud's noise); regions without points of their own (on the patches
   // that close unscanned areas) take no point from a neighbour.
