@@ -22,15 +22,15 @@ namespace {
 constexpr int64_t kScanPoints = 6000;
 constexpr double kRangeNoise = 0.1;  // spacings
 constexpr double kOutliers = 0.02;   // of the scan points, uniform in the box
-// Tolerances. Points within about one spacing of an edge between two
-// surfaces may take either side's region (the reconstruction rounds the
-// edge over about a spacing); on this part that band holds ~10 % of the
-// points, so at least 88 % must carry their own surface's region.
-constexpr double kMinPointAccuracy = 0.88;
-// Every surface seen over at least this share of the seen area has a
-// majority region of its type (issue 38 item 6 asks for 1 % of the area; on
-// 6000 points a 1 % face has ~60 points, too few to type a region reliably).
-constexpr double kMinTypedShare = 0.03;
+// The bars of issue 38 item 6: at least 95 % of the genuine points carry
+// their own surface's region (points within noise of an edge between two
+// surfaces can go either way: on this scan about 1 % lie within a spacing
+// of one; measured 98.5-99.0 % over draws 1-6), and every surface seen over
+// at least 1 % of the seen area has a majority region of its type (met on 5
+// of those 6 draws: on draw 5 the bore, seen only near its rim, comes out
+// as a sphere; bench/segment/scan_regions measures more parts and draws).
+constexpr double kMinPointAccuracy = 0.95;
+constexpr double kMinTypedShare = 0.01;
 // Genuine points the pipeline discards (outlier test) or leaves unlabelled.
 constexpr double kMaxUnlabelledGenuine = 0.02;
 
