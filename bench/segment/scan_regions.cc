@@ -15,8 +15,8 @@
 // open=1 leaves the areas no point supports open (meshseg segment --open).
 #include <algorithm>
 #include <array>
-#include <cmath>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <map>
@@ -109,12 +109,12 @@ Row OneScan(const std::string& part, uint64_t seed, const meshseg::ScanParams& b
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::filesystem::remove(path);
   if (!r.ok()) {
-    std::printf("%-14s %4lu  pipeline failed: %s\n", part.c_str(),
-                static_cast<unsigned long>(seed), std::string(r.status().message()).c_str());
+    std::printf("%-14s %4lu  pipeline failed: %s\n", part.c_str(), static_cast<unsigned long>(seed),
+                std::string(r.status().message()).c_str());
     return row;
   }
-  const meshseg::testing::Evaluation e = meshseg::testing::EvaluatePoints(
-      *scan, r->point_labels, static_cast<int>(r->regions.size()));
+  const meshseg::testing::Evaluation e =
+      meshseg::testing::EvaluatePoints(*scan, r->point_labels, static_cast<int>(r->regions.size()));
   double seen = 0.0;
   for (const double a : scan->primitive_seen_area) seen += a;
   std::string misses;
@@ -133,7 +133,8 @@ Row OneScan(const std::string& part, uint64_t seed, const meshseg::ScanParams& b
                     typed ? "  " : "!!", s.name.c_str(),
                     100.0 * scan->primitive_seen_area[s.primitive] / seen,
                     s.region >= 0 ? meshseg::SurfaceTypeName(r->regions[s.region].type) : "no",
-                    s.region, s.region >= 0 ? static_cast<long>(r->regions[s.region].face_count) : 0L,
+                    s.region,
+                    s.region >= 0 ? static_cast<long>(r->regions[s.region].face_count) : 0L,
                     s.region >= 0 ? r->regions[s.region].rms_distance : 0.0, s.covered);
       misses += buf;
       if (verbose) {  // where the rest of its points went
@@ -164,8 +165,8 @@ Row OneScan(const std::string& part, uint64_t seed, const meshseg::ScanParams& b
   }
   row.accuracy = e.area_fraction;
   row.ok = true;
-  const std::array<int64_t, 3> wrong = WrongByEdgeDistance(*scan, r->point_labels,
-                                                           e.region_primitive);
+  const std::array<int64_t, 3> wrong =
+      WrongByEdgeDistance(*scan, r->point_labels, e.region_primitive);
   const double g = static_cast<double>(std::max<int64_t>(1, genuine));
   std::printf("%-14s %4lu %7zu %5.1f %7.2f %8.2f %5.2f %5.2f %5.2f %5d/%-3d %4zu/%-3d %7.1f%s\n",
               part.c_str(), static_cast<unsigned long>(seed), scan->cloud.points.size(),
@@ -215,15 +216,16 @@ int main(int argc, char** argv) {
   double worst = 1.0;
   for (const std::string& part : Split(arg["parts"])) {
     for (const std::string& seed : Split(arg["seeds"])) {
-      const Row row = OneScan(part, std::stoull(seed), params, pipeline, arg["dir"],
-                              arg["verbose"] == "1");
+      const Row row =
+          OneScan(part, std::stoull(seed), params, pipeline, arg["dir"], arg["verbose"] == "1");
       ++runs;
       worst = std::min(worst, row.ok ? row.accuracy : 0.0);
       met += row.ok && row.accuracy >= 0.95 && row.typed == row.surfaces;
     }
   }
-  std::printf("%d of %d scans meet both bars (>= 95 %% of points, every surface typed); worst "
-              "point accuracy %.2f %%\n",
-              met, runs, 100.0 * worst);
+  std::printf(
+      "%d of %d scans meet both bars (>= 95 %% of points, every surface typed); worst "
+      "point accuracy %.2f %%\n",
+      met, runs, 100.0 * worst);
   return 0;
 }

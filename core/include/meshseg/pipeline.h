@@ -116,7 +116,8 @@ struct PipelineResult {
   // 0 = uniform.
   double remesh_fine_edge_length = 0.0;
   // Point-cloud input only: true, and one label per input point (the label
-  // of the nearest reconstructed face; -1 for outliers).
+  // of the nearest reconstructed face, or of a neighbouring region whose
+  // fitted surface is nearer to the point; -1 for outliers).
   bool from_point_cloud = false;
   int64_t point_count = 0;
   std::vector<int> point_labels;

@@ -19,7 +19,8 @@ int NearestFaceLabel(const TriMesh& mesh, std::span<const int> face_labels, uint
                      const Eigen::Vector3d& p) {
   double best = std::numeric_limits<double>::infinity();
   int label = -1;
-  for (auto f = mesh.cvf_iter(TriMesh::VertexHandle(static_cast<int>(nearest))); f.is_valid(); ++f) {
+  for (auto f = mesh.cvf_iter(TriMesh::VertexHandle(static_cast<int>(nearest))); f.is_valid();
+       ++f) {
     auto v = mesh.cfv_iter(*f);
     const Eigen::Vector3d a = ToEigen(mesh.point(*v));
     const Eigen::Vector3d b = ToEigen(mesh.point(*++v));

@@ -124,9 +124,9 @@ int RetypeToPoints(std::span<const std::vector<Eigen::Vector3d>> points_of_regio
     // surface), so "near the noise" means "near what the own type achieves".
     segment_internal::SegmentContext c;
     c.noise_sigma = std::max(sigma, region.rms_distance);
-    const double own_score = segment_internal::InformationScore(
-        c, region.rms_distance * region.rms_distance, points.size(),
-        segment_internal::ParameterCount(own));
+    const double own_score =
+        segment_internal::InformationScore(c, region.rms_distance * region.rms_distance,
+                                           points.size(), segment_internal::ParameterCount(own));
     std::optional<std::pair<SurfaceType, FitResult>> best;
     double best_score = std::numeric_limits<double>::infinity();
     for (const SurfaceType t : {SurfaceType::kPlane, SurfaceType::kCylinder, SurfaceType::kCone}) {
