@@ -95,6 +95,17 @@ std::string RegionTable(const v1::SegmentationResult& result) {
     absl::StrAppendFormat(&out, "%d faces close areas no point supports (area %.4g)\n",
                           result.mesh().filled_face_count(), result.mesh().filled_area());
   }
+  if (result.point_labels_size() > 0) {
+    int64_t points_labelled = 0;
+    for (int label : result.point_labels()) points_labelled += label >= 0 ? 1 : 0;
+    const int64_t unlabelled =
+        result.point_labels_size() - points_labelled - result.point_outlier_count();
+    absl::StrAppendFormat(&out, "%d points: %d labelled with a region, %d discarded as outliers",
+                          result.point_labels_size(), points_labelled,
+                          result.point_outlier_count());
+    if (unlabelled > 0) absl::StrAppendFormat(&out, ", %d nearest a face of no region", unlabelled);
+    absl::StrAppend(&out, "\n");
+  }
   if (result.regions_size() == 0) return out;
   absl::StrAppendFormat(&out, "%4s  %-9s %8s  %-44s %10s\n", "id", "type", "faces",
                         "parameters", "rms");

@@ -96,6 +96,11 @@ absl::StatusOr<PipelineResult> FromProto(const v1::SegmentationResult& result) {
   out.point_labels.assign(result.point_labels().begin(), result.point_labels().end());
   out.from_point_cloud = result.point_labels_size() > 0;
   out.point_count = result.point_labels_size();
+  if (result.point_outlier_count() < 0 || result.point_outlier_count() > out.point_count) {
+    return Bad(absl::StrCat("point_outlier_count ", result.point_outlier_count(), " outside [0, ",
+                            out.point_count, "] (the point labels)"));
+  }
+  out.point_outlier_count = result.point_outlier_count();
   if (result.face_filled_size() != 0 && result.face_filled_size() != result.face_labels_size()) {
     return Bad(absl::StrCat("face_filled has ", result.face_filled_size(), " entries for ",
                             result.face_labels_size(), " faces"));

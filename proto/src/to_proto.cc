@@ -144,6 +144,7 @@ v1::SegmentationResult ToProto(const PipelineResult& result) {
   SetTopology(result.topology, result.features, &out);
   out.mutable_point_labels()->Add(result.point_labels.begin(), result.point_labels.end());
   for (const uint8_t filled : result.face_filled) out.add_face_filled(filled != 0);
+  out.set_point_outlier_count(result.point_outlier_count);
   out.mutable_mesh()->set_filled_face_count(result.filled_face_count);
   out.mutable_mesh()->set_filled_area(result.filled_area);
   SetBrep(result, &out);

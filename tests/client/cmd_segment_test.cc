@@ -1,6 +1,7 @@
 // meshseg segment: offline writes the result JSON with one label per input
 // face; with --server the same bytes come from a real server on 127.0.0.1;
 // point clouds work on both paths; errors are one line and exit code 1.
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <filesystem>
@@ -13,6 +14,7 @@
 #include <google/protobuf/util/json_util.h>
 #include <gtest/gtest.h>
 
+#include "absl/strings/str_cat.h"
 #include "meshseg/v1/segmentation.pb.h"
 #include "tests/client/run_cli.h"
 #include "tests/server/test_files.h"
@@ -222,6 +224,15 @@ TEST(MeshsegSegment, ColoredPlyColoursTheFacesOfAMeshAndThePointsOfACloud) {
   result = ParseResult(ReadText(dir + "/cloud.json"));
   ASSERT_EQ(result.point_labels_size(), static_cast<int>(cloud.v.size()));
   EXPECT_EQ(result.point_labels(cloud.v.size() - 1), -1) << "the outlier";
+  // The far point is the one the outlier test discards; the report says how
+  // many points were labelled and discarded, counted from the JSON.
+  EXPECT_EQ(result.point_outlier_count(), 1);
+  const int64_t labelled = std::count_if(result.point_labels().begin(),
+                                         result.point_labels().end(), [](int l) { return l >= 0; });
+  EXPECT_EQ(labelled, static_cast<int64_t>(cloud.v.size()) - 1)
+      << "every box face has a region, so every other point is labelled";
+  EXPECT_THAT(r.out, HasSubstr(absl::StrCat(cloud.v.size(), " points: ", labelled,
+                                            " labelled with a region, 1 discarded as outliers\n")));
   const std::string cloud_ply = ReadText(dir + "/cloud.ply");
   EXPECT_THAT(cloud_ply, HasSubstr("element vertex " + std::to_string(cloud.v.size()) + "\n"));
   EXPECT_THAT(cloud_ply, Not(HasSubstr("element face")));

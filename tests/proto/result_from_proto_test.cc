@@ -175,6 +175,36 @@ TEST(ResultFromProto, FilledFacesAndAreaRoundTrip) {
   EXPECT_THAT(bad.message(), HasSubstr("face_filled has 6 entries for 5 faces"));
 }
 
+// Point-cloud input: one label per input point and how many of them the
+// outlier test discarded, through the JSON and back; a count beyond the
+// points is refused naming both.
+TEST(ResultFromProto, PointLabelsAndOutlierCountRoundTrip) {
+  PipelineResult r = Sample();
+  r.from_point_cloud = true;
+  r.point_count = 5;
+  r.point_labels = {0, -1, 1, -1, 0};
+  r.point_outlier_count = 2;
+  const absl::StatusOr<std::string> json = ResultJson(ToProto(r));
+  ASSERT_TRUE(json.ok()) << json.status();
+  EXPECT_THAT(*json, HasSubstr("\"point_labels\":[0,-1,1,-1,0]"));
+  EXPECT_THAT(*json, HasSubstr("\"point_outlier_count\":\"2\""));
+  const absl::StatusOr<v1::SegmentationResult> message = ParseResultJson(*json);
+  ASSERT_TRUE(message.ok()) << message.status();
+  const absl::StatusOr<PipelineResult> back = FromProto(*message);
+  ASSERT_TRUE(back.ok()) << back.status();
+  EXPECT_TRUE(back->from_point_cloud);
+  EXPECT_EQ(back->point_count, 5);
+  EXPECT_EQ(back->point_labels, r.point_labels);
+  EXPECT_EQ(back->point_outlier_count, 2);
+  EXPECT_EQ(FromProto(ToProto(Sample()))->point_outlier_count, 0) << "a mesh input has none";
+
+  v1::SegmentationResult m = ToProto(r);
+  m.set_point_outlier_count(6);
+  const absl::Status bad = FromProto(m).status();
+  EXPECT_TRUE(absl::IsInvalidArgument(bad)) << bad;
+  EXPECT_THAT(bad.message(), HasSubstr("point_outlier_count 6 outside [0, 5]"));
+}
+
 TEST(ParseResultJson, MalformedJsonIsInvalidArgument) {
   const absl::Status s = ParseResultJson("{\"regions\": [ {\"id\": ").status();
   EXPECT_TRUE(absl::IsInvalidArgument(s)) << s;

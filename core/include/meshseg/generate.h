@@ -193,6 +193,9 @@ struct ScannedPart {
   // have at uniform density.
   double spacing = 0.0;
   double seen_area_fraction = 0.0;  // of the part's surface, seen by a view
+  // One per primitive: its area seen by a view (model units²), estimated as
+  // seen_area_fraction is, from the candidates drawn uniformly by area.
+  std::vector<double> primitive_seen_area;
   std::vector<Eigen::Vector3d> viewpoints;
 };
 

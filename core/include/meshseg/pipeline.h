@@ -152,10 +152,15 @@ struct PipelineResult {
   // 0 = uniform.
   double remesh_fine_edge_length = 0.0;
   // Point-cloud input only: true, and one label per input point (the label
-  // of the nearest reconstructed face; -1 for outliers).
+  // of the nearest reconstructed face, or of a neighbouring region whose
+  // fitted surface is nearer to the point; -1 for outliers).
   bool from_point_cloud = false;
   int64_t point_count = 0;
   std::vector<int> point_labels;
+  // Point-cloud input: how many input points the reconstruction's outlier
+  // test discarded (Reconstruction::is_outlier; their point_labels are -1).
+  // The other -1 labels are points whose nearest face has no region.
+  int64_t point_outlier_count = 0;
   // Point-cloud input: one per face of the reconstructed mesh, 1 where the
   // face closes an area no input point supports (Reconstruction::is_filled),
   // and the count and total area (model units²) of those faces.

@@ -114,6 +114,7 @@ absl::StatusOr<ScannedPart> ScanPart(std::string_view name, const ScanParams& pa
   SurfaceSamples kept;
   std::vector<Eigen::Vector3d> ray;
   int64_t drawn = 0, seen = 0;
+  std::vector<int64_t> seen_of(g.primitives.size(), 0);  // per primitive
   for (uint64_t round = 1; static_cast<int64_t>(kept.points.size()) < params.points; ++round) {
     MESHSEG_RETURN_IF_ERROR(ctx.CheckStop(kStage));
     const SurfaceSamples batch = SampleSurface(g, kBatch, params.seed + 7919 * round);
@@ -138,6 +139,7 @@ absl::StatusOr<ScannedPart> ScanPart(std::string_view name, const ScanParams& pa
       bool any = false;
       for (size_t v = 0; v < views; ++v) any |= keep[i * views + v] > 0.0;
       seen += any;
+      if (any && batch.primitive[i] >= 0) ++seen_of[batch.primitive[i]];
       const size_t v = std::min(views - 1, static_cast<size_t>(u(rng) * views));
       if (u(rng) < keep[i * views + v]) {
         kept.points.push_back(batch.points[i]);
@@ -154,7 +156,11 @@ absl::StatusOr<ScannedPart> ScanPart(std::string_view name, const ScanParams& pa
     ctx.Progress(kStage, static_cast<double>(kept.points.size()) / params.points);
   }
   scan.seen_area_fraction = static_cast<double>(seen) / drawn;
-  scan.spacing = std::sqrt(scan.seen_area_fraction * SurfaceArea(g.mesh.tri) / params.points);
+  const double area = SurfaceArea(g.mesh.tri);
+  scan.spacing = std::sqrt(scan.seen_area_fraction * area / params.points);
+  for (const int64_t n : seen_of) {
+    scan.primitive_seen_area.push_back(area * static_cast<double>(n) / static_cast<double>(drawn));
+  }
 
   const double sigma = params.noise * scan.spacing;
   PointCloud& cloud = scan.cloud;

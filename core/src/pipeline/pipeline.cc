@@ -4,12 +4,14 @@
 #include "meshseg/pipeline.h"
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <optional>
 #include <span>
 #include <utility>
 
 #include "absl/strings/str_cat.h"
+#include "meshseg/fit.h"
 #include "meshseg/point_cloud.h"
 #include "meshseg/status_macros.h"
 #include "pipeline/binary_types.h"
@@ -294,6 +296,58 @@ absl::StatusOr<PipelineResult> RunOnVolume(const std::string& input_path,
   return result;
 }
 
+// Segments the mesh reconstructed from `cloud` as SegmentMesh does, with
+// the regions' surfaces refitted to the input points (the data; the mesh's
+// vertices round creases over a spacing and the faces that close unscanned
+// areas carry none), and labels every point (PointLabelsBySurface) before
+// the boundaries and features are extracted from those surfaces.
+absl::StatusOr<std::vector<int>> SegmentReconstruction(const Reconstruction& reconstruction,
+                                                       const PointCloud& cloud,
+                                                       const PipelineParams& params,
+                                                       const RunContext& ctx,
+                                                       PipelineResult* result) {
+  const Mesh& mesh = reconstruction.mesh;
+  result->mesh = MeshStatistics(mesh);
+  MESHSEG_ASSIGN_OR_RETURN(CurvatureField curvature,
+                           EstimateCurvature(mesh, params.curvature, ctx));
+  SegmentParams segment = params.segment;
+  segment.exact = ExactMode::kNever;
+  MESHSEG_ASSIGN_OR_RETURN(Segmentation segmentation, Segment(mesh, curvature, segment, ctx));
+  // Each region's points: those whose nearest face it holds.
+  const std::vector<int> nearest = pipeline_internal::PointLabels(
+      mesh.tri, segmentation.face_labels, cloud.points, reconstruction.is_outlier);
+  std::vector<std::vector<Eigen::Vector3d>> points(segmentation.regions.size());
+  for (std::size_t k = 0; k < nearest.size(); ++k) {
+    if (nearest[k] >= 0) points[nearest[k]].push_back(cloud.points[k]);
+  }
+  const double tolerance = segmentation.estimates.distance_tolerance;
+  pipeline_internal::RefitToPoints(points, tolerance, &segmentation.regions);
+  // A region's own points are those within its band: the segmentation's
+  // distance tolerance th_dis, widened to 3 sigma of the cloud's noise. The
+  // others are a neighbour's (the rounded band of a crease, faces given to
+  // the wrong side), which the least-squares fit above still follows; the
+  // surface is fitted again without them.
+  const double band = std::max(tolerance, 3.0 * reconstruction.stats.noise);
+  std::vector<uint8_t> trusted(segmentation.regions.size(), 0);
+  for (const Region& region : segmentation.regions) {
+    std::erase_if(points[region.id], [&](const Eigen::Vector3d& p) {
+      return !(std::abs(SignedDistance(region.surface, p)) <= band);
+    });
+    trusted[region.id] = !points[region.id].empty();
+  }
+  pipeline_internal::RefitToPoints(points, tolerance, &segmentation.regions);
+  pipeline_internal::RetypeToPoints(points, reconstruction.stats.noise, &segmentation.regions,
+                                    &segmentation.surfaces);
+  // A point keeps its face's region within its noise band (2 sigma of the
+  // cloud's noise); regions without points of their own (on the patches
+  // that close unscanned areas) take no point from a neighbour.
+  result->point_labels = pipeline_internal::PointLabelsBySurface(
+      mesh.tri, segmentation.face_labels, segmentation.regions,
+      {.keep_distance = 2.0 * reconstruction.stats.noise, .trusted = trusted}, cloud.points,
+      reconstruction.is_outlier);
+  return TakeSegmentation(mesh, std::move(segmentation), params, ctx, result);
+}
+
 absl::StatusOr<PipelineResult> RunOnPointCloud(const std::string& input_path,
                                                const PipelineParams& params,
                                                const RunContext& ctx) {
@@ -308,13 +362,12 @@ absl::StatusOr<PipelineResult> RunOnPointCloud(const std::string& input_path,
   result.from_point_cloud = true;
   result.point_count = static_cast<int64_t>(cloud.points.size());
   MESHSEG_ASSIGN_OR_RETURN(result.face_labels,
-                           SegmentMesh(reconstruction.mesh, params, ctx, &result));
+                           SegmentReconstruction(reconstruction, cloud, params, ctx, &result));
   MESHSEG_RETURN_IF_ERROR(
       ExportStep(reconstruction.mesh, result.face_labels, params, ctx, &result));
   MESHSEG_RETURN_IF_ERROR(pipeline_internal::FitFreeform(reconstruction.mesh, result.face_labels,
                                                          params, ctx, &result));
-  result.point_labels = pipeline_internal::PointLabels(
-      reconstruction.mesh.tri, result.face_labels, cloud.points, reconstruction.is_outlier);
+  result.point_outlier_count = reconstruction.stats.outlier_count;
   result.face_filled = reconstruction.is_filled;
   result.filled_face_count = reconstruction.stats.filled_face_count;
   result.filled_area = reconstruction.stats.filled_area;

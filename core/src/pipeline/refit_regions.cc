@@ -2,12 +2,19 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <optional>
+#include <utility>
 #include <variant>
 
 #include "meshseg/fit.h"
+#include "segment/decide_type.h"
 
 namespace meshseg::pipeline_internal {
 namespace {
+
+// Fewer points than this tell no type from another (the cone's fit needs 6).
+constexpr std::size_t kMinRetypePoints = 30;
 
 struct Distances {
   double rms = 0.0;
@@ -43,16 +50,24 @@ void RefitOnInputVertices(const TriMesh& mesh, std::span<const int> face_labels,
       members[r].push_back(v.idx());
     }
   }
-  std::vector<Eigen::Vector3d> points, normals;
-  for (Region& region : *regions) {
-    std::vector<int>& ids = members[region.id];
+  std::vector<std::vector<Eigen::Vector3d>> points(regions->size());
+  for (std::size_t r = 0; r < members.size(); ++r) {
+    std::vector<int>& ids = members[r];
     std::sort(ids.begin(), ids.end());
     ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
-    points.clear();
+    for (const int v : ids) points[r].push_back(ToEigen(mesh.point(TriMesh::VertexHandle(v))));
+  }
+  RefitToPoints(points, distance_tolerance, regions);
+}
+
+void RefitToPoints(std::span<const std::vector<Eigen::Vector3d>> points_of_region,
+                   double distance_tolerance, std::vector<Region>* regions) {
+  std::vector<Eigen::Vector3d> normals;
+  for (Region& region : *regions) {
+    const std::vector<Eigen::Vector3d>& points = points_of_region[region.id];
+    if (points.empty()) continue;  // nothing to refit to, nothing to measure
     normals.clear();
-    for (const int v : ids) {
-      const Eigen::Vector3d p = ToEigen(mesh.point(TriMesh::VertexHandle(v)));
-      points.push_back(p);
+    for (const Eigen::Vector3d& p : points) {
       normals.push_back(Project(region.surface, p, Eigen::Vector3d::Zero()).normal);
     }
     const Distances before = DistancesTo(region.surface, points);
@@ -86,6 +101,73 @@ void RefitOnInputVertices(const TriMesh& mesh, std::span<const int> face_labels,
       }
     }
   }
+}
+
+int RetypeToPoints(std::span<const std::vector<Eigen::Vector3d>> points_of_region, double sigma,
+                   std::vector<Region>* regions, std::vector<SharedSurface>* surfaces) {
+  int changed = 0;
+  std::vector<Eigen::Vector3d> normals;
+  for (Region& region : *regions) {
+    const std::vector<Eigen::Vector3d>& points = points_of_region[region.id];
+    const SurfaceType own = region.type;
+    if (own == SurfaceType::kPlane || own == SurfaceType::kQuadric ||
+        own == SurfaceType::kFreeform || points.size() < kMinRetypePoints) {
+      continue;
+    }
+    normals.clear();
+    for (const Eigen::Vector3d& p : points) {
+      normals.push_back(Project(region.surface, p, Eigen::Vector3d::Zero()).normal);
+    }
+    // The criterion needs only the noise: the cloud's, or the scatter the
+    // region's own type leaves if larger (the cloud's sigma comes from local
+    // planes; range noise along oblique rays scatters points more across a
+    // surface), so "near the noise" means "near what the own type achieves".
+    segment_internal::SegmentContext c;
+    c.noise_sigma = std::max(sigma, region.rms_distance);
+    const double own_score =
+        segment_internal::InformationScore(c, region.rms_distance * region.rms_distance,
+                                           points.size(), segment_internal::ParameterCount(own));
+    std::optional<std::pair<SurfaceType, FitResult>> best;
+    double best_score = std::numeric_limits<double>::infinity();
+    for (const SurfaceType t : {SurfaceType::kPlane, SurfaceType::kCylinder, SurfaceType::kCone}) {
+      if (t != SurfaceType::kPlane && !segment_internal::IsLimitOf(t, own)) continue;
+      const FitResult fit = FitOfType(t, {.points = points, .normals = normals, .weights = {}});
+      if (!fit.ok()) continue;
+      const double ms = fit.rms_distance * fit.rms_distance;
+      const double score = segment_internal::InformationScore(c, ms, points.size(),
+                                                              segment_internal::ParameterCount(t));
+      if (segment_internal::ModelErrorOfMeanSquare(c, ms) <=
+              segment_internal::kScoredNearError * c.noise_sigma &&
+          score < own_score + segment_internal::kScoreMargin && score < best_score) {
+        best_score = score;
+        best.emplace(t, fit);
+      }
+    }
+    if (!best) continue;
+    region.type = best->first;
+    region.surface = best->second.surface;
+    region.rms_distance = best->second.rms_distance;
+    region.max_distance = best->second.max_distance;
+    ++changed;
+    // Off the shared surface it was on (whose other regions keep it), onto
+    // one of its own; a surface it was alone on becomes its new one.
+    const bool shared = region.surface_id >= 0 &&
+                        region.surface_id < static_cast<int>(surfaces->size()) &&
+                        (*surfaces)[region.surface_id].regions.size() > 1;
+    if (shared) std::erase((*surfaces)[region.surface_id].regions, region.id);
+    if (shared || region.surface_id < 0 ||
+        region.surface_id >= static_cast<int>(surfaces->size())) {
+      region.surface_id = static_cast<int>(surfaces->size());
+      surfaces->push_back({.id = region.surface_id});
+    }
+    SharedSurface& mine = (*surfaces)[region.surface_id];
+    mine.type = region.type;
+    mine.surface = region.surface;
+    mine.regions = {region.id};
+    mine.rms_distance = region.rms_distance;
+    mine.max_distance = region.max_distance;
+  }
+  return changed;
 }
 
 int RelabelFacesOffTheirSurface(const TriMesh& mesh, std::span<const Region> regions, double exact,

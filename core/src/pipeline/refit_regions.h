@@ -32,6 +32,29 @@ void RefitOnInputVertices(const TriMesh& mesh, std::span<const int> face_labels,
 // within half its distance to its own surface and its own farther than
 // `exact`. Run after RefitOnInputVertices (surfaces fitted to the input's
 // vertices); returns how many faces moved.
+// The refit of RefitOnInputVertices on given points: points_of_region[r]
+// are the points of region r (one list per region, by id); a region with
+// fewer points than its type needs keeps its surface (the fit is invalid),
+// with rms/max distances of its points; one without points is left as it is.
+void RefitToPoints(std::span<const std::vector<Eigen::Vector3d>> points_of_region,
+                   double distance_tolerance, std::vector<Region>* regions);
+
+// Point clouds: seed 000's type decision made again on each curved
+// region's own points (points_of_region, after RefitToPoints), with the
+// segmentation's criterion (segment/decide_type.h): a simpler type that is a
+// limit of the region's (a plane of any curved type; a cylinder or cone of
+// a torus; a cylinder of a cone) takes over when it fits the points within
+// kScoredNearError sigmas of their noise (the cloud's `sigma`, or the rms
+// the region's own type leaves if larger) and its information score is
+// less than kScoreMargin above the region's. On a reconstructed mesh the
+// type was decided on vertices that round every crease over a spacing and
+// run on over the smooth patches that close unscanned areas, which bends a
+// narrow chamfer into a torus band or a flat side into a cylinder; the
+// points are the data. A retyped region leaves the shared surface it was on
+// for one of its own. Returns how many regions changed type.
+int RetypeToPoints(std::span<const std::vector<Eigen::Vector3d>> points_of_region, double sigma,
+                   std::vector<Region>* regions, std::vector<SharedSurface>* surfaces);
+
 int RelabelFacesOffTheirSurface(const TriMesh& mesh, std::span<const Region> regions, double exact,
                                 std::vector<int>* face_labels);
 

@@ -28,6 +28,7 @@ struct PrimitiveScore {
                              // whose majority primitive it is
   std::vector<int> regions;  // those regions
   double angular_span = 1.0; // cylinders: fraction of the full turn present
+  double amount = 0.0;       // its scored weight (area of faces, or points)
 };
 
 struct Evaluation {
@@ -37,6 +38,7 @@ struct Evaluation {
   int region_count = 0;
   int region_extra_pieces = 0; // face-connected pieces of regions (any size) beyond one each
   std::vector<PrimitiveScore> primitives;
+  std::vector<int> region_primitive;  // per region: the primitive of most of its weight, or -1
 };
 
 inline double AngularSpan(const GeneratedPart& part, int primitive, const Cylinder& cyl) {
@@ -90,47 +92,52 @@ inline int ExtraPieces(const std::map<int, int>& pieces) {
   return extra;
 }
 
-inline Evaluation Evaluate(const GeneratedPart& part, const Segmentation& seg) {
-  const TriMesh& tri = part.mesh.tri;
-  const int np = static_cast<int>(part.primitives.size());
-  const int nr = static_cast<int>(seg.regions.size());
-  // area[region][primitive] over all faces; clean[..] without boundary faces.
-  std::vector<std::map<int, double>> area(nr), clean(np);
-  std::vector<int64_t> faces(np, 0);
+// Majority matching of labelled elements (faces weighted by area, scan
+// points by count) against their true primitives: each region stands for
+// the primitive holding most of its weight; an element is right when its
+// region stands for its own primitive. `truth` and `labels` have one entry
+// per element (-1 = none), `weight` one per element; elements with
+// `scored[i] == 0` (faces near a boundary between primitives) vote for their
+// region's primitive but are not scored. Fills e.area_fraction (the scored
+// weight labelled right) and per primitive with scored elements: region,
+// covered, regions, amount. Faces and points share this one measure.
+inline void MatchMajority(const std::vector<PrimitiveTruth>& primitives, int region_count,
+                          std::span<const int> truth, std::span<const int> labels,
+                          std::span<const double> weight, std::span<const uint8_t> scored,
+                          Evaluation* e) {
+  const int np = static_cast<int>(primitives.size());
+  const int nr = region_count;
+  // weight[region][primitive] over all elements; clean[..] scored ones only.
+  std::vector<std::map<int, double>> all(nr), clean(np);
+  std::vector<int64_t> count(np, 0);
   double total = 0.0;
-  for (std::size_t f = 0; f < tri.n_faces(); ++f) {
-    const int p = part.face_primitive[f];
-    const int r = seg.face_labels[f];
-    const double a = tri.calc_face_area(TriMesh::FaceHandle(int(f)));
-    if (p >= 0) ++faces[p];
-    if (r >= 0 && p >= 0) area[r][p] += a;
-    if (p >= 0 && !part.face_near_boundary[f]) {
-      clean[p][r] += a;
-      total += a;
+  for (std::size_t i = 0; i < truth.size(); ++i) {
+    const int p = truth[i];
+    const int r = labels[i];
+    if (p >= 0) ++count[p];
+    if (r >= 0 && p >= 0) all[r][p] += weight[i];
+    if (p >= 0 && scored[i]) {
+      clean[p][r] += weight[i];
+      total += weight[i];
     }
   }
   std::vector<int> region_primitive(nr, -1);
   for (int r = 0; r < nr; ++r) {
     double best = 0.0;
-    for (const auto& [p, a] : area[r]) {
+    for (const auto& [p, a] : all[r]) {
       if (a > best) best = a, region_primitive[r] = p;
     }
   }
-  Evaluation e;
-  e.region_count = nr;
-  const std::map<int, int> true_pieces =
-      PiecesPerLabel(tri, part.face_primitive, /*min_faces=*/10);
-  for (const auto& [p, n] : true_pieces) e.true_count += n;
-  e.true_extra_pieces = ExtraPieces(true_pieces);
-  e.region_extra_pieces = ExtraPieces(PiecesPerLabel(tri, seg.face_labels, /*min_faces=*/1));
+  e->region_count = nr;
+  e->region_primitive = region_primitive;
   double correct = 0.0;
   for (int p = 0; p < np; ++p) {
-    if (faces[p] == 0) continue;
+    if (count[p] == 0) continue;
     PrimitiveScore s;
     s.primitive = p;
-    s.name = part.primitives[p].name;
-    s.true_type = TypeOf(part.primitives[p].surface);
-    s.faces = faces[p];
+    s.name = primitives[p].name;
+    s.true_type = TypeOf(primitives[p].surface);
+    s.faces = count[p];
     double sum = 0.0, best = 0.0, mine = 0.0;
     for (const auto& [r, a] : clean[p]) {
       sum += a;
@@ -141,13 +148,51 @@ inline Evaluation Evaluate(const GeneratedPart& part, const Segmentation& seg) {
       if (r >= 0 && a > best) best = a, s.region = r;
     }
     correct += mine;
+    s.amount = sum;
     s.covered = sum > 0.0 ? mine / sum : 0.0;
-    if (const auto* cyl = std::get_if<Cylinder>(&part.primitives[p].surface)) {
-      s.angular_span = AngularSpan(part, p, *cyl);
-    }
-    e.primitives.push_back(s);
+    e->primitives.push_back(s);
   }
-  e.area_fraction = total > 0.0 ? correct / total : 0.0;
+  e->area_fraction = total > 0.0 ? correct / total : 0.0;
+}
+
+inline Evaluation Evaluate(const GeneratedPart& part, const Segmentation& seg) {
+  const TriMesh& tri = part.mesh.tri;
+  std::vector<double> area(tri.n_faces());
+  std::vector<uint8_t> scored(tri.n_faces());
+  for (std::size_t f = 0; f < tri.n_faces(); ++f) {
+    area[f] = tri.calc_face_area(TriMesh::FaceHandle(int(f)));
+    scored[f] = !part.face_near_boundary[f];
+  }
+  Evaluation e;
+  MatchMajority(part.primitives, static_cast<int>(seg.regions.size()), part.face_primitive,
+                seg.face_labels, area, scored, &e);
+  const std::map<int, int> true_pieces =
+      PiecesPerLabel(tri, part.face_primitive, /*min_faces=*/10);
+  for (const auto& [p, n] : true_pieces) e.true_count += n;
+  e.true_extra_pieces = ExtraPieces(true_pieces);
+  e.region_extra_pieces = ExtraPieces(PiecesPerLabel(tri, seg.face_labels, /*min_faces=*/1));
+  for (PrimitiveScore& s : e.primitives) {
+    if (const auto* cyl = std::get_if<Cylinder>(&part.primitives[s.primitive].surface)) {
+      s.angular_span = AngularSpan(part, s.primitive, *cyl);
+    }
+  }
+  return e;
+}
+
+// The same measure on the points of a scan (ScanPart): every genuine point
+// (not an outlier, drawn from a primitive) weighs 1 and is scored, also the
+// ones the pipeline discarded (label -1 counts as wrong); outliers are left
+// out. area_fraction is then the fraction of genuine points labelled with
+// their true surface, `faces` and `amount` count points. `point_labels` has
+// one entry per scan point, `region_count` is the result's.
+inline Evaluation EvaluatePoints(const ScannedPart& scan, std::span<const int> point_labels,
+                                 int region_count) {
+  const std::vector<double> one(scan.point_primitive.size(), 1.0);
+  std::vector<uint8_t> scored(scan.point_primitive.size());
+  for (std::size_t i = 0; i < scored.size(); ++i) scored[i] = !scan.is_outlier[i];
+  Evaluation e;
+  MatchMajority(scan.part.primitives, region_count, scan.point_primitive, point_labels, one,
+                scored, &e);
   return e;
 }
 
