@@ -100,8 +100,10 @@ struct ReconstructParams {
   // angle (their normals split by over 30° and two planes fit them far
   // better than one), the vertex goes onto the nearer plane's part of the
   // surface or onto the planes' line instead of onto one averaged plane, and
-  // mesh edges crossing the crease put an end on that line. false: every
-  // vertex onto one plane (edges rounded over projection_radius).
+  // mesh edges crossing the crease get a vertex on that line. Only on clean
+  // and lightly noisy clouds (noise σ ≤ 0.15 h, crease.h kMaxCreaseNoise).
+  // false: every vertex onto one plane (edges rounded over
+  // projection_radius).
   bool sharp_creases = true;
 };
 

@@ -125,19 +125,19 @@ int RemoveFlatTriangles(TriMesh* mesh) {
       const int shortest = static_cast<int>(std::min_element(length, length + 3) - length);
       const double l2 = length[longest] * length[longest];
       if ((b - a).cross(c - a).norm() > kFlatTriangle * l2) continue;
-      if (length[shortest] < kNeedleEdge * length[longest]) {
-        for (const auto hh : {h[shortest], mesh->opposite_halfedge_handle(h[shortest])}) {
-          if (mesh->is_collapse_ok(hh)) {
-            mesh->collapse(hh);
-            ++this_pass;
-            break;
-          }
-        }
-      } else {
-        const auto e = mesh->edge_handle(h[longest]);
-        if (!mesh->is_boundary(e) && mesh->is_flip_ok(e)) {
-          mesh->flip(e);
+      const auto e = mesh->edge_handle(h[longest]);
+      if (length[shortest] >= kNeedleEdge * length[longest] && !mesh->is_boundary(e) &&
+          mesh->is_flip_ok(e)) {
+        mesh->flip(e);
+        ++this_pass;
+        continue;
+      }
+      // A needle, or a cap whose flip would duplicate an edge: collapse.
+      for (const auto hh : {h[shortest], mesh->opposite_halfedge_handle(h[shortest])}) {
+        if (mesh->is_collapse_ok(hh)) {
+          mesh->collapse(hh);
           ++this_pass;
+          break;
         }
       }
     }

@@ -45,8 +45,9 @@ CreaseSnap SnapToCreases(const std::vector<std::pair<int, Crease>>& creases, Tri
 // the same nearest point on the line at each position along it, so
 // vertices there can land on one point, or three on the line. Removes the
 // triangles that leaves flat (area under kFlatTriangle × longest edge²): a
-// needle (shortest edge under kNeedleEdge × longest) by collapsing its
-// shortest edge, a cap by flipping its longest edge, each only where the
+// cap by flipping its longest edge, a needle (shortest edge under
+// kNeedleEdge × longest) or a cap that cannot flip by collapsing its
+// shortest edge, each only where the
 // mesh stays a manifold (OpenMesh's link condition, is_flip_ok); then
 // removes the deleted elements (vertex and face handles change). Returns
 // the number of collapses and flips.

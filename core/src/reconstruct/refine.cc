@@ -107,7 +107,8 @@ absl::StatusOr<Mesh> RefineOnPoints(const Mesh& mesh, const std::vector<Eigen::V
   ctx.Progress("reconstruct: projection", 0.0);
   const double radius = params.projection_radius * h;
   const std::vector<Eigen::Vector3d> no_normals;
-  const std::vector<Eigen::Vector3d>& crease_normals = params.sharp_creases ? normals : no_normals;
+  const bool sharp = params.sharp_creases && stats->noise <= kMaxCreaseNoise * h;
+  const std::vector<Eigen::Vector3d>& crease_normals = sharp ? normals : no_normals;
   std::vector<std::pair<int, Crease>> creases;
   std::vector<uint8_t> unsupported(fine.tri.n_vertices(), 0);
   // Projects `only` (all vertices when null), vertices with no points near
@@ -137,7 +138,7 @@ absl::StatusOr<Mesh> RefineOnPoints(const Mesh& mesh, const std::vector<Eigen::V
   // normals of their nearest points kMinCreaseAngleDeg apart): a stretch
   // along one surface (a fold, a handle) is not a crease's.
   const double cos_crease = std::cos(kMinCreaseAngleDeg * M_PI / 180.0);
-  for (int round = 0; params.sharp_creases && round < kStretchedRounds; ++round) {
+  for (int round = 0; sharp && round < kStretchedRounds; ++round) {
     const double longest = kStretchedEdge * stats->refine_edge_length;
     std::vector<TriMesh::EdgeHandle> stretched;
     for (const auto e : fine.tri.edges()) {
@@ -161,7 +162,7 @@ absl::StatusOr<Mesh> RefineOnPoints(const Mesh& mesh, const std::vector<Eigen::V
     project(&added);
   }
   stats->crease_vertex_count = static_cast<int64_t>(creases.size());
-  if (params.sharp_creases) {
+  if (sharp) {
     const CreaseSnap snap = SnapToCreases(creases, &fine.tri);
     stats->crease_snapped_count = snap.moved;
     stats->crease_inserted_count = snap.inserted;
