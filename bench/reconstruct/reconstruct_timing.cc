@@ -4,7 +4,7 @@
 // name=value sets a ReconstructParams field: error_tolerance, leaf_cell_size,
 // graph_cut_k, refine_edge_length, projection_radius, outlier_distance,
 // off_surface_distance, min_component_fraction, smoothing_iterations,
-// use_graph_cut, seed, support_spacings, leave_unsupported_open.
+// use_graph_cut, seed, support_spacings, leave_unsupported_open, sharp_creases.
 #include <sys/resource.h>
 
 #include <chrono>
@@ -55,6 +55,8 @@ bool SetParam(const std::string& name, double value, meshseg::ReconstructParams*
     p->use_graph_cut = value != 0.0;
   } else if (name == "leave_unsupported_open") {
     p->leave_unsupported_open = value != 0.0;
+  } else if (name == "sharp_creases") {
+    p->sharp_creases = value != 0.0;
   } else if (name == "seed") {
     p->seed = static_cast<uint64_t>(value);
   } else {
@@ -128,5 +130,10 @@ int main(int argc, char** argv) {
       "support: %lld faces removed, %lld holes, %lld faces filled (area %.6g), genus %d -> %d\n",
       (long long)st.unsupported_face_count, (long long)st.hole_count,
       (long long)st.filled_face_count, st.filled_area, st.genus_before_support, st.genus);
+  std::printf(
+      "creases: %lld vertices on a crease, %lld moved onto its line, %lld added on it; %lld "
+      "stretched edges split\n",
+      (long long)st.crease_vertex_count, (long long)st.crease_snapped_count,
+      (long long)st.crease_inserted_count, (long long)st.stretched_split_count);
   return 0;
 }

@@ -95,6 +95,16 @@ struct ReconstructParams {
   // Leave the unsupported areas open instead of closing them (`--open`):
   // every edge then has one or two faces.
   bool leave_unsupported_open = false;
+  // Sharp edges kept (issue 38 item 3; our addition, reconstruct/crease.h):
+  // where the points around a refined vertex lie on two planes meeting at an
+  // angle (their normals split by over 30° and two planes fit them far
+  // better than one), the vertex goes onto the nearer plane's part of the
+  // surface or onto the planes' line instead of onto one averaged plane, and
+  // mesh edges crossing the crease get a vertex on that line. Only on clean
+  // and lightly noisy clouds (noise σ ≤ 0.15 h, crease.h kMaxCreaseNoise).
+  // false: every vertex onto one plane (edges rounded over
+  // projection_radius).
+  bool sharp_creases = true;
 };
 
 // What the stage measured and derived.
@@ -127,6 +137,15 @@ struct ReconstructStats {
   double filled_area = 0.0;
   int genus_before_support = 0;
   int genus = 0;
+  // Refined vertices projected onto a crease of two planes (sharp_creases);
+  // vertices moved onto a crease line, and added on one by splitting the
+  // edges that crossed it, so mesh edges follow the crease.
+  int64_t crease_vertex_count = 0;
+  int64_t crease_snapped_count = 0;
+  int64_t crease_inserted_count = 0;
+  // Refined edges the projection stretched over twice their length (across
+  // a crease), halved with their midpoints projected (reconstruct/refine.h).
+  int64_t stretched_split_count = 0;
 };
 
 struct Reconstruction {

@@ -5,12 +5,14 @@
 #ifndef MESHSEG_RECONSTRUCT_PROJECT_TO_POINTS_H_
 #define MESHSEG_RECONSTRUCT_PROJECT_TO_POINTS_H_
 
+#include <utility>
 #include <vector>
 
 #include <Eigen/Core>
 
 #include "meshseg/mesh.h"
 #include "mesh/point_index.h"
+#include "reconstruct/crease.h"
 
 namespace meshseg::reconstruct_internal {
 
@@ -31,10 +33,21 @@ inline constexpr double kFallbackReach = 3.0;
 // points within kFallbackReach × radius; they do not move. The caller
 // updates the normals (refine.h moves those vertices first). Noise along the
 // normal averages out over the ~π(radius/h)² points of a disc; sharp edges
-// are rounded over about `radius`.
+// are rounded over about `radius` unless `normals` (inward, one per point)
+// are given: then a neighbourhood whose points lie on two planes meeting at
+// a crease (FitCrease, crease.h) puts the vertex on the nearer of the two
+// planes' parts or on their line, and the edge stays sharp (`noise`: the
+// points' σ about the surface, model units, FitCrease). `creases`, if
+// not null, receives the vertices whose last step found a crease, with it
+// (in vertex order). `only`, if not null, names the vertices to move (all
+// when null).
 std::vector<int> ProjectToPoints(const std::vector<Eigen::Vector3d>& points,
                                  const mesh_internal::PointIndex& index, double radius,
-                                 int iterations, TriMesh* mesh);
+                                 int iterations, TriMesh* mesh,
+                                 const std::vector<Eigen::Vector3d>& normals = {},
+                                 double noise = 0.0,
+                                 std::vector<std::pair<int, Crease>>* creases = nullptr,
+                                 const std::vector<int>* only = nullptr);
 
 }  // namespace meshseg::reconstruct_internal
 

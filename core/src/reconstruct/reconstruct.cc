@@ -258,8 +258,8 @@ absl::StatusOr<Reconstruction> Reconstruct(const PointCloud& cloud, const Recons
 
   // Step 7 (our addition): a finer, scan-like mesh on the points.
   if (params.refine_edge_length > 0) {
-    MESHSEG_ASSIGN_OR_RETURN(out.mesh,
-                             RefineOnPoints(out.mesh, points, index, f, h, params, ctx, &stats));
+    MESHSEG_ASSIGN_OR_RETURN(out.mesh, RefineOnPoints(out.mesh, points, normals.normals, index, f,
+                                                      h, params, ctx, &stats));
   }
 
   // Step 8 (our addition, issue 38): no surface where no point supports it.

@@ -3,10 +3,13 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <numeric>
+#include <utility>
 #include <vector>
 
 #include "meshseg/remesh.h"
 #include "meshseg/status_macros.h"
+#include "reconstruct/crease_snap.h"
 #include "reconstruct/project_to_points.h"
 
 #include <tbb/parallel_for.h>
@@ -66,6 +69,7 @@ absl::StatusOr<Mesh> SplitInFour(const Mesh& mesh) {
 }
 
 absl::StatusOr<Mesh> RefineOnPoints(const Mesh& mesh, const std::vector<Eigen::Vector3d>& points,
+                                    const std::vector<Eigen::Vector3d>& normals,
                                     const mesh_internal::PointIndex& index, const PuFunction& f,
                                     double h, const ReconstructParams& params,
                                     const RunContext& ctx, ReconstructStats* stats) {
@@ -102,14 +106,71 @@ absl::StatusOr<Mesh> RefineOnPoints(const Mesh& mesh, const std::vector<Eigen::V
   }
   ctx.Progress("reconstruct: projection", 0.0);
   const double radius = params.projection_radius * h;
-  const std::vector<int> left =
-      ProjectToPoints(points, index, radius, kProjectionIterations, &fine.tri);
-  stats->unsupported_vertex_count = static_cast<int64_t>(left.size());
-  tbb::parallel_for(size_t{0}, left.size(), [&](size_t i) {
-    const TriMesh::VertexHandle v(left[i]);
-    const Eigen::Vector3d x = OntoZeroSet(f, ToEigen(fine.tri.point(v)), 0.5 * h, radius);
-    fine.tri.set_point(v, TriMesh::Point(x[0], x[1], x[2]));
-  });
+  const std::vector<Eigen::Vector3d> no_normals;
+  const bool sharp = params.sharp_creases && stats->noise <= kMaxCreaseNoise * h;
+  const std::vector<Eigen::Vector3d>& crease_normals = sharp ? normals : no_normals;
+  std::vector<std::pair<int, Crease>> creases;
+  std::vector<uint8_t> unsupported(fine.tri.n_vertices(), 0);
+  // Projects `only` (all vertices when null), vertices with no points near
+  // them onto f = 0; adds the creases found.
+  const auto project = [&](const std::vector<int>* only) {
+    std::vector<std::pair<int, Crease>> found;
+    const std::vector<int> left =
+        ProjectToPoints(points, index, radius, kProjectionIterations, &fine.tri, crease_normals,
+                        stats->noise, &found, only);
+    creases.insert(creases.end(), found.begin(), found.end());
+    unsupported.resize(fine.tri.n_vertices(), 0);
+    for (const int v : left) unsupported[v] = 1;
+    stats->unsupported_vertex_count += static_cast<int64_t>(left.size());
+    tbb::parallel_for(size_t{0}, left.size(), [&](size_t i) {
+      const TriMesh::VertexHandle v(left[i]);
+      const Eigen::Vector3d x = OntoZeroSet(f, ToEigen(fine.tri.point(v)), 0.5 * h, radius);
+      fine.tri.set_point(v, TriMesh::Point(x[0], x[1], x[2]));
+    });
+  };
+  project(nullptr);
+  // An edge the projection stretched spans between two surfaces: vertices of
+  // a chord that cut a crease (a marching-tetrahedra "tent", refine.h) went
+  // onto either side of it, farther from the crease than its fits reach.
+  // Its midpoint, projected, lies on the crease or on one side; halving such
+  // edges a few times puts vertices along the crease where the remesher left
+  // none. Only edges whose ends lie on surfaces at a crease angle (the
+  // normals of their nearest points kMinCreaseAngleDeg apart): a stretch
+  // along one surface (a fold, a handle) is not a crease's.
+  const double cos_crease = std::cos(kMinCreaseAngleDeg * M_PI / 180.0);
+  for (int round = 0; sharp && round < kStretchedRounds; ++round) {
+    const double longest = kStretchedEdge * stats->refine_edge_length;
+    std::vector<TriMesh::EdgeHandle> stretched;
+    for (const auto e : fine.tri.edges()) {
+      const auto he = fine.tri.halfedge_handle(e, 0);
+      const auto a = fine.tri.from_vertex_handle(he), b = fine.tri.to_vertex_handle(he);
+      if (unsupported[a.idx()] || unsupported[b.idx()]) continue;
+      if (!(fine.tri.calc_edge_length(e) > longest)) continue;
+      const Eigen::Vector3d& na = normals[index.Closest(ToEigen(fine.tri.point(a)))];
+      const Eigen::Vector3d& nb = normals[index.Closest(ToEigen(fine.tri.point(b)))];
+      if (na.dot(nb) < cos_crease) stretched.push_back(e);
+    }
+    if (stretched.empty()) break;
+    std::vector<int> added;
+    for (const auto e : stretched) {
+      const auto he = fine.tri.halfedge_handle(e, 0);
+      const auto mid = 0.5 * (fine.tri.point(fine.tri.from_vertex_handle(he)) +
+                              fine.tri.point(fine.tri.to_vertex_handle(he)));
+      added.push_back(fine.tri.split(e, mid).idx());
+    }
+    stats->stretched_split_count += static_cast<int64_t>(added.size());
+    project(&added);
+  }
+  stats->crease_vertex_count = static_cast<int64_t>(creases.size());
+  if (sharp) {
+    const CreaseSnap snap = SnapToCreases(creases, &fine.tri);
+    stats->crease_snapped_count = snap.moved;
+    stats->crease_inserted_count = snap.inserted;
+    RemoveFlatTriangles(&fine.tri);
+    // Splits added faces; the refined mesh's faces are its own input faces.
+    fine.face_of_input.resize(fine.tri.n_faces());
+    std::iota(fine.face_of_input.begin(), fine.face_of_input.end(), 0);
+  }
   fine.tri.update_normals();
   return fine;
 }

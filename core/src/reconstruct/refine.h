@@ -44,6 +44,11 @@ inline constexpr double kMinGradient = 1e-3;
 // Above this many triangles the surface is remeshed at twice the edge and
 // split in four (CGAL's remesher takes ~5 s for as many here, on one thread).
 inline constexpr double kSerialRemeshFaces = 100'000;
+// After the projection an edge longer than this many refined edge lengths
+// (the remesher leaves them within 4/3) was stretched across a crease and
+// is halved, at most kStretchedRounds times over.
+inline constexpr double kStretchedEdge = 2.0;
+inline constexpr int kStretchedRounds = 4;
 
 // Returns `mesh` with every triangle split into four at the midpoints of its
 // edges: edges halve, triangle shapes and the surface stay, a closed oriented
@@ -51,12 +56,17 @@ inline constexpr double kSerialRemeshFaces = 100'000;
 absl::StatusOr<Mesh> SplitInFour(const Mesh& mesh);
 
 // Returns `mesh` remeshed and projected onto `points` (the non-outliers,
-// indexed by `index`) with point spacing `h`, or onto the zero set of `f`
-// far from them, per the refine_* parameters of `params`; sets
-// stats->refine_edge_length and unsupported_vertex_count. Returns `mesh`
+// indexed by `index`, with inward unit `normals`) with point spacing `h`, or
+// onto the zero set of `f` far from them, per the refine_* parameters of
+// `params`; with params.sharp_creases the creases the points show are kept
+// sharp (crease.h, crease_snap.h). Sets stats->refine_edge_length,
+// unsupported_vertex_count, stretched_split_count, crease_vertex_count and
+// crease_snapped_count.
+// Returns `mesh`
 // itself (refine_edge_length 0) when the remeshed mesh is not closed (the
 // remesher pinched a thin sheet). Errors: those of IsotropicRemesh.
 absl::StatusOr<Mesh> RefineOnPoints(const Mesh& mesh, const std::vector<Eigen::Vector3d>& points,
+                                    const std::vector<Eigen::Vector3d>& normals,
                                     const mesh_internal::PointIndex& index, const PuFunction& f,
                                     double h, const ReconstructParams& params,
                                     const RunContext& ctx, ReconstructStats* stats);

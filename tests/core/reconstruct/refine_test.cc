@@ -7,10 +7,12 @@
 
 #include <gtest/gtest.h>
 
+#include "clouds.h"
 #include "core/curvature/test_meshes.h"
 #include "meshseg/remesh.h"
 #include "reconstruct/project_to_points.h"
 #include "grid_supports.h"
+#include "surface_metrics.h"
 
 namespace meshseg::reconstruct_internal {
 namespace {
@@ -84,7 +86,7 @@ class RefineOnPointsTest : public ::testing::Test {
   absl::StatusOr<Mesh> Refine(const std::vector<Eigen::Vector3d>& points,
                               const ReconstructParams& params, ReconstructStats* stats) const {
     const mesh_internal::PointIndex index(points);
-    return RefineOnPoints(CoarseSphere(), points, index, f_, Spacing(), params, {}, stats);
+    return RefineOnPoints(CoarseSphere(), points, {}, index, f_, Spacing(), params, {}, stats);
   }
 
   const std::vector<Support> supports_ = test::GridSupports(9, 1.5 * kRadius);
@@ -155,6 +157,130 @@ TEST_F(RefineOnPointsTest, VerticesFarFromThePointsGoOntoTheImplicit) {
   // grid lies up to 1.4 h inside the unit sphere: left where the remesh put
   // them, the vertices would be 1–2 h from it.
   EXPECT_LT(worst, 0.01 * h);
+}
+
+// A block with a step: [−1, 1] × [−0.7, 0.7] × [−0.5, 0.5] without the
+// quarter x > 0, z > 0. Eleven convex right-angled edges and one concave
+// one (x = 0, z = 0, along y), all sharp. Its faces as rectangles
+// p = origin + u a + v b, u, v in [0, 1], with outward normals.
+struct Rect {
+  Eigen::Vector3d origin, a, b, normal;
+};
+std::vector<Rect> SteppedBlockFaces() {
+  const double y = 0.7;
+  std::vector<Rect> rects = {
+      {{-1, -y, -0.5}, {0, 2 * y, 0}, {0, 0, 1}, {-1, 0, 0}},  // x = −1
+      {{1, -y, -0.5}, {0, 2 * y, 0}, {0, 0, 0.5}, {1, 0, 0}},  // x = 1, lower
+      {{0, -y, 0}, {0, 2 * y, 0}, {0, 0, 0.5}, {1, 0, 0}},     // step wall x = 0
+      {{-1, -y, -0.5}, {2, 0, 0}, {0, 2 * y, 0}, {0, 0, -1}},  // z = −0.5
+      {{-1, -y, 0.5}, {1, 0, 0}, {0, 2 * y, 0}, {0, 0, 1}},    // z = 0.5, left
+      {{0, -y, 0}, {1, 0, 0}, {0, 2 * y, 0}, {0, 0, 1}},       // step floor z = 0
+  };
+  for (const double s : {-y, y}) {  // the L-shaped sides as two rectangles
+    rects.push_back({{-1, s, -0.5}, {1, 0, 0}, {0, 0, 1}, {0, s / y, 0}});
+    rects.push_back({{0, s, -0.5}, {1, 0, 0}, {0, 0, 0.5}, {0, s / y, 0}});
+  }
+  return rects;
+}
+
+// Uniform samples by area with outward normals (MakeCloud; no sdf: no
+// clumps are asked for).
+test::Shape SteppedBlock() {
+  const std::vector<Rect> rects = SteppedBlockFaces();
+  std::vector<double> areas;
+  for (const Rect& r : rects) areas.push_back(r.a.cross(r.b).norm());
+  test::Shape s;
+  s.sample = [rects, areas](std::mt19937& rng, Eigen::Vector3d* p, Eigen::Vector3d* n) {
+    std::discrete_distribution<int> pick(areas.begin(), areas.end());
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    const Rect& r = rects[pick(rng)];
+    *p = r.origin + u(rng) * r.a + u(rng) * r.b;
+    *n = r.normal;
+  };
+  for (const double a : areas) s.area += a;
+  return s;
+}
+
+// The true surface as triangles, two per face rectangle.
+std::vector<test::Triangle> SteppedBlockTriangles() {
+  std::vector<test::Triangle> out;
+  for (const Rect& r : SteppedBlockFaces()) {
+    out.push_back({r.origin, r.origin + r.a, r.origin + r.a + r.b});
+    out.push_back({r.origin, r.origin + r.a + r.b, r.origin + r.b});
+  }
+  return out;
+}
+
+// Points along the block's twelve edges, 0.01 apart, farther than `margin`
+// from its corners (where three faces meet, which two planes do not model).
+std::vector<Eigen::Vector3d> SteppedBlockEdgePoints(double margin) {
+  const double y = 0.7;
+  std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>> edges = {
+      {{-1, -y, -0.5}, {-1, y, -0.5}}, {{-1, -y, 0.5}, {-1, y, 0.5}},
+      {{1, -y, -0.5}, {1, y, -0.5}},   {{1, -y, 0}, {1, y, 0}},
+      {{0, -y, 0.5}, {0, y, 0.5}},     {{0, -y, 0}, {0, y, 0}},  // the concave edge
+  };
+  for (const double s : {-y, y}) {
+    edges.push_back({{-1, s, -0.5}, {1, s, -0.5}});
+    edges.push_back({{-1, s, -0.5}, {-1, s, 0.5}});
+    edges.push_back({{-1, s, 0.5}, {0, s, 0.5}});
+    edges.push_back({{0, s, 0}, {0, s, 0.5}});
+    edges.push_back({{0, s, 0}, {1, s, 0}});
+    edges.push_back({{1, s, -0.5}, {1, s, 0}});
+  }
+  std::vector<Eigen::Vector3d> out;
+  for (const auto& [a, b] : edges) {
+    const double length = (b - a).norm();
+    for (double t = margin; t <= length - margin; t += 0.01)
+      out.push_back(a + t / length * (b - a));
+  }
+  return out;
+}
+
+// Issue 38 item 3, "sharp edges kept": clean and lightly noisy (σ 0.1 of
+// the sampling's spacing, about 0.2 sp) samples of a part with convex and
+// concave right-angled edges, given normals. Distances in sp, the cloud's
+// median nearest-neighbour distance (issue 38's unit). Measured: the
+// edges' p95 distance to the reconstruction, away from the corners (three
+// planes, not modelled), over 2 sp rounded (sharp_creases off: one plane
+// per vertex; 3.2 sp at 8000 points) and 0.61 sp sharp on the clean cloud,
+// 1.08 sp sharp on the noisy one; the whole surface's accuracy p95 0.41 and
+// 0.71 sp.
+TEST(SharpCreases, TheEdgesOfASteppedBlockStaySharp) {
+  const test::Shape block = SteppedBlock();
+  const std::vector<Eigen::Vector3d> edge_points = SteppedBlockEdgePoints(0.1);
+  const test::SurfaceDistance to_truth(SteppedBlockTriangles());
+  struct Case {
+    double noise, max_edges, max_accuracy;  // noise in spacings, bounds in sp
+  };
+  for (const Case c : {Case{0.0, 0.75, 0.5}, Case{0.1, 1.5, 1.0}}) {
+    const PointCloud cloud = test::MakeCloud(block, {.points = 6000, .noise = c.noise});
+    const double sp = test::MedianSpacing(cloud.points);
+    const auto sharp = Reconstruct(cloud);
+    ASSERT_TRUE(sharp.ok()) << sharp.status();
+    const std::vector<test::Triangle> triangles = test::Triangles(sharp->mesh.tri);
+    const test::SurfaceDistance to_sharp(triangles);
+    const double edges = test::Quantile(test::SortedDistances(edge_points, to_sharp), 0.95) / sp;
+    const double accuracy =
+        test::Quantile(test::SortedDistances(test::AreaSamples(triangles, 4000), to_truth), 0.95) /
+        sp;
+    EXPECT_LT(edges, c.max_edges) << "noise " << c.noise;
+    EXPECT_LT(accuracy, c.max_accuracy) << "noise " << c.noise;
+    EXPECT_GT(sharp->stats.crease_vertex_count, 0);
+    EXPECT_GT(sharp->stats.crease_inserted_count + sharp->stats.crease_snapped_count, 0);
+    EXPECT_EQ(test::BoundaryEdgeCount(sharp->mesh.tri), 0);
+    EXPECT_EQ(test::NonManifoldVertexCount(sharp->mesh.tri), 0);
+    EXPECT_EQ(sharp->mesh.face_of_input.size(), sharp->mesh.tri.n_faces());
+    ::testing::Test::RecordProperty(c.noise == 0 ? "edges_sp_clean" : "edges_sp_noisy",
+                                    std::to_string(edges));
+    if (c.noise > 0) continue;
+    // The same cloud with one plane per vertex: the edges rounded off.
+    const auto round = Reconstruct(cloud, {.sharp_creases = false});
+    ASSERT_TRUE(round.ok()) << round.status();
+    const test::SurfaceDistance to_round(test::Triangles(round->mesh.tri));
+    EXPECT_GT(test::Quantile(test::SortedDistances(edge_points, to_round), 0.95) / sp, 2.0);
+    EXPECT_EQ(round->stats.crease_vertex_count, 0);
+  }
 }
 
 }  // namespace

@@ -62,10 +62,12 @@ void CheckAgainstTruth(const Case& c) {
                                   std::to_string(test::Quantile(completeness, 0.95) / h));
 }
 
-// Clean samples of a CAD part with sharp edges; the p95 is set by the rounding
-// of those edges (linear local functions, seed 001 §2.1.1).
+// Clean samples of a CAD part with sharp edges, convex and concave (issue 38
+// item 3: accuracy p95 at most 1 sp, the median nearest-neighbour distance,
+// about 0.49 h here). With the creases kept (reconstruct/crease.h) the p95
+// is 0.1 h (0.21 sp measured with 20 000 samples); rounded off it was 1.2 h.
 TEST(ReconstructSharedData, BrokenBulletWithOutwardNormalsMatchesTruth) {
-  CheckAgainstTruth({"broken_bullet_50k.xyz", "broken_bullet_gt.obj", {}, 0.3, 5.0});
+  CheckAgainstTruth({"broken_bullet_50k.xyz", "broken_bullet_gt.obj", {}, 0.3, 0.49});
 }
 
 // A simulated scan with uneven density and noise of about the point spacing
