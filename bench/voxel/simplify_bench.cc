@@ -14,6 +14,7 @@
 // its corners, which are input vertices, lie on).
 // Usage: voxel_simplify_bench [PART] [--voxel-size H] [--noise S] [--share F] [--out OUT.ply]
 //          [--crease-deg D] [--max-error-h E]   (E: rms error bound in h, default 0.2; 0 = none)
+//          [--time-only]   (print the simplification's time and stop: for A/B timing runs)
 #include <sys/resource.h>
 
 #include <algorithm>
@@ -119,6 +120,7 @@ int main(int argc, char** argv) {
   std::string part = "test_piece", out = "/tmp/voxel_simplify_bench.ply";
   meshseg::GenerateParams gen{.voxel_size = 0.21, .noise = 0.05};
   double share = 0.1;
+  bool time_only = false;
   // The face target with an error bound (rms distance of a collapse's
   // merged planes, --max-error-h, default 0.2 h): both together are how a
   // user asks for "this many faces, but never worse than this".
@@ -137,6 +139,8 @@ int main(int argc, char** argv) {
       params.max_error = std::stod(argv[++i]);  // scaled by h below
     else if (a == "--out" && i + 1 < argc)
       out = argv[++i];
+    else if (a == "--time-only")
+      time_only = true;
     else
       part = a;
   }
@@ -160,6 +164,12 @@ int main(int argc, char** argv) {
   if (!s.ok()) {
     std::fprintf(stderr, "%s\n", std::string(s.status().message()).c_str());
     return 1;
+  }
+  if (time_only) {
+    std::printf("simplify: %zu -> %zu faces in %.2f s wall, %.2f s CPU; peak RSS %.0f MiB\n",
+                in.n_faces(), s->mesh.tri.n_faces(), simplify_s, simplify_cpu,
+                meshseg::bench::PeakRssMiB());
+    return 0;
   }
   const auto t2 = std::chrono::steady_clock::now();
   const meshseg::HausdorffDistance hd = meshseg::Hausdorff(in, s->mesh.tri);

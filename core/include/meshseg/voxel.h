@@ -309,6 +309,10 @@ struct SimplifyParams {
   double crease_deg = 30.0;
   // Measure Simplification::hausdorff (a second pass over both meshes).
   bool measure_hausdorff = true;
+  // From this many faces up, the two halves of the mesh (split at the median
+  // across its longest side) are collapsed at once, each to the share of
+  // faces asked of the whole, and then the band between them with the rest.
+  int64_t two_lanes_min_faces = 200000;
 };
 
 struct HausdorffDistance {
