@@ -249,14 +249,13 @@ absl::StatusOr<std::vector<int>> SegmentBinary(const Mesh& mesh, const BinaryVer
             1000, static_cast<int64_t>(params.binary_face_share * mesh.tri.n_faces())),
         .max_error = params.binary_max_error_voxels * h,
         .measure_hausdorff = false};
-    absl::StatusOr<Simplification> simple =
-        Simplify(relaxed.tri, simplify, free.feature, {}, ctx);
+    absl::StatusOr<Simplification> simple = Simplify(relaxed.tri, simplify, free.feature, {}, ctx);
     if (!simple.ok()) return simple.status();
     result->simplified_face_count = static_cast<int64_t>(simple->mesh.tri.n_faces());
     // To the full (terraced) surface, as the result reports it.
     result->simplified_hausdorff = Hausdorff(mesh.tri, simple->mesh.tri).Max();
-    return SegmentRemeshed(simple->mesh, mesh, MeanEdgeLength(mesh.tri), /*on_facets=*/false, params,
-                           ctx, result, &binary);
+    return SegmentRemeshed(simple->mesh, mesh, MeanEdgeLength(mesh.tri), /*on_facets=*/false,
+                           params, ctx, result, &binary);
   }
   MESHSEG_ASSIGN_OR_RETURN(CurvatureField curvature,
                            EstimateCurvature(relaxed, params.curvature, ctx));
