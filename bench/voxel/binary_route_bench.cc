@@ -10,8 +10,6 @@
 // Usage: voxel_binary_route_bench [--route simplify|relax] [--share F] [--max-error-voxels E]
 //          [PART...]   (F, E: PipelineParams::binary_face_share, binary_max_error_voxels)
 //        (default: test_piece small_block plate_boss stepped_shaft)
-#include <sys/resource.h>
-
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -19,6 +17,7 @@
 #include <variant>
 #include <vector>
 
+#include "bench/peak_rss.h"
 #include "meshseg/generate.h"
 #include "meshseg/pipeline.h"
 #include "meshseg/voxel.h"
@@ -34,12 +33,6 @@ constexpr int kTypedFaces = 200;
 constexpr double kRadiusTolH = 0.15;
 constexpr double kNormalTolDeg = 0.3;
 constexpr double kFullTurn = 0.95;
-
-double CpuSeconds() {
-  rusage u{};
-  getrusage(RUSAGE_SELF, &u);
-  return u.ru_utime.tv_sec + u.ru_stime.tv_sec + 1e-6 * (u.ru_utime.tv_usec + u.ru_stime.tv_usec);
-}
 
 struct Row {
   double accuracy = 0.0;
@@ -62,10 +55,10 @@ bool Score(const std::string& name, const PipelineParams& params, Row* row) {
     return false;
   }
   const auto t0 = std::chrono::steady_clock::now();
-  const double cpu0 = CpuSeconds();
+  const double cpu0 = meshseg::bench::CpuSeconds();
   const absl::StatusOr<meshseg::PipelineResult> result = meshseg::RunPipeline(path, params);
   row->wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  row->cpu = CpuSeconds() - cpu0;
+  row->cpu = meshseg::bench::CpuSeconds() - cpu0;
   const absl::StatusOr<meshseg::VolumeSurface> surface = meshseg::ExtractSurface(path);
   if (!result.ok() || !surface.ok()) {
     std::fprintf(stderr, "%s: %s\n", name.c_str(),

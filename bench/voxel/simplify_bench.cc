@@ -15,8 +15,6 @@
 // Usage: voxel_simplify_bench [PART] [--voxel-size H] [--noise S] [--share F] [--out OUT.ply]
 //          [--crease-deg D] [--max-error-h E]   (E: rms error bound in h, default 0.2; 0 = none)
 //          [--time-only]   (print the simplification's time and stop: for A/B timing runs)
-#include <sys/resource.h>
-
 #include <algorithm>
 #include <array>
 #include <chrono>
@@ -42,14 +40,6 @@ constexpr double kSharpDeg = 30.0;
 constexpr double kNearH = 0.5;
 constexpr double kRadiusH = 1.5;
 constexpr double kFacingDeg = 15.0;
-
-// CPU seconds of this process so far (user + system): on a shared machine
-// the wall time of a one-thread step says more about the neighbours.
-double CpuSeconds() {
-  rusage u{};
-  getrusage(RUSAGE_SELF, &u);
-  return u.ru_utime.tv_sec + u.ru_stime.tv_sec + 1e-6 * (u.ru_utime.tv_usec + u.ru_stime.tv_usec);
-}
 
 double Seconds(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -157,10 +147,10 @@ int main(int argc, char** argv) {
   params.target_faces = static_cast<int64_t>(share * in.n_faces());
   params.max_error *= h;
   const auto t1 = std::chrono::steady_clock::now();
-  const double cpu1 = CpuSeconds();
+  const double cpu1 = meshseg::bench::CpuSeconds();
   const absl::StatusOr<meshseg::Simplification> s = meshseg::Simplify(in, params);
   const double simplify_s = Seconds(t1);
-  const double simplify_cpu = CpuSeconds() - cpu1;
+  const double simplify_cpu = meshseg::bench::CpuSeconds() - cpu1;
   if (!s.ok()) {
     std::fprintf(stderr, "%s\n", std::string(s.status().message()).c_str());
     return 1;
