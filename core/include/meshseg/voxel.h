@@ -310,8 +310,9 @@ struct SimplifyParams {
   // Measure Simplification::hausdorff (a second pass over both meshes).
   bool measure_hausdorff = true;
   // From this many faces up, the two halves of the mesh (split at the median
-  // across its longest side) are collapsed at once, each to the share of
-  // faces asked of the whole, and then the band between them with the rest.
+  // across its longest side) are first collapsed at once, each to 1.5 times
+  // the share of faces asked of the whole; the last collapses are then
+  // chosen across the whole mesh (the band between the halves included).
   int64_t two_lanes_min_faces = 200000;
 };
 

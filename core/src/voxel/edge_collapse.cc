@@ -26,7 +26,7 @@ enum Kind : uint8_t { kFree = 0, kCrease = 1, kLocked = 2 };
 using HalfedgeHandle = TriMesh::HalfedgeHandle;
 using VertexHandle = TriMesh::VertexHandle;
 
-constexpr double kLaneKeep = 2.0;  // see Collapser::Run
+constexpr double kLaneKeep = 1.5;  // see Collapser::Run
 constexpr uint8_t kBand = 0xff;    // lane_ of a vertex between the lanes
 
 // One collapse loop's own state. Its edges are those whose two ends are
