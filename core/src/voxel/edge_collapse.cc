@@ -82,7 +82,8 @@ class Collapser {
             std::min(1.0, kLaneKeep * static_cast<double>(target) / static_cast<double>(start));
         const size_t budget =
             lane_faces[i] - static_cast<size_t>(std::llround(keep * lane_faces[i]));
-        status[i] = Loop(lanes[i], budget, i == 0 ? 0.8 : 0.0, ctx);
+        // Lane 0 reports progress for both (0 to 0.8).
+        status[i] = Loop(lanes[i], budget, 0.0, i == 0 ? 0.8 : 0.0, ctx);
       });
       for (int i = 0; i < 2; ++i) {
         MESHSEG_RETURN_IF_ERROR(status[i]);
@@ -92,7 +93,8 @@ class Collapser {
     }
     Lane whole;
     PushAll(whole);
-    return Loop(whole, faces > target ? faces - target : 0, 0.1, ctx);
+    const double before = faces < start ? 0.8 : 0.0;
+    return Loop(whole, faces > target ? faces - target : 0, before, 0.9 - before, ctx);
   }
 
  private:
@@ -141,10 +143,10 @@ class Collapser {
     }
   }
 
-  // Collapses the lane's edges (pushed by PushAll) in order of cost until `budget` faces are
-  // gone or no legal collapse is left; reports progress (the share
-  // `progress` of the whole) unless that is 0.
-  absl::Status Loop(Lane& lane, size_t budget, double progress, const RunContext& ctx) {
+  // Collapses the lane's edges (pushed by PushAll) in order of cost until
+  // `budget` faces are gone or no legal collapse is left; reports progress
+  // from `from` over `span` of the whole, unless span is 0.
+  absl::Status Loop(Lane& lane, size_t budget, double from, double span, const RunContext& ctx) {
     size_t done = 0;
     while (!lane.heap.empty() && lane.removed < budget) {
       const Entry top = lane.heap.top();
@@ -166,9 +168,9 @@ class Collapser {
       Collapse(lane, h, x);
       if (++done % 4096 == 0) {
         if (ctx.stop_requested()) return absl::CancelledError("simplify: stopped");
-        if (progress > 0.0) {
-          ctx.Progress("simplify", progress * static_cast<double>(lane.removed) /
-                                       std::max<double>(1.0, budget));
+        if (span > 0.0) {
+          ctx.Progress("simplify", from + span * static_cast<double>(lane.removed) /
+                                              std::max<double>(1.0, budget));
         }
       }
     }
