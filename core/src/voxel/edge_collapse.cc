@@ -13,6 +13,7 @@
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/task_group.h>
 
 #include "absl/strings/str_cat.h"
 #include "meshseg/status_macros.h"
@@ -74,17 +75,22 @@ class Collapser {
         lanes[i].id = static_cast<uint8_t>(i);
         PushAll(lanes[i]);  // before either lane changes the mesh
       }
-      tbb::parallel_for(0, 2, [&](int i) {
-        // Each half keeps kLaneKeep times the share asked of the whole; the
-        // last collapses are chosen across the whole mesh, cheapest first,
-        // so neither half is forced beyond what its surface allows.
-        const double keep =
-            std::min(1.0, kLaneKeep * static_cast<double>(target) / static_cast<double>(start));
+      // Each half keeps kLaneKeep times the share asked of the whole; the
+      // last collapses are chosen across the whole mesh, cheapest first, so
+      // neither half is forced beyond what its surface allows.
+      const double keep =
+          std::min(1.0, kLaneKeep * static_cast<double>(target) / static_cast<double>(start));
+      const auto run = [&](int i, double span) {
         const size_t budget =
             lane_faces[i] - static_cast<size_t>(std::llround(keep * lane_faces[i]));
-        // Lane 0 reports progress for both (0 to 0.8).
-        status[i] = Loop(lanes[i], budget, 0.0, i == 0 ? 0.8 : 0.0, ctx);
-      });
+        status[i] = Loop(lanes[i], budget, 0.0, span, ctx);
+      };
+      // Lane 1 as a task, lane 0 on the calling thread, which alone may
+      // report progress (RunContext).
+      tbb::task_group group;
+      group.run([&] { run(1, 0.0); });
+      run(0, 0.8);
+      group.wait();
       for (int i = 0; i < 2; ++i) {
         MESHSEG_RETURN_IF_ERROR(status[i]);
         faces -= lanes[i].removed;
