@@ -97,9 +97,9 @@ absl::Status RunSimplify(const Argv& argv) {
   MESHSEG_ASSIGN_OR_RETURN(const std::optional<double> faces, args.Double("--target-faces"));
   MESHSEG_ASSIGN_OR_RETURN(const std::optional<double> error, args.Double("--max-error"));
   if (faces && !(*faces >= 1.0 && *faces <= kMaxTargetFaces && std::floor(*faces) == *faces)) {
-    return absl::InvalidArgumentError(
-        absl::StrCat("--target-faces must be a whole number from 1 to ", kMaxTargetFaces, ", got ",
-                     *args.Value("--target-faces")));
+    return absl::InvalidArgumentError(absl::StrCat(
+        "--target-faces must be a whole number from 1 to ", static_cast<int64_t>(kMaxTargetFaces),
+        ", got ", *args.Value("--target-faces")));
   }
   if (error && !(*error > 0.0)) {
     return absl::InvalidArgumentError(
