@@ -14,8 +14,7 @@
 // its corners, which are input vertices, lie on).
 // Usage: voxel_simplify_bench [PART] [--voxel-size H] [--noise S] [--share F] [--out OUT.ply]
 //          [--crease-deg D] [--max-error-h E]   (E: rms error bound in h, default 0.2; 0 = none)
-#include <sys/resource.h>
-
+//          [--time-only]   (print the simplification's time and stop: for A/B timing runs)
 #include <algorithm>
 #include <array>
 #include <chrono>
@@ -41,14 +40,6 @@ constexpr double kSharpDeg = 30.0;
 constexpr double kNearH = 0.5;
 constexpr double kRadiusH = 1.5;
 constexpr double kFacingDeg = 15.0;
-
-// CPU seconds of this process so far (user + system): on a shared machine
-// the wall time of a one-thread step says more about the neighbours.
-double CpuSeconds() {
-  rusage u{};
-  getrusage(RUSAGE_SELF, &u);
-  return u.ru_utime.tv_sec + u.ru_stime.tv_sec + 1e-6 * (u.ru_utime.tv_usec + u.ru_stime.tv_usec);
-}
 
 double Seconds(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -119,6 +110,7 @@ int main(int argc, char** argv) {
   std::string part = "test_piece", out = "/tmp/voxel_simplify_bench.ply";
   meshseg::GenerateParams gen{.voxel_size = 0.21, .noise = 0.05};
   double share = 0.1;
+  bool time_only = false;
   // The face target with an error bound (rms distance of a collapse's
   // merged planes, --max-error-h, default 0.2 h): both together are how a
   // user asks for "this many faces, but never worse than this".
@@ -137,6 +129,8 @@ int main(int argc, char** argv) {
       params.max_error = std::stod(argv[++i]);  // scaled by h below
     else if (a == "--out" && i + 1 < argc)
       out = argv[++i];
+    else if (a == "--time-only")
+      time_only = true;
     else
       part = a;
   }
@@ -153,13 +147,19 @@ int main(int argc, char** argv) {
   params.target_faces = static_cast<int64_t>(share * in.n_faces());
   params.max_error *= h;
   const auto t1 = std::chrono::steady_clock::now();
-  const double cpu1 = CpuSeconds();
+  const double cpu1 = meshseg::bench::CpuSeconds();
   const absl::StatusOr<meshseg::Simplification> s = meshseg::Simplify(in, params);
   const double simplify_s = Seconds(t1);
-  const double simplify_cpu = CpuSeconds() - cpu1;
+  const double simplify_cpu = meshseg::bench::CpuSeconds() - cpu1;
   if (!s.ok()) {
     std::fprintf(stderr, "%s\n", std::string(s.status().message()).c_str());
     return 1;
+  }
+  if (time_only) {
+    std::printf("simplify: %zu -> %zu faces in %.2f s wall, %.2f s CPU; peak RSS %.0f MiB\n",
+                in.n_faces(), s->mesh.tri.n_faces(), simplify_s, simplify_cpu,
+                meshseg::bench::PeakRssMiB());
+    return 0;
   }
   const auto t2 = std::chrono::steady_clock::now();
   const meshseg::HausdorffDistance hd = meshseg::Hausdorff(in, s->mesh.tri);

@@ -309,6 +309,11 @@ struct SimplifyParams {
   double crease_deg = 30.0;
   // Measure Simplification::hausdorff (a second pass over both meshes).
   bool measure_hausdorff = true;
+  // From this many faces up, the two halves of the mesh (split at the median
+  // across its longest side) are first collapsed at once, each to 1.5 times
+  // the share of faces asked of the whole; the last collapses are then
+  // chosen across the whole mesh (the band between the halves included).
+  int64_t two_lanes_min_faces = 200000;
 };
 
 struct HausdorffDistance {

@@ -159,10 +159,13 @@ absl::StatusOr<std::vector<int>> SegmentExact(const Mesh& mesh, const Exactness&
 // features on `mesh` itself, so curve vertex ids are ids of the input.
 // `surface` is what is remeshed: `mesh` itself, or (binary occupancy) its
 // de-terraced simplification, whose vertices are not on `mesh`'s facets.
+// With `binary` (the binary-occupancy samples of `mesh`), planes are refitted
+// as the separators of those samples, as on the relaxed route.
 absl::StatusOr<std::vector<int>> SegmentRemeshed(const Mesh& surface, const Mesh& mesh,
                                                  double edge_length, bool on_facets,
                                                  const PipelineParams& params,
-                                                 const RunContext& ctx, PipelineResult* result) {
+                                                 const RunContext& ctx, PipelineResult* result,
+                                                 const BinaryVertices* binary = nullptr) {
   RemeshStats remesh;
   MESHSEG_ASSIGN_OR_RETURN(const Mesh fine,
                            IsotropicRemesh(surface, edge_length, params.remesh, ctx, &remesh));
@@ -184,6 +187,9 @@ absl::StatusOr<std::vector<int>> SegmentRemeshed(const Mesh& surface, const Mesh
     result->vertex_labels = pipeline_internal::VertexLabelsFromFaces(mesh.tri, labels);
     pipeline_internal::CompactRegions(&labels, &result->vertex_labels, &result->regions);
     pipeline_internal::RefitOnInputVertices(mesh.tri, labels, tolerance, &result->regions);
+  }
+  if (binary != nullptr) {
+    pipeline_internal::RefitPlanesBySeparation(mesh.tri, labels, *binary, &result->regions);
   }
   OwnSurfaces(result);
   MESHSEG_RETURN_IF_ERROR(DescribeRegions(mesh, labels, result->regions, params, ctx, result));
@@ -224,18 +230,6 @@ absl::StatusOr<std::vector<int>> SegmentBinary(const Mesh& mesh, const BinaryVer
                                                double h, const PipelineParams& params,
                                                const RunContext& ctx, PipelineResult* result) {
   result->binary_occupancy = true;
-  if (params.binary_surface == PipelineParams::BinarySurface::kSimplify) {
-    const SimplifyParams simplify{
-        .target_faces = std::max<int64_t>(
-            1000, static_cast<int64_t>(params.binary_face_share * mesh.tri.n_faces())),
-        .max_error = params.binary_max_error_voxels * h};
-    absl::StatusOr<Simplification> simple = Simplify(mesh.tri, simplify, binary.feature, {}, ctx);
-    if (!simple.ok()) return simple.status();
-    result->simplified_face_count = static_cast<int64_t>(simple->mesh.tri.n_faces());
-    result->simplified_hausdorff = simple->hausdorff.Max();
-    return SegmentRemeshed(simple->mesh, mesh, MeanEdgeLength(mesh.tri), /*on_facets=*/false, params,
-                           ctx, result);
-  }
   // The relaxed surface has the input's faces and vertex ids.
   Mesh relaxed;
   relaxed.tri = mesh.tri;
@@ -249,6 +243,23 @@ absl::StatusOr<std::vector<int>> SegmentBinary(const Mesh& mesh, const BinaryVer
   relaxed.tri.update_normals();
   relaxed.face_of_input = mesh.face_of_input;
   relaxed.name = mesh.name;
+  if (params.binary_surface == PipelineParams::BinarySurface::kSimplify) {
+    // QEM on the relaxed surface, not the terraced one: measured against the
+    // terraces, keeping them costs nothing and the remesh then segments
+    // them. The feature vertices (which the relaxation kept in place) stay.
+    const SimplifyParams simplify{
+        .target_faces = std::max<int64_t>(
+            1000, static_cast<int64_t>(params.binary_face_share * mesh.tri.n_faces())),
+        .max_error = params.binary_max_error_voxels * h,
+        .measure_hausdorff = false};
+    absl::StatusOr<Simplification> simple = Simplify(relaxed.tri, simplify, free.feature, {}, ctx);
+    if (!simple.ok()) return simple.status();
+    result->simplified_face_count = static_cast<int64_t>(simple->mesh.tri.n_faces());
+    // To the full (terraced) surface, as the result reports it.
+    result->simplified_hausdorff = Hausdorff(mesh.tri, simple->mesh.tri).Max();
+    return SegmentRemeshed(simple->mesh, mesh, MeanEdgeLength(mesh.tri), /*on_facets=*/false,
+                           params, ctx, result, &binary);
+  }
   MESHSEG_ASSIGN_OR_RETURN(CurvatureField curvature,
                            EstimateCurvature(relaxed, params.curvature, ctx));
   MESHSEG_ASSIGN_OR_RETURN(Segmentation segmentation,

@@ -1,15 +1,23 @@
 // CollapseEdges(): quadric edge collapse over a heap with lazy deletion (see
-// edge_collapse.h). An edge's stamp changes whenever a collapse moves one of
-// its ends, merges it or deletes it; a heap entry remembers the stamp it was
-// pushed with and is stale once it differs, so each cost is computed once
-// per change of an end instead of once per change anywhere in the one-ring.
+// edge_collapse.h). Each edge remembers its one live heap entry (cost and
+// direction); a collapse that moves one of its ends, merges it or deletes it
+// clears that, so older entries are recognised as stale when popped and each
+// cost is computed once per change of an end instead of once per change
+// anywhere in the one-ring.
 #include "voxel/edge_collapse.h"
 
+#include <array>
 #include <cmath>
 #include <optional>
 #include <utility>
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_group.h>
+
 #include "absl/strings/str_cat.h"
+#include "meshseg/status_macros.h"
+#include "voxel/entry_heap.h"
 
 namespace meshseg::voxel_internal {
 namespace {
@@ -19,88 +27,18 @@ enum Kind : uint8_t { kFree = 0, kCrease = 1, kLocked = 2 };
 using HalfedgeHandle = TriMesh::HalfedgeHandle;
 using VertexHandle = TriMesh::VertexHandle;
 
-struct Entry {
-  float cost;
-  int halfedge;    // v0 = from (removed), v1 = to (kept)
-  uint32_t stamp;  // the edge's stamp when pushed
-  uint32_t pad;    // to 16 bytes: four children per cache line
+constexpr double kLaneKeep = 1.5;  // see Collapser::Run
+constexpr uint8_t kBand = 0xff;    // lane_ of a vertex between the lanes
+
+// One collapse loop's own state. Its edges are those whose two ends are
+// both in the lane (lane_ == id).
+struct Lane {
+  uint8_t id = 0;
+  EntryHeap heap;
+  std::vector<int> was_crease;  // scratch of Collapse()
+  size_t edges = 0;             // live edges of the lane at the start
+  size_t removed = 0;           // faces removed so far
 };
-
-// A 4-ary min-heap of 16-byte entries: a node's four children share one
-// 64-byte cache line, so a pop from a heap of millions misses the cache
-// about half as often as a binary heap's would.
-class EntryHeap {
- public:
-  bool empty() const { return items_.empty(); }
-  size_t size() const { return items_.size(); }
-  const Entry& top() const { return items_.front(); }
-  void Reserve(size_t n) { items_.reserve(n); }
-  // Drops the entries `stale` says are stale and rebuilds the heap order
-  // bottom-up (linear time).
-  template <typename Stale>
-  void Purge(Stale stale) {
-    std::erase_if(items_, stale);
-    for (size_t i = items_.size(); i-- > 0;) SiftDown(i, items_[i]);
-  }
-  void Push(const Entry& e) {
-    size_t i = items_.size();
-    items_.push_back(e);
-    while (i > 0) {
-      const size_t parent = (i - 1) / 4;
-      if (!(e.cost < items_[parent].cost)) break;
-      items_[i] = items_[parent];
-      i = parent;
-    }
-    items_[i] = e;
-  }
-  void Pop() {
-    const Entry last = items_.back();
-    items_.pop_back();
-    if (!items_.empty()) SiftDown(0, last);
-  }
-
- private:
-  // Places e at or below slot i.
-  void SiftDown(size_t i, const Entry e) {
-    const size_t n = items_.size();
-    while (true) {
-      const size_t first = 4 * i + 1;
-      if (first >= n) break;
-      size_t best = first;
-      const size_t end = std::min(first + 4, n);
-      for (size_t c = first + 1; c < end; ++c) {
-        if (items_[c].cost < items_[best].cost) best = c;
-      }
-      if (!(items_[best].cost < e.cost)) break;
-      items_[i] = items_[best];
-      i = best;
-    }
-    items_[i] = e;
-  }
-
-  std::vector<Entry> items_;
-};
-
-// argmin q over space if A is well conditioned (determinant against the cube
-// of its trace) and the optimum is near the edge, else over the segment.
-Eigen::Vector3d OnSegment(const Quadric& q, const Eigen::Vector3d& p0, const Eigen::Vector3d& p1) {
-  const Eigen::Vector3d d = p1 - p0;
-  const double dad = d.dot(q.a * d);
-  double t = 0.5;
-  if (dad > 0.0) t = std::clamp(-(d.dot(q.a * p0) + q.b.dot(d)) / dad, 0.0, 1.0);
-  return p0 + t * d;
-}
-
-Eigen::Vector3d Optimum(const Quadric& q, const Eigen::Vector3d& p0, const Eigen::Vector3d& p1) {
-  const double trace = q.a.trace();
-  const double det = q.a.determinant();
-  if (trace > 0.0 && det > 1e-6 * trace * trace * trace) {
-    const Eigen::Vector3d x = -(q.a.inverse() * q.b);
-    // Stay near the edge: an optimum far off it is a conditioning artefact.
-    if ((x - 0.5 * (p0 + p1)).squaredNorm() <= 4.0 * (p1 - p0).squaredNorm()) return x;
-  }
-  return OnSegment(q, p0, p1);
-}
 
 class Collapser {
  public:
@@ -108,7 +46,7 @@ class Collapser {
             std::span<const uint8_t> crease)
       : m_(mesh), params_(params) {
     kind_.assign(m_.n_vertices(), kFree);
-    stamp_.assign(m_.n_edges(), 0);
+    current_.assign(m_.n_edges(), kNoEntry);
     crease_.assign(m_.n_edges(), 0);
     if (!crease.empty()) std::copy(crease.begin(), crease.end(), crease_.begin());
     for (auto e : m_.edges()) {
@@ -123,34 +61,46 @@ class Collapser {
   }
 
   absl::Status Run(const RunContext& ctx) {
-    heap_.Reserve(2 * m_.n_edges());
-    for (auto e : m_.edges()) Push(e);
-    size_t faces = m_.n_faces();
-    const size_t start = faces;
-    size_t done = 0;
-    while (!heap_.empty() && faces > params_.target_faces) {
-      const Entry top = heap_.top();
-      heap_.Pop();
-      if (stamp_[top.halfedge / 2] != top.stamp) {
-        // Most popped entries are stale (a collapse invalidates about a
-        // dozen); when they outnumber the edges, drop them all at once.
-        if (heap_.size() > 2 * m_.n_edges() - 2 * 3 * done) {
-          heap_.Purge([&](const Entry& e) { return stamp_[e.halfedge / 2] != e.stamp; });
-        }
-        continue;
+    const size_t start = m_.n_faces();
+    const size_t target = std::min(params_.target_faces, start);
+    size_t faces = start;
+    lane_.assign(m_.n_vertices(), 0);
+    if (start >= params_.two_lanes_min_faces) {
+      // Two lanes collapse their halves of the mesh at once; the band of
+      // vertices between them waits for the whole-mesh pass below.
+      const std::array<size_t, 2> lane_faces = AssignLanes();
+      std::array<Lane, 2> lanes;
+      std::array<absl::Status, 2> status;
+      for (int i = 0; i < 2; ++i) {
+        lanes[i].id = static_cast<uint8_t>(i);
+        PushAll(lanes[i]);  // before either lane changes the mesh
       }
-      const HalfedgeHandle h(top.halfedge);
-      const Eigen::Vector3d x = Placement(h);
-      if (!m_.is_collapse_ok(h) || !NormalsKept(h, x)) continue;
-      faces -= m_.is_boundary(m_.edge_handle(h)) ? 1 : 2;
-      Collapse(h, x);
-      if (++done % 4096 == 0) {
-        if (ctx.stop_requested()) return absl::CancelledError("simplify: stopped");
-        ctx.Progress("simplify", 0.9 * static_cast<double>(start - faces) /
-                                     std::max<double>(1.0, start - params_.target_faces));
+      // Each half keeps kLaneKeep times the share asked of the whole; the
+      // last collapses are chosen across the whole mesh, cheapest first, so
+      // neither half is forced beyond what its surface allows.
+      const double keep =
+          std::min(1.0, kLaneKeep * static_cast<double>(target) / static_cast<double>(start));
+      const auto run = [&](int i, double span) {
+        const size_t budget =
+            lane_faces[i] - static_cast<size_t>(std::llround(keep * lane_faces[i]));
+        status[i] = Loop(lanes[i], budget, 0.0, span, ctx);
+      };
+      // Lane 1 as a task, lane 0 on the calling thread, which alone may
+      // report progress (RunContext).
+      tbb::task_group group;
+      group.run([&] { run(1, 0.0); });
+      run(0, 0.8);
+      group.wait();
+      for (int i = 0; i < 2; ++i) {
+        MESHSEG_RETURN_IF_ERROR(status[i]);
+        faces -= lanes[i].removed;
       }
+      std::fill(lane_.begin(), lane_.end(), 0);
     }
-    return absl::OkStatus();
+    Lane whole;
+    PushAll(whole);
+    const double before = faces < start ? 0.8 : 0.0;
+    return Loop(whole, faces > target ? faces - target : 0, before, 0.9 - before, ctx);
   }
 
  private:
@@ -199,6 +149,81 @@ class Collapser {
     }
   }
 
+  // Collapses the lane's edges (pushed by PushAll) in order of cost until
+  // `budget` faces are gone or no legal collapse is left; reports progress
+  // from `from` over `span` of the whole, unless span is 0.
+  absl::Status Loop(Lane& lane, size_t budget, double from, double span, const RunContext& ctx) {
+    size_t done = 0;
+    while (!lane.heap.empty() && lane.removed < budget) {
+      const Entry top = lane.heap.top();
+      lane.heap.Pop();
+      Entry& current = current_[top.halfedge / 2];
+      if (current != top) {
+        // Most popped entries are stale (a collapse invalidates about a
+        // dozen); when they outnumber the live edges, drop them all at once.
+        if (lane.heap.size() > 2 * (lane.edges - std::min(lane.edges, 3 * done))) {
+          lane.heap.Purge([&](const Entry& e) { return current_[e.halfedge / 2] != e; });
+        }
+        continue;
+      }
+      current = kNoEntry;  // popped: pushed again when an end changes
+      const HalfedgeHandle h(top.halfedge);
+      const Eigen::Vector3d x = Placement(h);
+      if (!m_.is_collapse_ok(h) || !NormalsKept(h, x)) continue;
+      lane.removed += m_.is_boundary(m_.edge_handle(h)) ? 1 : 2;
+      Collapse(lane, h, x);
+      if (++done % 4096 == 0) {
+        if (ctx.stop_requested()) return absl::CancelledError("simplify: stopped");
+        if (span > 0.0) {
+          ctx.Progress("simplify", from + span * static_cast<double>(lane.removed) /
+                                              std::max<double>(1.0, budget));
+        }
+      }
+    }
+    return absl::OkStatus();
+  }
+
+  // Splits the vertices in two lanes at the median along the longest side of
+  // the bounding box; a vertex with a neighbour across the cut joins the
+  // band (kBand). No band vertex then neighbours both lanes, and a collapse
+  // within a lane only links its vertices to ones it already neighbours, so
+  // the two lanes never touch the same vertex, edge or face and may run at
+  // once. Returns each lane's faces (those with a vertex of the lane).
+  std::array<size_t, 2> AssignLanes() {
+    Eigen::Vector3d lo = Eigen::Vector3d::Constant(HUGE_VAL), hi = -lo;
+    for (auto v : m_.vertices()) {
+      const Eigen::Vector3d p = ToEigen(m_.point(v));
+      lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+    }
+    int axis = 0;
+    (hi - lo).maxCoeff(&axis);
+    std::vector<double> coordinate(m_.n_vertices());
+    for (auto v : m_.vertices()) coordinate[v.idx()] = m_.point(v)[axis];
+    std::vector<double> sorted = coordinate;
+    std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
+    const double cut = sorted[sorted.size() / 2];
+    for (size_t v = 0; v < coordinate.size(); ++v) lane_[v] = coordinate[v] < cut ? 0 : 1;
+    std::vector<uint8_t> band(m_.n_vertices(), 0);
+    for (auto e : m_.edges()) {
+      const HalfedgeHandle h = m_.halfedge_handle(e, 0);
+      const int a = m_.from_vertex_handle(h).idx(), b = m_.to_vertex_handle(h).idx();
+      if (lane_[a] != lane_[b]) band[a] = band[b] = 1;
+    }
+    for (size_t v = 0; v < band.size(); ++v) {
+      if (band[v]) lane_[v] = kBand;
+    }
+    std::array<size_t, 2> faces{0, 0};
+    for (auto f : m_.faces()) {
+      for (auto v : m_.fv_range(f)) {
+        if (lane_[v.idx()] != kBand) {
+          ++faces[lane_[v.idx()]];
+          break;
+        }
+      }
+    }
+    return faces;
+  }
+
   bool Legal(HalfedgeHandle h) const {
     const Kind k0 = static_cast<Kind>(kind_[m_.from_vertex_handle(h).idx()]);
     if (k0 == kLocked) return false;
@@ -209,22 +234,25 @@ class Collapser {
     return true;
   }
 
-  Eigen::Vector3d Placement(HalfedgeHandle h) const {
+  // Where the kept vertex goes when h collapses; q is the sum of both ends'
+  // quadrics.
+  Eigen::Vector3d Placement(HalfedgeHandle h, const Quadric& q) const {
     const VertexHandle v0 = m_.from_vertex_handle(h), v1 = m_.to_vertex_handle(h);
     const Eigen::Vector3d p0 = ToEigen(m_.point(v0)), p1 = ToEigen(m_.point(v1));
     if (kind_[v1.idx()] == kLocked) return p1;
     if (kind_[v0.idx()] == kFree && kind_[v1.idx()] == kCrease) return p1;
-    Quadric q = quadric_[v0.idx()];
-    q += quadric_[v1.idx()];
     return kind_[v0.idx()] == kCrease ? OnSegment(q, p0, p1) : Optimum(q, p0, p1);
+  }
+  Eigen::Vector3d Placement(HalfedgeHandle h) const {
+    Quadric q = quadric_[m_.from_vertex_handle(h).idx()];
+    q += quadric_[m_.to_vertex_handle(h).idx()];
+    return Placement(h, q);
   }
 
   // The cost of collapsing h, or nothing when illegal or over the bound.
-  std::optional<float> Cost(HalfedgeHandle h) const {
+  std::optional<float> Cost(HalfedgeHandle h, const Quadric& q) const {
     if (!Legal(h)) return std::nullopt;
-    Quadric q = quadric_[m_.from_vertex_handle(h).idx()];
-    q += quadric_[m_.to_vertex_handle(h).idx()];
-    const double error = q.Error(Placement(h));
+    const double error = q.Error(Placement(h, q));
     if (params_.max_error > 0.0 && q.area > 0.0 &&
         error > params_.max_error * params_.max_error * q.area) {
       return std::nullopt;
@@ -232,16 +260,58 @@ class Collapser {
     return static_cast<float>(error);
   }
 
-  void Push(TriMesh::EdgeHandle e) {
-    std::optional<float> best;
-    HalfedgeHandle best_h;
-    for (int i = 0; i < 2; ++i) {
+  // The heap entry of e: its cheaper legal direction. Between two free
+  // vertices both directions place the kept vertex at the same optimum of
+  // the same quadric (Optimum() and OnSegment() are symmetric in the ends),
+  // so one evaluation serves both.
+  Entry Best(TriMesh::EdgeHandle e) const {
+    const HalfedgeHandle h0 = m_.halfedge_handle(e, 0);
+    Quadric q = quadric_[m_.from_vertex_handle(h0).idx()];
+    q += quadric_[m_.to_vertex_handle(h0).idx()];
+    const bool both_free = kind_[m_.from_vertex_handle(h0).idx()] == kFree &&
+                           kind_[m_.to_vertex_handle(h0).idx()] == kFree;
+    Entry best = kNoEntry;
+    for (int i = 0; i < (both_free ? 1 : 2); ++i) {
       const HalfedgeHandle h = m_.halfedge_handle(e, i);
-      const std::optional<float> c = Cost(h);
-      if (c && (!best || *c < *best)) best = c, best_h = h;
+      const std::optional<float> c = Cost(h, q);
+      if (c && (best.halfedge < 0 || *c < best.cost)) best = {*c, h.idx()};
     }
-    if (!best) return;
-    heap_.Push({*best, best_h.idx(), stamp_[e.idx()], 0});
+    return best;
+  }
+
+  // Whether the lane owns e: both ends are its vertices.
+  bool Owns(const Lane& lane, TriMesh::EdgeHandle e) const {
+    const HalfedgeHandle h = m_.halfedge_handle(e, 0);
+    return lane_[m_.from_vertex_handle(h).idx()] == lane.id &&
+           lane_[m_.to_vertex_handle(h).idx()] == lane.id;
+  }
+
+  void Push(Lane& lane, TriMesh::EdgeHandle e) {
+    if (!Owns(lane, e)) return;
+    const Entry best = Best(e);
+    current_[e.idx()] = best;
+    if (best.halfedge >= 0) lane.heap.Push(best);
+  }
+
+  // The entries of the lane's live edges, evaluated on all cores, then
+  // heaped in linear time.
+  void PushAll(Lane& lane) {
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, m_.n_edges()),
+                      [&](const tbb::blocked_range<size_t>& r) {
+                        for (size_t i = r.begin(); i < r.end(); ++i) {
+                          const TriMesh::EdgeHandle e(static_cast<int>(i));
+                          if (!m_.status(e).deleted() && Owns(lane, e)) current_[i] = Best(e);
+                        }
+                      });
+    std::vector<Entry> entries;
+    for (size_t i = 0; i < current_.size(); ++i) {
+      const TriMesh::EdgeHandle e(static_cast<int>(i));
+      if (m_.status(e).deleted() || !Owns(lane, e)) continue;
+      ++lane.edges;
+      if (current_[i].halfedge >= 0) entries.push_back(current_[i]);
+    }
+    lane.heap.Reserve(2 * entries.size());
+    lane.heap.Assign(entries);
   }
 
   // No face around v0 or v1 that survives the collapse turns by more than
@@ -272,14 +342,15 @@ class Collapser {
 
   // Collapses h with the kept vertex at x; the crease flags of the edges
   // that merge are or-ed (an edge v1-w is a crease if v0-w or v1-w was).
-  void Collapse(HalfedgeHandle h, const Eigen::Vector3d& x) {
+  void Collapse(Lane& lane, HalfedgeHandle h, const Eigen::Vector3d& x) {
     const VertexHandle v0 = m_.from_vertex_handle(h), v1 = m_.to_vertex_handle(h);
-    was_crease_.clear();
+    std::vector<int>& was_crease = lane.was_crease;
+    was_crease.clear();
     for (const VertexHandle vh : {v0, v1}) {
       for (auto oh : m_.voh_range(vh)) {
         const int e = m_.edge_handle(oh).idx();
-        ++stamp_[e];  // merged, deleted or re-pushed below
-        if (crease_[e]) was_crease_.push_back(m_.to_vertex_handle(oh).idx());
+        current_[e] = kNoEntry;  // merged, deleted or re-pushed below
+        if (crease_[e]) was_crease.push_back(m_.to_vertex_handle(oh).idx());
       }
     }
     m_.set_point(v1, TriMesh::Point(x.x(), x.y(), x.z()));
@@ -288,19 +359,18 @@ class Collapser {
     for (auto oh : m_.voh_range(v1)) {
       const int w = m_.to_vertex_handle(oh).idx();
       crease_[m_.edge_handle(oh).idx()] =
-          std::find(was_crease_.begin(), was_crease_.end(), w) != was_crease_.end();
+          std::find(was_crease.begin(), was_crease.end(), w) != was_crease.end();
     }
-    for (auto e : m_.ve_range(v1)) Push(e);
+    for (auto e : m_.ve_range(v1)) Push(lane, e);
   }
 
   TriMesh& m_;
   const CollapseParams params_;
   std::vector<uint8_t> kind_;
-  std::vector<uint32_t> stamp_;
+  std::vector<Entry> current_;  // each edge's live heap entry (or kNoEntry)
   std::vector<uint8_t> crease_;
   std::vector<Quadric> quadric_;
-  std::vector<int> was_crease_;
-  EntryHeap heap_;
+  std::vector<uint8_t> lane_;  // per vertex: its lane, or kBand
 };
 
 }  // namespace

@@ -15,7 +15,8 @@
 // Each edge's cost is computed once when one of its ends changes; a popped
 // entry whose ends have changed since is stale and skipped, and the flip,
 // topology and error tests are repeated on the current mesh before the
-// collapse runs.
+// collapse runs. A large mesh is collapsed in two lanes (halves) at once,
+// then as a whole (see Collapser::AssignLanes).
 #ifndef MESHSEG_VOXEL_EDGE_COLLAPSE_H_
 #define MESHSEG_VOXEL_EDGE_COLLAPSE_H_
 
@@ -54,15 +55,39 @@ struct Quadric {
   }
 };
 
+// argmin q over space if A is well conditioned (determinant against the cube
+// of its trace) and the optimum is near the edge, else over the segment.
+inline Eigen::Vector3d OnSegment(const Quadric& q, const Eigen::Vector3d& p0,
+                                 const Eigen::Vector3d& p1) {
+  const Eigen::Vector3d d = p1 - p0;
+  const double dad = d.dot(q.a * d);
+  double t = 0.5;
+  if (dad > 0.0) t = std::clamp(-(d.dot(q.a * p0) + q.b.dot(d)) / dad, 0.0, 1.0);
+  return p0 + t * d;
+}
+
+inline Eigen::Vector3d Optimum(const Quadric& q, const Eigen::Vector3d& p0,
+                               const Eigen::Vector3d& p1) {
+  const double trace = q.a.trace();
+  const double det = q.a.determinant();
+  if (trace > 0.0 && det > 1e-6 * trace * trace * trace) {
+    const Eigen::Vector3d x = -(q.a.inverse() * q.b);
+    // Stay near the edge: an optimum far off it is a conditioning artefact.
+    if ((x - 0.5 * (p0 + p1)).squaredNorm() <= 4.0 * (p1 - p0).squaredNorm()) return x;
+  }
+  return OnSegment(q, p0, p1);
+}
+
 // One flag per edge of `mesh`: the edge is a crease, i.e. its two faces'
 // normals differ by more than `min_deg` after the face normals were
 // denoised (see creases.cc).
 std::vector<uint8_t> CreaseEdges(const TriMesh& mesh, double min_deg);
 
 struct CollapseParams {
-  size_t target_faces = 0;      // stop at this many faces (0 = none)
-  double max_error = 0.0;       // rms quadric error bound, model units (0 = none)
-  double min_cos_normal = 0.5;  // a face may turn by at most acos of this
+  size_t target_faces = 0;              // stop at this many faces (0 = none)
+  double max_error = 0.0;               // rms quadric error bound, model units (0 = none)
+  double min_cos_normal = 0.5;          // a face may turn by at most acos of this
+  size_t two_lanes_min_faces = 200000;  // see SimplifyParams
 };
 
 // Collapses edges of `mesh` (which needs status attributes) in order of

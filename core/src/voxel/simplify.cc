@@ -3,6 +3,7 @@
 // mesh, runs the quadric collapse loop (edge_collapse.h), and rebuilds a
 // compact Mesh with the labels of the surviving faces and the Hausdorff
 // distance to the input.
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -77,7 +78,8 @@ absl::StatusOr<Simplification> Simplify(const TriMesh& mesh, const SimplifyParam
   const voxel_internal::CollapseParams collapse{
       .target_faces = static_cast<size_t>(params.target_faces),
       .max_error = params.max_error,
-      .min_cos_normal = std::cos(params.max_normal_flip_deg * std::numbers::pi / 180.0)};
+      .min_cos_normal = std::cos(params.max_normal_flip_deg * std::numbers::pi / 180.0),
+      .two_lanes_min_faces = static_cast<size_t>(std::max<int64_t>(0, params.two_lanes_min_faces))};
   MESHSEG_RETURN_IF_ERROR(voxel_internal::CollapseEdges(work, collapse, locked, crease, ctx));
   MESHSEG_RETURN_IF_ERROR(ctx.CheckStop("simplify"));
 

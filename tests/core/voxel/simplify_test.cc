@@ -135,6 +135,42 @@ TEST(Simplify, PlainMeshKeepsItsCreasesAtATenthOfTheFaces) {
   EXPECT_LE(out->hausdorff.Max(), 0.25 * kH);
 }
 
+// The same box collapsed in two lanes at once (forced here; by default only
+// from 200 000 faces): the halves and then the band between them reach the
+// same target with the same bars, and the result is still a closed surface
+// of genus 0 (V - E + F = 2, no border); progress only rises.
+TEST(Simplify, TwoLanesKeepTheCreasesAndTheSurfaceClosed) {
+  const Eigen::Vector3d half(5, 4, 3);
+  const VolumeSurface s = testing::SurfaceOf(
+      testing::SampleSdf(testing::TurnedBox(half, 17.0), 36, kH, false), "grey_box_lanes.nrrd");
+  const int64_t target = static_cast<int64_t>(s.mesh.tri.n_faces()) / 10;
+  std::vector<double> progress;
+  RunContext ctx;
+  ctx.on_progress = [&](std::string_view stage, double fraction) {
+    if (stage == "simplify") progress.push_back(fraction);
+  };
+  const absl::StatusOr<Simplification> out =
+      Simplify(s.mesh.tri, {.target_faces = target, .two_lanes_min_faces = 1}, {}, {}, ctx);
+  ASSERT_TRUE(out.ok()) << out.status();
+  ASSERT_FALSE(progress.empty());
+  EXPECT_TRUE(std::is_sorted(progress.begin(), progress.end())) << "progress only rises";
+  EXPECT_EQ(progress.back(), 1.0);
+  const TriMesh& m = out->mesh.tri;
+  EXPECT_LE(m.n_faces(), target + 2);
+  EXPECT_GE(m.n_faces(), target - 2);
+  for (auto e : m.edges()) ASSERT_FALSE(m.is_boundary(e)) << "edge " << e.idx();
+  EXPECT_EQ(static_cast<int64_t>(m.n_vertices()) - static_cast<int64_t>(m.n_edges()) +
+                static_cast<int64_t>(m.n_faces()),
+            2);
+  const std::vector<Eigen::Vector3d> edges = BoxEdgePoints(half, 17.0);
+  const double input_gap = FarthestFrom(edges, s.mesh.tri);
+  const double output_gap = FarthestFrom(edges, m);
+  std::cout << "two lanes: box edges to the output " << output_gap / kH << " h; Hausdorff "
+            << out->hausdorff.Max() / kH << " h\n";
+  EXPECT_LE(output_gap, input_gap + 0.1 * kH);
+  EXPECT_LE(out->hausdorff.Max(), 0.25 * kH);
+}
+
 // An open square patch (height noise of amplitude 0.01): its border is a
 // feature line, so the border stays on the square's sides and the four
 // corners stay, both to within the noise.

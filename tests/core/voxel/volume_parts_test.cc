@@ -145,23 +145,9 @@ INSTANTIATE_TEST_SUITE_P(Parts, GreyVolume,
                          ::testing::Values("test_piece", "small_block", "plate_boss",
                                            "stepped_shaft"));
 
-// Seed 003's own route (QEM simplification, remeshed), measured for the
-// notes; run with --gtest_also_run_disabled_tests (slower: CGAL's remesh).
-class BinaryVolumeSimplifyRoute : public ::testing::TestWithParam<std::string> {};
-
-TEST_P(BinaryVolumeSimplifyRoute, DISABLED_SegmentsLikeTheTrueSurfaces) {
-  PipelineParams params;
-  params.binary_surface = PipelineParams::BinarySurface::kSimplify;
-  const Scored s = SegmentVolumeOf(GetParam(), /*binary=*/true, 0.0, params);
-  std::cout << GetParam() << " simplified to " << s.result.simplified_face_count
-            << " faces, Hausdorff " << s.result.simplified_hausdorff << "\n"
-            << s.eval;
-  ExpectBar(s);
-}
-
-INSTANTIATE_TEST_SUITE_P(Parts, BinaryVolumeSimplifyRoute,
-                         ::testing::Values("test_piece", "small_block", "plate_boss",
-                                           "stepped_shaft"));
+// Seed 003's own route (PipelineParams::BinarySurface::kSimplify) is
+// measured on the generated parts by bench/voxel/binary_route_bench.cc; it
+// does not meet the bar above yet (too many regions on small parts).
 
 }  // namespace
 }  // namespace meshseg
