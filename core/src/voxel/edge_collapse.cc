@@ -122,6 +122,8 @@ class Collapser {
     InitQuadrics();
   }
 
+  const std::vector<uint8_t>& crease() const { return crease_; }
+
   absl::Status Run(const RunContext& ctx) {
     heap_.Reserve(2 * m_.n_edges());
     for (auto e : m_.edges()) Push(e);
@@ -307,7 +309,7 @@ class Collapser {
 
 absl::Status CollapseEdges(TriMesh& mesh, const CollapseParams& params,
                            std::span<const uint8_t> locked, std::span<const uint8_t> crease,
-                           const RunContext& ctx) {
+                           const RunContext& ctx, std::vector<uint8_t>* crease_after) {
   if (!locked.empty() && locked.size() != mesh.n_vertices()) {
     return absl::InvalidArgumentError(absl::StrCat(
         "simplify: ", locked.size(), " vertex flags for ", mesh.n_vertices(), " vertices"));
@@ -317,7 +319,9 @@ absl::Status CollapseEdges(TriMesh& mesh, const CollapseParams& params,
         absl::StrCat("simplify: ", crease.size(), " crease flags for ", mesh.n_edges(), " edges"));
   }
   Collapser collapser(mesh, params, locked, crease);
-  return collapser.Run(ctx);
+  const absl::Status status = collapser.Run(ctx);
+  if (crease_after != nullptr) *crease_after = collapser.crease();
+  return status;
 }
 
 }  // namespace meshseg::voxel_internal

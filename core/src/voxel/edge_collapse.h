@@ -68,10 +68,13 @@ struct CollapseParams {
 // Collapses edges of `mesh` (which needs status attributes) in order of
 // quadric error until `target_faces` or no legal collapse is left.
 // `locked` has one flag per vertex, `crease` one per edge (either may be
-// empty). Deleted elements are only marked; the caller compacts.
+// empty). Deleted elements are only marked; the caller compacts. If
+// `crease_after` is given it receives the crease flag of every edge of the
+// collapsed mesh (deleted edges included, as 0 or their last flag): where a
+// collapse merges two edges the survivor is a crease if either was.
 absl::Status CollapseEdges(TriMesh& mesh, const CollapseParams& params,
                            std::span<const uint8_t> locked, std::span<const uint8_t> crease,
-                           const RunContext& ctx);
+                           const RunContext& ctx, std::vector<uint8_t>* crease_after = nullptr);
 
 }  // namespace meshseg::voxel_internal
 
