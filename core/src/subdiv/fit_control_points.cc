@@ -57,8 +57,7 @@ absl::StatusOr<Eigen::VectorXd> Solve(const ColMatrix& normal, const Eigen::Vect
   if (cg.info() != Eigen::Success || !p.allFinite()) {
     Eigen::SimplicialLDLT<ColMatrix> ldlt(normal);
     if (ldlt.info() != Eigen::Success) {
-      return absl::InternalError(absl::StrCat("subdiv: the least-squares system of ",
-                                              start.size(),
+      return absl::InternalError(absl::StrCat("subdiv: the least-squares system of ", start.size(),
                                               " control vertices cannot be factored"));
     }
     p = ldlt.solve(rhs);

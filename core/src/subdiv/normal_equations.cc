@@ -97,9 +97,9 @@ NormalEquations NormalAssembler::Assemble(const LimitSurface& limit,
     const int begin = stencil_start_[f];
     const int s = stencil_start_[f + 1] - begin;
     const Eigen::Map<const Eigen::Matrix<double, 3, Eigen::Dynamic, Eigen::RowMajor>> r(
-        weight_.data() + (stencil_start_[f] * 3), 3, s);
+        weight_.data() + 3 * begin, 3, s);
     g.noalias() = r.transpose() * bb[f] * r;  // s x s
-    const Eigen::Matrix<double, 3, Eigen::Dynamic> kd = k * bd[f];  // column c: K sum b_c d
+    const Eigen::Matrix3d kd = k * bd[f];     // column c: K sum b_c d
     for (int ia = 0; ia < s; ++ia) {
       const int a = stencil_[begin + ia];
       atb.segment<3>(3 * a) += kd * r.col(ia);

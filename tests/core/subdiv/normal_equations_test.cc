@@ -54,7 +54,8 @@ TEST(NormalAssembler, EqualsTheProductsOfTheExplicitRows) {
   const NormalAssembler assembler(*limit);
   const NormalEquations eq = assembler.Assemble(*limit, feet, data, alpha);
   const Eigen::MatrixXd ata = a.transpose() * a;
-  EXPECT_LT((Eigen::MatrixXd(eq.ata) - ata).cwiseAbs().maxCoeff(), 1e-12 * ata.cwiseAbs().maxCoeff());
+  EXPECT_LT((Eigen::MatrixXd(eq.ata) - ata).cwiseAbs().maxCoeff(),
+            1e-12 * ata.cwiseAbs().maxCoeff());
   const Eigen::VectorXd atb = a.transpose() * rhs;
   EXPECT_LT((eq.atb - atb).cwiseAbs().maxCoeff(), 1e-12 * atb.cwiseAbs().maxCoeff());
 }
