@@ -179,6 +179,7 @@ class Collapser {
     // the face planes alone do not (a flat border's corner would slide).
     for (auto e : m_.edges()) {
       if (!crease_[e.idx()]) continue;
+      if (!params_.interior_crease_planes && !m_.is_boundary(e)) continue;
       for (int i = 0; i < 2; ++i) {
         const auto h = m_.halfedge_handle(e, i);
         const auto f = m_.face_handle(h);
