@@ -110,8 +110,8 @@ absl::StatusOr<ControlMesh> ControlFromMesh(const TriMesh& mesh, int64_t target_
   const voxel_internal::CollapseParams params{
       .target_faces = static_cast<size_t>(std::max<int64_t>(target_faces, 1)),
       .min_cos_normal = kMinCosNormalTurn,
-      // The fit moves crease vertices onto the data's crease curve anyway: a
-      // control crease needs few edges, the surface beside it the faces.
+      // Feature lines turn by more than feature_angle_deg: their two face
+      // planes already price moving them sideways (see CollapseParams).
       .interior_crease_planes = false};
   std::vector<uint8_t> crease_after;
   const absl::Status status =

@@ -63,10 +63,11 @@ struct CollapseParams {
   size_t target_faces = 0;      // stop at this many faces (0 = none)
   double max_error = 0.0;       // rms quadric error bound, model units (0 = none)
   double min_cos_normal = 0.5;  // a face may turn by at most acos of this
-  // Constraint planes on interior creases too (always on open borders). The
-  // face planes on both sides of an interior crease already hold it to its
-  // line; the constraint planes also price sliding along a curved crease,
-  // which keeps more crease edges (and fewer surface faces) at a given size.
+  // Constraint planes on interior creases too (always on open borders). A
+  // border has one face plane, which does not price moving the border
+  // sideways within it; an interior crease where the surface turns by an
+  // angle a has two, and moving it by d within one costs d sin a from the
+  // other.
   bool interior_crease_planes = true;
 };
 
