@@ -14,16 +14,17 @@
 
 namespace meshseg::subdiv_internal {
 
-// Returns `mesh` simplified to about `target_faces` faces by OpenMesh's
-// decimater (Garland-Heckbert quadrics as priority, normal-flip guard; half-
-// edge collapses, so control vertices are input vertices). Edges whose faces'
-// normals differ by more than `feature_angle_deg`, in connected lines of at
-// least `min_crease_edges` such edges, are feature edges: a vertex
-// on one only collapses along its feature line, vertices where the number of
-// feature edges is not two (junctions, line ends) never collapse. The
-// surviving feature edges are the creases; feature junctions (three or more
-// feature edges) are the corners. Reports progress as "subdiv" in [0, 0.4].
-// Errors: INVALID_ARGUMENT if the decimater cannot start; CANCELLED on stop.
+// Returns `mesh` simplified to about `target_faces` faces by the quadric
+// edge collapse of voxel_internal::CollapseEdges (Garland-Heckbert quadrics
+// as priority, merged vertices at the quadric's optimum, normal-turn guard).
+// Edges whose faces' normals differ by more than `feature_angle_deg`, in
+// connected lines of at least `min_crease_edges` such edges, are feature
+// edges: a vertex on one only collapses along its feature line and stays on
+// it; vertices where the number of feature edges is not two (junctions, line
+// ends) never collapse; open borders stay on themselves. The surviving
+// feature edges are the creases; feature junctions (three or more feature
+// edges) are the corners. Reports progress as "subdiv" in [0, 0.4].
+// Errors: those of CollapseEdges; CANCELLED on stop.
 absl::StatusOr<ControlMesh> ControlFromMesh(const TriMesh& mesh, int64_t target_faces,
                                             double feature_angle_deg, int min_crease_edges,
                                             const RunContext& ctx = {});

@@ -40,8 +40,10 @@ struct ControlFit {
 //   min sum_i ((n_i . (B_i P - d_i))^2 + alpha |B_i P - d_i|^2) / |D| + w |G P|^2 / |E|,
 // B_i the footpoint's row of the limit operator, n_i the limit surface's
 // normal there, alpha = `tangent_weight`, G the control edges' differences,
-// w = `smoothing_weight`, with a sparse Cholesky factorisation (Eigen's
-// SimplicialLDLT).
+// w = `smoothing_weight`: the normal equations assembled per limit face
+// (normal_equations.h), solved by Jacobi-preconditioned conjugate gradients
+// started from the previous round's control vertices (a sparse Cholesky
+// factorisation if they do not converge).
 // Errors: those of BuildControlTopology; INTERNAL if the system cannot be
 // factored; CANCELLED on stop.
 absl::StatusOr<ControlFit> FitControlPoints(const ControlMesh& control,

@@ -125,7 +125,7 @@ absl::StatusOr<SubdivFit> FitSubdivisionSurface(const Mesh& mesh, const SubdivPa
     tried_faces.push_back(static_cast<int64_t>(fit.control.faces.size()));
     tried_rms.push_back(fit.rms_distance);
     if (!best || fit.rms_distance < best->rms_distance) best = std::move(fit);
-    // Doubling stops when the decimater can no longer reach the target
+    // Doubling stops when the collapse can no longer reach the target
     // (feature lines keep their vertices) or at the size bound.
     if (!params.tolerance || best->rms_distance <= *params.tolerance || target >= max_faces ||
         tried_faces.back() < target / 2) {

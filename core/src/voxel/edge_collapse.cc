@@ -60,6 +60,8 @@ class Collapser {
     InitQuadrics();
   }
 
+  const std::vector<uint8_t>& crease() const { return crease_; }
+
   absl::Status Run(const RunContext& ctx) {
     const size_t start = m_.n_faces();
     const size_t target = std::min(params_.target_faces, start);
@@ -127,6 +129,7 @@ class Collapser {
     // the face planes alone do not (a flat border's corner would slide).
     for (auto e : m_.edges()) {
       if (!crease_[e.idx()]) continue;
+      if (!params_.interior_crease_planes && !m_.is_boundary(e)) continue;
       for (int i = 0; i < 2; ++i) {
         const auto h = m_.halfedge_handle(e, i);
         const auto f = m_.face_handle(h);
@@ -377,7 +380,7 @@ class Collapser {
 
 absl::Status CollapseEdges(TriMesh& mesh, const CollapseParams& params,
                            std::span<const uint8_t> locked, std::span<const uint8_t> crease,
-                           const RunContext& ctx) {
+                           const RunContext& ctx, std::vector<uint8_t>* crease_after) {
   if (!locked.empty() && locked.size() != mesh.n_vertices()) {
     return absl::InvalidArgumentError(absl::StrCat(
         "simplify: ", locked.size(), " vertex flags for ", mesh.n_vertices(), " vertices"));
@@ -387,7 +390,9 @@ absl::Status CollapseEdges(TriMesh& mesh, const CollapseParams& params,
         absl::StrCat("simplify: ", crease.size(), " crease flags for ", mesh.n_edges(), " edges"));
   }
   Collapser collapser(mesh, params, locked, crease);
-  return collapser.Run(ctx);
+  const absl::Status status = collapser.Run(ctx);
+  if (crease_after != nullptr) *crease_after = collapser.crease();
+  return status;
 }
 
 }  // namespace meshseg::voxel_internal

@@ -88,15 +88,24 @@ struct CollapseParams {
   double max_error = 0.0;               // rms quadric error bound, model units (0 = none)
   double min_cos_normal = 0.5;          // a face may turn by at most acos of this
   size_t two_lanes_min_faces = 200000;  // see SimplifyParams
+  // Constraint planes on interior creases too (always on open borders). A
+  // border has one face plane, which does not price moving the border
+  // sideways within it; an interior crease where the surface turns by an
+  // angle a has two, and moving it by d within one costs d sin a from the
+  // other.
+  bool interior_crease_planes = true;
 };
 
 // Collapses edges of `mesh` (which needs status attributes) in order of
 // quadric error until `target_faces` or no legal collapse is left.
 // `locked` has one flag per vertex, `crease` one per edge (either may be
-// empty). Deleted elements are only marked; the caller compacts.
+// empty). Deleted elements are only marked; the caller compacts. If
+// `crease_after` is given it receives the crease flag of every edge of the
+// collapsed mesh (deleted edges included, as 0 or their last flag): where a
+// collapse merges two edges the survivor is a crease if either was.
 absl::Status CollapseEdges(TriMesh& mesh, const CollapseParams& params,
                            std::span<const uint8_t> locked, std::span<const uint8_t> crease,
-                           const RunContext& ctx);
+                           const RunContext& ctx, std::vector<uint8_t>* crease_after = nullptr);
 
 }  // namespace meshseg::voxel_internal
 
