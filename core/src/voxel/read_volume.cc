@@ -9,8 +9,10 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <string>
 #include <system_error>
 
+#include "absl/strings/escaping.h"
 #include "absl/strings/str_cat.h"
 #include "meshseg/status_macros.h"
 #include "meshseg/voxel.h"
@@ -142,9 +144,13 @@ absl::StatusOr<VolumeInfo> ReadVolumeInfo(const std::string& path,
     }
   }
   if (options.attached_data_only && info.data_path != path) {
+    // The file name comes from the header: clipped and escaped, so a header
+    // that names a long or binary "file" still gets a one-line error.
+    const std::string file = std::filesystem::path(info.data_path).filename().string();
     return BadVolume(
         name, absl::StrCat("its samples are in a separate file \"",
-                           std::filesystem::path(info.data_path).filename().string(),
+                           absl::CHexEscape(file.substr(0, 64)),
+                           file.size() > 64 ? "..." : "",
                            "\"; only one file is read here: send a .mha (or .mhd with "
                            "ElementDataFile = LOCAL) or an NRRD with attached data"));
   }

@@ -272,6 +272,27 @@ TEST(ReadVolume, BadMetaImageHeadersNameTheProblem) {
   ExpectBad("no_data_line.mha", with("ElementDataFile = LOCAL\n", ""), "no ElementDataFile");
 }
 
+// A header naming a separate data file, refused where only the one file
+// may be read, gets a one-line error even when that "file name" is long
+// binary junk (a fuzzer's find: the whole name went into the message).
+TEST(ReadVolume, SeparateDataFileNamedByJunkIsRefusedInOneShortLine) {
+  const VolumeData v = Ramp(VoxelType::kUint8);
+  std::string junk(300, '\xf6');
+  junk[10] = '\0';
+  junk += "C33KA";
+  const std::string path = ScratchPath("junk_data_file.mhd");
+  WriteFile(path, MetaHeader(v, false, junk));
+  const absl::StatusOr<VolumeInfo> info =
+      ReadVolumeInfo(path, {.attached_data_only = true});
+  ASSERT_FALSE(info.ok());
+  EXPECT_EQ(info.status().code(), absl::StatusCode::kInvalidArgument) << info.status();
+  const std::string message(info.status().message());
+  EXPECT_THAT(message, HasSubstr("junk_data_file.mhd"));
+  EXPECT_THAT(message, HasSubstr("separate file"));
+  EXPECT_LT(message.size(), 512u) << message;
+  for (const char c : message) EXPECT_TRUE(c >= 0x20 && c < 0x7f) << message;
+}
+
 TEST(ReadVolume, RawWithoutLayoutOrOfTheWrongSizeIsRefused) {
   ExpectBad("no_layout.raw", std::string(60, '\0'), "needs its dims");
   ExpectBad("short.raw", std::string(59, '\0'), "truncated data",
