@@ -39,7 +39,7 @@ void RefitOnInputVertices(const TriMesh& mesh, std::span<const int> face_labels,
 void RefitToPoints(std::span<const std::vector<Eigen::Vector3d>> points_of_region,
                    double distance_tolerance, std::vector<Region>* regions);
 
-// Point clouds: seed 000's type decision made again on each curved
+// Point clouds: the surface-type decision (ALGORITHMS.md S1) made again on each curved
 // region's own points (points_of_region, after RefitToPoints), with the
 // segmentation's criterion (segment/decide_type.h): a simpler type that is a
 // limit of the region's (a plane of any curved type; a cylinder or cone of

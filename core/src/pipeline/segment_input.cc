@@ -1,6 +1,6 @@
 // How each kind of surface is segmented into a PipelineResult: a scan as
 // read, an exact tessellation facet by facet, a CAD tessellation on its
-// isotropic remesh, a binary-occupancy surface de-terraced (seed 003), and a
+// isotropic remesh, a binary-occupancy surface de-terraced (ALGORITHMS.md S4), and a
 // reconstruction with its regions refitted to the cloud's points.
 #include "pipeline/segment_input.h"
 

@@ -14,7 +14,7 @@
 // or their union (a concave one), so the surface is the zero set of
 // min(g0, g1) or max(g0, g1), g_k the signed distance to plane k: the edge
 // stays sharp, and a vertex on it is projected onto the planes' line.
-// ALGORITHMS.md S3 step 7 (seed 001 §2.3) asks the same of the smoothing:
+// ALGORITHMS.md S3 step 7 asks the same of the smoothing:
 // the detail the fits resolve is kept as it is.
 #ifndef MESHSEG_RECONSTRUCT_CREASE_H_
 #define MESHSEG_RECONSTRUCT_CREASE_H_
