@@ -83,6 +83,15 @@ struct SubdivParams {
   // point reaches determined (the spring energy of Hoppe et al.'s mesh
   // optimisation, at a small weight). Relative, dimensionless.
   double smoothing_weight = 1e-4;
+  // Guard for control vertices the data hardly reach: each control vertex
+  // gets at least this fraction of the median vertex's data weight on its
+  // own position (the diagonal of the data's normal equations); the
+  // shortfall is a prior keeping its umbrella vector (offset from the mean
+  // of its neighbours) as after quasi-interpolation, so it moves with its
+  // neighbours instead of drifting into a flap of the limit surface. 0 =
+  // off. A quarter: a vertex at a crease or a thin part sees about half the
+  // data of a vertex inside a smooth patch, and is left alone.
+  double data_guard_fraction = 0.25;
   // Weight of the tangential offset against the normal distance of each data
   // point to its footpoint (1 = point-to-point as Hoppe et al. 1994; small =
   // point-to-plane, which converges in a few rounds because the surface may

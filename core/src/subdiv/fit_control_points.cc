@@ -4,14 +4,13 @@
 #include <cmath>
 
 #include <Eigen/Geometry>
-#include <Eigen/IterativeLinearSolvers>
-#include <Eigen/SparseCholesky>
 
-#include "absl/strings/str_cat.h"
 #include "meshseg/status_macros.h"
 #include "subdiv/control_topology.h"
+#include "subdiv/data_guard.h"
 #include "subdiv/footpoints.h"
 #include "subdiv/normal_equations.h"
+#include "subdiv/solve_normal_equations.h"
 
 namespace meshseg::subdiv_internal {
 namespace {
@@ -31,42 +30,6 @@ ColMatrix EdgeDifferences(const ControlTopology& topo, int n) {
   ColMatrix g(3 * topo.edges.size(), 3 * n);
   g.setFromTriplets(w.begin(), w.end());
   return g;
-}
-
-// Conjugate gradients stop at this residual relative to the right-hand side
-// (about 25 iterations per decade on a 10,000-vertex control mesh; at 1e-6
-// the rms per round already agrees with a direct solve to four digits).
-constexpr double kSolveTolerance = 1e-8;
-constexpr int kMaxSolveIterations = 2000;
-
-// Returns the solution of normal * p = rhs: conjugate gradients with a
-// diagonal (Jacobi) preconditioner started from the current control
-// vertices, which the previous round (or the quasi-interpolation) left close
-// to the solution: a few dozen products with the matrix instead of a
-// Cholesky factorisation whose fill-in grows with the control mesh. A system
-// that does not converge in kMaxSolveIterations is factored (SimplicialLDLT).
-absl::StatusOr<Eigen::VectorXd> Solve(const ColMatrix& normal, const Eigen::VectorXd& rhs,
-                                      const std::vector<Eigen::Vector3d>& start, int round) {
-  Eigen::VectorXd guess(3 * start.size());
-  for (size_t v = 0; v < start.size(); ++v) guess.segment<3>(3 * v) = start[v];
-  Eigen::ConjugateGradient<ColMatrix, Eigen::Lower | Eigen::Upper> cg;
-  cg.setTolerance(kSolveTolerance);
-  cg.setMaxIterations(kMaxSolveIterations);
-  cg.compute(normal);
-  Eigen::VectorXd p = cg.solveWithGuess(rhs, guess);
-  if (cg.info() != Eigen::Success || !p.allFinite()) {
-    Eigen::SimplicialLDLT<ColMatrix> ldlt(normal);
-    if (ldlt.info() != Eigen::Success) {
-      return absl::InternalError(absl::StrCat("subdiv: the least-squares system of ", start.size(),
-                                              " control vertices cannot be factored"));
-    }
-    p = ldlt.solve(rhs);
-  }
-  if (!p.allFinite()) {
-    return absl::InternalError(
-        absl::StrCat("subdiv: the least-squares solve failed in round ", round + 1));
-  }
-  return p;
 }
 
 struct Distances {
@@ -97,7 +60,8 @@ std::vector<Eigen::Vector3d> QuasiInterpolate(const ControlMesh& control,
 absl::StatusOr<ControlFit> FitControlPoints(const ControlMesh& control,
                                             const std::vector<Eigen::Vector3d>& data, int level,
                                             int rounds, double smoothing_weight,
-                                            double tangent_weight, const RunContext& ctx) {
+                                            double tangent_weight, double guard_fraction,
+                                            const RunContext& ctx) {
   MESHSEG_ASSIGN_OR_RETURN(const ControlTopology topo, BuildControlTopology(control));
   ControlFit fit;
   MESHSEG_ASSIGN_OR_RETURN(fit.limit, SampleLimitSurface(control, level));
@@ -107,6 +71,9 @@ absl::StatusOr<ControlFit> FitControlPoints(const ControlMesh& control,
       (smoothing_weight / std::max<size_t>(1, topo.edges.size())) * ColMatrix(g.transpose() * g);
   const double data_weight = 1.0 / std::max<size_t>(1, data.size());
   fit.vertices = control.vertices;
+  const ColMatrix umbrella = UmbrellaOperator(topo, n);
+  Eigen::VectorXd prior(3 * n);
+  for (int v = 0; v < n; ++v) prior.segment<3>(3 * v) = control.vertices[v];
   const NormalAssembler assembler(fit.limit);
   std::vector<FootPoint> feet = FootPoints(fit.limit.mesh.vertices, fit.limit.mesh.faces, data);
   Distances dist = Measure(feet);
@@ -114,10 +81,16 @@ absl::StatusOr<ControlFit> FitControlPoints(const ControlMesh& control,
   for (int round = 0; round < rounds; ++round) {
     MESHSEG_RETURN_IF_ERROR(ctx.CheckStop("subdiv"));
     const NormalEquations eq = assembler.Assemble(fit.limit, feet, data, tangent_weight);
-    const ColMatrix normal = data_weight * eq.ata + membrane;
-    MESHSEG_ASSIGN_OR_RETURN(const Eigen::VectorXd p,
-                             Solve(normal, data_weight * eq.atb, fit.vertices, round));
-    for (int v = 0; v < n; ++v) fit.vertices[v] = p.segment<3>(3 * v);
+    const ColMatrix data_normal = data_weight * eq.ata;
+    const GuardTerm guard = DataGuard(umbrella, data_normal, prior, guard_fraction);
+    fit.guarded_per_round.push_back(guard.guarded);
+    const ColMatrix normal = data_normal + membrane + guard.matrix;
+    Eigen::VectorXd guess(3 * n);
+    for (int v = 0; v < n; ++v) guess.segment<3>(3 * v) = fit.vertices[v];
+    MESHSEG_ASSIGN_OR_RETURN(
+        const NormalSolution solution,
+        SolveNormalEquations(normal, data_weight * eq.atb + guard.rhs, guess, round));
+    for (int v = 0; v < n; ++v) fit.vertices[v] = solution.p.segment<3>(3 * v);
     fit.limit.mesh.vertices = Apply(fit.limit.from_control, fit.vertices);
     feet = FootPoints(fit.limit.mesh.vertices, fit.limit.mesh.faces, data);
     dist = Measure(feet);

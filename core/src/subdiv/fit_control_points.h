@@ -31,16 +31,20 @@ struct ControlFit {
   double rms_distance = 0.0;              // data -> limit surface
   double max_distance = 0.0;
   std::vector<double> rms_per_round;  // start, then after each round
+  std::vector<int> guarded_per_round;  // vertices the data guard held, per round
 };
 
 // Returns the control vertices of `control` (its topology and tags kept)
 // fitted to `data` through the limit surface sampled at `level`: each round
 // finds every data point's footpoint on the limit surface and solves the
 // linear least-squares problem
-//   min sum_i ((n_i . (B_i P - d_i))^2 + alpha |B_i P - d_i|^2) / |D| + w |G P|^2 / |E|,
+//   min sum_i ((n_i . (B_i P - d_i))^2 + alpha |B_i P - d_i|^2) / |D| + w |G P|^2 / |E|
+//       + sum_v c_v |U_v (P - P_0)|^2,
 // B_i the footpoint's row of the limit operator, n_i the limit surface's
 // normal there, alpha = `tangent_weight`, G the control edges' differences,
-// w = `smoothing_weight`: the normal equations assembled per limit face
+// w = `smoothing_weight`, U the umbrella operator, P_0 = `control`'s
+// vertices and c_v the data guard's weights for `guard_fraction`
+// (data_guard.h): the normal equations assembled per limit face
 // (normal_equations.h), solved by Jacobi-preconditioned conjugate gradients
 // started from the previous round's control vertices (a sparse Cholesky
 // factorisation if they do not converge).
@@ -49,7 +53,8 @@ struct ControlFit {
 absl::StatusOr<ControlFit> FitControlPoints(const ControlMesh& control,
                                             const std::vector<Eigen::Vector3d>& data, int level,
                                             int rounds, double smoothing_weight,
-                                            double tangent_weight, const RunContext& ctx = {});
+                                            double tangent_weight, double guard_fraction = 0.0,
+                                            const RunContext& ctx = {});
 
 }  // namespace meshseg::subdiv_internal
 

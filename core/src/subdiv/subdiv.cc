@@ -56,6 +56,10 @@ absl::Status ValidateParams(const SubdivParams& params) {
     return absl::InvalidArgumentError(absl::StrCat(
         "subdiv: smoothing_weight ", params.smoothing_weight, " must be finite and >= 0"));
   }
+  if (!(params.data_guard_fraction >= 0.0 && params.data_guard_fraction <= 1.0)) {
+    return absl::InvalidArgumentError(absl::StrCat(
+        "subdiv: data_guard_fraction ", params.data_guard_fraction, " must be in [0, 1]"));
+  }
   if (params.tolerance && !(*params.tolerance > 0.0 && std::isfinite(*params.tolerance))) {
     return absl::InvalidArgumentError(
         absl::StrCat("subdiv: tolerance ", *params.tolerance, " must be finite and > 0"));
@@ -81,7 +85,8 @@ absl::StatusOr<SubdivFit> FitAtSize(const Mesh& mesh, const std::vector<Eigen::V
   MESHSEG_ASSIGN_OR_RETURN(
       subdiv_internal::ControlFit fit,
       subdiv_internal::FitControlPoints(control, data, params.limit_level, params.fit_iterations,
-                                        params.smoothing_weight, params.tangent_weight, ctx));
+                                        params.smoothing_weight, params.tangent_weight,
+                                        params.data_guard_fraction, ctx));
   SubdivFit out;
   out.control = std::move(control);
   out.control.vertices = std::move(fit.vertices);
