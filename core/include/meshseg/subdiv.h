@@ -4,8 +4,9 @@
 // dense triangle mesh (ALGORITHMS.md S5), for freeform surfaces that
 // no analytic primitive describes (castings, blades, housings).
 //
-// In: a Mesh (its vertices are the data). Steps: feature edges (dihedral
-// angle) become creases; feature-preserving QEM edge collapse gives a coarse
+// In: a Mesh (its vertices are the data). Steps: feature lines from the
+// curvature field (sharp vertices, thinned to lines) become creases;
+// feature-preserving QEM edge collapse gives a coarse
 // control mesh whose edges follow the sharp lines, because a smooth limit
 // surface cannot bend across them; quasi-interpolation (each vertex moved by
 // its own offset from its limit position, the first-order inverse of the
@@ -58,15 +59,21 @@ struct SubdivParams {
   // Control-mesh size relative to the input when target_faces is unset.
   // Issue #35 asks for a control mesh of at most 5 % of the input's faces.
   double face_fraction = 0.05;
-  // An edge whose faces' normals differ by more than this is a crease.
-  // 30 degrees as RemeshParams::feature_angle_deg: fillets between analytic
-  // faces (and scan noise at 0.05 h) stay below, machined edges above.
-  double feature_angle_deg = 30.0;
-  // Sharp edges count as creases only in connected feature lines of at least
-  // this many edges: a part's sharp edge crosses many triangles, while single
-  // sharp edges come from noise or a coarse tessellation of a curved surface.
-  // Each crease line end is a fixed vertex of the simplification, so short
-  // spurious lines would also keep the control mesh from its target size.
+  // Creases from the curvature-based feature detection (ALGORITHMS.md S5
+  // step 3): the vertices the curvature stage flags sharp (radius of
+  // curvature below sharp_threshold mean edge lengths) form a band along
+  // each sharp line, which is thinned to one line of edges on its curvature
+  // crest. false = no creases: a smooth limit surface everywhere.
+  bool tag_creases = true;
+  // CurvatureParams::sharp_threshold (th_sv, in mean edge lengths); unset =
+  // the curvature stage's, derived from the data's noise (1.5 to 3: a crease
+  // turning by 30 degrees has a fitted radius of about 3 edges).
+  std::optional<double> sharp_threshold;
+  // Feature lines count as creases only with at least this many edges: a
+  // part's sharp edge crosses many triangles, while spurs of the thinning and
+  // short pieces come from noise or a coarse tessellation of a curved
+  // surface. Each crease line end is a fixed vertex of the simplification,
+  // so short spurious lines would also keep the control mesh from its target.
   int min_crease_edges = 4;
   // The limit surface is sampled at the vertices of this subdivision level of
   // the control mesh; data points are fitted to the triangles between them.
@@ -122,8 +129,8 @@ struct SubdivFit {
 
 // Returns the Loop subdivision surface fitted to the vertices of `mesh`.
 // Inputs: a triangle mesh with at least 4 faces. Outputs: the control mesh
-// (about target_faces faces; creases where the input's dihedral angle exceeds
-// feature_angle_deg, corners where three or more creases meet), the sampled
+// (about target_faces faces; creases along the input's feature lines,
+// corners where three or more of them meet), the sampled
 // limit surface (control faces x 4^limit_level triangles) and the fit's
 // distances. Reports progress as "subdiv".
 // With params.tolerance, control meshes of doubling size are fitted until

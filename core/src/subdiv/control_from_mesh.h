@@ -11,22 +11,22 @@
 #include "meshseg/mesh.h"
 #include "meshseg/run_context.h"
 #include "meshseg/subdiv.h"
+#include "subdiv/feature_lines.h"
 
 namespace meshseg::subdiv_internal {
 
 // Returns `mesh` simplified to about `target_faces` faces by the quadric
 // edge collapse of voxel_internal::CollapseEdges (Garland-Heckbert quadrics
 // as priority, merged vertices at the quadric's optimum, normal-turn guard).
-// Edges whose faces' normals differ by more than `feature_angle_deg`, in
-// connected lines of at least `min_crease_edges` such edges, are feature
-// edges: a vertex on one only collapses along its feature line and stays on
-// it; vertices where the number of feature edges is not two (junctions, line
-// ends) never collapse; open borders stay on themselves. The surviving
+// The edges of `features` (feature_lines.h) are the feature edges: a vertex
+// on one only collapses along its feature line and stays on it; vertices
+// where the number of feature edges is not two (junctions, line ends) never
+// collapse; open borders stay on themselves. The surviving
 // feature edges are the creases; feature junctions (three or more feature
 // edges) are the corners. Reports progress as "subdiv" in [0, 0.4].
 // Errors: those of CollapseEdges; CANCELLED on stop.
 absl::StatusOr<ControlMesh> ControlFromMesh(const TriMesh& mesh, int64_t target_faces,
-                                            double feature_angle_deg, int min_crease_edges,
+                                            const FeatureLines& features,
                                             const RunContext& ctx = {});
 
 }  // namespace meshseg::subdiv_internal

@@ -5,13 +5,16 @@
 #include "meshseg/subdiv.h"
 
 #include <cmath>
+#include <cstdint>
 #include <optional>
 #include <vector>
 
 #include "absl/strings/str_cat.h"
+#include "meshseg/curvature.h"
 #include "meshseg/status_macros.h"
 #include "subdiv/control_from_mesh.h"
 #include "subdiv/control_topology.h"
+#include "subdiv/feature_lines.h"
 #include "subdiv/fit_control_points.h"
 
 namespace meshseg {
@@ -32,9 +35,10 @@ absl::Status ValidateParams(const SubdivParams& params) {
     return absl::InvalidArgumentError(
         absl::StrCat("subdiv: face_fraction ", params.face_fraction, " must be in (0, 1]"));
   }
-  if (!(params.feature_angle_deg > 0.0 && params.feature_angle_deg <= 180.0)) {
+  if (params.sharp_threshold &&
+      !(*params.sharp_threshold > 0.0 && std::isfinite(*params.sharp_threshold))) {
     return absl::InvalidArgumentError(absl::StrCat(
-        "subdiv: feature_angle_deg ", params.feature_angle_deg, " must be in (0, 180]"));
+        "subdiv: sharp_threshold ", *params.sharp_threshold, " must be finite and > 0"));
   }
   if (params.min_crease_edges < 1) {
     return absl::InvalidArgumentError(
@@ -71,13 +75,36 @@ absl::Status ValidateParams(const SubdivParams& params) {
   return absl::OkStatus();
 }
 
+// Returns the feature lines of `mesh` (none without params.tag_creases):
+// the curvature stage's sharp vertices, thinned along |kappa_max|.
+absl::StatusOr<subdiv_internal::FeatureLines> DetectFeatures(const Mesh& mesh,
+                                                             const SubdivParams& params,
+                                                             const RunContext& ctx) {
+  if (!params.tag_creases) {
+    return subdiv_internal::FeatureLines{std::vector<uint8_t>(mesh.tri.n_edges(), 0),
+                                         std::vector<int>(mesh.tri.n_vertices(), 0)};
+  }
+  CurvatureParams curvature_params;
+  curvature_params.sharp_threshold = params.sharp_threshold;
+  RunContext curvature_ctx;
+  curvature_ctx.stop = ctx.stop;
+  const absl::StatusOr<CurvatureField> field =
+      EstimateCurvature(mesh, curvature_params, curvature_ctx);
+  if (absl::IsCancelled(field.status())) return absl::CancelledError("subdiv: stop requested");
+  MESHSEG_RETURN_IF_ERROR(field.status());
+  std::vector<double> strength(field->kappa_max.size());
+  for (size_t v = 0; v < strength.size(); ++v) strength[v] = std::abs(field->kappa_max[v]);
+  const std::vector<uint8_t> ridges = subdiv_internal::RidgeVertices(
+      mesh.tri, *field, curvature_params.w2, subdiv_internal::kMinRidgeContrast);
+  return subdiv_internal::DetectFeatureLines(mesh.tri, ridges, strength, params.min_crease_edges);
+}
+
 // Returns the fit with a control mesh of about `target` faces.
 absl::StatusOr<SubdivFit> FitAtSize(const Mesh& mesh, const std::vector<Eigen::Vector3d>& data,
-                                    int64_t target, const SubdivParams& params,
-                                    const RunContext& ctx) {
-  MESHSEG_ASSIGN_OR_RETURN(ControlMesh control, subdiv_internal::ControlFromMesh(
-                                                    mesh.tri, target, params.feature_angle_deg,
-                                                    params.min_crease_edges, ctx));
+                                    const subdiv_internal::FeatureLines& features, int64_t target,
+                                    const SubdivParams& params, const RunContext& ctx) {
+  MESHSEG_ASSIGN_OR_RETURN(ControlMesh control,
+                           subdiv_internal::ControlFromMesh(mesh.tri, target, features, ctx));
   MESHSEG_ASSIGN_OR_RETURN(const subdiv_internal::ControlTopology topo,
                            subdiv_internal::BuildControlTopology(control));
   control.vertices = subdiv_internal::QuasiInterpolate(control, topo);
@@ -120,13 +147,15 @@ absl::StatusOr<SubdivFit> FitSubdivisionSurface(const Mesh& mesh, const SubdivPa
   for (auto v : mesh.tri.vertices()) {
     if (!mesh.tri.is_isolated(v)) data.push_back(ToEigen(mesh.tri.point(v)));
   }
+  MESHSEG_ASSIGN_OR_RETURN(const subdiv_internal::FeatureLines features,
+                           DetectFeatures(mesh, params, ctx));
   const int64_t max_faces = std::max<int64_t>(
       target, std::llround(params.max_face_fraction * static_cast<double>(faces)));
   std::optional<SubdivFit> best;
   std::vector<int64_t> tried_faces;
   std::vector<double> tried_rms;
   while (true) {
-    MESHSEG_ASSIGN_OR_RETURN(SubdivFit fit, FitAtSize(mesh, data, target, params, ctx));
+    MESHSEG_ASSIGN_OR_RETURN(SubdivFit fit, FitAtSize(mesh, data, features, target, params, ctx));
     tried_faces.push_back(static_cast<int64_t>(fit.control.faces.size()));
     tried_rms.push_back(fit.rms_distance);
     if (!best || fit.rms_distance < best->rms_distance) best = std::move(fit);

@@ -1,15 +1,27 @@
 #include "subdiv/control_from_mesh.h"
 
+#include "meshseg/curvature.h"
 #include "shapes.h"
 
 namespace meshseg::subdiv_internal {
 namespace {
 
+// The feature lines of `mesh` from its curvature field, as the fit finds them.
+FeatureLines Features(const Mesh& mesh) {
+  const absl::StatusOr<CurvatureField> field = EstimateCurvature(mesh);
+  EXPECT_TRUE(field.ok()) << field.status();
+  if (!field.ok()) return {};
+  std::vector<double> strength;
+  for (double k : field->kappa_max) strength.push_back(std::abs(k));
+  return DetectFeatureLines(mesh.tri, RidgeVertices(mesh.tri, *field, 5.0, kMinRidgeContrast),
+                            strength, 4);
+}
+
 TEST(ControlFromMesh, CubeKeepsItsEdgesAsCreasesAndCorners) {
   const testing::Triangles t = testing::Cube(1.0, 8);  // 768 faces
   auto mesh = testing::ToMesh(t, "cube");
   ASSERT_TRUE(mesh.ok()) << mesh.status();
-  auto control = ControlFromMesh(mesh->tri, 60, 30.0, 4);
+  auto control = ControlFromMesh(mesh->tri, 60, Features(*mesh));
   ASSERT_TRUE(control.ok()) << control.status();
   EXPECT_LE(control->faces.size(), 60u);
   EXPECT_EQ(control->corners.size(), 8u);
@@ -33,7 +45,7 @@ TEST(ControlFromMesh, CubeKeepsItsEdgesAsCreasesAndCorners) {
 TEST(ControlFromMesh, SmoothSphereHasNoCreases) {
   auto mesh = testing::ToMesh(testing::UnitIcosphere(3), "sphere");
   ASSERT_TRUE(mesh.ok()) << mesh.status();
-  auto control = ControlFromMesh(mesh->tri, 100, 30.0, 4);
+  auto control = ControlFromMesh(mesh->tri, 100, Features(*mesh));
   ASSERT_TRUE(control.ok()) << control.status();
   EXPECT_LE(control->faces.size(), 100u);
   EXPECT_GE(control->faces.size(), 90u);

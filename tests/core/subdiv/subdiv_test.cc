@@ -115,11 +115,9 @@ TEST(FitSubdivisionSurface, BlendedBodyResolvesItsCreasesWithinOneH) {
   // leaves the sharp edge by (sqrt 2 - 1) w, so "no rounding wider than 1 h"
   // is a deviation of at most 0.41 h there; at the concave crease where the
   // bodies meet (turning by less) the same bound is looser.
-  // The creases are not tagged here (feature_angle_deg 180): on a marching-
-  // cubes mesh the dihedral test tags the noisy slivers that straddle each
-  // crease as a network of short lines and corners (575 edges, 366 corners
-  // measured), whose locked vertices stop the decimation at 10 % and whose
-  // flaps no data point reaches leave the limit surface 7 h off (subdiv2.md).
+  // Default params: the creases come from the curvature-based feature lines
+  // (thinned bands of sharp vertices), which follow both creases as closed
+  // lines without junctions, so no corner locks the simplification.
   const testing::BlendedBody body;
   const double h0 = testing::MeanEdge(body.Mesh(0.6, 0.0, 1));
   const double sigma = 0.05 * h0;
@@ -127,10 +125,10 @@ TEST(FitSubdivisionSurface, BlendedBodyResolvesItsCreasesWithinOneH) {
   const double h = testing::MeanEdge(t);
   auto mesh = testing::ToMesh(t, "blended");
   ASSERT_TRUE(mesh.ok()) << mesh.status();
-  SubdivParams params;
-  params.feature_angle_deg = 180.0;
-  auto fit = FitSubdivisionSurface(*mesh, params);
+  auto fit = FitSubdivisionSurface(*mesh);
   ASSERT_TRUE(fit.ok()) << fit.status();
+  EXPECT_FALSE(fit->control.creases.empty());
+  EXPECT_TRUE(fit->control.corners.empty());
   EXPECT_LE(fit->control.faces.size(), 0.05 * t.faces.size() + 2);
   const Distances d =
       LimitToTruth(*fit, [&](const Eigen::Vector3d& p) { return body.Distance(p); });
@@ -200,6 +198,14 @@ TEST(FitSubdivisionSurface, RejectsBadParamsAndTinyMeshes) {
   nan_weight.smoothing_weight = std::nan("");
   r = FitSubdivisionSurface(*mesh, nan_weight);
   EXPECT_THAT(r.status().message(), HasSubstr("smoothing_weight nan"));
+  SubdivParams blunt;
+  blunt.sharp_threshold = 0.0;
+  r = FitSubdivisionSurface(*mesh, blunt);
+  EXPECT_THAT(r.status().message(), HasSubstr("sharp_threshold 0 must be finite and > 0"));
+  SubdivParams guard;
+  guard.data_guard_fraction = 2.0;
+  r = FitSubdivisionSurface(*mesh, guard);
+  EXPECT_THAT(r.status().message(), HasSubstr("data_guard_fraction 2 must be in [0, 1]"));
   SubdivParams negative;
   negative.tolerance = -1.0;
   r = FitSubdivisionSurface(*mesh, negative);
