@@ -6,7 +6,12 @@
 // step (decimation, quasi-interpolation, each fit round: the stage's
 // progress marks), the total, the peak resident memory and the rms distance
 // data -> limit surface. Target (issue #35): <= 30 s, <= 2 GB.
-// Usage: subdiv_fit_bench [IN] [--faces N] [--along N --around N]
+// Also prints the distance from the limit surface's vertices back to the
+// nearest input vertex (rms, max): flaps of the limit surface where no data
+// point is show there, not in the data -> limit rms.
+// --guard F sets SubdivParams::data_guard_fraction, --no-creases turns
+// SubdivParams::tag_creases off (to compare).
+// Usage: subdiv_fit_bench [IN] [--faces N] [--along N --around N] [--guard F] [--no-creases]
 #include <sys/resource.h>
 
 #include <chrono>
@@ -23,6 +28,7 @@
 #include "bench/peak_rss.h"
 #include "meshseg/mesh.h"
 #include "meshseg/subdiv.h"
+#include "mesh/point_index.h"
 
 namespace {
 
@@ -80,6 +86,7 @@ int main(int argc, char** argv) {
   std::string input;
   int64_t target = 20000;
   int along = 2000, around = 250;
+  meshseg::SubdivParams params;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--faces" && i + 1 < argc) {
@@ -88,6 +95,10 @@ int main(int argc, char** argv) {
       along = std::atoi(argv[++i]);
     } else if (a == "--around" && i + 1 < argc) {
       around = std::atoi(argv[++i]);
+    } else if (a == "--guard" && i + 1 < argc) {
+      params.data_guard_fraction = std::atof(argv[++i]);
+    } else if (a == "--no-creases") {
+      params.tag_creases = false;
     } else {
       input = a;
     }
@@ -102,7 +113,6 @@ int main(int argc, char** argv) {
   std::printf("input %s: %zu faces, %zu vertices, read/built in %.2f s, peak %.0f MiB\n",
               input.empty() ? "trefoil tube" : input.c_str(), mesh->tri.n_faces(),
               mesh->tri.n_vertices(), Seconds(t0), meshseg::bench::PeakRssMiB());
-  meshseg::SubdivParams params;
   params.target_faces = target;
   meshseg::RunContext ctx;
   const auto t1 = Clock::now();
@@ -134,5 +144,18 @@ int main(int argc, char** argv) {
       cpu, meshseg::bench::PeakRssMiB(), fit->rms_distance, fit->max_distance);
   for (double r : fit->rms_per_round) std::printf(" %.4g", r);
   std::printf("\n");
+  std::vector<Eigen::Vector3d> input_points;
+  for (auto v : mesh->tri.vertices()) input_points.push_back(meshseg::ToEigen(mesh->tri.point(v)));
+  const meshseg::mesh_internal::PointIndex index(input_points);
+  double back_rms = 0.0, back_max = 0.0;
+  std::vector<uint32_t> nearest;
+  std::vector<double> dist2;
+  for (const Eigen::Vector3d& p : fit->limit_vertices) {
+    index.Nearest(p, 1, &nearest, &dist2);
+    back_rms += dist2[0];
+    back_max = std::max(back_max, std::sqrt(dist2[0]));
+  }
+  back_rms = std::sqrt(back_rms / std::max<size_t>(1, fit->limit_vertices.size()));
+  std::printf("limit surface -> nearest input vertex: rms %.4g max %.4g\n", back_rms, back_max);
   return 0;
 }
