@@ -20,7 +20,7 @@ namespace {
 constexpr double kMinBorderGapRad = 150.0 * std::numbers::pi / 180.0;
 
 // The largest sum of consecutive face angles at v between two set
-// neighbours of v (2 pi if v is on an open border or has one).
+// neighbours of v (2 pi on an open border or with none).
 double LargestGap(const TriMesh& mesh, OpenMesh::VertexHandle v, const std::vector<uint8_t>& in) {
   struct Wedge {
     int from, to;  // ring neighbours, in the faces' orientation

@@ -186,30 +186,24 @@ TEST(FitSubdivisionSurface, RejectsBadParamsAndTinyMeshes) {
   auto r = FitSubdivisionSurface(*mesh, tiny);
   EXPECT_EQ(r.status().code(), absl::StatusCode::kInvalidArgument);
   EXPECT_THAT(r.status().message(), HasSubstr("target_faces 2 is below 4"));
-  SubdivParams huge;
-  huge.target_faces = 81;
-  r = FitSubdivisionSurface(*mesh, huge);
-  EXPECT_THAT(r.status().message(), HasSubstr("target_faces 81 exceeds the 80 faces of \"ico80\""));
-  SubdivParams deep;
-  deep.limit_level = 9;
-  r = FitSubdivisionSurface(*mesh, deep);
-  EXPECT_THAT(r.status().message(), HasSubstr("limit_level 9 must be in [0, 5]"));
-  SubdivParams nan_weight;
-  nan_weight.smoothing_weight = std::nan("");
-  r = FitSubdivisionSurface(*mesh, nan_weight);
-  EXPECT_THAT(r.status().message(), HasSubstr("smoothing_weight nan"));
-  SubdivParams blunt;
-  blunt.sharp_threshold = 0.0;
-  r = FitSubdivisionSurface(*mesh, blunt);
-  EXPECT_THAT(r.status().message(), HasSubstr("sharp_threshold 0 must be finite and > 0"));
-  SubdivParams guard;
-  guard.data_guard_fraction = 2.0;
-  r = FitSubdivisionSurface(*mesh, guard);
-  EXPECT_THAT(r.status().message(), HasSubstr("data_guard_fraction 2 must be in [0, 1]"));
-  SubdivParams negative;
-  negative.tolerance = -1.0;
-  r = FitSubdivisionSurface(*mesh, negative);
-  EXPECT_THAT(r.status().message(), HasSubstr("tolerance -1 must be finite and > 0"));
+  // The message of the fit with the default params changed by `set`.
+  auto message = [&](auto set) {
+    SubdivParams params;
+    set(params);
+    return std::string(FitSubdivisionSurface(*mesh, params).status().message());
+  };
+  EXPECT_THAT(message([](SubdivParams& p) { p.target_faces = 81; }),
+              HasSubstr("target_faces 81 exceeds the 80 faces of \"ico80\""));
+  EXPECT_THAT(message([](SubdivParams& p) { p.limit_level = 9; }),
+              HasSubstr("limit_level 9 must be in [0, 5]"));
+  EXPECT_THAT(message([](SubdivParams& p) { p.smoothing_weight = std::nan(""); }),
+              HasSubstr("smoothing_weight nan"));
+  EXPECT_THAT(message([](SubdivParams& p) { p.sharp_threshold = 0.0; }),
+              HasSubstr("sharp_threshold 0 must be finite and > 0"));
+  EXPECT_THAT(message([](SubdivParams& p) { p.data_guard_fraction = 2.0; }),
+              HasSubstr("data_guard_fraction 2 must be in [0, 1]"));
+  EXPECT_THAT(message([](SubdivParams& p) { p.tolerance = -1.0; }),
+              HasSubstr("tolerance -1 must be finite and > 0"));
   testing::Triangles tri;
   tri.vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
   tri.faces = {{0, 1, 2}};
