@@ -116,6 +116,23 @@ TEST(DetectFeatureLines, DropsSpursAndShortPiecesButKeepsLongBranches) {
   EXPECT_EQ(lines.count[At(4, 12)], 0);
 }
 
+TEST(RidgeVertices, FindNoneOnATubeCurvedTighterThanTheSharpThresholdAllOver) {
+  // A tube of radius 1 sampled by 20 edges around (h about 0.36): its
+  // radius is under 3 h, so the curvature stage flags most of its vertices
+  // sharp, but no vertex stands above its surroundings.
+  const testing::KnotTube tube;
+  const double h0 = testing::MeanEdge(tube.Mesh(200, 20, 0.0, 1));
+  auto mesh = testing::ToMesh(tube.Mesh(200, 20, 0.05 * h0, 3), "tube");
+  ASSERT_TRUE(mesh.ok()) << mesh.status();
+  auto field = EstimateCurvature(*mesh);
+  ASSERT_TRUE(field.ok()) << field.status();
+  int sharp = 0, ridges = 0;
+  for (uint8_t s : field->sharp) sharp += s;
+  for (uint8_t r : RidgeVertices(mesh->tri, *field, 5.0, kMinRidgeContrast)) ridges += r;
+  EXPECT_GT(sharp, 2000);  // of 4000
+  EXPECT_EQ(ridges, 0);
+}
+
 TEST(DetectFeatureLines, FollowsTheCreasesOfANoisyMarchingCubesBody) {
   // A superellipsoid unioned with a cylinder (marching cubes, noise 0.05 h
   // along the normal): two closed creases, the cylinder's rim and the curve
