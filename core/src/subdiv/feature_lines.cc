@@ -8,6 +8,8 @@
 #include <utility>
 #include <vector>
 
+#include <Eigen/Geometry>
+
 namespace meshseg::subdiv_internal {
 namespace {
 
@@ -210,6 +212,41 @@ void PruneShortChains(const TriMesh& mesh, int min_edges, std::vector<uint8_t>& 
   }
 }
 
+// A line end's last edge that turns from the line by more than this and
+// leads to a weaker vertex is a hook left by the thinning order: where a
+// band ends square, one of its corner vertices becomes a line end (which
+// stays) before its neighbour along the band's border leaves.
+constexpr double kMaxEndTurnCos = 0.5;  // 60 degrees
+
+// The other flagged edge's far vertex of the degree-2 vertex p, coming from e.
+OpenMesh::VertexHandle OtherEnd(const TriMesh& mesh, OpenMesh::VertexHandle p, int from_edge,
+                                const std::vector<uint8_t>& edge) {
+  for (auto e : mesh.ve_range(p)) {
+    if (edge[e.idx()] && e.idx() != from_edge) return e.v0() == p ? e.v1() : e.v0();
+  }
+  return OpenMesh::VertexHandle();
+}
+
+// Drops the hooks (kMaxEndTurnCos) at free line ends, once.
+void TrimHooks(const TriMesh& mesh, const std::vector<double>& strength,
+               std::vector<uint8_t>& edge) {
+  std::vector<int> drop;
+  for (auto v : mesh.vertices()) {
+    if (Degree(mesh, v, edge) != 1) continue;
+    for (auto e : v.edges()) {
+      if (!edge[e.idx()]) continue;
+      const OpenMesh::VertexHandle p = e.v0() == v ? e.v1() : e.v0();
+      if (Degree(mesh, p, edge) != 2 || strength[v.idx()] >= strength[p.idx()]) break;
+      const OpenMesh::VertexHandle q = OtherEnd(mesh, p, e.idx(), edge);
+      const Eigen::Vector3d last = (ToEigen(mesh.point(v)) - ToEigen(mesh.point(p))).normalized();
+      const Eigen::Vector3d along = (ToEigen(mesh.point(p)) - ToEigen(mesh.point(q))).normalized();
+      if (last.dot(along) < kMaxEndTurnCos) drop.push_back(e.idx());
+      break;
+    }
+  }
+  for (int e : drop) edge[e] = 0;
+}
+
 }  // namespace
 
 std::vector<uint8_t> RidgeVertices(const TriMesh& mesh, const CurvatureField& field,
@@ -243,6 +280,7 @@ FeatureLines DetectFeatureLines(const TriMesh& mesh, const std::vector<uint8_t>&
   for (auto e : mesh.edges()) out.edge[e.idx()] = in[e.v0().idx()] && in[e.v1().idx()];
   BreakTriangles(mesh, out.edge);
   PruneShortChains(mesh, min_edges, out.edge);
+  TrimHooks(mesh, strength, out.edge);
   for (auto e : mesh.edges()) {
     if (!out.edge[e.idx()]) continue;
     ++out.count[e.v0().idx()];
