@@ -4,29 +4,40 @@
 #include <cstdint>
 #include <vector>
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include "meshseg/curvature.h"
 
 namespace meshseg {
 
 VertexGraph BuildVertexGraph(const TriMesh& mesh) {
+  // Two parallel passes over the vertices (valences, then the rows in the
+  // order OpenMesh circulates them) around a prefix sum: each vertex's row
+  // is the same as a serial build's.
   VertexGraph g;
   const int n = static_cast<int>(mesh.n_vertices());
   g.offsets.assign(n + 1, 0);
   g.positions.resize(n);
-  for (int v = 0; v < n; ++v) {
-    const TriMesh::VertexHandle vh(v);
-    g.positions[v] = ToEigen(mesh.point(vh));
-    int valence = 0;
-    for (auto it = mesh.cvv_iter(vh); it.is_valid(); ++it) ++valence;
-    g.offsets[v + 1] = g.offsets[v] + valence;
-  }
-  g.neighbors.resize(g.offsets[n]);
-  for (int v = 0; v < n; ++v) {
-    int k = g.offsets[v];
-    for (auto it = mesh.cvv_iter(TriMesh::VertexHandle(v)); it.is_valid(); ++it) {
-      g.neighbors[k++] = it->idx();
+  tbb::parallel_for(tbb::blocked_range<int>(0, n, 4096), [&](const tbb::blocked_range<int>& r) {
+    for (int v = r.begin(); v < r.end(); ++v) {
+      const TriMesh::VertexHandle vh(v);
+      g.positions[v] = ToEigen(mesh.point(vh));
+      int valence = 0;
+      for (auto it = mesh.cvv_iter(vh); it.is_valid(); ++it) ++valence;
+      g.offsets[v + 1] = valence;
     }
-  }
+  });
+  for (int v = 0; v < n; ++v) g.offsets[v + 1] += g.offsets[v];
+  g.neighbors.resize(g.offsets[n]);
+  tbb::parallel_for(tbb::blocked_range<int>(0, n, 4096), [&](const tbb::blocked_range<int>& r) {
+    for (int v = r.begin(); v < r.end(); ++v) {
+      int k = g.offsets[v];
+      for (auto it = mesh.cvv_iter(TriMesh::VertexHandle(v)); it.is_valid(); ++it) {
+        g.neighbors[k++] = it->idx();
+      }
+    }
+  });
   return g;
 }
 
