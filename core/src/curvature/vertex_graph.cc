@@ -53,18 +53,27 @@ void CollectNeighborhood(const VertexGraph& graph, int i, double radius,
     std::fill(scratch->mark.begin(), scratch->mark.end(), 0);
     scratch->stamp = 1;
   }
+  // Raw pointers: the compiler cannot prove that the pushes into `out` leave
+  // the marks and positions alone, and would reload them on every edge.
   const uint32_t stamp = scratch->stamp;
+  uint32_t* const mark = scratch->mark.data();
+  const Eigen::Vector3d* const positions = graph.positions.data();
+  const int* const offsets = graph.offsets.data();
+  const int* const neighbors = graph.neighbors.data();
+  const uint8_t* const skip = excluded.empty() ? nullptr : excluded.data();
   const double r2 = radius * radius;
-  const Eigen::Vector3d& center = graph.positions[i];
-  scratch->mark[i] = stamp;
+  const Eigen::Vector3d center = positions[i];
+  mark[i] = stamp;
   out->push_back(i);
   for (std::size_t head = 0; head < out->size(); ++head) {
     if (max_count != 0 && out->size() >= max_count) break;
-    for (const int j : graph.Neighbors((*out)[head])) {
-      if (scratch->mark[j] == stamp) continue;
-      scratch->mark[j] = stamp;
-      if (!excluded.empty() && excluded[j] != 0) continue;
-      if ((graph.positions[j] - center).squaredNorm() >= r2) continue;
+    const int x = (*out)[head];
+    for (int k = offsets[x], end = offsets[x + 1]; k < end; ++k) {
+      const int j = neighbors[k];
+      if (mark[j] == stamp) continue;
+      mark[j] = stamp;
+      if (skip != nullptr && skip[j] != 0) continue;
+      if ((positions[j] - center).squaredNorm() >= r2) continue;
       out->push_back(j);
       if (max_count != 0 && out->size() >= max_count) break;
     }
