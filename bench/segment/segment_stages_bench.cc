@@ -1,8 +1,9 @@
 // Per-stage wall time and peak memory of curvature + segment.
 // Usage: segment_stages_bench PART VOXEL_SIZE [NOISE]   (a generated part)
 //        segment_stages_bench --file MESH_FILE [OUT.ply] (a mesh file)
-// Prints one line per stage: seconds and peak resident set (ru_maxrss), then
-// the region count per type.
+// Prints one line per stage: wall seconds, CPU seconds (user + system, all
+// threads: on a shared machine the wall time says more about the neighbours)
+// and peak resident set (ru_maxrss), then the region count per type.
 
 #include <chrono>
 #include <cstdio>
@@ -20,15 +21,21 @@ namespace {
 
 class Timer {
  public:
-  double Lap() {
+  // Prints the stage's wall and CPU seconds since the last lap and the peak
+  // resident set so far.
+  void Lap(const char* stage) {
     const auto now = std::chrono::steady_clock::now();
-    const double s = std::chrono::duration<double>(now - last_).count();
+    const double cpu = meshseg::bench::CpuSeconds();
+    std::printf("%-10s %8.2f s  cpu %8.2f s  peak %8.1f MiB\n", stage,
+                std::chrono::duration<double>(now - last_).count(), cpu - last_cpu_,
+                meshseg::bench::PeakRssMiB());
     last_ = now;
-    return s;
+    last_cpu_ = cpu;
   }
 
  private:
   std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
+  double last_cpu_ = meshseg::bench::CpuSeconds();
 };
 
 }  // namespace
@@ -48,7 +55,7 @@ int main(int argc, char** argv) {
       return 1;
     }
     mesh = std::move(*read);
-    std::printf("read       %8.2f s  peak %8.1f MiB\n", timer.Lap(), meshseg::bench::PeakRssMiB());
+    timer.Lap("read");
   } else {
     const double noise = argc > 3 ? std::atof(argv[3]) : 0.0;
     auto part = meshseg::GeneratePart(first, {.voxel_size = std::atof(argv[2]), .noise = noise});
@@ -57,7 +64,7 @@ int main(int argc, char** argv) {
       return 1;
     }
     mesh = std::move(part->mesh);
-    std::printf("generate   %8.2f s  peak %8.1f MiB\n", timer.Lap(), meshseg::bench::PeakRssMiB());
+    timer.Lap("generate");
   }
   std::printf("mesh       %zu vertices, %zu faces\n", mesh.tri.n_vertices(), mesh.tri.n_faces());
   auto field = meshseg::EstimateCurvature(mesh);
@@ -65,13 +72,13 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "%s\n", field.status().ToString().c_str());
     return 1;
   }
-  std::printf("curvature  %8.2f s  peak %8.1f MiB\n", timer.Lap(), meshseg::bench::PeakRssMiB());
+  timer.Lap("curvature");
   auto seg = meshseg::Segment(mesh, *field);
   if (!seg.ok()) {
     std::fprintf(stderr, "%s\n", seg.status().ToString().c_str());
     return 1;
   }
-  std::printf("segment    %8.2f s  peak %8.1f MiB\n", timer.Lap(), meshseg::bench::PeakRssMiB());
+  timer.Lap("segment");
   const auto& e = seg->estimates;
   std::printf("estimates  l_avg %.4g sigma %.4g th_dis %.4g th_nm %.3g deg th_sv %.3g\n",
               e.mean_edge_length, e.noise_sigma, e.distance_tolerance, e.angle_tolerance_deg,

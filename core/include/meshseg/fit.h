@@ -161,6 +161,17 @@ HeightFunction FitHeightFunction(std::span<const Eigen::Vector3d> points,
                                  const Eigen::Vector3d& origin, const Eigen::Vector3d& normal,
                                  std::span<const double> weights = {});
 
+// The two halves of FitHeightFunction, for callers that hold the points in
+// the frame already (a local fit at every vertex of a mesh reuses them for
+// its residuals). HeightFrame: h with its origin and axes set and a zero,
+// valid = false; false for a zero or non-finite normal.
+bool HeightFrame(const Eigen::Vector3d& origin, const Eigen::Vector3d& normal, HeightFunction* h);
+// Fits h->a to points given in h's frame, local[i] = ((p - o)·u, (p - o)·w,
+// (p - o)·n) for p = points[i]; sets h->valid. Same result, bit for bit, as
+// FitHeightFunction on the points.
+void FitHeightInFrame(std::span<const Eigen::Vector3d> local, std::span<const double> weights,
+                      HeightFunction* h);
+
 // Approximate closest point on the height-function surface: vertical
 // projection, then two steps of "project onto the tangent plane at the foot,
 // drop back onto the graph". Normal = the graph's unit normal there (on the

@@ -6,28 +6,32 @@ namespace meshseg::curvature_internal {
 
 LocalFit FitAtVertex(std::span<const Eigen::Vector3d> positions, std::span<const double> area,
                      std::span<const int> neighborhood, const Eigen::Vector3d& normal,
-                     std::vector<Eigen::Vector3d>* points, std::vector<double>* weights) {
+                     std::vector<Eigen::Vector3d>* local, std::vector<double>* weights) {
   LocalFit r;
   if (neighborhood.size() < 6) return r;
-  points->clear();
+  const Eigen::Vector3d& origin = positions[neighborhood.front()];
+  HeightFunction h;
+  if (!HeightFrame(origin, normal, &h)) return r;
+  // Each neighbour once in the frame: the fit and its residuals both read
+  // these coordinates.
+  local->clear();
   weights->clear();
   for (const int j : neighborhood) {
-    points->push_back(positions[j]);
+    const Eigen::Vector3d d = positions[j] - origin;
+    local->emplace_back(d.dot(h.u_axis), d.dot(h.w_axis), d.dot(h.normal));
     // Area weights keep long thin CAD triangles from dominating (a floor
     // keeps zero-area vertices in the fit).
     weights->push_back(area[j] + 1e-12);
   }
-  const Eigen::Vector3d& origin = positions[neighborhood.front()];
-  const HeightFunction h = FitHeightFunction(*points, origin, normal, *weights);
+  FitHeightInFrame(*local, *weights, &h);
   if (!h.valid) return r;
   const auto& a = h.a;
   double sum_w = 0.0;
   double sum_r2 = 0.0;
-  for (std::size_t k = 0; k < points->size(); ++k) {
-    const Eigen::Vector3d d = (*points)[k] - origin;
-    const double u = d.dot(h.u_axis);
-    const double w = d.dot(h.w_axis);
-    const double res = d.dot(h.normal) -
+  for (std::size_t k = 0; k < local->size(); ++k) {
+    const double u = (*local)[k].x();
+    const double w = (*local)[k].y();
+    const double res = (*local)[k].z() -
                        (a[0] * u * u + a[1] * w * w + a[2] * u * w + a[3] * u + a[4] * w + a[5]);
     sum_w += (*weights)[k];
     sum_r2 += (*weights)[k] * res * res;

@@ -21,10 +21,11 @@ struct LocalFit {
 
 // Fits h over the vertices `neighborhood` (indices into `positions`, the
 // first is the centre vertex) in the frame of `normal`, weighted by `area`.
-// `points` and `weights` are scratch buffers reused between calls.
+// `local` (the neighbours in the fit's frame) and `weights` are scratch
+// buffers reused between calls.
 LocalFit FitAtVertex(std::span<const Eigen::Vector3d> positions, std::span<const double> area,
                      std::span<const int> neighborhood, const Eigen::Vector3d& normal,
-                     std::vector<Eigen::Vector3d>* points, std::vector<double>* weights);
+                     std::vector<Eigen::Vector3d>* local, std::vector<double>* weights);
 
 }  // namespace meshseg::curvature_internal
 

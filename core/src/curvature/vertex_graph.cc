@@ -4,29 +4,40 @@
 #include <cstdint>
 #include <vector>
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include "meshseg/curvature.h"
 
 namespace meshseg {
 
 VertexGraph BuildVertexGraph(const TriMesh& mesh) {
+  // Two parallel passes over the vertices (valences, then the rows in the
+  // order OpenMesh circulates them) around a prefix sum: each vertex's row
+  // is the same as a serial build's.
   VertexGraph g;
   const int n = static_cast<int>(mesh.n_vertices());
   g.offsets.assign(n + 1, 0);
   g.positions.resize(n);
-  for (int v = 0; v < n; ++v) {
-    const TriMesh::VertexHandle vh(v);
-    g.positions[v] = ToEigen(mesh.point(vh));
-    int valence = 0;
-    for (auto it = mesh.cvv_iter(vh); it.is_valid(); ++it) ++valence;
-    g.offsets[v + 1] = g.offsets[v] + valence;
-  }
-  g.neighbors.resize(g.offsets[n]);
-  for (int v = 0; v < n; ++v) {
-    int k = g.offsets[v];
-    for (auto it = mesh.cvv_iter(TriMesh::VertexHandle(v)); it.is_valid(); ++it) {
-      g.neighbors[k++] = it->idx();
+  tbb::parallel_for(tbb::blocked_range<int>(0, n, 4096), [&](const tbb::blocked_range<int>& r) {
+    for (int v = r.begin(); v < r.end(); ++v) {
+      const TriMesh::VertexHandle vh(v);
+      g.positions[v] = ToEigen(mesh.point(vh));
+      int valence = 0;
+      for (auto it = mesh.cvv_iter(vh); it.is_valid(); ++it) ++valence;
+      g.offsets[v + 1] = valence;
     }
-  }
+  });
+  for (int v = 0; v < n; ++v) g.offsets[v + 1] += g.offsets[v];
+  g.neighbors.resize(g.offsets[n]);
+  tbb::parallel_for(tbb::blocked_range<int>(0, n, 4096), [&](const tbb::blocked_range<int>& r) {
+    for (int v = r.begin(); v < r.end(); ++v) {
+      int k = g.offsets[v];
+      for (auto it = mesh.cvv_iter(TriMesh::VertexHandle(v)); it.is_valid(); ++it) {
+        g.neighbors[k++] = it->idx();
+      }
+    }
+  });
   return g;
 }
 
@@ -42,18 +53,27 @@ void CollectNeighborhood(const VertexGraph& graph, int i, double radius,
     std::fill(scratch->mark.begin(), scratch->mark.end(), 0);
     scratch->stamp = 1;
   }
+  // Raw pointers: the compiler cannot prove that the pushes into `out` leave
+  // the marks and positions alone, and would reload them on every edge.
   const uint32_t stamp = scratch->stamp;
+  uint32_t* const mark = scratch->mark.data();
+  const Eigen::Vector3d* const positions = graph.positions.data();
+  const int* const offsets = graph.offsets.data();
+  const int* const neighbors = graph.neighbors.data();
+  const uint8_t* const skip = excluded.empty() ? nullptr : excluded.data();
   const double r2 = radius * radius;
-  const Eigen::Vector3d& center = graph.positions[i];
-  scratch->mark[i] = stamp;
+  const Eigen::Vector3d center = positions[i];
+  mark[i] = stamp;
   out->push_back(i);
   for (std::size_t head = 0; head < out->size(); ++head) {
     if (max_count != 0 && out->size() >= max_count) break;
-    for (const int j : graph.Neighbors((*out)[head])) {
-      if (scratch->mark[j] == stamp) continue;
-      scratch->mark[j] = stamp;
-      if (!excluded.empty() && excluded[j] != 0) continue;
-      if ((graph.positions[j] - center).squaredNorm() >= r2) continue;
+    const int x = (*out)[head];
+    for (int k = offsets[x], end = offsets[x + 1]; k < end; ++k) {
+      const int j = neighbors[k];
+      if (mark[j] == stamp) continue;
+      mark[j] = stamp;
+      if (skip != nullptr && skip[j] != 0) continue;
+      if ((positions[j] - center).squaredNorm() >= r2) continue;
       out->push_back(j);
       if (max_count != 0 && out->size() >= max_count) break;
     }

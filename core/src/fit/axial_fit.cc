@@ -4,6 +4,8 @@
 #include <limits>
 #include <vector>
 
+#include <tbb/parallel_for.h>
+
 #include "fit/algebraic_sphere.h"
 #include "fit/fit_internal.h"
 
@@ -113,21 +115,32 @@ double AxialCost(const FitInput& input, const AxialSurface& s) {
 double BestAxialFit(const FitInput& input, const Eigen::Vector3d& centroid,
                     std::span<const AxialSurface> starts, bool fit_angle,
                     const FitParams& params, AxialSurface* best, int* iterations) {
-  double best_cost = std::numeric_limits<double>::infinity();
-  for (AxialSurface s : starts) {
-    int used = 0;
+  // The starts share nothing but the input: each is refined on a core of
+  // its own, and the best is picked in start order afterwards (the first of
+  // equal costs, as a serial loop would).
+  struct Refined {
+    AxialSurface surface;
     double cost = 0.0;
+    int used = 0;
+  };
+  std::vector<Refined> refined(starts.size());
+  tbb::parallel_for(std::size_t{0}, starts.size(), [&](std::size_t k) {
+    Refined& r = refined[k];
+    r.surface = starts[k];
     if (params.refine) {
-      const LmOutcome lm = RefineAxial(input, centroid, fit_angle, params, &s);
-      used = lm.iterations;
-      cost = lm.cost;
+      const LmOutcome lm = RefineAxial(input, centroid, fit_angle, params, &r.surface);
+      r.used = lm.iterations;
+      r.cost = lm.cost;
     } else {
-      cost = AxialCost(input, s);
+      r.cost = AxialCost(input, r.surface);
     }
-    if (cost < best_cost) {
-      best_cost = cost;
-      *best = s;
-      *iterations = used;
+  });
+  double best_cost = std::numeric_limits<double>::infinity();
+  for (const Refined& r : refined) {
+    if (r.cost < best_cost) {
+      best_cost = r.cost;
+      *best = r.surface;
+      *iterations = r.used;
     }
   }
   return best_cost;

@@ -1,6 +1,7 @@
 // The local quadratic height function of seed 000 §2: weighted least squares
 // in the frame (origin, u, w, normal) and the closest point on its graph.
 #include <cmath>
+#include <vector>
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
@@ -21,56 +22,83 @@ double Height(const std::array<double, 6>& a, double u, double w) {
 
 }  // namespace
 
+bool HeightFrame(const Eigen::Vector3d& origin, const Eigen::Vector3d& normal, HeightFunction* h) {
+  *h = HeightFunction{};
+  h->origin = origin;
+  const double nn = normal.norm();
+  if (!(nn > 0.0) || !std::isfinite(nn)) return false;
+  h->normal = normal / nn;
+  h->u_axis = fit_internal::AnyPerpendicular(h->normal);
+  h->w_axis = h->normal.cross(h->u_axis);
+  return true;
+}
+
+void FitHeightInFrame(std::span<const Eigen::Vector3d> local, std::span<const double> weights,
+                      HeightFunction* h) {
+  h->a = {};
+  h->valid = false;
+  if (local.size() < 6) return;
+  const bool weighted = weights.size() == local.size();
+
+  // Scale u, w to unit RMS so the normal equations are well conditioned.
+  double sum_w = 0.0;
+  double sum_r2 = 0.0;
+  for (std::size_t i = 0; i < local.size(); ++i) {
+    const double wt = weighted ? weights[i] : 1.0;
+    sum_w += wt;
+    sum_r2 += wt * (local[i].x() * local[i].x() + local[i].y() * local[i].y());
+  }
+  if (!(sum_w > 0.0) || !(sum_r2 > 0.0)) return;
+  const double s = std::sqrt(sum_r2 / sum_w);
+
+  // Normal equations: only the lower triangle, which is all the solver
+  // reads; each entry sums (wt phi_i) phi_j in point order.
+  double m[6][6] = {};
+  double rhs[6] = {};
+  for (std::size_t k = 0; k < local.size(); ++k) {
+    const double wt = weighted ? weights[k] : 1.0;
+    const double u = local[k].x() / s;
+    const double w = local[k].y() / s;
+    const double phi[6] = {u * u, w * w, u * w, u, w, 1.0};
+    const double wz = wt * local[k].z();
+    for (int i = 0; i < 6; ++i) {
+      const double wp = wt * phi[i];
+      for (int j = 0; j <= i; ++j) m[i][j] += wp * phi[j];
+      rhs[i] += wz * phi[i];
+    }
+  }
+  Eigen::Matrix<double, 6, 6> lower = Eigen::Matrix<double, 6, 6>::Zero();
+  Eigen::Matrix<double, 6, 1> b;
+  for (int i = 0; i < 6; ++i) {
+    b(i) = rhs[i];
+    for (int j = 0; j <= i; ++j) lower(i, j) = m[i][j];
+  }
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, 6, 6>> solver(lower);
+  if (solver.info() != Eigen::Success) return;
+  const auto& ev = solver.eigenvalues();
+  if (!(ev(0) > kMinConditionRatio * ev(5))) return;
+  const Eigen::Matrix<double, 6, 1> x =
+      solver.eigenvectors() *
+      (solver.eigenvalues().cwiseInverse().asDiagonal() * (solver.eigenvectors().transpose() * b));
+  if (!x.allFinite()) return;
+  const double s2 = s * s;
+  h->a = {x(0) / s2, x(1) / s2, x(2) / s2, x(3) / s, x(4) / s, x(5)};
+  h->valid = true;
+}
+
 HeightFunction FitHeightFunction(std::span<const Eigen::Vector3d> points,
                                  const Eigen::Vector3d& origin, const Eigen::Vector3d& normal,
                                  std::span<const double> weights) {
   HeightFunction h;
   h.origin = origin;
-  const double nn = normal.norm();
-  if (!(nn > 0.0) || !std::isfinite(nn) || points.size() < 6) return h;
-  h.normal = normal / nn;
-  h.u_axis = fit_internal::AnyPerpendicular(h.normal);
-  h.w_axis = h.normal.cross(h.u_axis);
-  const bool weighted = weights.size() == points.size();
-
-  // Scale u, w to unit RMS so the normal equations are well conditioned.
-  double sum_w = 0.0;
-  double sum_r2 = 0.0;
+  if (points.size() < 6 || !HeightFrame(origin, normal, &h)) return h;
+  std::vector<Eigen::Vector3d> local(points.size());
   for (std::size_t i = 0; i < points.size(); ++i) {
-    const double wt = weighted ? weights[i] : 1.0;
     const Eigen::Vector3d d = points[i] - origin;
-    const double du = d.dot(h.u_axis);
-    const double dw = d.dot(h.w_axis);
-    sum_w += wt;
-    sum_r2 += wt * (du * du + dw * dw);
+    local[i] = Eigen::Vector3d(d.dot(h.u_axis), d.dot(h.w_axis), d.dot(h.normal));
   }
-  if (!(sum_w > 0.0) || !(sum_r2 > 0.0)) return h;
-  const double s = std::sqrt(sum_r2 / sum_w);
-
-  Eigen::Matrix<double, 6, 6> m = Eigen::Matrix<double, 6, 6>::Zero();
-  Eigen::Matrix<double, 6, 1> rhs = Eigen::Matrix<double, 6, 1>::Zero();
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    const double wt = weighted ? weights[i] : 1.0;
-    const Eigen::Vector3d d = points[i] - origin;
-    const double u = d.dot(h.u_axis) / s;
-    const double w = d.dot(h.w_axis) / s;
-    Eigen::Matrix<double, 6, 1> phi;
-    phi << u * u, w * w, u * w, u, w, 1.0;
-    m.noalias() += wt * phi * phi.transpose();
-    rhs.noalias() += wt * d.dot(h.normal) * phi;
-  }
-  Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, 6, 6>> solver(m);
-  if (solver.info() != Eigen::Success) return h;
-  const auto& ev = solver.eigenvalues();
-  if (!(ev(0) > kMinConditionRatio * ev(5))) return h;
-  const Eigen::Matrix<double, 6, 1> x =
-      solver.eigenvectors() *
-      (solver.eigenvalues().cwiseInverse().asDiagonal() *
-       (solver.eigenvectors().transpose() * rhs));
-  if (!x.allFinite()) return h;
-  const double s2 = s * s;
-  h.a = {x(0) / s2, x(1) / s2, x(2) / s2, x(3) / s, x(4) / s, x(5)};
-  h.valid = true;
+  FitHeightInFrame(local, weights.size() == points.size() ? weights : std::span<const double>{},
+                   &h);
   return h;
 }
 

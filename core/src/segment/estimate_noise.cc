@@ -4,6 +4,8 @@
 #include <cmath>
 #include <vector>
 
+#include <tbb/parallel_sort.h>
+
 namespace meshseg::segment_internal {
 namespace {
 
@@ -34,7 +36,7 @@ double Median(std::vector<double> x) {
 // the values.
 double Mode(std::vector<double> x) {
   if (x.empty()) return 0.0;
-  std::sort(x.begin(), x.end());
+  tbb::parallel_sort(x.begin(), x.end());
   const std::size_t k = std::max<std::size_t>(1, x.size() / 4);
   std::size_t best = 0;
   for (std::size_t i = 0; i + k <= x.size(); ++i) {

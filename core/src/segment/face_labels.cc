@@ -1,6 +1,7 @@
 #include "segment/face_labels.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 
@@ -11,6 +12,25 @@
 namespace meshseg::segment_internal {
 namespace {
 
+// The faces across each face's edges, in OpenMesh circulator order (-1 past
+// the last): built once, in parallel, for every round of MergeFaceFragments.
+using FaceNeighbors = std::vector<std::array<int, 3>>;
+
+FaceNeighbors AdjacentFaces(const TriMesh& mesh) {
+  const int nf = static_cast<int>(mesh.n_faces());
+  FaceNeighbors out(nf);
+  tbb::parallel_for(tbb::blocked_range<int>(0, nf, 4096), [&](const tbb::blocked_range<int>& r) {
+    for (int f = r.begin(); f < r.end(); ++f) {
+      out[f] = {-1, -1, -1};
+      int k = 0;
+      for (auto it = mesh.cff_iter(TriMesh::FaceHandle(f)); it.is_valid() && k < 3; ++it) {
+        out[f][k++] = it->idx();
+      }
+    }
+  });
+  return out;
+}
+
 // The edge-connected pieces of equally labelled faces (labels >= 0).
 struct Pieces {
   std::vector<int> of_face;       // piece id per face, -1 if unlabelled
@@ -18,7 +38,7 @@ struct Pieces {
   std::vector<std::size_t> size;  // faces per piece
 };
 
-Pieces FindPieces(const TriMesh& mesh, const std::vector<int>& labels) {
+Pieces FindPieces(const FaceNeighbors& adjacent, const std::vector<int>& labels) {
   Pieces p;
   p.of_face.assign(labels.size(), -1);
   std::vector<int> stack;
@@ -33,8 +53,8 @@ Pieces FindPieces(const TriMesh& mesh, const std::vector<int>& labels) {
       const int f = stack.back();
       stack.pop_back();
       ++p.size[id];
-      for (auto it = mesh.cff_iter(TriMesh::FaceHandle(f)); it.is_valid(); ++it) {
-        const int g = it->idx();
+      for (const int g : adjacent[f]) {
+        if (g < 0) break;
         if (p.of_face[g] < 0 && labels[g] == labels[seed]) {
           p.of_face[g] = id;
           stack.push_back(g);
@@ -47,7 +67,7 @@ Pieces FindPieces(const TriMesh& mesh, const std::vector<int>& labels) {
 
 // One round: the label each piece takes, -1 where it keeps its own (not a
 // fragment, or no neighbour that is not one).
-std::vector<int> FragmentLabels(const TriMesh& mesh, const std::vector<int>& labels,
+std::vector<int> FragmentLabels(const FaceNeighbors& adjacent, const std::vector<int>& labels,
                                 const Pieces& p) {
   std::map<int, int> largest;  // label -> its largest piece
   for (int id = 0; id < static_cast<int>(p.label.size()); ++id) {
@@ -63,10 +83,11 @@ std::vector<int> FragmentLabels(const TriMesh& mesh, const std::vector<int>& lab
     const int id = p.of_face[f];
     if (id < 0 || !fragment[id]) continue;
     std::map<int, int>& counts = shared[id];
-    for (auto it = mesh.cff_iter(TriMesh::FaceHandle(static_cast<int>(f))); it.is_valid(); ++it) {
+    for (const int g : adjacent[f]) {
+      if (g < 0) break;
       // Only pieces that stay count: two fragments side by side would
       // otherwise swap labels and stay fragments.
-      const int other = p.of_face[it->idx()];
+      const int other = p.of_face[g];
       if (other >= 0 && !fragment[other]) ++counts[p.label[other]];
     }
   }
@@ -84,9 +105,10 @@ std::vector<int> FragmentLabels(const TriMesh& mesh, const std::vector<int>& lab
 }  // namespace
 
 void MergeFaceFragments(const TriMesh& mesh, std::vector<int>* face_labels) {
+  const FaceNeighbors adjacent = AdjacentFaces(mesh);
   for (int round = 0; round < kMaxFragmentRounds; ++round) {
-    const Pieces p = FindPieces(mesh, *face_labels);
-    const std::vector<int> relabel = FragmentLabels(mesh, *face_labels, p);
+    const Pieces p = FindPieces(adjacent, *face_labels);
+    const std::vector<int> relabel = FragmentLabels(adjacent, *face_labels, p);
     bool changed = false;
     for (std::size_t f = 0; f < face_labels->size(); ++f) {
       const int id = p.of_face[f];

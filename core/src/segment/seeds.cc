@@ -7,6 +7,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_sort.h>
 
 namespace meshseg::segment_internal {
 
@@ -38,7 +39,9 @@ std::vector<int> SeedOrder(const SegmentContext& c) {
   for (int i = 0; i < n; ++i) {
     if (!k.sharp[i]) order.push_back(i);
   }
-  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return d[a] < d[b]; });
+  // Ties in d keep the vertex order (the stable order), on both cores.
+  tbb::parallel_sort(order.begin(), order.end(),
+                     [&](int a, int b) { return d[a] < d[b] || (d[a] == d[b] && a < b); });
   return order;
 }
 

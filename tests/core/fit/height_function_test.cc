@@ -76,5 +76,43 @@ TEST(ProjectHeightFunction, DistanceAlongNormal) {
   }
 }
 
+// The two halves give FitHeightFunction's result bit for bit (the local
+// curvature fit relies on it: same sums in the same order), on a tilted,
+// noisy, weighted sample.
+TEST(FitHeightInFrame, EqualsFitHeightFunctionBitForBit) {
+  std::vector<Eigen::Vector3d> pts = QuadraticGraph();
+  std::vector<double> w;
+  for (std::size_t i = 0; i < pts.size(); ++i) {
+    pts[i] += Eigen::Vector3d(0.3, -0.2, 0.1) * std::sin(1.7 * i) * 1e-3;
+    w.push_back(1.0 + 0.5 * std::cos(0.9 * i));
+  }
+  const Eigen::Vector3d origin = pts[3];
+  const Eigen::Vector3d normal(0.2, -0.1, 0.97);
+  const HeightFunction whole = FitHeightFunction(pts, origin, normal, w);
+  HeightFunction h;
+  ASSERT_TRUE(HeightFrame(origin, normal, &h));
+  std::vector<Eigen::Vector3d> local;
+  for (const Eigen::Vector3d& p : pts) {
+    const Eigen::Vector3d d = p - origin;
+    local.emplace_back(d.dot(h.u_axis), d.dot(h.w_axis), d.dot(h.normal));
+  }
+  FitHeightInFrame(local, w, &h);
+  ASSERT_TRUE(whole.valid);
+  ASSERT_TRUE(h.valid);
+  EXPECT_EQ(h.normal, whole.normal);
+  EXPECT_EQ(h.u_axis, whole.u_axis);
+  for (int k = 0; k < 6; ++k) EXPECT_EQ(h.a[k], whole.a[k]) << "coefficient " << k;
+}
+
+TEST(FitHeightInFrame, ZeroNormalOrFewPointsIsInvalid) {
+  HeightFunction h;
+  EXPECT_FALSE(HeightFrame(Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), &h));
+  EXPECT_FALSE(h.valid);
+  ASSERT_TRUE(HeightFrame(Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitZ(), &h));
+  const std::vector<Eigen::Vector3d> five(5, Eigen::Vector3d(1.0, 2.0, 0.0));
+  FitHeightInFrame(five, {}, &h);
+  EXPECT_FALSE(h.valid);
+}
+
 }  // namespace
 }  // namespace meshseg
