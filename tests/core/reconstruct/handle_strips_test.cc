@@ -1,0 +1,104 @@
+#include "reconstruct/handle_strips.h"
+
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "clouds.h"
+#include "reconstruct/close_unsupported.h"
+#include "reconstruct/surface_mesh.h"
+#include "tube_meshes.h"
+
+namespace meshseg::reconstruct_internal {
+namespace {
+
+Mesh ToMesh(const TubeMesh& m) { return *SurfaceMesh(m.vertices, m.triangles, "tubes"); }
+
+// A thin torus: its meridian (8 edges round a tube of radius 0.05) is 0.306
+// long, its longitude over 6.
+TubeMesh ThinTorus(const Eigen::Vector3d& center = Eigen::Vector3d::Zero()) {
+  return TorusTubeMesh(1.0, 0.05, 128, 8, center);
+}
+
+int64_t CutFaces(const HandleStrips& s) {
+  int64_t n = 0;
+  for (const uint8_t c : s.cut) n += c;
+  return n;
+}
+
+// The meridian is a non-separating loop shorter than the bound: its strip
+// (the two rings of cells at its vertices) is cut, and closing the two holes
+// leaves a closed genus-0 surface.
+TEST(ShortHandleStrips, CutsTheShortNonSeparatingLoopOfAThinTorus) {
+  const Mesh torus = ToMesh(ThinTorus());
+  ASSERT_EQ(Genus(torus.tri), 1);
+  const HandleStrips s =
+      ShortHandleStrips(torus.tri, std::vector<double>(torus.tri.n_vertices(), 0.5), 1);
+  EXPECT_EQ(s.cut_count, 1);
+  EXPECT_GT(s.loop_count, 0);
+  EXPECT_EQ(CutFaces(s), 2 * 2 * 8);
+  std::vector<uint8_t> supported(s.cut.size());
+  for (size_t f = 0; f < s.cut.size(); ++f) supported[f] = !s.cut[f];
+  const auto closed = CloseUnsupported(torus, supported, 0.01, false);
+  ASSERT_TRUE(closed.ok()) << closed.status();
+  EXPECT_EQ(closed->hole_count, 2);
+  EXPECT_EQ(test::BoundaryEdgeCount(closed->mesh.tri), 0);
+  EXPECT_EQ(test::NonManifoldVertexCount(closed->mesh.tri), 0);
+  EXPECT_EQ(test::ComponentCount(closed->mesh.tri), 1);
+  EXPECT_EQ(Genus(closed->mesh.tri), 0);
+}
+
+TEST(ShortHandleStrips, KeepsALoopLongerThanTheBound) {
+  const Mesh torus = ToMesh(ThinTorus());
+  const HandleStrips s =
+      ShortHandleStrips(torus.tri, std::vector<double>(torus.tri.n_vertices(), 0.25), 1);
+  EXPECT_EQ(s.cut_count, 0);
+  EXPECT_EQ(CutFaces(s), 0);
+}
+
+// A wide tube (meridian 1.88) has no loop of 0.5: nothing is even examined.
+TEST(ShortHandleStrips, FindsNoShortLoopOnAThickTorus) {
+  const Mesh torus = ToMesh(TorusTubeMesh(1.0, 0.3, 96, 32));
+  const HandleStrips s =
+      ShortHandleStrips(torus.tri, std::vector<double>(torus.tri.n_vertices(), 0.5), 1);
+  EXPECT_EQ(s.loop_count, 0);
+  EXPECT_EQ(s.cut_count, 0);
+}
+
+// A thin rod's meridian is as short as the thin torus's but separates the
+// surface (genus 0 part): it is checked and kept. Next to it the thin
+// torus's handle is still cut.
+TEST(ShortHandleStrips, KeepsTheSeparatingLoopOfAThinRod) {
+  TubeMesh thick = TorusTubeMesh(1.0, 0.3, 96, 32);
+  thick.Add(RodTubeMesh(0.05, 1.0, 8, 20, Eigen::Vector3d(3, 0, 0)));
+  const Mesh with_rod = ToMesh(thick);
+  ASSERT_EQ(Genus(with_rod.tri), 1);
+  const HandleStrips kept =
+      ShortHandleStrips(with_rod.tri, std::vector<double>(with_rod.tri.n_vertices(), 0.5), 1);
+  EXPECT_GT(kept.check_count, 0);
+  EXPECT_EQ(kept.cut_count, 0);
+
+  TubeMesh thin = ThinTorus();
+  const int torus_faces = static_cast<int>(thin.triangles.size());
+  thin.Add(RodTubeMesh(0.05, 1.0, 8, 20, Eigen::Vector3d(3, 0, 0)));
+  const Mesh both = ToMesh(thin);
+  const HandleStrips cut =
+      ShortHandleStrips(both.tri, std::vector<double>(both.tri.n_vertices(), 0.5), 1);
+  EXPECT_EQ(cut.cut_count, 1);
+  for (int f = torus_faces; f < static_cast<int>(cut.cut.size()); ++f) EXPECT_EQ(cut.cut[f], 0);
+}
+
+// Two thin tori (total genus 2): one cut each, and no more than the genus.
+TEST(ShortHandleStrips, CutsOneLoopPerHandleUpToTheGenus) {
+  TubeMesh two = ThinTorus();
+  two.Add(ThinTorus(Eigen::Vector3d(3, 0, 0)));
+  const Mesh tori = ToMesh(two);
+  ASSERT_EQ(Genus(tori.tri), 2);
+  const std::vector<double> bound(tori.tri.n_vertices(), 0.5);
+  EXPECT_EQ(ShortHandleStrips(tori.tri, bound, 2).cut_count, 2);
+  EXPECT_EQ(ShortHandleStrips(tori.tri, bound, 1).cut_count, 1);
+  EXPECT_EQ(ShortHandleStrips(tori.tri, bound, 0).cut_count, 0);
+}
+
+}  // namespace
+}  // namespace meshseg::reconstruct_internal
