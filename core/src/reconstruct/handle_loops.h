@@ -7,13 +7,15 @@
 // of the sampling, so the points cannot tell it from a surface without it;
 // the reconstruction's implicit function closes it across near-contact gaps
 // (two sheets within a spacing or two, a slot narrower than the noise). Each
-// vertex v grows a geodesic ball (Dijkstra over the mesh edges) of radius
-// max_loop(v) / 2, which holds every loop through v of length max_loop(v).
-// The loops through v that are not contractible in the ball come from a
-// tree-cotree decomposition of the ball (the shortest-path tree from v, a
-// spanning tree of the dual graph with the ball's border as one node, taken
-// greedily longest loop first; Erickson & Whittlesey 2005): the shortest
-// leftover edge closes the shortest such loop through v.
+// seed v grows a geodesic ball (Dijkstra over the mesh edges) of radius
+// max_loop(v) / 2 (widened by one edge, below), which holds every loop
+// through v of length max_loop(v). A ball of Euler characteristic 1 is a
+// disc and holds none that is not contractible; otherwise such loops come
+// from a tree-cotree decomposition of the ball (the shortest-path tree from
+// v, a spanning tree of the dual graph with the ball's border as one node,
+// taken greedily longest loop first; Erickson & Whittlesey 2005): the
+// shortest leftover edge closes the shortest such loop through v, and its
+// tail to v is dropped. Whether a loop is a handle is handle_strips.h's test.
 #ifndef MESHSEG_RECONSTRUCT_HANDLE_LOOPS_H_
 #define MESHSEG_RECONSTRUCT_HANDLE_LOOPS_H_
 

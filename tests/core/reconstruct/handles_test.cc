@@ -93,41 +93,46 @@ void ExpectClosedManifold(const TriMesh& m) {
 
 // Through the whole reconstruction: a horseshoe (tube radius 0.25, 6000
 // points, spacing h 0.042) whose conical tips point at each other across
-// half a spacing. The points cannot show that gap; the implicit function
-// closes it into a thin neck, a handle the truth (genus 0) does not have.
-// Its waist is under two spacings across, so it is cut there and both
-// sides capped: genus 0, watertight, the patches at the tips.
+// half a spacing. The points cannot show that gap; on some draws the
+// implicit function closes it into a thin neck, a handle the truth (genus 0)
+// does not have (1 of the 8 draws below, measured; the others keep the tips
+// apart). Its waist is under two spacings across, so it is cut there and
+// both sides capped: every draw comes out genus 0 and watertight, with any
+// patches at the tips.
 TEST(ReconstructHandles, ANeckAcrossAGapTheSamplingCannotShowIsCut) {
   constexpr double R = 1.0, r = 0.25, H = 0.25;
   constexpr int kPoints = 6000;
   const double h = test::Spacing(test::Horseshoe(R, r, H, test::HorseshoeAngle(R, H, 0)), kPoints);
   const double phi0 = test::HorseshoeAngle(R, H, 0.5 * h);
   const test::Shape shape = test::Horseshoe(R, r, H, phi0);
-  const PointCloud cloud =
-      test::MakeCloud(shape, test::CloudSpec{.points = kPoints, .normals = false});
-  const auto r0 = Reconstruct(cloud, ReconstructParams{.handle_spacings = 0});
-  ASSERT_TRUE(r0.ok()) << r0.status();
-  ASSERT_EQ(r0->stats.genus, 1) << "the neck this test is about did not form";
-  const auto r1 = Reconstruct(cloud);
-  ASSERT_TRUE(r1.ok()) << r1.status();
-  EXPECT_EQ(r1->stats.genus, 0);
-  EXPECT_EQ(Genus(r1->mesh.tri), 0);
-  EXPECT_EQ(r1->stats.handle_cut_count, 1);
-  ExpectClosedManifold(r1->mesh.tri);
-  ASSERT_EQ(r1->is_filled.size(), r1->mesh.tri.n_faces());
   const Eigen::Vector3d tips(R * std::cos(phi0) + H * std::sin(phi0), 0, 0);
-  int filled = 0;
-  for (const auto f : r1->mesh.tri.faces()) {
-    if (!r1->is_filled[f.idx()]) continue;
-    ++filled;
-    for (const auto v : r1->mesh.tri.fv_range(f)) {
-      EXPECT_LT((ToEigen(r1->mesh.tri.point(v)) - tips).norm(), 4 * h);
+  int necks = 0;
+  for (unsigned seed = 1; seed <= 8; ++seed) {
+    const PointCloud cloud = test::MakeCloud(
+        shape, test::CloudSpec{.points = kPoints, .normals = false, .seed = seed});
+    const auto rec = Reconstruct(cloud);
+    ASSERT_TRUE(rec.ok()) << rec.status();
+    necks += rec->stats.genus_before_support > 0;
+    EXPECT_EQ(rec->stats.genus, 0) << "draw " << seed;
+    EXPECT_EQ(Genus(rec->mesh.tri), 0) << "draw " << seed;
+    EXPECT_EQ(rec->stats.handle_cut_count, rec->stats.genus_before_support) << "draw " << seed;
+    ExpectClosedManifold(rec->mesh.tri);
+    ASSERT_EQ(rec->is_filled.size(), rec->mesh.tri.n_faces());
+    int filled = 0;
+    for (const auto f : rec->mesh.tri.faces()) {
+      if (!rec->is_filled[f.idx()]) continue;
+      ++filled;
+      for (const auto v : rec->mesh.tri.fv_range(f)) {
+        EXPECT_LT((ToEigen(rec->mesh.tri.point(v)) - tips).norm(), 4 * h) << "draw " << seed;
+      }
     }
+    EXPECT_EQ(filled, rec->stats.filled_face_count);
+    EXPECT_EQ(filled > 0, rec->stats.handle_cut_count > 0) << "draw " << seed;
+    // The rest of the surface is where it was: within a spacing of the truth.
+    EXPECT_GT(test::FractionWithin(rec->mesh.tri, shape, h), 0.99) << "draw " << seed;
   }
-  EXPECT_GT(filled, 0);
-  EXPECT_EQ(filled, r1->stats.filled_face_count);
-  // The rest of the surface is where it was: within a spacing of the truth.
-  EXPECT_GT(test::FractionWithin(r1->mesh.tri, shape, h), 0.99);
+  ::testing::Test::RecordProperty("necks", necks);
+  EXPECT_GT(necks, 0) << "no draw formed the neck this test is about";
 }
 
 // A plate 2 × 2 × 0.4 with a hole of diameter 0.3 through it (6000 points,
@@ -139,10 +144,10 @@ TEST(ReconstructHandles, AHoleSeveralSpacingsWideStays) {
       test::MakeCloud(plate, test::CloudSpec{.points = 6000, .normals = false});
   const auto r = Reconstruct(cloud);
   ASSERT_TRUE(r.ok()) << r.status();
+  // The hole's handle stays; others are spurious (tunnels of three edges
+  // where the refinement's creases meet, measured: 2 of them here) and cut.
   EXPECT_EQ(r->stats.genus, 1);
   EXPECT_EQ(Genus(r->mesh.tri), 1);
-  // Any other handle was a spurious one and was cut (tunnels of three edges
-  // where the refinement's creases meet, measured).
   EXPECT_EQ(r->stats.handle_cut_count, r->stats.genus_before_support - 1);
   ExpectClosedManifold(r->mesh.tri);
   // The hole is open: no surface near its axis.
