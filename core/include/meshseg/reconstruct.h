@@ -99,12 +99,13 @@ struct ReconstructParams {
   // that loop and both holes closed by minimal patches, flagged in
   // Reconstruction::is_filled. 2: every point of a surface sampled at
   // spacing s lies within about s of a sample, so a hole no wider than 2 s
-  // looks like the gaps between samples and the points do not show it. (Of
-  // the ABC scan's 137 spurious handles 126 are cut at 2; at 3 the truth's
-  // narrowest hole, in a sparse area, would be cut too.) 0 keeps every handle.
+  // looks like the gaps between samples and the points do not show it. (On a
+  // simulated scan of uneven density, 126 of 137 spurious handles are cut at
+  // 2; at 3 the truth's narrowest hole, in a sparse area, would be cut too.)
+  // 0 keeps every handle.
   double handle_spacings = 2.0;
-  // Leave the unsupported areas open instead of closing them (`--open`):
-  // every edge then has one or two faces.
+  // Leave the unsupported areas (and the cuts of unsupported handles) open
+  // instead of closing them (`--open`): every edge then has one or two faces.
   bool leave_unsupported_open = false;
   // Sharp edges kept (issue 38 item 3; our addition, reconstruct/crease.h):
   // where the points around a refined vertex lie on two planes meeting at an

@@ -41,16 +41,18 @@ struct Cut {
 };
 
 // A torus of tube radius r sampled by `count` points, its handles cut at the
-// default handle_spacings; face 0 is flagged as filled before.
-Cut CutTorus(double r, int count) {
+// default handle_spacings (the holes left open with `open`); face 0 is
+// flagged as filled before.
+Cut CutTorus(double r, int count, bool open = false) {
   const TubeMesh tube = TorusTubeMesh(1.0, r, 128, 8);
   const std::vector<Eigen::Vector3d> points = TorusSamples(1.0, r, count);
   const mesh_internal::PointIndex index(points);
   Cut out{*SurfaceMesh(tube.vertices, tube.triangles, "torus"), {}, {}};
   out.filled.assign(out.mesh.tri.n_faces(), 0);
   out.filled[0] = 1;
-  const absl::Status status =
-      CutUnsupportedHandles(points, index, {}, &out.mesh, &out.filled, &out.stats);
+  const absl::Status status = CutUnsupportedHandles(
+      points, index, ReconstructParams{.leave_unsupported_open = open}, &out.mesh, &out.filled,
+      &out.stats);
   EXPECT_TRUE(status.ok()) << status;
   return out;
 }
@@ -74,6 +76,18 @@ TEST(CutUnsupportedHandles, CutsATubeThinnerThanTheSampling) {
   const double octagons = 2 * 0.5 * 8 * 0.05 * 0.05 * std::sin(M_PI / 4);
   EXPECT_GT(c.stats.filled_area, octagons);
   EXPECT_LT(c.stats.filled_area, 1.3 * octagons);
+}
+
+// `--open`: the cut strip's two border loops stay open, nothing is filled
+// but the prior face; the surface is a cylinder (genus 0, two loops).
+TEST(CutUnsupportedHandles, OpenLeavesBothLoopsOfTheCut) {
+  const Cut c = CutTorus(0.05, 600, true);
+  EXPECT_EQ(c.stats.handle_cut_count, 1);
+  EXPECT_EQ(c.stats.hole_count, 2);
+  EXPECT_EQ(Genus(c.mesh.tri), 0);
+  EXPECT_EQ(test::BoundaryEdgeCount(c.mesh.tri), 2 * 8);
+  EXPECT_EQ(test::NonManifoldVertexCount(c.mesh.tri), 0);
+  EXPECT_EQ(std::count(c.filled.begin(), c.filled.end(), 1), 1);
 }
 
 // The same torus sampled 32 times as densely (spacing 0.01, bound 0.064):
