@@ -83,43 +83,60 @@ std::vector<int> StarOf(const MeshGraph& g, const std::vector<int>& vertices) {
   return star;
 }
 
-// Whether the faces around the strip `cut` (with `removed` already cut) stay
+// Whether the faces around `strip` (with `removed` already cut) stay
 // connected to each other without it: the strip's loop does not separate.
+// A search grows from every face next to the strip at once, in turns, and
+// fronts that meet merge; the answer is known when one front is left (no
+// separation) or a front runs out of faces (it closed off a side), so a
+// loop that cuts off a small piece costs that piece, not the surface.
 bool StripKeepsSurfaceConnected(const MeshGraph& g, const std::vector<uint8_t>& removed,
                                 const std::vector<int>& strip, std::vector<uint32_t>* seen,
-                                uint32_t stamp) {
-  std::vector<int> border;  // kept faces next to the strip
+                                std::vector<int>* owner, uint32_t stamp) {
+  const uint32_t visit = stamp + 1;
   for (const int f : strip) (*seen)[f] = stamp;  // blocked
+  std::vector<std::vector<int>> front;
+  std::vector<int> parent;
   for (const int f : strip) {
     for (const int e : g.face_edges[f]) {
       for (const int o : g.edge_faces[e]) {
-        if (o >= 0 && !removed[o] && (*seen)[o] != stamp) border.push_back(o);
-      }
-    }
-  }
-  if (border.empty()) return false;
-  const uint32_t visit = stamp + 1;
-  size_t to_find = 0;
-  for (const int f : border) {
-    if ((*seen)[f] != visit + 1) ++to_find;
-    (*seen)[f] = visit + 1;  // a border face not reached yet
-  }
-  std::vector<int> stack = {border[0]};
-  (*seen)[border[0]] = visit;
-  --to_find;
-  while (!stack.empty() && to_find > 0) {
-    const int f = stack.back();
-    stack.pop_back();
-    for (const int e : g.face_edges[f]) {
-      for (const int o : g.edge_faces[e]) {
-        if (o < 0 || removed[o] || (*seen)[o] == visit || (*seen)[o] == stamp) continue;
-        if ((*seen)[o] == visit + 1) --to_find;
+        if (o < 0 || removed[o] || (*seen)[o] == stamp || (*seen)[o] == visit) continue;
         (*seen)[o] = visit;
-        stack.push_back(o);
+        (*owner)[o] = static_cast<int>(front.size());
+        parent.push_back(static_cast<int>(front.size()));
+        front.push_back({o});
       }
     }
   }
-  return to_find == 0;
+  int groups = static_cast<int>(front.size());
+  if (groups == 0) return false;
+  while (groups > 1) {
+    for (int i = 0; i < static_cast<int>(front.size()) && groups > 1; ++i) {
+      if (Find(parent, i) != i) continue;
+      if (front[i].empty()) return false;  // a side closed off
+      const int f = front[i].back();
+      front[i].pop_back();
+      for (const int e : g.face_edges[f]) {
+        for (const int o : g.edge_faces[e]) {
+          if (o < 0 || removed[o] || (*seen)[o] == stamp) continue;
+          const int here = Find(parent, i);
+          if ((*seen)[o] == visit) {
+            int a = here, b = Find(parent, (*owner)[o]);
+            if (a == b) continue;
+            if (front[a].size() < front[b].size()) std::swap(a, b);
+            front[a].insert(front[a].end(), front[b].begin(), front[b].end());
+            front[b].clear();
+            parent[b] = a;
+            --groups;
+            continue;
+          }
+          (*seen)[o] = visit;
+          (*owner)[o] = here;
+          front[here].push_back(o);
+        }
+      }
+    }
+  }
+  return true;
 }
 
 }  // namespace
@@ -135,6 +152,7 @@ HandleStrips ShortHandleStrips(const TriMesh& tri, const std::vector<double>& ma
   // 0 free, 1 on a cut strip, 2 on a loop found to separate.
   std::vector<uint8_t> state(tri.n_vertices(), 0);
   std::vector<uint32_t> seen(tri.n_faces(), 0);
+  std::vector<int> owner(tri.n_faces(), 0);
   uint32_t stamp = 1;
   std::vector<int> strip;
   for (const HandleLoop& loop : loops) {
@@ -164,7 +182,7 @@ HandleStrips ShortHandleStrips(const TriMesh& tri, const std::vector<double>& ma
     if (touches_cut) continue;
     ++out.check_count;
     stamp += 3;
-    const bool keeps = StripKeepsSurfaceConnected(g, out.cut, strip, &seen, stamp);
+    const bool keeps = StripKeepsSurfaceConnected(g, out.cut, strip, &seen, &owner, stamp);
     if (!keeps) {
       for (const int v : loop.vertices) state[v] = 2;
       continue;
