@@ -37,8 +37,8 @@ bool IsAnnulus(const MeshGraph& g, const std::vector<int>& strip) {
       if (!edges.insert(e).second) continue;
       const int other = g.edge_faces[e][0] == f ? g.edge_faces[e][1] : g.edge_faces[e][0];
       if (in_strip(other)) {
-        const int j = static_cast<int>(std::lower_bound(strip.begin(), strip.end(), other) -
-                                       strip.begin());
+        const int j =
+            static_cast<int>(std::lower_bound(strip.begin(), strip.end(), other) - strip.begin());
         parent[Find(parent, static_cast<int>(i))] = Find(parent, j);
       } else {
         ++border_degree[u];
@@ -170,8 +170,8 @@ HandleStrips ShortHandleStrips(const TriMesh& tri, const std::vector<double>& ma
     strip = StarOf(g, loop.vertices);
     for (int ring = 0; ring < kMaxStripGrowth && !IsAnnulus(g, strip); ++ring) {
       std::vector<int> vertices;
-      for (const int f : strip) vertices.insert(vertices.end(), g.face_vertices[f].begin(),
-                                                g.face_vertices[f].end());
+      for (const int f : strip)
+        vertices.insert(vertices.end(), g.face_vertices[f].begin(), g.face_vertices[f].end());
       strip = StarOf(g, vertices);
     }
     if (!IsAnnulus(g, strip)) continue;

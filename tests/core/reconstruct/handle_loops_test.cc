@@ -1,8 +1,8 @@
 #include "reconstruct/handle_loops.h"
 
-#include <vector>
-
 #include <gtest/gtest.h>
+
+#include <vector>
 
 #include "reconstruct/surface_mesh.h"
 #include "tube_meshes.h"
@@ -54,7 +54,8 @@ TEST(ShortLoops, LooksOnlyNearTheFlaggedVertices) {
     for (const int v : l.vertices) EXPECT_LT(v, static_cast<int>(torus_vertices));
   }
   bool rod = false;
-  for (const HandleLoop& l : ShortLoops(g, bound)) rod |= l.vertices[0] >= static_cast<int>(torus_vertices);
+  for (const HandleLoop& l : ShortLoops(g, bound))
+    rod |= l.vertices[0] >= static_cast<int>(torus_vertices);
   EXPECT_TRUE(rod);
 }
 

@@ -1,17 +1,17 @@
 #include "reconstruct/handles.h"
 
+#include <gtest/gtest.h>
+
 #include <algorithm>
 #include <cmath>
 #include <vector>
 
-#include <gtest/gtest.h>
-
 #include "clouds.h"
+#include "handle_clouds.h"
 #include "mesh/point_index.h"
+#include "meshseg/reconstruct.h"
 #include "reconstruct/close_unsupported.h"
 #include "reconstruct/surface_mesh.h"
-#include "handle_clouds.h"
-#include "meshseg/reconstruct.h"
 #include "tube_meshes.h"
 
 namespace meshseg::reconstruct_internal {
@@ -50,9 +50,9 @@ Cut CutTorus(double r, int count, bool open = false) {
   Cut out{*SurfaceMesh(tube.vertices, tube.triangles, "torus"), {}, {}};
   out.filled.assign(out.mesh.tri.n_faces(), 0);
   out.filled[0] = 1;
-  const absl::Status status = CutUnsupportedHandles(
-      points, index, ReconstructParams{.leave_unsupported_open = open}, &out.mesh, &out.filled,
-      &out.stats);
+  const absl::Status status =
+      CutUnsupportedHandles(points, index, ReconstructParams{.leave_unsupported_open = open},
+                            &out.mesh, &out.filled, &out.stats);
   EXPECT_TRUE(status.ok()) << status;
   return out;
 }
@@ -122,8 +122,8 @@ TEST(ReconstructHandles, ANeckAcrossAGapTheSamplingCannotShowIsCut) {
   const Eigen::Vector3d tips(R * std::cos(phi0) + H * std::sin(phi0), 0, 0);
   int necks = 0;
   for (unsigned seed = 1; seed <= 8; ++seed) {
-    const PointCloud cloud = test::MakeCloud(
-        shape, test::CloudSpec{.points = kPoints, .normals = false, .seed = seed});
+    const PointCloud cloud =
+        test::MakeCloud(shape, test::CloudSpec{.points = kPoints, .normals = false, .seed = seed});
     const auto rec = Reconstruct(cloud);
     ASSERT_TRUE(rec.ok()) << rec.status();
     necks += rec->stats.genus_before_support > 0;

@@ -4,12 +4,11 @@
 #ifndef MESHSEG_TESTS_CORE_RECONSTRUCT_TUBE_MESHES_H_
 #define MESHSEG_TESTS_CORE_RECONSTRUCT_TUBE_MESHES_H_
 
+#include <Eigen/Core>
 #include <array>
 #include <cmath>
 #include <random>
 #include <vector>
-
-#include <Eigen/Core>
 
 struct TubeMesh {
   std::vector<Eigen::Vector3d> vertices;
@@ -19,7 +18,8 @@ struct TubeMesh {
   void Add(const TubeMesh& other) {
     const int base = static_cast<int>(vertices.size());
     vertices.insert(vertices.end(), other.vertices.begin(), other.vertices.end());
-    for (const auto& t : other.triangles) triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
+    for (const auto& t : other.triangles)
+      triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
   }
 };
 
@@ -48,13 +48,14 @@ inline TubeMesh TorusTubeMesh(double R, double r, int nu, int nv,
 
 // Rod along z from `base`: radius r, length `length`, n vertices round it,
 // `rings` + 1 rings along it, each end closed by a fan.
-inline TubeMesh RodTubeMesh(double r, double length, int n, int rings, const Eigen::Vector3d& base) {
+inline TubeMesh RodTubeMesh(double r, double length, int n, int rings,
+                            const Eigen::Vector3d& base) {
   TubeMesh m;
   for (int k = 0; k <= rings; ++k) {
     for (int i = 0; i < n; ++i) {
       const double u = 2 * M_PI * i / n;
-      m.vertices.push_back(base + Eigen::Vector3d(r * std::cos(u), r * std::sin(u),
-                                                  length * k / rings));
+      m.vertices.push_back(base +
+                           Eigen::Vector3d(r * std::cos(u), r * std::sin(u), length * k / rings));
     }
   }
   const auto id = [&](int i, int k) { return k * n + i % n; };
@@ -77,9 +78,8 @@ inline TubeMesh RodTubeMesh(double r, double length, int n, int rings, const Eig
 
 // `count` points uniform by area on the torus above (rejection on the
 // tube angle), fixed seed.
-inline std::vector<Eigen::Vector3d> TorusSamples(double R, double r, int count,
-                                                 const Eigen::Vector3d& center =
-                                                     Eigen::Vector3d::Zero()) {
+inline std::vector<Eigen::Vector3d> TorusSamples(
+    double R, double r, int count, const Eigen::Vector3d& center = Eigen::Vector3d::Zero()) {
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> angle(0.0, 2 * M_PI), accept(0.0, 1.0);
   std::vector<Eigen::Vector3d> points;
