@@ -1,14 +1,14 @@
 #include "reconstruct/handle_loops.h"
 
-#include <tbb/blocked_range.h>
-#include <tbb/enumerable_thread_specific.h>
-#include <tbb/parallel_for.h>
-
 #include <algorithm>
 #include <array>
 #include <functional>
 #include <queue>
 #include <utility>
+
+#include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
 
 namespace meshseg::reconstruct_internal {
 namespace {

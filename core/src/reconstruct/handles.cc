@@ -1,11 +1,11 @@
 #include "reconstruct/handles.h"
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-
 #include <algorithm>
 #include <cmath>
 #include <utility>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
 
 #include "meshseg/status_macros.h"
 #include "reconstruct/close_unsupported.h"

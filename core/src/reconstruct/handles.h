@@ -12,9 +12,10 @@
 #ifndef MESHSEG_RECONSTRUCT_HANDLES_H_
 #define MESHSEG_RECONSTRUCT_HANDLES_H_
 
-#include <Eigen/Core>
 #include <cstdint>
 #include <vector>
+
+#include <Eigen/Core>
 
 #include "absl/status/status.h"
 #include "mesh/point_index.h"

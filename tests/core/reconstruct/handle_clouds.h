@@ -5,10 +5,11 @@
 #ifndef MESHSEG_TESTS_CORE_RECONSTRUCT_HANDLE_CLOUDS_H_
 #define MESHSEG_TESTS_CORE_RECONSTRUCT_HANDLE_CLOUDS_H_
 
-#include <Eigen/Core>
 #include <algorithm>
 #include <cmath>
 #include <random>
+
+#include <Eigen/Core>
 
 #include "clouds.h"
 

@@ -1,8 +1,8 @@
 #include "reconstruct/handle_loops.h"
 
-#include <gtest/gtest.h>
-
 #include <vector>
+
+#include <gtest/gtest.h>
 
 #include "reconstruct/surface_mesh.h"
 #include "tube_meshes.h"

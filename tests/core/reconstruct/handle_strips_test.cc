@@ -1,8 +1,8 @@
 #include "reconstruct/handle_strips.h"
 
-#include <gtest/gtest.h>
-
 #include <vector>
+
+#include <gtest/gtest.h>
 
 #include "clouds.h"
 #include "reconstruct/close_unsupported.h"

@@ -1,17 +1,17 @@
 #include "reconstruct/handles.h"
 
-#include <gtest/gtest.h>
-
 #include <algorithm>
 #include <cmath>
 #include <vector>
 
+#include <gtest/gtest.h>
+
 #include "clouds.h"
-#include "handle_clouds.h"
 #include "mesh/point_index.h"
-#include "meshseg/reconstruct.h"
 #include "reconstruct/close_unsupported.h"
 #include "reconstruct/surface_mesh.h"
+#include "handle_clouds.h"
+#include "meshseg/reconstruct.h"
 #include "tube_meshes.h"
 
 namespace meshseg::reconstruct_internal {

@@ -4,11 +4,12 @@
 #ifndef MESHSEG_TESTS_CORE_RECONSTRUCT_TUBE_MESHES_H_
 #define MESHSEG_TESTS_CORE_RECONSTRUCT_TUBE_MESHES_H_
 
-#include <Eigen/Core>
 #include <array>
 #include <cmath>
 #include <random>
 #include <vector>
+
+#include <Eigen/Core>
 
 struct TubeMesh {
   std::vector<Eigen::Vector3d> vertices;
