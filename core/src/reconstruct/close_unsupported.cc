@@ -153,7 +153,7 @@ int Components(const TriMesh& tri) {
 
 }  // namespace
 
-int Genus(const TriMesh& tri) {
+int64_t BorderLoopCount(const TriMesh& tri) {
   int64_t loops = 0;
   std::vector<uint8_t> seen(tri.n_halfedges(), 0);
   for (const auto h : tri.halfedges()) {
@@ -161,6 +161,11 @@ int Genus(const TriMesh& tri) {
     ++loops;
     for (auto g = h; !seen[g.idx()]; g = tri.next_halfedge_handle(g)) seen[g.idx()] = 1;
   }
+  return loops;
+}
+
+int Genus(const TriMesh& tri) {
+  const int64_t loops = BorderLoopCount(tri);
   const int64_t chi = static_cast<int64_t>(tri.n_vertices()) - static_cast<int64_t>(tri.n_edges()) +
                       static_cast<int64_t>(tri.n_faces());
   return static_cast<int>((2 * Components(tri) - chi - loops) / 2);

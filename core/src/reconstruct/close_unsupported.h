@@ -52,6 +52,9 @@ absl::StatusOr<ClosedSurface> CloseUnsupported(const Mesh& mesh,
 // and B border loops (a closed mesh has B = 0).
 int Genus(const TriMesh& tri);
 
+// Border loops of `tri` (0 when closed).
+int64_t BorderLoopCount(const TriMesh& tri);
+
 }  // namespace meshseg::reconstruct_internal
 
 #endif  // MESHSEG_RECONSTRUCT_CLOSE_UNSUPPORTED_H_

@@ -151,6 +151,13 @@ HandleStrips ShortHandleStrips(const TriMesh& tri, const std::vector<double>& ma
   out.loop_count = static_cast<int64_t>(loops.size());
   // 0 free, 1 on a cut strip, 2 on a loop found to separate.
   std::vector<uint8_t> state(tri.n_vertices(), 0);
+  std::vector<uint8_t> on_border(tri.n_vertices(), 0);
+  for (size_t v = 0; v + 1 < g.ring_begin.size(); ++v) {
+    for (int k = g.ring_begin[v]; k < g.ring_begin[v + 1]; ++k) {
+      const auto& faces = g.edge_faces[g.edge[k]];
+      on_border[v] |= faces[0] < 0 || faces[1] < 0;
+    }
+  }
   std::vector<uint32_t> seen(tri.n_faces(), 0);
   std::vector<int> owner(tri.n_faces(), 0);
   uint32_t stamp = 1;
@@ -175,9 +182,11 @@ HandleStrips ShortHandleStrips(const TriMesh& tri, const std::vector<double>& ma
       strip = StarOf(g, vertices);
     }
     if (!IsAnnulus(g, strip)) continue;
+    // Nor may it touch a border (a surface left open): a strip along a
+    // border widens the hole and only seems not to separate.
     bool touches_cut = false;
     for (const int f : strip) {
-      for (const int v : g.face_vertices[f]) touches_cut |= state[v] == 1;
+      for (const int v : g.face_vertices[f]) touches_cut |= state[v] == 1 || on_border[v];
     }
     if (touches_cut) continue;
     ++out.check_count;

@@ -50,7 +50,7 @@ absl::Status CutUnsupportedHandles(const std::vector<Eigen::Vector3d>& points,
                              CloseUnsupported(*mesh, supported, params.min_component_fraction,
                                               params.leave_unsupported_open, before));
     stats->handle_cut_count += strips.cut_count;
-    stats->hole_count += closed.hole_count;
+    stats->hole_count += closed.hole_count - BorderLoopCount(mesh->tri);
     stats->filled_area = closed.filled_area;
     *mesh = std::move(closed.mesh);
     *filled = std::move(closed.filled);
@@ -62,6 +62,8 @@ absl::Status CutUnsupportedHandles(const std::vector<Eigen::Vector3d>& points,
       }
       flag = flag != 0;
     }
+    // Left open (leave_unsupported_open), a cut is a border instead.
+    for (const auto v : mesh->tri.vertices()) near[v.idx()] |= mesh->tri.is_boundary(v);
     stats->filled_face_count = std::count(filled->begin(), filled->end(), 1);
   }
   return absl::OkStatus();
