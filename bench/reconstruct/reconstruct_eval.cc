@@ -7,6 +7,8 @@
 // completeness  area samples of TRUTH → MESH; "visible" only the samples
 //               within S sp (default 3) of a cloud point
 // off points    share of MESH's area farther than 3 sp from every cloud point
+// far faces     share of MESH's area over 3.5 sp from TRUTH, how much of it is
+//               farther than 3 sp from every cloud point, and its height
 // topology      open / non-manifold edges and vertices as the file has them,
 //               components, total genus of MESH and of TRUTH
 // --error-ply   MESH's faces coloured by the distance of their centroid to
@@ -15,6 +17,7 @@
 // --missing-ply TRUTH's faces coloured likewise by the distance of their
 //               centroid to MESH, faces farther than S sp from every point
 //               in black
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
@@ -130,5 +133,30 @@ int main(int argc, char** argv) {
   }
   std::printf("off points    %.2f %% of the mesh area farther than 3 sp from every point\n",
               100.0 * off / samples);
+  // Where the mesh is far from the truth (over the 3.5 sp accuracy bar):
+  // how much of it lies where no point is (surface the points did not give:
+  // patches) and at which height of the truth's bounding box (0 bottom, 1 top).
+  Eigen::Vector3d lo = Eigen::Vector3d::Constant(1e300), hi = -lo;
+  for (const auto v : truth->tri.vertices()) {
+    lo = lo.cwiseMin(ToEigen(truth->tri.point(v)));
+    hi = hi.cwiseMax(ToEigen(truth->tri.point(v)));
+  }
+  std::vector<double> far_height;
+  int64_t far_off = 0;
+  for (const auto& p : mesh_samples) {
+    if (to_truth(p) <= 3.5 * sp) continue;
+    far_height.push_back((p.z() - lo.z()) / (hi.z() - lo.z()));
+    far_off += !near_cloud(p, 3.0 * sp);
+  }
+  std::sort(far_height.begin(), far_height.end());
+  if (!far_height.empty()) {
+    std::printf(
+        "far faces     %.2f %% of the mesh area over 3.5 sp from the truth; %.1f %% of that "
+        "farther than 3 sp from every point; height in the truth's box p10 %.2f p50 %.2f p90 "
+        "%.2f\n",
+        100.0 * far_height.size() / samples, 100.0 * far_off / far_height.size(),
+        test::Quantile(far_height, 0.1), test::Quantile(far_height, 0.5),
+        test::Quantile(far_height, 0.9));
+  }
   return 0;
 }

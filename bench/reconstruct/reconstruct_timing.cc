@@ -4,7 +4,8 @@
 // name=value sets a ReconstructParams field: error_tolerance, leaf_cell_size,
 // graph_cut_k, refine_edge_length, projection_radius, outlier_distance,
 // off_surface_distance, min_component_fraction, smoothing_iterations,
-// use_graph_cut, seed, support_spacings, leave_unsupported_open, sharp_creases.
+// use_graph_cut, seed, support_spacings, handle_spacings, leave_unsupported_open,
+// sharp_creases.
 #include <sys/resource.h>
 
 #include <chrono>
@@ -44,6 +45,7 @@ bool SetParam(const std::string& name, double value, meshseg::ReconstructParams*
       {"off_surface_distance", &p->off_surface_distance},
       {"min_component_fraction", &p->min_component_fraction},
       {"support_spacings", &p->support_spacings},
+      {"handle_spacings", &p->handle_spacings},
   };
   if (const auto it = fields.find(name); it != fields.end()) {
     *it->second = value;
@@ -127,9 +129,11 @@ int main(int argc, char** argv) {
       (long long)st.dropped_component_count, st.refine_edge_length,
       (long long)st.unsupported_vertex_count, r->mesh.tri.n_vertices(), r->mesh.tri.n_faces());
   std::printf(
-      "support: %lld faces removed, %lld holes, %lld faces filled (area %.6g), genus %d -> %d\n",
-      (long long)st.unsupported_face_count, (long long)st.hole_count,
-      (long long)st.filled_face_count, st.filled_area, st.genus_before_support, st.genus);
+      "support: %lld faces removed, %lld handles cut, %lld holes, %lld faces filled (area "
+      "%.6g), genus %d -> %d\n",
+      (long long)st.unsupported_face_count, (long long)st.handle_cut_count,
+      (long long)st.hole_count, (long long)st.filled_face_count, st.filled_area,
+      st.genus_before_support, st.genus);
   std::printf(
       "creases: %lld vertices on a crease, %lld moved onto its line, %lld added on it; %lld "
       "stretched edges split\n",

@@ -80,8 +80,10 @@ bool RemoveSmallPieces(const TriMesh& tri, double min_fraction, std::vector<uint
   return changed;
 }
 
-// The kept faces as a Surface_mesh; `filled` is 1 on every face added later.
-Sm KeptFaces(const TriMesh& tri, const std::vector<uint8_t>& removed) {
+// The kept faces as a Surface_mesh; `filled` is 1 on every face added later
+// and on kept faces flagged in `prior_filled` (if not empty).
+Sm KeptFaces(const TriMesh& tri, const std::vector<uint8_t>& removed,
+             const std::vector<uint8_t>& prior_filled) {
   Sm sm;
   std::vector<Sm::Vertex_index> vertex(tri.n_vertices());
   std::vector<uint8_t> used(tri.n_vertices(), 0);
@@ -94,15 +96,15 @@ Sm KeptFaces(const TriMesh& tri, const std::vector<uint8_t>& removed) {
     const auto& p = tri.point(v);
     vertex[v.idx()] = sm.add_vertex(Kernel::Point_3(p[0], p[1], p[2]));
   }
+  auto filled = sm.add_property_map<Sm::Face_index, uint8_t>("f:filled", 1).first;
   for (const auto f : tri.faces()) {
     if (removed[f.idx()]) continue;
     std::array<Sm::Vertex_index, 3> corner;
     int k = 0;
     for (const auto v : tri.fv_range(f)) corner[k++] = vertex[v.idx()];
-    sm.add_face(corner[0], corner[1], corner[2]);
+    filled[sm.add_face(corner[0], corner[1], corner[2])] =
+        prior_filled.empty() ? 0 : prior_filled[f.idx()];
   }
-  auto filled = sm.add_property_map<Sm::Face_index, uint8_t>("f:filled", 1).first;
-  for (const auto f : sm.faces()) filled[f] = 0;
   return sm;
 }
 
@@ -151,7 +153,7 @@ int Components(const TriMesh& tri) {
 
 }  // namespace
 
-int Genus(const TriMesh& tri) {
+int64_t BorderLoopCount(const TriMesh& tri) {
   int64_t loops = 0;
   std::vector<uint8_t> seen(tri.n_halfedges(), 0);
   for (const auto h : tri.halfedges()) {
@@ -159,6 +161,11 @@ int Genus(const TriMesh& tri) {
     ++loops;
     for (auto g = h; !seen[g.idx()]; g = tri.next_halfedge_handle(g)) seen[g.idx()] = 1;
   }
+  return loops;
+}
+
+int Genus(const TriMesh& tri) {
+  const int64_t loops = BorderLoopCount(tri);
   const int64_t chi = static_cast<int64_t>(tri.n_vertices()) - static_cast<int64_t>(tri.n_edges()) +
                       static_cast<int64_t>(tri.n_faces());
   return static_cast<int>((2 * Components(tri) - chi - loops) / 2);
@@ -166,7 +173,8 @@ int Genus(const TriMesh& tri) {
 
 absl::StatusOr<ClosedSurface> CloseUnsupported(const Mesh& mesh,
                                                const std::vector<uint8_t>& supported,
-                                               double min_component_fraction, bool leave_open) {
+                                               double min_component_fraction, bool leave_open,
+                                               const std::vector<uint8_t>& prior_filled) {
   const TriMesh& tri = mesh.tri;
   ClosedSurface out;
   std::vector<uint8_t> removed(tri.n_faces());
@@ -187,10 +195,13 @@ absl::StatusOr<ClosedSurface> CloseUnsupported(const Mesh& mesh,
     // Nothing unsupported, or nothing supported (no surface to close onto).
     out.removed_face_count = 0;
     out.mesh = mesh;
-    out.filled.assign(tri.n_faces(), 0);
+    out.filled = prior_filled.empty() ? std::vector<uint8_t>(tri.n_faces(), 0) : prior_filled;
+    for (const auto f : tri.faces()) {
+      if (out.filled[f.idx()]) out.filled_area += tri.calc_face_area(f);
+    }
     return out;
   }
-  Sm sm = KeptFaces(tri, removed);
+  Sm sm = KeptFaces(tri, removed, prior_filled);
   std::vector<size_t> lengths;
   const std::vector<Sm::Halfedge_index> loops = BorderLoops(sm, &lengths);
   out.hole_count = static_cast<int64_t>(loops.size());

@@ -40,14 +40,20 @@ struct ClosedSurface {
 // 0 (grown as above) and, unless `leave_open`, closes every hole. The result
 // is an oriented manifold; closed unless `leave_open` (then every edge has one
 // or two faces). A loop CGAL cannot triangulate is closed by a fan around its
-// centroid. Errors: INTERNAL if the result breaks these invariants.
+// centroid. `prior_filled` (one per face of `mesh`, or empty) flags faces a
+// previous closing made; kept ones stay flagged in `filled` and count in
+// `filled_area`. Errors: INTERNAL if the result breaks these invariants.
 absl::StatusOr<ClosedSurface> CloseUnsupported(const Mesh& mesh,
                                                const std::vector<uint8_t>& supported,
-                                               double min_component_fraction, bool leave_open);
+                                               double min_component_fraction, bool leave_open,
+                                               const std::vector<uint8_t>& prior_filled = {});
 
 // Total genus of `tri`: (2 C − χ − B) / 2 with C components, χ = V − E + F
 // and B border loops (a closed mesh has B = 0).
 int Genus(const TriMesh& tri);
+
+// Border loops of `tri` (0 when closed).
+int64_t BorderLoopCount(const TriMesh& tri);
 
 }  // namespace meshseg::reconstruct_internal
 

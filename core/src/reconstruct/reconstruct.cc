@@ -13,6 +13,7 @@
 #include "reconstruct/close_unsupported.h"
 #include "reconstruct/cover.h"
 #include "reconstruct/graph_cut.h"
+#include "reconstruct/handles.h"
 #include "reconstruct/marching_tetrahedra.h"
 #include "reconstruct/neighbors.h"
 #include "reconstruct/normals.h"
@@ -86,6 +87,9 @@ absl::Status ValidateParams(const ReconstructParams& p) {
   }
   if (!(p.support_spacings >= 0)) {
     return bad(absl::StrCat("support_spacings ", p.support_spacings, " must be >= 0"));
+  }
+  if (!(p.handle_spacings >= 0)) {
+    return bad(absl::StrCat("handle_spacings ", p.handle_spacings, " must be >= 0"));
   }
   if (!(p.outlier_noise_sigmas > 0)) {
     return bad(absl::StrCat("outlier_noise_sigmas ", p.outlier_noise_sigmas, " must be > 0"));
@@ -281,6 +285,14 @@ absl::StatusOr<Reconstruction> Reconstruct(const PointCloud& cloud, const Recons
     for (const uint8_t f : closed.filled) stats.filled_face_count += f;
     out.mesh = std::move(closed.mesh);
     out.is_filled = std::move(closed.filled);
+    stats.genus = Genus(out.mesh.tri);
+  }
+
+  // Step 9 (our addition, issue 38): no handle the points do not resolve.
+  if (params.handle_spacings > 0 && stats.genus > 0) {
+    ctx.Progress("reconstruct: handles", 0.0);
+    MESHSEG_RETURN_IF_ERROR(
+        CutUnsupportedHandles(points, index, params, &out.mesh, &out.is_filled, &stats));
     stats.genus = Genus(out.mesh.tri);
   }
 

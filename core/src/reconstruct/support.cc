@@ -7,6 +7,16 @@
 
 namespace meshseg::reconstruct_internal {
 
+double SpacingAtPoint(const Eigen::Vector3d& p, const mesh_internal::PointIndex& index,
+                      std::vector<uint32_t>* near, std::vector<double>* dist2) {
+  // p finds itself first.
+  index.Nearest(p, kSpacingNeighbors + 1, near, dist2);
+  double s = 0.0;
+  for (size_t k = 1; k < dist2->size(); ++k) s += std::sqrt((*dist2)[k]);
+  if (dist2->size() > 1) s /= static_cast<double>(dist2->size() - 1);
+  return s;
+}
+
 std::vector<uint8_t> SupportedFaces(const TriMesh& tri, const std::vector<Eigen::Vector3d>& points,
                                     const mesh_internal::PointIndex& index, double spacings,
                                     double band) {
@@ -21,12 +31,7 @@ std::vector<uint8_t> SupportedFaces(const TriMesh& tri, const std::vector<Eigen:
       centroid /= 3.0;
       const Eigen::Vector3d& p = points[index.Closest(centroid)];
       const double d = (p - centroid).norm();
-      // The spacing at p: mean distance to its nearest others (p finds itself first).
-      index.Nearest(p, kSpacingNeighbors + 1, &near, &dist2);
-      double s = 0.0;
-      for (size_t k = 1; k < dist2.size(); ++k) s += std::sqrt(dist2[k]);
-      if (dist2.size() > 1) s /= static_cast<double>(dist2.size() - 1);
-      supported[i] = d <= spacings * s + band;
+      supported[i] = d <= spacings * SpacingAtPoint(p, index, &near, &dist2) + band;
     }
   });
   return supported;

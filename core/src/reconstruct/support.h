@@ -28,6 +28,11 @@ namespace meshseg::reconstruct_internal {
 // Neighbours whose mean distance is the local spacing s (as MeanNeighborDistances).
 inline constexpr int kSpacingNeighbors = 6;
 
+// The local spacing s at input point `p` (one of `points`): the mean distance
+// to its kSpacingNeighbors nearest others. `near` and `dist2` are scratch.
+double SpacingAtPoint(const Eigen::Vector3d& p, const mesh_internal::PointIndex& index,
+                      std::vector<uint32_t>* near, std::vector<double>* dist2);
+
 // Returns one flag per face of `tri`: 1 when the face is supported by
 // `points` (indexed by `index`, at least kSpacingNeighbors + 1 of them), see
 // above; `band` in model units.

@@ -1,0 +1,47 @@
+// The handles among short loops (issue 38 item 1; our addition to the
+// reconstruction of ALGORITHMS.md S3): a loop short in its ball (handle_loops.h)
+// may still be a genuine thin part (a rod's meridian), which separates the
+// surface. The global test is Guskov & Wood's (2001): the strip of faces
+// around the loop (an annulus) is cut only if the surface stays connected
+// without it (the loop is non-separating: a handle), shortest loop first,
+// each cut lowering the genus by one, until the genus is spent.
+#ifndef MESHSEG_RECONSTRUCT_HANDLE_STRIPS_H_
+#define MESHSEG_RECONSTRUCT_HANDLE_STRIPS_H_
+
+#include <cstdint>
+#include <vector>
+
+#include "meshseg/mesh.h"
+
+namespace meshseg::reconstruct_internal {
+
+// Short loops checked against the whole surface (each a search over it) per
+// call at most, separating ones included; bounds the cost on a surface with
+// many thin genuine parts.
+inline constexpr int kMaxLoopChecks = 256;
+
+// A loop's strip (the faces at its vertices) that is not an annulus is grown
+// by a ring of faces at most this many times before the loop is passed over.
+inline constexpr int kMaxStripGrowth = 2;
+
+struct HandleStrips {
+  // One per face of the mesh: 1 = on the strip of faces around a cut loop.
+  std::vector<uint8_t> cut;
+  int64_t cut_count = 0;    // loops cut (each a handle)
+  int64_t loop_count = 0;   // short loops found not contractible in their ball
+  int64_t check_count = 0;  // of those, checked against the whole surface
+};
+
+// Returns the strips of the shortest non-separating loops of `tri` (an
+// oriented manifold, closed or with borders) found by ShortLoops
+// (handle_loops.h) with the bounds max_loop (model units), at most `genus`
+// of them (the total genus of `tri`: no more non-separating loops exist).
+// Strips do not share a vertex. With `near` (one per vertex) not empty, only
+// loops within max_loop of a flagged vertex are looked for (the faces a
+// previous round changed).
+HandleStrips ShortHandleStrips(const TriMesh& tri, const std::vector<double>& max_loop, int genus,
+                               const std::vector<uint8_t>& near = {});
+
+}  // namespace meshseg::reconstruct_internal
+
+#endif  // MESHSEG_RECONSTRUCT_HANDLE_STRIPS_H_

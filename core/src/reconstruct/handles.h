@@ -1,0 +1,49 @@
+// Step 9 of the reconstruction (our addition to ALGORITHMS.md S3, issue 38
+// item 1): the handles the points do not support are cut and their holes
+// closed. A handle is unsupported when it has a non-separating loop shorter
+// than π × handle_spacings local spacings s (the circumference of a hole
+// handle_spacings × s across): every point of a surface sampled at spacing s
+// lies within about s of a sample, so a hole or a tube's waist no wider than
+// 2 s looks like the gaps between samples; the points do not show it, and it
+// is not a feature of the sampled surface (Guskov & Wood 2001;
+// handle_loops.h). The
+// strip of faces around each such loop is removed and the two holes it
+// leaves closed by minimal patches (close_unsupported.h), flagged as filled.
+#ifndef MESHSEG_RECONSTRUCT_HANDLES_H_
+#define MESHSEG_RECONSTRUCT_HANDLES_H_
+
+#include <cstdint>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "absl/status/status.h"
+#include "mesh/point_index.h"
+#include "meshseg/mesh.h"
+#include "meshseg/reconstruct.h"
+
+namespace meshseg::reconstruct_internal {
+
+// Rounds of cutting and closing at most: a loop through the strip of a cut
+// waits for the next round, which looks near the last round's patches only.
+inline constexpr int kHandleRounds = 8;
+
+// The longest loop cut at each vertex of `tri`, model units: π ×
+// `handle_spacings` × the local spacing of the input point nearest to it.
+std::vector<double> MaxHandleLoops(const TriMesh& tri, const std::vector<Eigen::Vector3d>& points,
+                                   const mesh_internal::PointIndex& index, double handle_spacings);
+
+// Cuts the unsupported handles of `*mesh` (closed, or open with
+// params.leave_unsupported_open) as above and closes (or, with
+// leave_unsupported_open, leaves open) the holes; `*filled` (one per face)
+// is carried over and gains the patches. Adds to stats->handle_cut_count and
+// hole_count and sets filled_face_count and filled_area. Errors: those of
+// CloseUnsupported.
+absl::Status CutUnsupportedHandles(const std::vector<Eigen::Vector3d>& points,
+                                   const mesh_internal::PointIndex& index,
+                                   const ReconstructParams& params, Mesh* mesh,
+                                   std::vector<uint8_t>* filled, ReconstructStats* stats);
+
+}  // namespace meshseg::reconstruct_internal
+
+#endif  // MESHSEG_RECONSTRUCT_HANDLES_H_

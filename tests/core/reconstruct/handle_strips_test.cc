@@ -1,0 +1,131 @@
+#include "reconstruct/handle_strips.h"
+
+#include <array>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "clouds.h"
+#include "reconstruct/close_unsupported.h"
+#include "reconstruct/surface_mesh.h"
+#include "tube_meshes.h"
+
+namespace meshseg::reconstruct_internal {
+namespace {
+
+Mesh ToMesh(const TubeMesh& m) { return *SurfaceMesh(m.vertices, m.triangles, "tubes"); }
+
+// A thin torus: its meridian (8 edges round a tube of radius 0.05) is 0.306
+// long, its longitude over 6.
+TubeMesh ThinTorus(const Eigen::Vector3d& center = Eigen::Vector3d::Zero()) {
+  return TorusTubeMesh(1.0, 0.05, 128, 8, center);
+}
+
+int64_t CutFaces(const HandleStrips& s) {
+  int64_t n = 0;
+  for (const uint8_t c : s.cut) n += c;
+  return n;
+}
+
+// The meridian is a non-separating loop shorter than the bound: its strip
+// (the two rings of cells at its vertices) is cut, and closing the two holes
+// leaves a closed genus-0 surface.
+TEST(ShortHandleStrips, CutsTheShortNonSeparatingLoopOfAThinTorus) {
+  const Mesh torus = ToMesh(ThinTorus());
+  ASSERT_EQ(Genus(torus.tri), 1);
+  const HandleStrips s =
+      ShortHandleStrips(torus.tri, std::vector<double>(torus.tri.n_vertices(), 0.5), 1);
+  EXPECT_EQ(s.cut_count, 1);
+  EXPECT_GT(s.loop_count, 0);
+  EXPECT_EQ(CutFaces(s), 2 * 2 * 8);
+  std::vector<uint8_t> supported(s.cut.size());
+  for (size_t f = 0; f < s.cut.size(); ++f) supported[f] = !s.cut[f];
+  const auto closed = CloseUnsupported(torus, supported, 0.01, false);
+  ASSERT_TRUE(closed.ok()) << closed.status();
+  EXPECT_EQ(closed->hole_count, 2);
+  EXPECT_EQ(test::BoundaryEdgeCount(closed->mesh.tri), 0);
+  EXPECT_EQ(test::NonManifoldVertexCount(closed->mesh.tri), 0);
+  EXPECT_EQ(test::ComponentCount(closed->mesh.tri), 1);
+  EXPECT_EQ(Genus(closed->mesh.tri), 0);
+}
+
+TEST(ShortHandleStrips, KeepsALoopLongerThanTheBound) {
+  const Mesh torus = ToMesh(ThinTorus());
+  const HandleStrips s =
+      ShortHandleStrips(torus.tri, std::vector<double>(torus.tri.n_vertices(), 0.25), 1);
+  EXPECT_EQ(s.cut_count, 0);
+  EXPECT_EQ(CutFaces(s), 0);
+}
+
+// A wide tube (meridian 1.88) has no loop of 0.5: nothing is even examined.
+TEST(ShortHandleStrips, FindsNoShortLoopOnAThickTorus) {
+  const Mesh torus = ToMesh(TorusTubeMesh(1.0, 0.3, 96, 32));
+  const HandleStrips s =
+      ShortHandleStrips(torus.tri, std::vector<double>(torus.tri.n_vertices(), 0.5), 1);
+  EXPECT_EQ(s.loop_count, 0);
+  EXPECT_EQ(s.cut_count, 0);
+}
+
+// A thin rod's meridian is as short as the thin torus's but separates the
+// surface (genus 0 part): it is checked and kept. Next to it the thin
+// torus's handle is still cut.
+TEST(ShortHandleStrips, KeepsTheSeparatingLoopOfAThinRod) {
+  TubeMesh thick = TorusTubeMesh(1.0, 0.3, 96, 32);
+  thick.Add(RodTubeMesh(0.05, 1.0, 8, 20, Eigen::Vector3d(3, 0, 0)));
+  const Mesh with_rod = ToMesh(thick);
+  ASSERT_EQ(Genus(with_rod.tri), 1);
+  const HandleStrips kept =
+      ShortHandleStrips(with_rod.tri, std::vector<double>(with_rod.tri.n_vertices(), 0.5), 1);
+  EXPECT_GT(kept.check_count, 0);
+  EXPECT_EQ(kept.cut_count, 0);
+
+  TubeMesh thin = ThinTorus();
+  const int torus_faces = static_cast<int>(thin.triangles.size());
+  thin.Add(RodTubeMesh(0.05, 1.0, 8, 20, Eigen::Vector3d(3, 0, 0)));
+  const Mesh both = ToMesh(thin);
+  const HandleStrips cut =
+      ShortHandleStrips(both.tri, std::vector<double>(both.tri.n_vertices(), 0.5), 1);
+  EXPECT_EQ(cut.cut_count, 1);
+  for (int f = torus_faces; f < static_cast<int>(cut.cut.size()); ++f) EXPECT_EQ(cut.cut[f], 0);
+}
+
+// Two thin tori (total genus 2): one cut each, and no more than the genus.
+TEST(ShortHandleStrips, CutsOneLoopPerHandleUpToTheGenus) {
+  TubeMesh two = ThinTorus();
+  two.Add(ThinTorus(Eigen::Vector3d(3, 0, 0)));
+  const Mesh tori = ToMesh(two);
+  ASSERT_EQ(Genus(tori.tri), 2);
+  const std::vector<double> bound(tori.tri.n_vertices(), 0.5);
+  EXPECT_EQ(ShortHandleStrips(tori.tri, bound, 2).cut_count, 2);
+  EXPECT_EQ(ShortHandleStrips(tori.tri, bound, 1).cut_count, 1);
+  EXPECT_EQ(ShortHandleStrips(tori.tri, bound, 0).cut_count, 0);
+}
+
+// A surface left open (`--open`): a thin torus with a hole of 2 × 2 cells
+// at the start of its grid. A strip along a border would only widen the hole
+// (and seem not to separate), so the handle is cut by a meridian whose
+// strip is clear of the border. (This torus passes without the border rule
+// too, the strips by the hole not being annuli; the rule was needed on a
+// reconstruction left open, where 9 cuts lowered the genus by 1.)
+TEST(ShortHandleStrips, AStripAlongAnOpenHoleIsNoCut) {
+  TubeMesh torus = ThinTorus();
+  std::vector<std::array<int, 3>> kept;
+  for (size_t t = 0; t < torus.triangles.size(); ++t) {
+    const int cell = static_cast<int>(t) / 2, i = cell / 8, j = cell % 8;
+    if (i < 2 && j >= 2 && j < 4) continue;
+    kept.push_back(torus.triangles[t]);
+  }
+  torus.triangles = kept;
+  const Mesh open = ToMesh(torus);
+  ASSERT_EQ(Genus(open.tri), 1);
+  const HandleStrips s =
+      ShortHandleStrips(open.tri, std::vector<double>(open.tri.n_vertices(), 0.5), 1);
+  EXPECT_EQ(s.cut_count, 1);
+  for (const auto f : open.tri.faces()) {
+    if (!s.cut[f.idx()]) continue;
+    for (const auto v : open.tri.fv_range(f)) EXPECT_FALSE(open.tri.is_boundary(v));
+  }
+}
+
+}  // namespace
+}  // namespace meshseg::reconstruct_internal
