@@ -115,33 +115,43 @@ std::optional<Surface> FitForEnergy(const SegmentContext& c, SurfaceType type,
 }
 
 std::vector<SurfaceType> MergeTypes(SurfaceType a, SurfaceType b) {
-  std::vector<SurfaceType> types = {SurfaceType::kPlane, SurfaceType::kCylinder,
-                                    SurfaceType::kSphere, SurfaceType::kCone, SurfaceType::kTorus};
-  if (a == SurfaceType::kQuadric || b == SurfaceType::kQuadric) {
-    types.push_back(SurfaceType::kQuadric);
+  constexpr SurfaceType kAnalytic[] = {SurfaceType::kPlane, SurfaceType::kCylinder,
+                                       SurfaceType::kSphere, SurfaceType::kCone,
+                                       SurfaceType::kTorus};
+  const bool quadric = a == SurfaceType::kQuadric || b == SurfaceType::kQuadric;
+  std::vector<SurfaceType> types;
+  for (const SurfaceType t : kAnalytic) {
+    if (quadric || !(IsLimitOf(a, t) || IsLimitOf(b, t))) types.push_back(t);
   }
+  if (quadric) types.push_back(SurfaceType::kQuadric);
   return types;
 }
 
 std::optional<Move> MergeDelta(const SegmentContext& c, const std::vector<int>& labels,
                                const std::vector<RegionState>& regions, int a, int b,
                                std::span<const SurfaceType> types) {
-  const RegionState& x = regions[a];
-  const RegionState& y = regions[b];
+  return MergeDelta(c, labels, regions[a], a, regions[b], b, types);
+}
+
+std::optional<Move> MergeDelta(const SegmentContext& c, const std::vector<int>& labels,
+                               const RegionState& x, int a, const RegionState& y, int b,
+                               std::span<const SurfaceType> types) {
   std::vector<int> both = x.vertices;
   both.insert(both.end(), y.vertices.begin(), y.vertices.end());
   std::sort(both.begin(), both.end());
-  const std::span<const int> smaller =
-      x.vertices.size() <= y.vertices.size() ? std::span<const int>(x.vertices) : y.vertices;
+  const bool x_smaller = x.vertices.size() <= y.vertices.size();
   const double before = DataCost(c, x.surface, x.vertices) + DataCost(c, y.surface, y.vertices) +
-                        BoundaryCost(c, labels, smaller, x.vertices.size() <= y.vertices.size() ? b : a) +
+                        BoundaryCost(c, labels, x_smaller ? x.vertices : y.vertices,
+                                     x_smaller ? b : a) +
                         LabelCost(x.type, x.vertices.size()) + LabelCost(y.type, y.vertices.size());
   std::optional<Move> best;
   for (const SurfaceType type : types) {
     const PricedFit fit = PriceFit(c, type, both);
     if (!fit.surface) continue;
     const double delta = fit.cost + LabelCost(type, both.size()) - before;
-    if (!best || delta < best->delta) best = Move{.delta = delta, .type = type, .surface = *fit.surface};
+    if (!best || delta < best->delta) {
+      best = Move{.delta = delta, .type = type, .surface = *fit.surface};
+    }
   }
   return best;
 }
@@ -156,7 +166,7 @@ std::optional<Move> RetypeDelta(const SegmentContext& c, const RegionState& r, S
 }
 
 double DropDelta(const SegmentContext& c, const std::vector<int>& labels,
-                 const std::vector<RegionState>& regions, int id) {
+                 const std::vector<RegionState>& regions, int id, std::vector<int>* takers) {
   const RegionState& r = regions[id];
   const std::vector<int> around = RegionsAround(c, labels, regions, id);
   // The new label of each of r's vertices, in the order of r.vertices.
@@ -170,6 +180,11 @@ double DropDelta(const SegmentContext& c, const std::vector<int>& labels,
       if (cost < best) best = cost, next[k] = o;
     }
     delta += best - VertexCost(c, v, r.surface);
+  }
+  if (takers != nullptr) {
+    *takers = next;
+    std::sort(takers->begin(), takers->end());
+    takers->erase(std::unique(takers->begin(), takers->end()), takers->end());
   }
   // The neighbours grow: their label costs by the vertices they take.
   std::vector<std::size_t> gained(regions.size(), 0);

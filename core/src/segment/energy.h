@@ -45,7 +45,8 @@
 // residuals by more than its parameters' cost.
 //
 // A local move (merge two regions, retype one, drop one) is accepted iff it
-// lowers E; MoveDelta functions below price one without touching the rest.
+// lowers E; MergeDelta, RetypeDelta and DropDelta below price one without
+// touching the rest.
 #ifndef MESHSEG_SRC_SEGMENT_ENERGY_H_
 #define MESHSEG_SRC_SEGMENT_ENERGY_H_
 
@@ -109,18 +110,32 @@ std::optional<Surface> FitForEnergy(const SegmentContext& c, SurfaceType type,
 std::optional<Move> MergeDelta(const SegmentContext& c, const std::vector<int>& labels,
                                const std::vector<RegionState>& regions, int a, int b,
                                std::span<const SurfaceType> types);
+// The same for regions `x` (id `a` in `labels`) and `y` (id `b`) as given,
+// e.g. re-estimated (their surfaces may differ from the labeling's).
+std::optional<Move> MergeDelta(const SegmentContext& c, const std::vector<int>& labels,
+                               const RegionState& x, int a, const RegionState& y, int b,
+                               std::span<const SurfaceType> types);
 
 // The change of E from refitting region `r` as `type` (nullopt: no valid fit).
 std::optional<Move> RetypeDelta(const SegmentContext& c, const RegionState& r, SurfaceType type);
 
 // The change of E from dropping region `id`: each of its vertices goes to
 // the region next to `id` whose surface it costs least on (or stays
-// unlabelled if no region is next to it), surfaces unchanged.
+// unlabelled if no region is next to it), surfaces unchanged. If `takers`
+// is set, it gets the labels the vertices go to (-1: none), sorted, once
+// each.
 double DropDelta(const SegmentContext& c, const std::vector<int>& labels,
-                 const std::vector<RegionState>& regions, int id);
+                 const std::vector<RegionState>& regions, int id,
+                 std::vector<int>* takers = nullptr);
 
-// The types a merge of two regions may take: plane, cylinder, sphere, cone,
-// torus, and the general quadric if either region is one.
+// The types a merge of regions of types `a` and `b` may take: every
+// analytic type but those that generalise either member within its family
+// (IsLimitOf: a cylinder is a cone of half-angle 0, both are tori of
+// infinite tube radius), and every type with the quadric if either is a
+// general quadric. Where the meshing's residuals are correlated (a surface
+// from binary voxels) a torus bent along a cylinder's axis fits that error
+// better than the label cost charges for its two parameters; the simpler
+// member's type stands, and the retype steps may still generalise it.
 std::vector<SurfaceType> MergeTypes(SurfaceType a, SurfaceType b);
 
 }  // namespace meshseg::segment_internal
