@@ -1,6 +1,9 @@
 #include "segment/merge_regions.h"
 
+#include <cstddef>
+#include <map>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include "segment/energy.h"
@@ -26,13 +29,24 @@ RegionState Reestimated(const SegmentContext& c, const RegionState& r) {
 
 absl::StatusOr<int> MergeRegions(const SegmentContext& c, std::vector<int>* labels,
                                  std::vector<RegionState>* regions) {
+  // Re-estimated regions by id and vertex count: within this step regions
+  // change only by merging, which grows them.
+  std::map<std::pair<int, std::size_t>, RegionState> reestimated;
+  auto region = [&](int id) -> const RegionState& {
+    const RegionState& r = (*regions)[id];
+    auto it = reestimated.find({id, r.vertices.size()});
+    if (it == reestimated.end()) {
+      it = reestimated.emplace(std::pair{id, r.vertices.size()}, Reestimated(c, r)).first;
+    }
+    return it->second;
+  };
   return MergeBestPairs(
       c, labels, regions, [](const RegionArc& arc) { return arc.smooth; },
       [&](int a, int b) -> std::optional<PairMerge> {
         const RegionState& x = (*regions)[a];
         const RegionState& y = (*regions)[b];
-        const std::optional<Move> move = MergeDelta(c, *labels, Reestimated(c, x), a,
-                                                    Reestimated(c, y), b, MergeTypes(x.type, y.type));
+        const std::optional<Move> move =
+            MergeDelta(c, *labels, region(a), a, region(b), b, MergeTypes(x.type, y.type));
         if (!move || !(move->delta < 0.0)) return std::nullopt;
         // A fragment whose vertices lower E more by going each to the
         // neighbour that meets it best, not all to one (rows of two faces),
