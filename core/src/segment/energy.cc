@@ -34,7 +34,7 @@ PricedFit PriceFit(const SegmentContext& c, SurfaceType type, std::span<const in
   out.cost = DataCost(c, fit.surface, vertices);
   out.surface = fit.surface;
   // Re-estimation on the inliers: rows along creases pull a least-squares
-  // fit off the face; the fit to the vertices within the tolerances does not.
+  // fit off the face; the fit to the vertices within th_dis of it does not.
   std::vector<int> inliers;
   inliers.reserve(vertices.size());
   for (const int v : vertices) {
