@@ -45,16 +45,15 @@ int ReleaseSmallRegions(const SegmentContext& c, std::vector<int>* labels,
 // plane region with fewer than kMinInteriorVertices (retype_by_interior.h)
 // interior vertices that is not a small face (above).
 // A plane fits any strip of a curved face that narrow within the noise, and
-// no step can tell: RetypeByInterior and MergeSameSurface both need that
-// interior (test_piece at 0.15 h, seed 185: a plane strip of 63 vertices, 27
-// of them interior, along the r 6 round, typed plane to the end; 60 of the
-// 63 meet a neighbour's surface). A narrow face across a crease is flat and
-// lies on no neighbour's surface: released, it went to a neighbour it does
-// not fit (test_piece's boss top at 1.25 h and 0.15 h, seeds 1, 2, 4: 64 to
-// 71 vertices, 11 to 19 of them meeting the boss cone, which took them all
-// and in seeds 2 and 4 bent to 31 and 30 degrees against 20.6). Curved
-// regions that narrow stay: their type carries their curvature (fandisk's
-// small corner blend, a sphere of 103 vertices at noise 0.1, is one).
+// no later step can tell: RetypeByInterior judges a region by its interior,
+// which such a strip hardly has (a strip along a small round can keep a
+// plane to the end while nearly all of its vertices meet the neighbour's
+// surface). A narrow face across a crease
+// is flat and lies on no neighbour's surface: released, it goes to a
+// neighbour it does not fit, which may then bend toward it (a cone taking a
+// narrow flat rim tilts its half-angle by several degrees). Curved regions
+// that narrow stay: their type carries their curvature (a small corner blend
+// fitted as a sphere of about a hundred vertices is one).
 // Returns how many.
 int ReleaseNarrowPlanes(const SegmentContext& c, std::vector<int>* labels,
                         std::vector<RegionState>* regions);
