@@ -121,7 +121,7 @@ std::vector<SurfaceType> MergeTypes(SurfaceType a, SurfaceType b) {
   const bool quadric = a == SurfaceType::kQuadric || b == SurfaceType::kQuadric;
   std::vector<SurfaceType> types;
   for (const SurfaceType t : kAnalytic) {
-    if (quadric || !(IsLimitOf(a, t) || IsLimitOf(b, t))) types.push_back(t);
+    if (quadric || t == a || t == b || !(IsLimitOf(a, t) || IsLimitOf(b, t))) types.push_back(t);
   }
   if (quadric) types.push_back(SurfaceType::kQuadric);
   return types;

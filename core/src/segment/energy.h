@@ -128,14 +128,17 @@ double DropDelta(const SegmentContext& c, const std::vector<int>& labels,
                  const std::vector<RegionState>& regions, int id,
                  std::vector<int>* takers = nullptr);
 
-// The types a merge of regions of types `a` and `b` may take: every
-// analytic type but those that generalise either member within its family
-// (IsLimitOf: a cylinder is a cone of half-angle 0, both are tori of
+// The types a merge of regions of types `a` and `b` may take: each member's
+// own type, every analytic type that generalises neither member within its
+// family (IsLimitOf: a cylinder is a cone of half-angle 0, both are tori of
 // infinite tube radius), and every type with the quadric if either is a
 // general quadric. Where the meshing's residuals are correlated (a surface
 // from binary voxels) a torus bent along a cylinder's axis fits that error
 // better than the label cost charges for its two parameters; the simpler
-// member's type stands, and the retype steps may still generalise it.
+// member's type stands, and the retype steps may still generalise it. A
+// member's own type is no such new generalisation: a cone grown in two
+// pieces, one of them a band narrow enough to read as a cylinder within the
+// noise, is joined by the cone the other piece already is.
 std::vector<SurfaceType> MergeTypes(SurfaceType a, SurfaceType b);
 
 }  // namespace meshseg::segment_internal
