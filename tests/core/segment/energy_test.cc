@@ -231,5 +231,31 @@ TEST(EnergyDrop, DeltaIsTheChangeOfTheTotal) {
   EXPECT_NEAR(after - before, delta, kRelative * std::abs(before));
 }
 
+// A merge keeps either member's own type (a cone in two pieces, one read as
+// a cylinder, is joined as the cone) but adds no generalisation neither
+// member has (two cylinders do not become a cone or a torus).
+TEST(MergeTypes, EitherMembersOwnTypeButNoNewGeneralisation) {
+  auto has = [](const std::vector<SurfaceType>& types, SurfaceType t) {
+    return std::find(types.begin(), types.end(), t) != types.end();
+  };
+  const std::vector<SurfaceType> cylinder_cone =
+      MergeTypes(SurfaceType::kCylinder, SurfaceType::kCone);
+  EXPECT_TRUE(has(cylinder_cone, SurfaceType::kCone));
+  EXPECT_TRUE(has(cylinder_cone, SurfaceType::kCylinder));
+  EXPECT_FALSE(has(cylinder_cone, SurfaceType::kTorus));
+  EXPECT_EQ(MergeTypes(SurfaceType::kCone, SurfaceType::kCylinder), cylinder_cone);
+  const std::vector<SurfaceType> two_cylinders =
+      MergeTypes(SurfaceType::kCylinder, SurfaceType::kCylinder);
+  EXPECT_TRUE(has(two_cylinders, SurfaceType::kCylinder));
+  EXPECT_TRUE(has(two_cylinders, SurfaceType::kPlane));
+  EXPECT_FALSE(has(two_cylinders, SurfaceType::kCone));
+  EXPECT_FALSE(has(two_cylinders, SurfaceType::kTorus));
+  EXPECT_FALSE(has(two_cylinders, SurfaceType::kQuadric));
+  const std::vector<SurfaceType> with_quadric =
+      MergeTypes(SurfaceType::kQuadric, SurfaceType::kCylinder);
+  EXPECT_TRUE(has(with_quadric, SurfaceType::kQuadric));
+  EXPECT_TRUE(has(with_quadric, SurfaceType::kTorus));
+}
+
 }  // namespace
 }  // namespace meshseg::segment_internal
