@@ -45,10 +45,10 @@ int ReleaseSmallRegions(const SegmentContext& c, std::vector<int>* labels,
 // plane region with fewer than kMinInteriorVertices (retype_by_interior.h)
 // interior vertices that is not a small face (above).
 // A plane fits any strip of a curved face that narrow within the noise, and
-// no later step can tell: RetypeByInterior judges a region by its interior,
-// which such a strip hardly has (a strip along a small round can keep a
-// plane to the end while nearly all of its vertices meet the neighbour's
-// surface). A narrow face across a crease
+// no later step can tell: RetypeByInterior and MergeSameSurface judge a
+// region by its interior, which such a strip hardly has (a strip along a
+// small round can keep a plane to the end while nearly all of its vertices
+// meet the neighbour's surface). A narrow face across a crease
 // is flat and lies on no neighbour's surface: released, it goes to a
 // neighbour it does not fit, which may then bend toward it (a cone taking a
 // narrow flat rim tilts its half-angle by several degrees). Curved regions
