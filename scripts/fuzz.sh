@@ -34,6 +34,14 @@ if [ ${#targets[@]} -eq 0 ]; then
     | sed 's/set(MESHSEG_FUZZ_TARGETS//; s/)//'))
 fi
 
+# The volume and sniffed-format targets write each input to a scratch file
+# under $TMPDIR (the readers take a path); on a disk-backed /tmp that write
+# dominates an execution, so use memory-backed /dev/shm where there is one
+# (about 7x the executions per second). FUZZ_TMPDIR overrides it.
+scratch="${FUZZ_TMPDIR:-}"
+if [ -z "$scratch" ] && [ -d /dev/shm ] && [ -w /dev/shm ]; then scratch=/dev/shm; fi
+if [ -n "$scratch" ]; then export TMPDIR="$scratch"; fi
+
 log=build-fuzz/fuzz_runs.tsv
 [ -f "$log" ] || printf 'date\ttarget\tseconds\texecutions\tfindings\n' > "$log"
 found=0
