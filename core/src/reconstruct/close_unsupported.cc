@@ -13,10 +13,14 @@
 #include <CGAL/boost/graph/Euler_operations.h>
 
 #include "absl/strings/str_cat.h"
+#include "mesh/union_find.h"
 #include "meshseg/status_macros.h"
 #include "reconstruct/surface_mesh.h"
 
 namespace meshseg::reconstruct_internal {
+
+using mesh_internal::FindRoot;
+
 namespace {
 
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
@@ -26,11 +30,6 @@ namespace PMP = CGAL::Polygon_mesh_processing;
 // Loops longer than this skip CGAL's cubic search over all triangles of the
 // loop when the Delaunay search space fails (O(n³) time); the fan closes them.
 constexpr size_t kMaxCubicLoop = 150;
-
-int Find(std::vector<int>& parent, int a) {
-  while (parent[a] != a) a = parent[a] = parent[parent[a]];
-  return a;
-}
 
 // Marks every face of a vertex whose fan alternates kept/removed more than
 // once; returns whether it marked any.
@@ -63,16 +62,16 @@ bool RemoveSmallPieces(const TriMesh& tri, double min_fraction, std::vector<uint
     const int a = tri.face_handle(tri.halfedge_handle(e, 0)).idx();
     const int b = tri.face_handle(tri.halfedge_handle(e, 1)).idx();
     if ((*removed)[a] || (*removed)[b]) continue;
-    parent[Find(parent, a)] = Find(parent, b);
+    parent[FindRoot(parent, a)] = FindRoot(parent, b);
   }
   std::vector<int64_t> size(tri.n_faces(), 0);
   for (size_t f = 0; f < parent.size(); ++f) {
-    if (!(*removed)[f]) ++size[Find(parent, static_cast<int>(f))];
+    if (!(*removed)[f]) ++size[FindRoot(parent, static_cast<int>(f))];
   }
   const int64_t largest = *std::max_element(size.begin(), size.end());
   bool changed = false;
   for (size_t f = 0; f < parent.size(); ++f) {
-    if ((*removed)[f] || size[Find(parent, static_cast<int>(f))] >= min_fraction * largest)
+    if ((*removed)[f] || size[FindRoot(parent, static_cast<int>(f))] >= min_fraction * largest)
       continue;
     (*removed)[f] = 1;
     changed = true;
@@ -142,12 +141,12 @@ int Components(const TriMesh& tri) {
   std::iota(parent.begin(), parent.end(), 0);
   for (const auto e : tri.edges()) {
     const auto h = tri.halfedge_handle(e, 0);
-    parent[Find(parent, tri.from_vertex_handle(h).idx())] =
-        Find(parent, tri.to_vertex_handle(h).idx());
+    parent[FindRoot(parent, tri.from_vertex_handle(h).idx())] =
+        FindRoot(parent, tri.to_vertex_handle(h).idx());
   }
   int count = 0;
   for (size_t v = 0; v < parent.size(); ++v)
-    count += Find(parent, static_cast<int>(v)) == static_cast<int>(v);
+    count += FindRoot(parent, static_cast<int>(v)) == static_cast<int>(v);
   return count;
 }
 

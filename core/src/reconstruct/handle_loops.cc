@@ -10,7 +10,12 @@
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
+#include "mesh/union_find.h"
+
 namespace meshseg::reconstruct_internal {
+
+using mesh_internal::FindRoot;
+
 namespace {
 
 // Per-thread scratch of the ball searches; entries are valid where the
@@ -36,11 +41,6 @@ struct Scratch {
 
 using QueueItem = std::pair<double, int>;
 using MinQueue = std::priority_queue<QueueItem, std::vector<QueueItem>, std::greater<>>;
-
-int Find(std::vector<int>& parent, int a) {
-  while (parent[a] != a) a = parent[a] = parent[parent[a]];
-  return a;
-}
 
 bool EdgeInBall(const MeshGraph& g, const Scratch& s, int e) {
   for (const int f : g.edge_faces[e]) {
@@ -155,7 +155,7 @@ void ShortestLoopNear(const MeshGraph& g, int seed, double max_length, double re
   for (int i = 0; i < nodes; ++i) s->union_parent[i] = i;
   const DualEdge* shortest = nullptr;
   for (const DualEdge& d : dual) {
-    const int a = Find(s->union_parent, d.a), b = Find(s->union_parent, d.b);
+    const int a = FindRoot(s->union_parent, d.a), b = FindRoot(s->union_parent, d.b);
     if (a != b) {
       s->union_parent[a] = b;
     } else {

@@ -5,15 +5,14 @@
 
 #include "absl/container/flat_hash_map.h"
 #include "absl/container/flat_hash_set.h"
+#include "mesh/union_find.h"
 #include "reconstruct/handle_loops.h"
 
 namespace meshseg::reconstruct_internal {
-namespace {
 
-int Find(std::vector<int>& parent, int a) {
-  while (parent[a] != a) a = parent[a] = parent[parent[a]];
-  return a;
-}
+using mesh_internal::FindRoot;
+
+namespace {
 
 // Whether `strip` (sorted faces) is an annulus whose removal leaves two
 // border loops and no pinched vertex: connected, Euler characteristic 0,
@@ -39,7 +38,7 @@ bool IsAnnulus(const MeshGraph& g, const std::vector<int>& strip) {
       if (in_strip(other)) {
         const int j =
             static_cast<int>(std::lower_bound(strip.begin(), strip.end(), other) - strip.begin());
-        parent[Find(parent, static_cast<int>(i))] = Find(parent, j);
+        parent[FindRoot(parent, static_cast<int>(i))] = FindRoot(parent, j);
       } else {
         ++border_degree[u];
         ++border_degree[v];
@@ -48,7 +47,7 @@ bool IsAnnulus(const MeshGraph& g, const std::vector<int>& strip) {
     }
   }
   for (size_t i = 0; i < strip.size(); ++i) {
-    if (Find(parent, static_cast<int>(i)) != Find(parent, 0)) return false;
+    if (FindRoot(parent, static_cast<int>(i)) != FindRoot(parent, 0)) return false;
   }
   for (const auto& [v, d] : border_degree) {
     if (d != 0 && d != 2) return false;
@@ -111,16 +110,16 @@ bool StripKeepsSurfaceConnected(const MeshGraph& g, const std::vector<uint8_t>& 
   if (groups == 0) return false;
   while (groups > 1) {
     for (int i = 0; i < static_cast<int>(front.size()) && groups > 1; ++i) {
-      if (Find(parent, i) != i) continue;
+      if (FindRoot(parent, i) != i) continue;
       if (front[i].empty()) return false;  // a side closed off
       const int f = front[i].back();
       front[i].pop_back();
       for (const int e : g.face_edges[f]) {
         for (const int o : g.edge_faces[e]) {
           if (o < 0 || removed[o] || (*seen)[o] == stamp) continue;
-          const int here = Find(parent, i);
+          const int here = FindRoot(parent, i);
           if ((*seen)[o] == visit) {
-            int a = here, b = Find(parent, (*owner)[o]);
+            int a = here, b = FindRoot(parent, (*owner)[o]);
             if (a == b) continue;
             if (front[a].size() < front[b].size()) std::swap(a, b);
             front[a].insert(front[a].end(), front[b].begin(), front[b].end());

@@ -4,18 +4,11 @@
 #include <numeric>
 #include <vector>
 
+#include "mesh/union_find.h"
+
 namespace meshseg::reconstruct_internal {
-namespace {
 
-int Find(std::vector<int>& parent, int v) {
-  while (parent[v] != v) {
-    parent[v] = parent[parent[v]];
-    v = parent[v];
-  }
-  return v;
-}
-
-}  // namespace
+using mesh_internal::FindRoot;
 
 int64_t DropSmallComponents(double min_fraction, IsoSurface* surface) {
   const size_t n = surface->vertices.size();
@@ -23,19 +16,19 @@ int64_t DropSmallComponents(double min_fraction, IsoSurface* surface) {
   std::iota(parent.begin(), parent.end(), 0);
   for (const auto& t : surface->triangles) {
     for (int i = 1; i < 3; ++i) {
-      const int a = Find(parent, t[0]), b = Find(parent, t[i]);
+      const int a = FindRoot(parent, t[0]), b = FindRoot(parent, t[i]);
       if (a != b) parent[std::max(a, b)] = std::min(a, b);
     }
   }
   std::vector<int64_t> faces(n, 0);
-  for (const auto& t : surface->triangles) ++faces[Find(parent, t[0])];
+  for (const auto& t : surface->triangles) ++faces[FindRoot(parent, t[0])];
   const int64_t largest = *std::max_element(faces.begin(), faces.end());
   int64_t dropped = 0;
   for (size_t v = 0; v < n; ++v) {
     dropped += faces[v] > 0 && faces[v] < min_fraction * static_cast<double>(largest);
   }
   if (dropped == 0) return 0;
-  const auto keep = [&](int v) { return faces[Find(parent, v)] >= min_fraction * largest; };
+  const auto keep = [&](int v) { return faces[FindRoot(parent, v)] >= min_fraction * largest; };
   std::vector<int> renumber(n, -1);
   IsoSurface kept;
   for (size_t v = 0; v < n; ++v) {
