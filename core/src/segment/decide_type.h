@@ -30,8 +30,7 @@ TypedFit TryType(const SegmentContext& c, SurfaceType type, std::span<const int>
 inline constexpr double kMinModelError = 0.25;
 
 // A model error at or under this many noise sigmas is near the noise: a
-// fit there may replace another if the scores say so (RetypeByInterior,
-// MergeSameSurface).
+// fit there may replace another if the scores say so (RetypeByInterior).
 inline constexpr double kScoredNearError = 0.5;
 
 // How far `fit` misses its vertices beyond the noise, sqrt(rms^2 - sigma^2).

@@ -1,54 +1,29 @@
-// Region merging of seed 000 §4 steps 3 and 4 on the simplified region
-// graph: merge by extrapolation (a neighbour whose vertices fit the larger
-// region's surface), then by refitting (the pair whose union fits one
-// surface best).
+// Region merging (ALGORITHMS.md S1 step 3) decided by the segmentation
+// energy (energy.h): of the pairs of regions across a smooth arc of the
+// region graph, the one whose merge into one refitted surface lowers E
+// most is merged, until no merge lowers it. This takes the place of seed
+// 000's merge by extrapolation (beta1) and by refitting (beta2) and of the
+// test of two typed pieces against one surface: a merge pays, or does not,
+// by the same data, boundary and label costs.
 #ifndef MESHSEG_SRC_SEGMENT_MERGE_REGIONS_H_
 #define MESHSEG_SRC_SEGMENT_MERGE_REGIONS_H_
 
 #include <vector>
 
-#include "absl/status/status.h"
+#include "absl/status/statusor.h"
 #include "segment/segment_internal.h"
 
 namespace meshseg::segment_internal {
 
-inline constexpr double kBeta1 = 0.9;  // seed 000 §4 step 3
-inline constexpr double kBeta2 = 0.9;  // seed 000 §4 step 4
-
-inline constexpr std::size_t kMinRetypeVertices = 10;
-
-// Gives general-quadric regions the first analytic type passing the alpha
-// test on their non-sharp vertices (regions change after absorption and
-// merging, so seed 000 §3 step 5 is asked again).
-void RetypeQuadrics(const SegmentContext& c, std::vector<RegionState>* regions);
-
-// Gives plane regions that their plane no longer fits (the alpha test fails
-// on their non-sharp vertices) the first analytic curved type that passes
-// it: at high noise a fillet can start as a plane from a seed on its middle
-// and take its whole arc as leftovers. Returns the ids of those retyped.
-std::vector<int> RetypeBentPlanes(const SegmentContext& c, std::vector<RegionState>* regions);
-
-// Gives region `r` the curved type DecideCurvedType finds on its non-sharp
-// vertices if it passes the alpha test and is not a general quadric;
-// returns whether it did.
-bool RetypeCurved(const SegmentContext& c, RegionState* r);
-
-// Gives a curved region whose fit misses it by more than kInaccurateError
-// noise sigmas beyond the noise (ModelError), or that its type no longer
-// fits validly, the type of seed 000's order on its non-sharp vertices (the
-// plane, else DecideCurvedType's), if that passes the alpha test with under
-// half the model error. A seed on a long noisy cone can grow as a sphere
-// that passes the tolerances (stepped_shaft at 0.15 h: r 14.7, model error
-// 1.0 sigma, where the cone's is 0); a torus typed on a ring at the rim of a
-// boss top can be grown over the whole disc, where only a spindle torus
-// with its cusp inside fits. Returns the ids retyped.
-std::vector<int> RetypeInaccurateCurved(const SegmentContext& c,
-                                        std::vector<RegionState>* regions);
-
-// Merges regions in place (merged-away regions get alive = false and no
-// vertices): extrapolation, refitting, retyping of quadrics, extrapolation. Errors: CANCELLED on stop.
-absl::Status MergeRegions(const SegmentContext& c, std::vector<int>* labels,
-                          std::vector<RegionState>* regions);
+// Repeatedly merges, the smaller region into the larger, the pair of
+// regions across a smooth arc (region_graph.h: the mean normals of the
+// boundary strips within th_bnd, a necessary condition for one smooth
+// surface) whose MergeDelta over MergeTypes is the most negative, taking
+// that move's type and surface; stops when none is negative. Merged-away
+// regions get alive = false and no vertices. Returns the number of merges.
+// Errors: CANCELLED on stop.
+absl::StatusOr<int> MergeRegions(const SegmentContext& c, std::vector<int>* labels,
+                                 std::vector<RegionState>* regions);
 
 }  // namespace meshseg::segment_internal
 

@@ -14,10 +14,6 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-bool TypesCompatible(SurfaceType x, SurfaceType y) {
-  return x == y || x == SurfaceType::kQuadric || y == SurfaceType::kQuadric;
-}
-
 }  // namespace
 
 std::vector<RegionArc> BuildRegionGraph(const SegmentContext& c, const std::vector<int>& labels,
@@ -28,11 +24,11 @@ std::vector<RegionArc> BuildRegionGraph(const SegmentContext& c, const std::vect
   std::vector<int> seen;
   for (int v = 0; v < c.vertex_count(); ++v) {
     const int a = labels[v];
-    if (a < 0) continue;
+    if (a < 0 || !regions[a].alive) continue;
     seen.clear();
     for (const int j : c.graph.Neighbors(v)) {
       const int b = labels[j];
-      if (b < 0 || b == a || std::find(seen.begin(), seen.end(), b) != seen.end()) continue;
+      if (b < 0 || b == a || !regions[b].alive || std::find(seen.begin(), seen.end(), b) != seen.end()) continue;
       seen.push_back(b);
       auto [it, inserted] = strip.try_emplace({a, b}, Eigen::Vector3d::Zero());
       it->second += c.normal(v);
@@ -50,7 +46,6 @@ std::vector<RegionArc> BuildRegionGraph(const SegmentContext& c, const std::vect
     const double cosine = na > 0.0 && nb > 0.0 ? sum_ab.dot(other->second) / (na * nb) : -1.0;
     arc.angle_deg = std::acos(std::clamp(cosine, -1.0, 1.0)) * 180.0 / kPi;
     arc.smooth = arc.angle_deg < kSharpBoundaryDeg;
-    arc.kept = arc.smooth && TypesCompatible(regions[a].type, regions[b].type);
     arcs.push_back(arc);
   }
   return arcs;
@@ -84,19 +79,8 @@ absl::StatusOr<int> MergeBestPairs(
     const int into = a_larger ? a : b;
     const PairMerge merge = *best;
     MergeInto(into, a_larger ? b : a, labels, regions);
-    RegionState& merged = (*regions)[into];
-    // If the merged type cannot be fitted to all of the merged vertices, the
-    // larger region keeps its type with its surface: a torus accepted on a
-    // countersink's interior whose fit to the whole failed had left a
-    // region typed torus with a cone's surface (test_piece at 0.15 h, seed
-    // 74).
-    if (merge.surface) {
-      merged.type = merge.type;
-      merged.surface = *merge.surface;
-    } else if (const FitResult fit = FitType(c, merge.type, merged.vertices); fit.ok()) {
-      merged.type = merge.type;
-      merged.surface = fit.surface;
-    }
+    (*regions)[into].type = merge.type;
+    (*regions)[into].surface = merge.surface;
     ++merges;
     std::erase_if(cache, [&](const auto& e) {
       return e.first.first == a || e.first.second == a || e.first.first == b ||

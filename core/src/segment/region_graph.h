@@ -1,7 +1,8 @@
 // The region graph of seed 000 §4 step 1 and its simplification (step 2):
-// regions are adjacent where a mesh edge joins them; an arc is kept only if
-// the junction is smooth (mean normals of the two boundary strips within
-// th_bnd) and the types agree or one of them is a general quadric.
+// regions are adjacent where a mesh edge joins them; an arc is smooth if
+// the mean normals of the two boundary strips are within th_bnd. (Whether
+// the types agree no longer matters: the energy of a merge decides it,
+// merge_regions.h.)
 #ifndef MESHSEG_SRC_SEGMENT_REGION_GRAPH_H_
 #define MESHSEG_SRC_SEGMENT_REGION_GRAPH_H_
 
@@ -19,7 +20,6 @@ struct RegionArc {
   int b = 0;
   double angle_deg = 0.0;  // between the mean normals of the boundary strips
   bool smooth = false;     // angle below th_bnd
-  bool kept = false;       // smooth and type-compatible
 };
 
 inline constexpr double kSharpBoundaryDeg = 45.0;  // th_bnd, seed 000 §4 step 2
@@ -29,19 +29,17 @@ std::vector<RegionArc> BuildRegionGraph(const SegmentContext& c, const std::vect
                                         const std::vector<RegionState>& regions);
 
 // A merge of an arc's two regions that a merge step accepts: its score
-// (the highest is merged first) and the merged region's type and surface
-// (unset: fitted to the merged vertices; if that fit is invalid, the
-// merged region keeps the larger region's type and surface).
+// (the highest is merged first) and the merged region's type and surface.
 struct PairMerge {
   double score = 0.0;
   SurfaceType type = SurfaceType::kQuadric;
-  std::optional<Surface> surface;
+  Surface surface;
 };
 
-// The loop of seed 000 §4 step 4 that MergeByRefitting and MergeSameSurface
-// share: repeatedly merges, the smaller region into the larger, the pair
-// across an arc that `eligible` admits with the highest score `test(a, b)`
-// gives (nullopt: not to be merged), until none is left. Tests are cached
+// The loop of seed 000 §4 step 4 (MergeRegions): repeatedly merges, the
+// smaller region into the larger, the pair across an arc that `eligible`
+// admits with the highest score `test(a, b)` gives (nullopt: not to be
+// merged), until none is left. Tests are cached
 // per arc and redone only for pairs a merge changed. Returns the number of
 // merges. Errors: CANCELLED on stop.
 absl::StatusOr<int> MergeBestPairs(

@@ -16,10 +16,10 @@
 #include "segment/give_back_rows.h"
 #include "segment/initial_segmentation.h"
 #include "segment/merge_regions.h"
-#include "segment/merge_same_surface.h"
 #include "segment/refine_boundaries.h"
 #include "segment/retype_by_interior.h"
 #include "segment/retype_coaxial_bands.h"
+#include "segment/retype_regions.h"
 #include "segment/segment_internal.h"
 #include "segment/snap_fillets.h"
 #include "segment/split_off_planes.h"
@@ -44,6 +44,15 @@ absl::Status ValidateParams(const SegmentParams& p) {
     return absl::InvalidArgumentError(
         absl::StrCat("segment: exact_tolerance must be > 0, got ", *p.exact_tolerance));
   }
+  return absl::OkStatus();
+}
+
+// The merges that lower the energy (merge_regions.h), then seed 000's type
+// decision for the general quadrics left.
+absl::Status Merge(const segment_internal::SegmentContext& c, std::vector<int>* labels,
+                   std::vector<segment_internal::RegionState>* regions) {
+  MESHSEG_RETURN_IF_ERROR(segment_internal::MergeRegions(c, labels, regions).status());
+  segment_internal::RetypeQuadrics(c, regions);
   return absl::OkStatus();
 }
 
@@ -96,7 +105,7 @@ absl::StatusOr<Segmentation> Segment(const Mesh& mesh, const CurvatureField& cur
   ReleaseSmallQuadrics(c, &labels, &regions);
   MESHSEG_RETURN_IF_ERROR(AbsorbLeftovers(c, &labels, &regions));
   ctx.Progress("segment", 0.7);
-  MESHSEG_RETURN_IF_ERROR(MergeRegions(c, &labels, &regions));
+  MESHSEG_RETURN_IF_ERROR(Merge(c, &labels, &regions));
   if (ReleaseSmallRegions(c, &labels, &regions) > 0) {
     MESHSEG_RETURN_IF_ERROR(AbsorbLeftovers(c, &labels, &regions));
   }
@@ -114,13 +123,13 @@ absl::StatusOr<Segmentation> Segment(const Mesh& mesh, const CurvatureField& cur
   // go to their neighbours, and the pieces it kept apart may merge now.
   if (ReleaseSmallRegions(c, &labels, &regions) > 0) {
     MESHSEG_RETURN_IF_ERROR(AbsorbLeftovers(c, &labels, &regions));
-    MESHSEG_RETURN_IF_ERROR(MergeRegions(c, &labels, &regions));
+    MESHSEG_RETURN_IF_ERROR(Merge(c, &labels, &regions));
     MESHSEG_RETURN_IF_ERROR(RefineBoundaries(c, &labels, &regions));
   }
   // A region whose type misses it by more than the noise gets the type that
   // fits; it may then merge with the pieces of its surface around it.
   if (!RetypeInaccurateCurved(c, &regions).empty()) {
-    MESHSEG_RETURN_IF_ERROR(MergeRegions(c, &labels, &regions));
+    MESHSEG_RETURN_IF_ERROR(Merge(c, &labels, &regions));
     MESHSEG_RETURN_IF_ERROR(RefineBoundaries(c, &labels, &regions));
   }
   if (DissolveCreaseBands(c, &labels, &regions) > 0) {
@@ -146,15 +155,13 @@ absl::StatusOr<Segmentation> Segment(const Mesh& mesh, const CurvatureField& cur
   if (!RetypeCoaxialBands(c, labels, &regions).empty()) {
     MESHSEG_RETURN_IF_ERROR(RefineBoundaries(c, &labels, &regions));
   }
-  // Pieces of one surface typed apart (a countersink grown from two seeds
-  // as a sphere and a cone) are joined by the same test.
-  MESHSEG_ASSIGN_OR_RETURN(const int same_surface, MergeSameSurface(c, &labels, &regions));
-  if (same_surface > 0) MESHSEG_RETURN_IF_ERROR(RefineBoundaries(c, &labels, &regions));
+  // Pieces of one surface typed apart are joined by the same energy.
+  MESHSEG_ASSIGN_OR_RETURN(const int merged, MergeRegions(c, &labels, &regions));
+  if (merged > 0) MESHSEG_RETURN_IF_ERROR(RefineBoundaries(c, &labels, &regions));
   // The steps since the last release can shrink a region below the size
-  // floor again (a plane strip on test_piece's groove at 0.15 h, seed 124:
-  // 62 vertices at the release, 56 at the end); a plane strip too narrow
-  // for an interior was never typed by one. (Two statements: both change
-  // the labels the other reads.)
+  // floor again (a plane strip along a groove that the refinement narrowed);
+  // a plane strip too narrow for an interior was never typed by one. (Two
+  // statements: both change the labels the other reads.)
   const int small = ReleaseSmallRegions(c, &labels, &regions);
   if (small + ReleaseNarrowPlanes(c, &labels, &regions) > 0) {
     MESHSEG_RETURN_IF_ERROR(AbsorbLeftovers(c, &labels, &regions));

@@ -1,0 +1,146 @@
+// The energy the segmentation decides labels, types and merges by: one
+// criterion in the shape of PEARL multi-model fitting (Isack & Boykov, IJCV
+// 2012) with label costs (Delong et al., IJCV 2012), on the vertex graph
+// and tolerances of ALGORITHMS.md S1.
+//
+// A labeling L gives every vertex v a region L_v (or none, -1); every
+// region r has a type and a surface S_r. Its energy is
+//
+//   E(L) = sum_v D_v(L_v) + lambda sum_(u,v) w_uv [L_u != L_v]
+//          + sum_r (p_r / 2) ln n_r.
+//
+// Data term. With d_v(S) the distance of v to S and th_dis the distance
+// tolerance of S1 eq. (5),
+//
+//   D_v(r) = (a_v / a_mean) / 2 * min(k^2 (d_v(S_r) / th_dis)^2, c_out),
+//
+// half the squared residual in units of th_dis / k: th_dis is at least k
+// noise sigmas (estimate_noise.h), so where the noise sets th_dis the unit
+// is sigma and D is the negative log-likelihood of a normal residual; where
+// the mesh resolution sets it, the unit is coarser and D more lenient.
+// a_v / a_mean (vertex area over that of a regular triangulation of edge
+// l_avg) makes sum_v D independent of the meshing's density. A vertex left
+// unlabelled (-1, the outlier label of PEARL) pays c_out / 2, and so does a
+// vertex farther than th_dis from its surface: rows along a crease, which
+// no smooth surface meets, cost alike under either of its regions and
+// cannot decide between them.
+// The distance term of the MismatchScore (refine_boundaries.h) without its
+// normal term: the smoothed normals n'_i are biased over the W2 window
+// near creases and across narrow bands (they turn toward both neighbours of
+// a chamfer as a sphere's would), so that an angle term in units of th_nm
+// / k outweighs the distances several times and prefers the wrong type
+// there; the information criterion of decide_type.h, which the label cost
+// below completes, is in distances alone too.
+//
+// Smoothness term. Every mesh edge between two labels costs lambda w_uv,
+// w_uv = 1 between non-sharp vertices and kCreaseEdgeWeight where either
+// end is sharp (CurvatureField::sharp): a boundary along a crease is where
+// one face meets another and costs little; one through a smooth face is
+// paid for in full.
+//
+// Label cost. A region of type T and n_r vertices costs (p_T / 2) ln n_r,
+// p_T its free parameters (ParameterCount, decide_type.h): the Bayesian
+// information criterion of InformationScore with the variance known, so
+// that with the data term above a type or a second surface must lower the
+// residuals by more than its parameters' cost.
+//
+// A local move (merge two regions, retype one, drop one) is accepted iff it
+// lowers E; MergeDelta, RetypeDelta and DropDelta below price one without
+// touching the rest.
+#ifndef MESHSEG_SRC_SEGMENT_ENERGY_H_
+#define MESHSEG_SRC_SEGMENT_ENERGY_H_
+
+#include <optional>
+#include <span>
+#include <vector>
+
+#include "segment/segment_internal.h"
+
+namespace meshseg::segment_internal {
+
+// The constants of E, each with its meaning.
+// k: th_dis in units of the data term's scale (estimate_noise.h puts th_dis
+// at 3 noise sigmas or more).
+inline constexpr double kToleranceSigmas = 3.0;
+// c_out: the truncation of k^2 (d / th_dis)^2, a vertex outside the
+// distance tolerance (d = th_dis) being an outlier: k^2.
+inline constexpr double kOutlierMismatch = kToleranceSigmas * kToleranceSigmas;
+// lambda: the cost of one mesh edge between two labels through a smooth
+// face, that of a vertex one data unit (one sigma) off its surface, twice.
+inline constexpr double kBoundaryCost = 1.0;
+// w_uv for an edge with a sharp end, relative to a smooth one.
+inline constexpr double kCreaseEdgeWeight = 0.1;
+
+// D_v(S) for vertex v on `surface`.
+double VertexCost(const SegmentContext& c, int v, const Surface& surface);
+// D_v of an unlabelled vertex.
+double OutlierCost(const SegmentContext& c, int v);
+// sum of D_v(S) over `vertices`.
+double DataCost(const SegmentContext& c, const Surface& surface, std::span<const int> vertices);
+// (p_T / 2) ln n (0 for n <= 1).
+double LabelCost(SurfaceType type, std::size_t vertex_count);
+// lambda w_uv of the edge (u, v).
+double EdgeCost(const SegmentContext& c, int u, int v);
+// The smoothness cost of the edges between regions `a` and `b`, from the
+// vertices of `a`.
+double BoundaryCost(const SegmentContext& c, const std::vector<int>& labels,
+                    std::span<const int> a_vertices, int b);
+
+// E of `labels` with `regions` (the vertex lists must match the labels).
+double TotalEnergy(const SegmentContext& c, const std::vector<int>& labels,
+                   const std::vector<RegionState>& regions);
+
+// A priced move: its change of E and, for a merge or retype, the new
+// region's type and surface.
+struct Move {
+  double delta = 0.0;
+  SurfaceType type = SurfaceType::kQuadric;
+  Surface surface;
+};
+
+// The surface of `type` that fits `vertices` at least cost: the least
+// squares fit, then (if it costs less) the fit to the vertices within th_dis
+// of that fit (the re-estimation of PEARL, on inliers). nullopt
+// if no valid fit.
+std::optional<Surface> FitForEnergy(const SegmentContext& c, SurfaceType type,
+                                    std::span<const int> vertices);
+
+// The change of E from merging regions `a` and `b` into one surface of the
+// type among `types` that lowers E most (nullopt: no type fits the union).
+std::optional<Move> MergeDelta(const SegmentContext& c, const std::vector<int>& labels,
+                               const std::vector<RegionState>& regions, int a, int b,
+                               std::span<const SurfaceType> types);
+// The same for regions `x` (id `a` in `labels`) and `y` (id `b`) as given,
+// e.g. re-estimated (their surfaces may differ from the labeling's).
+std::optional<Move> MergeDelta(const SegmentContext& c, const std::vector<int>& labels,
+                               const RegionState& x, int a, const RegionState& y, int b,
+                               std::span<const SurfaceType> types);
+
+// The change of E from refitting region `r` as `type` (nullopt: no valid fit).
+std::optional<Move> RetypeDelta(const SegmentContext& c, const RegionState& r, SurfaceType type);
+
+// The change of E from dropping region `id`: each of its vertices goes to
+// the region next to `id` whose surface it costs least on (or stays
+// unlabelled if no region is next to it), surfaces unchanged. If `takers`
+// is set, it gets the labels the vertices go to (-1: none), sorted, once
+// each.
+double DropDelta(const SegmentContext& c, const std::vector<int>& labels,
+                 const std::vector<RegionState>& regions, int id,
+                 std::vector<int>* takers = nullptr);
+
+// The types a merge of regions of types `a` and `b` may take: each member's
+// own type, every analytic type that generalises neither member within its
+// family (IsLimitOf: a cylinder is a cone of half-angle 0, both are tori of
+// infinite tube radius), and every type with the quadric if either is a
+// general quadric. Where the meshing's residuals are correlated (a surface
+// from binary voxels) a torus bent along a cylinder's axis fits that error
+// better than the label cost charges for its two parameters; the simpler
+// member's type stands, and the retype steps may still generalise it. A
+// member's own type is no such new generalisation: a cone grown in two
+// pieces, one of them a band narrow enough to read as a cylinder within the
+// noise, is joined by the cone the other piece already is.
+std::vector<SurfaceType> MergeTypes(SurfaceType a, SurfaceType b);
+
+}  // namespace meshseg::segment_internal
+
+#endif  // MESHSEG_SRC_SEGMENT_ENERGY_H_

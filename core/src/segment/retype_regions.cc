@@ -1,0 +1,111 @@
+#include "segment/retype_regions.h"
+
+#include <cmath>
+#include <optional>
+
+#include "segment/decide_type.h"
+
+namespace meshseg::segment_internal {
+namespace {
+
+// The non-sharp vertices of `vertices` (all of them if fewer than
+// kMinRetypeVertices are smooth): absorbed vertices next to sharp edges
+// carry bent normals and say little about the surface.
+std::vector<int> SmoothVertices(const SegmentContext& c, const std::vector<int>& vertices) {
+  std::vector<int> smooth;
+  for (const int v : vertices) {
+    if (!c.curvature->sharp[v]) smooth.push_back(v);
+  }
+  return smooth.size() < kMinRetypeVertices ? vertices : smooth;
+}
+
+// Fractions within this of each other count as equal (simpler type wins).
+constexpr double kFractionTie = 0.02;
+// RetypeInaccurateCurved looks again at curved regions whose model error
+// exceeds this many noise sigmas (rms above 1.12 sigma).
+constexpr double kInaccurateError = 0.5;
+// ... and takes a type that fits this share of a region its own type no
+// longer fits validly (the trim share of the initial segmentation).
+constexpr double kStaleTypeFraction = 0.75;
+
+}  // namespace
+
+void RetypeQuadrics(const SegmentContext& c, std::vector<RegionState>* regions) {
+  for (RegionState& r : *regions) {
+    if (!r.alive || r.type != SurfaceType::kQuadric || r.vertices.empty()) continue;
+    // Absorbed vertices next to sharp edges carry bent normals; judge the
+    // type on the non-sharp ones.
+    std::vector<int> smooth;
+    for (const int v : r.vertices) {
+      if (!c.curvature->sharp[v]) smooth.push_back(v);
+    }
+    if (smooth.size() < kMinRetypeVertices) continue;
+    std::optional<TypedFit> typed = PlaneIfFits(c, smooth, c.tolerance);
+    if (!typed) {
+      TypedFit curved = DecideCurvedType(c, smooth, c.tolerance);
+      if (curved.fraction > c.alpha) typed = curved;
+    }
+    if (!typed) continue;
+    r.type = typed->type;
+    r.surface = typed->fit.surface;
+  }
+}
+
+bool RetypeCurved(const SegmentContext& c, RegionState* r) {
+  const std::vector<int> smooth = SmoothVertices(c, r->vertices);
+  if (smooth.size() < kMinRetypeVertices) return false;
+  const TypedFit curved = DecideCurvedType(c, smooth, c.tolerance);
+  if (!(curved.fraction > c.alpha) || curved.type == SurfaceType::kQuadric) return false;
+  r->type = curved.type;
+  r->surface = curved.fit.surface;
+  return true;
+}
+
+std::vector<int> RetypeBentPlanes(const SegmentContext& c, std::vector<RegionState>* regions) {
+  std::vector<int> retyped;
+  for (int id = 0; id < static_cast<int>(regions->size()); ++id) {
+    RegionState& r = (*regions)[id];
+    if (!r.alive || r.type != SurfaceType::kPlane) continue;
+    const std::vector<int> smooth = SmoothVertices(c, r.vertices);
+    if (smooth.size() < kMinRetypeVertices) continue;
+    if (FitFraction(c, r.surface, smooth, c.tolerance) > c.alpha) continue;
+    if (RetypeCurved(c, &r)) retyped.push_back(id);
+  }
+  return retyped;
+}
+
+std::vector<int> RetypeInaccurateCurved(const SegmentContext& c,
+                                        std::vector<RegionState>* regions) {
+  std::vector<int> retyped;
+  for (int id = 0; id < static_cast<int>(regions->size()); ++id) {
+    RegionState& r = (*regions)[id];
+    if (!r.alive || !IsCurved(r.type)) continue;
+    const std::vector<int> smooth = SmoothVertices(c, r.vertices);
+    if (smooth.size() < kMinRetypeVertices) continue;
+    // A type with no valid fit left (a torus whose cusp the region grew
+    // over) misses by any amount.
+    const FitResult current = FitType(c, r.type, smooth);
+    const double error = current.ok() ? ModelError(c, current) : HUGE_VAL;
+    if (!(error > kInaccurateError * c.noise_sigma)) continue;
+    const TypedFit plane = TryType(c, SurfaceType::kPlane, smooth, c.tolerance);
+    TypedFit typed = plane.fraction > c.alpha ? plane : DecideCurvedType(c, smooth, c.tolerance);
+    // With no valid fit left, a type that fits kStaleTypeFraction will do:
+    // the boundary refinement that follows hands the rest to the
+    // neighbours (the boss top holds the first rows of its edge round).
+    double needed = c.alpha;
+    if (!current.ok() && !(typed.fraction > c.alpha)) {
+      needed = kStaleTypeFraction;
+      if (plane.fraction >= typed.fraction - kFractionTie) typed = plane;
+    }
+    if (typed.type == r.type || typed.type == SurfaceType::kQuadric ||
+        !(typed.fraction >= needed) || !(ModelError(c, typed.fit) < 0.5 * error)) {
+      continue;
+    }
+    r.type = typed.type;
+    r.surface = typed.fit.surface;
+    retyped.push_back(id);
+  }
+  return retyped;
+}
+
+}  // namespace meshseg::segment_internal

@@ -1,0 +1,45 @@
+// The type decisions of ALGORITHMS.md S1 step 2.5 asked again of regions
+// that absorption, merging and refinement changed: general quadrics, planes
+// their plane no longer fits, curved regions their type misses.
+#ifndef MESHSEG_SRC_SEGMENT_RETYPE_REGIONS_H_
+#define MESHSEG_SRC_SEGMENT_RETYPE_REGIONS_H_
+
+#include <vector>
+
+#include "segment/segment_internal.h"
+
+namespace meshseg::segment_internal {
+
+inline constexpr std::size_t kMinRetypeVertices = 10;
+
+// Gives general-quadric regions the first analytic type passing the alpha
+// test on their non-sharp vertices (regions change after absorption and
+// merging, so seed 000 §3 step 5 is asked again).
+void RetypeQuadrics(const SegmentContext& c, std::vector<RegionState>* regions);
+
+// Gives plane regions that their plane no longer fits (the alpha test fails
+// on their non-sharp vertices) the first analytic curved type that passes
+// it: at high noise a fillet can start as a plane from a seed on its middle
+// and take its whole arc as leftovers. Returns the ids of those retyped.
+std::vector<int> RetypeBentPlanes(const SegmentContext& c, std::vector<RegionState>* regions);
+
+// Gives region `r` the curved type DecideCurvedType finds on its non-sharp
+// vertices if it passes the alpha test and is not a general quadric;
+// returns whether it did.
+bool RetypeCurved(const SegmentContext& c, RegionState* r);
+
+// Gives a curved region whose fit misses it by more than kInaccurateError
+// noise sigmas beyond the noise (ModelError), or that its type no longer
+// fits validly, the type of seed 000's order on its non-sharp vertices (the
+// plane, else DecideCurvedType's), if that passes the alpha test with under
+// half the model error. A seed on a long noisy cone can grow as a sphere
+// that passes the tolerances (at 0.15 h a sphere 1.0 sigma off a long
+// cone band the cone meets at the noise); a torus typed on a ring at the rim of a
+// boss top can be grown over the whole disc, where only a spindle torus
+// with its cusp inside fits. Returns the ids retyped.
+std::vector<int> RetypeInaccurateCurved(const SegmentContext& c,
+                                        std::vector<RegionState>* regions);
+
+}  // namespace meshseg::segment_internal
+
+#endif  // MESHSEG_SRC_SEGMENT_RETYPE_REGIONS_H_
