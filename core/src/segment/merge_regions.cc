@@ -1,5 +1,6 @@
 #include "segment/merge_regions.h"
 
+#include <algorithm>
 #include <cstddef>
 #include <map>
 #include <optional>
@@ -56,7 +57,10 @@ absl::StatusOr<int> MergeRegions(const SegmentContext& c, std::vector<int>* labe
         std::vector<int> takers;
         const double drop = DropDelta(c, *labels, *regions, a_smaller ? a : b, &takers);
         const std::vector<int> partner = {a_smaller ? b : a};
-        if (drop < move->delta && takers != partner) return std::nullopt;
+        if (drop < move->delta &&
+            std::find(takers.begin(), takers.end(), partner[0]) == takers.end()) {
+          return std::nullopt;
+        }
         return PairMerge{.score = -move->delta, .type = move->type, .surface = move->surface};
       });
 }
