@@ -9,7 +9,6 @@
 
 #include "meshseg/status_macros.h"
 #include "segment/decide_type.h"
-#include "segment/retype_by_interior.h"
 
 namespace meshseg::segment_internal {
 namespace {
@@ -20,19 +19,6 @@ constexpr int kSteps = 5;
 constexpr double kMaxAngleDeg = 80.0;
 constexpr double kPi = 3.14159265358979323846;
 constexpr int kNoPick = -1;
-// Share of a region's vertices on a neighbour's surface that makes it a
-// piece of that neighbour (LiesOnANeighbour). Measured at the releases:
-// fragments of every type on the generated parts at 0.15 h (seeds 1-3) 0.44
-// to 1, strips of a round 0.95; test_piece's boss top 0 at 1.5 times its
-// voxel size and noise 0, 0.15 to 0.30 at 1.25 times and 0.15 h.
-constexpr double kOnNeighbourShare = 1.0 / 3.0;
-// A small face is flat: its plane meets its vertices within this many
-// sigmas (rms). test_piece's boss top at 1.25 h and 0.15 h: 0.99 to 1.29
-// sigma; the rim fragments that pass the share above (sphere_cap at 0.05 h,
-// seed 26, on the cylinder's top rim: 30 and 37 vertices, 4 and 11 of them
-// on a neighbour): 4.2 and 2.9 sigma.
-constexpr double kFaceSigmas = 2.0;
-
 // The thresholds of step `step` (0 to kSteps - 1).
 Tolerance Stepped(const SegmentContext& c, int step) {
   const double scale = 2.0 + step;
@@ -103,47 +89,6 @@ void TypeIslands(const SegmentContext& c, std::vector<int>* labels,
   }
 }
 
-// True if kOnNeighbourShare of region `id`'s vertices meet the surface of
-// a region beside it within the first step's thresholds (twice the base).
-bool LiesOnANeighbour(const SegmentContext& c, const std::vector<int>& labels,
-                      const std::vector<RegionState>& regions, int id) {
-  const RegionState& r = regions[id];
-  std::vector<int> beside;
-  for (const int v : r.vertices) {
-    for (const int u : c.graph.Neighbors(v)) {
-      const int other = labels[u];
-      if (other >= 0 && other != id && regions[other].alive &&
-          std::find(beside.begin(), beside.end(), other) == beside.end()) {
-        beside.push_back(other);
-      }
-    }
-  }
-  const Tolerance tol = Stepped(c, 0);
-  std::size_t on = 0;
-  for (const int v : r.vertices) {
-    on += std::any_of(beside.begin(), beside.end(), [&](int other) {
-      return Fits(c, v, ProjectVertex(c, regions[other].surface, v), tol);
-    });
-  }
-  return on >= kOnNeighbourShare * r.vertices.size();
-}
-
-// A mesh is exact when its estimated noise is below this fraction of l_avg
-// (CAD exports and noise-free generated parts: 0 to 1e-15 l_avg; the
-// cleanest scan in shared/data, fandisk, 2.5e-4).
-constexpr double kExactNoise = 1e-9;
-
-// A plane of kMinInteriorVertices, flat within kFaceSigmas (or exact), that
-// lies on no neighbour: a face of its own under the size floor.
-bool IsSmallFace(const SegmentContext& c, const std::vector<int>& labels,
-                 const std::vector<RegionState>& regions, int id) {
-  const RegionState& r = regions[id];
-  if (r.type != SurfaceType::kPlane || r.vertices.size() < kMinInteriorVertices) return false;
-  const double rms = std::sqrt(SquaredDistances(c, r.surface, r.vertices) / r.vertices.size());
-  return rms <= std::max(kFaceSigmas * c.noise_sigma, kExactNoise * c.mean_edge_length) &&
-         !LiesOnANeighbour(c, labels, regions, id);
-}
-
 }  // namespace
 
 void ReleaseSmallQuadrics(const SegmentContext& c, std::vector<int>* labels,
@@ -153,29 +98,6 @@ void ReleaseSmallQuadrics(const SegmentContext& c, std::vector<int>* labels,
   ReleaseRegions(
       [&](int, const RegionState& r) {
         return r.type == SurfaceType::kQuadric && r.vertices.size() < min_size;
-      },
-      labels, regions);
-}
-
-int ReleaseSmallRegions(const SegmentContext& c, std::vector<int>* labels,
-                        std::vector<RegionState>* regions) {
-  const std::size_t min_size =
-      std::max(kMinRegionVertices, static_cast<std::size_t>(kMinRegionShare * c.vertex_count()));
-  return ReleaseRegions(
-      [&](int id, const RegionState& r) {
-        return r.vertices.size() < min_size && !IsSmallFace(c, *labels, *regions, id);
-      },
-      labels, regions);
-}
-
-int ReleaseNarrowPlanes(const SegmentContext& c, std::vector<int>* labels,
-                        std::vector<RegionState>* regions) {
-  return ReleaseRegions(
-      [&](int id, const RegionState& r) {
-        const int ids[] = {id};
-        return r.type == SurfaceType::kPlane &&
-               InteriorVertices(c, *labels, ids, r.vertices).size() < kMinInteriorVertices &&
-               !IsSmallFace(c, *labels, *regions, id);
       },
       labels, regions);
 }

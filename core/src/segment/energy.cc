@@ -114,6 +114,13 @@ std::optional<Surface> FitForEnergy(const SegmentContext& c, SurfaceType type,
   return PriceFit(c, type, vertices).surface;
 }
 
+RegionState Reestimated(const SegmentContext& c, const RegionState& r) {
+  RegionState out = r;
+  const PricedFit fit = PriceFit(c, r.type, r.vertices);
+  if (fit.surface && fit.cost < DataCost(c, r.surface, r.vertices)) out.surface = *fit.surface;
+  return out;
+}
+
 std::vector<SurfaceType> MergeTypes(SurfaceType a, SurfaceType b) {
   constexpr SurfaceType kAnalytic[] = {SurfaceType::kPlane, SurfaceType::kCylinder,
                                        SurfaceType::kSphere, SurfaceType::kCone,
@@ -165,39 +172,109 @@ std::optional<Move> RetypeDelta(const SegmentContext& c, const RegionState& r, S
               .surface = *fit.surface};
 }
 
-double DropDelta(const SegmentContext& c, const std::vector<int>& labels,
-                 const std::vector<RegionState>& regions, int id, std::vector<int>* takers) {
-  const RegionState& r = regions[id];
-  const std::vector<int> around = RegionsAround(c, labels, regions, id);
-  // The new label of each of r's vertices, in the order of r.vertices.
+namespace {
+
+// The labels the vertices of region `id` take when it is dropped, in the
+// order of its vertex list (DropDelta).
+std::vector<int> DropLabels(const SegmentContext& c, const std::vector<int>& labels,
+                            const std::function<const RegionState&(int)>& region, int id) {
+  const RegionState& r = region(id);
+  std::vector<int> around;
+  for (const int v : r.vertices) {
+    for (const int u : c.graph.Neighbors(v)) {
+      if (labels[u] >= 0 && labels[u] != id) around.push_back(labels[u]);
+    }
+  }
+  std::sort(around.begin(), around.end());
+  around.erase(std::unique(around.begin(), around.end()), around.end());
   std::vector<int> next(r.vertices.size(), -1);
-  double delta = -LabelCost(r.type, r.vertices.size());
   for (std::size_t k = 0; k < r.vertices.size(); ++k) {
     const int v = r.vertices[k];
     double best = OutlierCost(c, v);
     for (const int o : around) {
-      const double cost = VertexCost(c, v, regions[o].surface);
+      const double cost = VertexCost(c, v, region(o).surface);
       if (cost < best) best = cost, next[k] = o;
     }
-    delta += best - VertexCost(c, v, r.surface);
   }
-  if (takers != nullptr) {
-    *takers = next;
-    std::sort(takers->begin(), takers->end());
-    takers->erase(std::unique(takers->begin(), takers->end()), takers->end());
+  // The outliers, one data cost under every label, take the label of most
+  // of their placed mesh neighbours, ties to the lowest id, until none
+  // changes (in vertex order, so the result is deterministic).
+  auto index = [&](int u) {
+    const auto it = std::lower_bound(r.vertices.begin(), r.vertices.end(), u);
+    return static_cast<std::size_t>(it - r.vertices.begin());
+  };
+  bool changed = true;
+  while (changed) {
+    changed = false;
+    for (std::size_t k = 0; k < r.vertices.size(); ++k) {
+      if (next[k] >= 0) continue;
+      std::vector<int> seen;
+      for (const int u : c.graph.Neighbors(r.vertices[k])) {
+        const int l = labels[u] == id ? next[index(u)] : labels[u];
+        if (l >= 0) seen.push_back(l);
+      }
+      if (seen.empty()) continue;
+      std::sort(seen.begin(), seen.end());
+      int pick = -1;
+      std::ptrdiff_t most = 0;
+      for (auto it = seen.begin(); it != seen.end();) {
+        const auto end = std::upper_bound(it, seen.end(), *it);
+        if (end - it > most) most = end - it, pick = *it;
+        it = end;
+      }
+      next[k] = pick;
+      changed = true;
+    }
   }
-  // The neighbours grow: their label costs by the vertices they take.
-  std::vector<std::size_t> gained(regions.size(), 0);
-  for (const int o : next) {
-    if (o >= 0) ++gained[o];
+  return next;
+}
+
+}  // namespace
+
+DropMove DropDelta(const SegmentContext& c, const std::vector<int>& labels,
+                   const std::vector<RegionState>& regions, int id) {
+  return DropDelta(
+      c, labels, [&](int r) -> const RegionState& { return regions[r]; }, id);
+}
+
+DropMove DropDelta(const SegmentContext& c, const std::vector<int>& labels,
+                   const std::function<const RegionState&(int)>& region, int id) {
+  const RegionState& r = region(id);
+  DropMove move;
+  move.next = DropLabels(c, labels, region, id);
+  move.takers = move.next;
+  std::sort(move.takers.begin(), move.takers.end());
+  move.takers.erase(std::unique(move.takers.begin(), move.takers.end()), move.takers.end());
+  if (!move.takers.empty() && move.takers.front() < 0) move.takers.erase(move.takers.begin());
+
+  // Data and label costs: r's go, the outliers pay c_out / 2, each taker
+  // pays for all it holds under its refitted surface.
+  double delta = -DataCost(c, r.surface, r.vertices) - LabelCost(r.type, r.vertices.size());
+  for (std::size_t k = 0; k < r.vertices.size(); ++k) {
+    if (move.next[k] < 0) delta += OutlierCost(c, r.vertices[k]);
   }
-  for (const int o : around) {
-    const std::size_t n = regions[o].vertices.size();
-    delta += LabelCost(regions[o].type, n + gained[o]) - LabelCost(regions[o].type, n);
+  for (const int o : move.takers) {
+    const RegionState& taker = region(o);
+    std::vector<int> taken;
+    for (std::size_t k = 0; k < r.vertices.size(); ++k) {
+      if (move.next[k] == o) taken.push_back(r.vertices[k]);
+    }
+    std::vector<int> grown(taker.vertices.size() + taken.size());
+    std::merge(taker.vertices.begin(), taker.vertices.end(), taken.begin(), taken.end(),
+               grown.begin());
+    const double own = DataCost(c, taker.surface, taker.vertices);
+    double cost = own + DataCost(c, taker.surface, taken);
+    Surface surface = taker.surface;
+    const PricedFit fit = PriceFit(c, taker.type, grown);
+    if (fit.surface && fit.cost < cost) cost = fit.cost, surface = *fit.surface;
+    delta += cost - own + LabelCost(taker.type, grown.size()) -
+             LabelCost(taker.type, taker.vertices.size());
+    move.surfaces.push_back(surface);
   }
+
   // The edges at r's vertices, before and after (each edge inside r once).
   std::unordered_map<int, int> after;
-  for (std::size_t k = 0; k < r.vertices.size(); ++k) after[r.vertices[k]] = next[k];
+  for (std::size_t k = 0; k < r.vertices.size(); ++k) after[r.vertices[k]] = move.next[k];
   auto label_after = [&](int u) { return labels[u] == id ? after.at(u) : labels[u]; };
   for (const int v : r.vertices) {
     for (const int u : c.graph.Neighbors(v)) {
@@ -206,7 +283,8 @@ double DropDelta(const SegmentContext& c, const std::vector<int>& labels,
       delta += ((label_after(u) != label_after(v)) - (labels[u] != labels[v])) * w;
     }
   }
-  return delta;
+  move.delta = delta;
+  return move;
 }
 
 }  // namespace meshseg::segment_internal

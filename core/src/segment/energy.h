@@ -50,6 +50,7 @@
 #ifndef MESHSEG_SRC_SEGMENT_ENERGY_H_
 #define MESHSEG_SRC_SEGMENT_ENERGY_H_
 
+#include <functional>
 #include <optional>
 #include <span>
 #include <vector>
@@ -105,6 +106,13 @@ struct Move {
 std::optional<Surface> FitForEnergy(const SegmentContext& c, SurfaceType type,
                                     std::span<const int> vertices);
 
+// Region `r` re-estimated (PEARL's step between expansions): refitted with
+// its own type (FitForEnergy) if that costs less than its current surface.
+// A region keeps its surface from before absorption and refinement changed
+// its vertices; priced with that stale surface, any move that refits it
+// looks a gain.
+RegionState Reestimated(const SegmentContext& c, const RegionState& r);
+
 // The change of E from merging regions `a` and `b` into one surface of the
 // type among `types` that lowers E most (nullopt: no type fits the union).
 std::optional<Move> MergeDelta(const SegmentContext& c, const std::vector<int>& labels,
@@ -119,14 +127,32 @@ std::optional<Move> MergeDelta(const SegmentContext& c, const std::vector<int>& 
 // The change of E from refitting region `r` as `type` (nullopt: no valid fit).
 std::optional<Move> RetypeDelta(const SegmentContext& c, const RegionState& r, SurfaceType type);
 
-// The change of E from dropping region `id`: each of its vertices goes to
-// the region next to `id` whose surface it costs least on (or stays
-// unlabelled if no region is next to it), surfaces unchanged. If `takers`
-// is set, it gets the labels the vertices go to (-1: none), sorted, once
-// each.
-double DropDelta(const SegmentContext& c, const std::vector<int>& labels,
-                 const std::vector<RegionState>& regions, int id,
-                 std::vector<int>* takers = nullptr);
+// A priced drop of one region: its change of E, the label each of its
+// vertices goes to (in the order of its vertex list; -1: none), and the
+// regions that take vertices with their surfaces refitted to what they then
+// hold.
+struct DropMove {
+  double delta = 0.0;
+  std::vector<int> next;
+  std::vector<int> takers;  // sorted
+  std::vector<Surface> surfaces;  // of `takers`, in their order
+};
+
+// The change of E from dropping region `id` (the label removal of PEARL,
+// Isack & Boykov 2012; Delong et al. 2012): each of its vertices within
+// th_dis of the surface of a region next to `id` goes to the one it costs
+// least on; the rest, outliers to every such surface and so of one data
+// cost under any label, go to the label most of their mesh neighbours have
+// (fewest boundary edges), spreading from those placed; a vertex no label
+// reaches stays unlabelled. Each region that takes vertices is then refitted
+// with its type to all it holds (FitForEnergy), kept where that costs less
+// than its surface.
+DropMove DropDelta(const SegmentContext& c, const std::vector<int>& labels,
+                   const std::vector<RegionState>& regions, int id);
+// The same with each region as `region(id)` gives it (e.g. re-estimated:
+// its surface may differ from the labeling's, its vertices may not).
+DropMove DropDelta(const SegmentContext& c, const std::vector<int>& labels,
+                   const std::function<const RegionState&(int)>& region, int id);
 
 // The types a merge of regions of types `a` and `b` may take: each member's
 // own type, every analytic type that generalises neither member within its

@@ -11,6 +11,7 @@
 #include "segment/absorb_leftovers.h"
 #include "segment/decide_type.h"
 #include "segment/dissolve_crease_bands.h"
+#include "segment/drop_regions.h"
 #include "segment/estimate_noise.h"
 #include "segment/finalize_regions.h"
 #include "segment/give_back_rows.h"
@@ -47,11 +48,26 @@ absl::Status ValidateParams(const SegmentParams& p) {
   return absl::OkStatus();
 }
 
-// The merges that lower the energy (merge_regions.h), then seed 000's type
-// decision for the general quadrics left.
+// The merges and the drops that lower the energy (merge_regions.h,
+// drop_regions.h) in turn until no drop does: a drop can leave the pieces
+// a fragment kept apart to merge, and a merge refused for a drop waits for
+// that drop. Returns how many moves were made.
+absl::StatusOr<int> MergeAndDrop(const segment_internal::SegmentContext& c,
+                                 std::vector<int>* labels,
+                                 std::vector<segment_internal::RegionState>* regions) {
+  int moves = 0;
+  for (;;) {
+    MESHSEG_ASSIGN_OR_RETURN(const int merged, segment_internal::MergeRegions(c, labels, regions));
+    MESHSEG_ASSIGN_OR_RETURN(const int dropped, segment_internal::DropRegions(c, labels, regions));
+    moves += merged + dropped;
+    if (dropped == 0) return moves;
+  }
+}
+
+// MergeAndDrop, then seed 000's type decision for the general quadrics left.
 absl::Status Merge(const segment_internal::SegmentContext& c, std::vector<int>* labels,
                    std::vector<segment_internal::RegionState>* regions) {
-  MESHSEG_RETURN_IF_ERROR(segment_internal::MergeRegions(c, labels, regions).status());
+  MESHSEG_RETURN_IF_ERROR(MergeAndDrop(c, labels, regions).status());
   segment_internal::RetypeQuadrics(c, regions);
   return absl::OkStatus();
 }
@@ -106,9 +122,6 @@ absl::StatusOr<Segmentation> Segment(const Mesh& mesh, const CurvatureField& cur
   MESHSEG_RETURN_IF_ERROR(AbsorbLeftovers(c, &labels, &regions));
   ctx.Progress("segment", 0.7);
   MESHSEG_RETURN_IF_ERROR(Merge(c, &labels, &regions));
-  if (ReleaseSmallRegions(c, &labels, &regions) > 0) {
-    MESHSEG_RETURN_IF_ERROR(AbsorbLeftovers(c, &labels, &regions));
-  }
   MESHSEG_RETURN_IF_ERROR(RefineBoundaries(c, &labels, &regions));
   // A plane retyped here held only part of its arc; the type is decided
   // again once the refinement has given it the rest.
@@ -118,11 +131,11 @@ absl::StatusOr<Segmentation> Segment(const Mesh& mesh, const CurvatureField& cur
     for (const int id : bent) RetypeCurved(c, &regions[id]);
     MESHSEG_RETURN_IF_ERROR(RefineBoundaries(c, &labels, &regions));
   }
-  // The refinement can shrink a region it started with below the size floor
-  // (a sliver of cylinder between a countersink and its plane); its vertices
-  // go to their neighbours, and the pieces it kept apart may merge now.
-  if (ReleaseSmallRegions(c, &labels, &regions) > 0) {
-    MESHSEG_RETURN_IF_ERROR(AbsorbLeftovers(c, &labels, &regions));
+  // The refinement can shrink a region it started with to a sliver whose
+  // vertices cost less on their neighbours' surfaces (between a countersink
+  // and its plane); it is dropped, and the pieces it kept apart may merge.
+  MESHSEG_ASSIGN_OR_RETURN(const int dropped, DropRegions(c, &labels, &regions));
+  if (dropped > 0) {
     MESHSEG_RETURN_IF_ERROR(Merge(c, &labels, &regions));
     MESHSEG_RETURN_IF_ERROR(RefineBoundaries(c, &labels, &regions));
   }
@@ -155,18 +168,14 @@ absl::StatusOr<Segmentation> Segment(const Mesh& mesh, const CurvatureField& cur
   if (!RetypeCoaxialBands(c, labels, &regions).empty()) {
     MESHSEG_RETURN_IF_ERROR(RefineBoundaries(c, &labels, &regions));
   }
-  // Pieces of one surface typed apart are joined by the same energy.
-  MESHSEG_ASSIGN_OR_RETURN(const int merged, MergeRegions(c, &labels, &regions));
-  if (merged > 0) MESHSEG_RETURN_IF_ERROR(RefineBoundaries(c, &labels, &regions));
-  // The steps since the last release can shrink a region below the size
-  // floor again (a plane strip along a groove that the refinement narrowed);
-  // a plane strip too narrow for an interior was never typed by one. (Two
-  // statements: both change the labels the other reads.)
-  const int small = ReleaseSmallRegions(c, &labels, &regions);
-  if (small + ReleaseNarrowPlanes(c, &labels, &regions) > 0) {
-    MESHSEG_RETURN_IF_ERROR(AbsorbLeftovers(c, &labels, &regions));
-    MESHSEG_RETURN_IF_ERROR(RefineBoundaries(c, &labels, &regions));
-  }
+  // Pieces of one surface typed apart are joined, and fragments dropped, by
+  // the same energy.
+  MESHSEG_ASSIGN_OR_RETURN(const int moves, MergeAndDrop(c, &labels, &regions));
+  if (moves > 0) MESHSEG_RETURN_IF_ERROR(RefineBoundaries(c, &labels, &regions));
+  // The refinement can narrow a region to a strip that lies on its
+  // neighbours' surfaces (a plane strip along a groove): dropped.
+  MESHSEG_ASSIGN_OR_RETURN(const int late, DropRegions(c, &labels, &regions));
+  if (late > 0) MESHSEG_RETURN_IF_ERROR(RefineBoundaries(c, &labels, &regions));
   FlattenNearlyFlatRegions(c, &regions);
   StraightenNearlyCylindricalCones(c, &regions);
   ctx.Progress("segment", 0.9);
