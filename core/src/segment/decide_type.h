@@ -109,9 +109,9 @@ ScoredFit BestScoredType(const SegmentContext& c, std::span<const int> vertices)
 // (InformationScore, with r's type's parameter count). A region keeps the
 // surface it grew with until a refit; when its vertices change so much that
 // its type no longer fits them, that surface can miss them by far (a torus
-// grown on test_piece's boss rim at 0.15 h, seed 171, that took most of the
-// flat top from the leftovers: 5 sigma), or still meet them better than any
-// other type (a torus band on fandisk_noisy whose torus fit fails for a
+// grown on the rounded rim of a small flat face, that then took most of the
+// flat face from the leftovers: 5 sigma), or still meet them better than
+// any other type (a torus band of a noisy scan whose torus fit fails for a
 // while: a cylinder would miss it by 1.3 sigma, the torus by 0.5).
 std::optional<ScoredFit> TypeThatFitsInstead(const SegmentContext& c, const RegionState& r);
 
@@ -149,8 +149,8 @@ int FlattenNearlyFlatRegions(const SegmentContext& c, std::vector<RegionState>* 
 // the tolerance over the region: its radius changes by L tan(half angle)
 // along the region's extent L on the axis, under th_dis (or twice the fit's
 // own rms scatter). Such a cone passes only by fitting what a cylinder
-// leaves (plate_holes.stl's r 6.35 edge round, 150 long, came out as a cone
-// of half angle 0.06 degrees: 0.16 wider at one end, th_dis 0.75).
+// leaves (a CAD part's edge round of radius 6.35 and length 150 came out as
+// a cone of half angle 0.06 degrees: 0.16 wider at one end, th_dis 0.75).
 bool NearlyCylindrical(const SegmentContext& c, const Cone& cone, double rms,
                        std::span<const int> vertices, const Tolerance& tol);
 

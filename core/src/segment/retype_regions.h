@@ -34,9 +34,9 @@ bool RetypeCurved(const SegmentContext& c, RegionState* r);
 // plane, else DecideCurvedType's), if that passes the alpha test with under
 // half the model error. A seed on a long noisy cone can grow as a sphere
 // that passes the tolerances (at 0.15 h a sphere 1.0 sigma off a long
-// cone band the cone meets at the noise); a torus typed on a ring at the rim of a
-// boss top can be grown over the whole disc, where only a spindle torus
-// with its cusp inside fits. Returns the ids retyped.
+// cone band the cone meets at the noise); a torus typed on a ring at the
+// rim of a small round flat face can be grown over the whole disc, where
+// only a spindle torus with its cusp inside fits. Returns the ids retyped.
 std::vector<int> RetypeInaccurateCurved(const SegmentContext& c,
                                         std::vector<RegionState>* regions);
 

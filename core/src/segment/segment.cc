@@ -156,8 +156,8 @@ absl::StatusOr<Segmentation> Segment(const Mesh& mesh, const CurvatureField& cur
   if (!GiveBackRows(c, &labels, &regions).empty()) {
     MESHSEG_RETURN_IF_ERROR(RefineBoundaries(c, &labels, &regions));
   }
-  // A small face across a crease that a curved region absorbed (a boss
-  // top in a piece of its cone) becomes a plane of its own; the rest of the
+  // A small face across a crease that a curved region absorbed (the flat
+  // top of a boss in a piece of its cone) becomes a plane of its own; the rest of the
   // region is then typed on its interior like every other.
   SplitOffPlanes(c, &labels, &regions);
   // The outer rows of a narrow band can decide its type (a chamfer between
