@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <unordered_map>
 
@@ -20,6 +21,14 @@ double AreaWeight(const SegmentContext& c, int v) {
   return mean_area > 0.0 ? c.vertex_area[v] / mean_area : 1.0;
 }
 
+// D_v for vertex v at signed distance `distance` from its surface.
+double CostAtDistance(const SegmentContext& c, int v, double distance) {
+  const double d = distance / c.tolerance.distance;
+  const double scaled = kToleranceSigmas * kToleranceSigmas * d * d;
+  return 0.5 * AreaWeight(c, v) * std::min(std::isfinite(scaled) ? scaled : kOutlierMismatch,
+                                           kOutlierMismatch);
+}
+
 // The data cost of `vertices` under a surface of `type` fitted to them for
 // least energy, with the surface (infinite cost if none is valid).
 struct PricedFit {
@@ -31,23 +40,25 @@ PricedFit PriceFit(const SegmentContext& c, SurfaceType type, std::span<const in
   PricedFit out;
   const FitResult fit = FitType(c, type, vertices);
   if (!fit.ok()) return out;
-  out.cost = DataCost(c, fit.surface, vertices);
   out.surface = fit.surface;
   // Re-estimation on the inliers: rows along creases pull a least-squares
   // fit off the face; the fit to the vertices within th_dis of it does not.
+  // (One projection per vertex gives both its cost and whether it is in.)
   std::vector<int> inliers;
   inliers.reserve(vertices.size());
+  double cost = 0.0;
   for (const int v : vertices) {
-    if (std::abs(ProjectVertex(c, fit.surface, v).distance) < c.tolerance.distance) {
-      inliers.push_back(v);
-    }
+    const double distance = ProjectVertex(c, fit.surface, v).distance;
+    cost += CostAtDistance(c, v, distance);
+    if (std::abs(distance) < c.tolerance.distance) inliers.push_back(v);
   }
+  out.cost = cost;
   if (inliers.size() == vertices.size() || inliers.size() < kMinRegionVertices) return out;
   const FitResult refit = FitType(c, type, inliers);
   if (!refit.ok()) return out;
-  const double cost = DataCost(c, refit.surface, vertices);
-  if (cost < out.cost) {
-    out.cost = cost;
+  const double refit_cost = DataCost(c, refit.surface, vertices);
+  if (refit_cost < out.cost) {
+    out.cost = refit_cost;
     out.surface = refit.surface;
   }
   return out;
@@ -56,10 +67,7 @@ PricedFit PriceFit(const SegmentContext& c, SurfaceType type, std::span<const in
 }  // namespace
 
 double VertexCost(const SegmentContext& c, int v, const Surface& surface) {
-  const double d = ProjectVertex(c, surface, v).distance / c.tolerance.distance;
-  const double scaled = kToleranceSigmas * kToleranceSigmas * d * d;
-  return 0.5 * AreaWeight(c, v) * std::min(std::isfinite(scaled) ? scaled : kOutlierMismatch,
-                                           kOutlierMismatch);
+  return CostAtDistance(c, v, ProjectVertex(c, surface, v).distance);
 }
 
 double OutlierCost(const SegmentContext& c, int v) {
@@ -175,57 +183,86 @@ std::optional<Move> RetypeDelta(const SegmentContext& c, const RegionState& r, S
 namespace {
 
 // The labels the vertices of region `id` take when it is dropped, in the
-// order of its vertex list (DropDelta).
+// order of its vertex list (DropDelta). Labels grow into the region from
+// its border, layer by layer (each layer decided on the labels before it,
+// so the result does not depend on the vertex order): a vertex takes a
+// label one of its mesh neighbours already has, so no label lands apart
+// from its region (an island would pay boundary edges all round).
 std::vector<int> DropLabels(const SegmentContext& c, const std::vector<int>& labels,
                             const std::function<const RegionState&(int)>& region, int id) {
   const RegionState& r = region(id);
-  std::vector<int> around;
-  for (const int v : r.vertices) {
-    for (const int u : c.graph.Neighbors(v)) {
-      if (labels[u] >= 0 && labels[u] != id) around.push_back(labels[u]);
+  const std::size_t n = r.vertices.size();
+  auto index = [&](int u) {
+    return static_cast<std::size_t>(std::lower_bound(r.vertices.begin(), r.vertices.end(), u) -
+                                    r.vertices.begin());
+  };
+  std::vector<int> next(n, -1);
+  auto label_of = [&](int u) { return labels[u] == id ? next[index(u)] : labels[u]; };
+  // The labels placed next to vertex k, sorted, with repeats.
+  auto placed_beside = [&](std::size_t k) {
+    std::vector<int> seen;
+    for (const int u : c.graph.Neighbors(r.vertices[k])) {
+      const int l = label_of(u);
+      if (l >= 0) seen.push_back(l);
     }
-  }
-  std::sort(around.begin(), around.end());
-  around.erase(std::unique(around.begin(), around.end()), around.end());
-  std::vector<int> next(r.vertices.size(), -1);
-  for (std::size_t k = 0; k < r.vertices.size(); ++k) {
+    std::sort(seen.begin(), seen.end());
+    return seen;
+  };
+  // Grows with `choose(k, placed_beside(k))` (-1: not now) from every
+  // unplaced vertex beside a placed one until no layer places any.
+  auto grow = [&](const std::function<int(std::size_t, const std::vector<int>&)>& choose) {
+    std::vector<std::size_t> layer;
+    for (std::size_t k = 0; k < n; ++k) {
+      if (next[k] < 0) layer.push_back(k);
+    }
+    std::vector<uint8_t> queued(n, 0);
+    while (!layer.empty()) {
+      std::vector<std::pair<std::size_t, int>> placed;
+      for (const std::size_t k : layer) {
+        const std::vector<int> seen = placed_beside(k);
+        if (seen.empty()) continue;
+        const int l = choose(k, seen);
+        if (l >= 0) placed.emplace_back(k, l);
+      }
+      layer.clear();
+      for (const auto& [k, l] : placed) next[k] = l;
+      for (const auto& [k, l] : placed) {
+        for (const int u : c.graph.Neighbors(r.vertices[k])) {
+          if (labels[u] != id) continue;
+          const std::size_t j = index(u);
+          if (next[j] < 0 && !queued[j]) queued[j] = 1, layer.push_back(j);
+        }
+      }
+      for (const std::size_t k : layer) queued[k] = 0;
+      std::sort(layer.begin(), layer.end());
+    }
+  };
+  // First each vertex within th_dis of a surface beside it takes the one it
+  // costs least on (ties to the lowest id).
+  grow([&](std::size_t k, const std::vector<int>& seen) {
     const int v = r.vertices[k];
     double best = OutlierCost(c, v);
-    for (const int o : around) {
-      const double cost = VertexCost(c, v, region(o).surface);
-      if (cost < best) best = cost, next[k] = o;
+    int pick = -1;
+    for (std::size_t t = 0; t < seen.size(); ++t) {
+      if (t > 0 && seen[t] == seen[t - 1]) continue;
+      const double cost = VertexCost(c, v, region(seen[t]).surface);
+      if (cost < best) best = cost, pick = seen[t];
     }
-  }
-  // The outliers, one data cost under every label, take the label of most
-  // of their placed mesh neighbours, ties to the lowest id, until none
-  // changes (in vertex order, so the result is deterministic).
-  auto index = [&](int u) {
-    const auto it = std::lower_bound(r.vertices.begin(), r.vertices.end(), u);
-    return static_cast<std::size_t>(it - r.vertices.begin());
-  };
-  bool changed = true;
-  while (changed) {
-    changed = false;
-    for (std::size_t k = 0; k < r.vertices.size(); ++k) {
-      if (next[k] >= 0) continue;
-      std::vector<int> seen;
-      for (const int u : c.graph.Neighbors(r.vertices[k])) {
-        const int l = labels[u] == id ? next[index(u)] : labels[u];
-        if (l >= 0) seen.push_back(l);
-      }
-      if (seen.empty()) continue;
-      std::sort(seen.begin(), seen.end());
-      int pick = -1;
-      std::ptrdiff_t most = 0;
-      for (auto it = seen.begin(); it != seen.end();) {
-        const auto end = std::upper_bound(it, seen.end(), *it);
-        if (end - it > most) most = end - it, pick = *it;
-        it = end;
-      }
-      next[k] = pick;
-      changed = true;
+    return pick;
+  });
+  // Then the outliers, one data cost under every label, take the label
+  // most of their placed neighbours have (fewest boundary edges; ties to
+  // the lowest id).
+  grow([](std::size_t, const std::vector<int>& seen) {
+    int pick = -1;
+    std::ptrdiff_t most = 0;
+    for (auto it = seen.begin(); it != seen.end();) {
+      const auto end = std::upper_bound(it, seen.end(), *it);
+      if (end - it > most) most = end - it, pick = *it;
+      it = end;
     }
-  }
+    return pick;
+  });
   return next;
 }
 
