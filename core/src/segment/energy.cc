@@ -4,7 +4,6 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
-#include <unordered_map>
 
 #include "segment/absorb_leftovers.h"
 #include "segment/decide_type.h"
@@ -188,38 +187,61 @@ namespace {
 // so the result does not depend on the vertex order): a vertex takes a
 // label one of its mesh neighbours already has, so no label lands apart
 // from its region (an island would pay boundary edges all round).
-std::vector<int> DropLabels(const SegmentContext& c, const std::vector<int>& labels,
-                            const std::function<const RegionState&(int)>& region, int id) {
+struct DropLabeling {
+  std::vector<int> next;
+  double boundary_delta = 0.0;  // the change of the smoothness term
+};
+
+DropLabeling DropLabels(const SegmentContext& c, const std::vector<int>& labels,
+                        const std::function<const RegionState&(int)>& region, int id) {
   const RegionState& r = region(id);
   const std::size_t n = r.vertices.size();
-  auto index = [&](int u) {
-    return static_cast<std::size_t>(std::lower_bound(r.vertices.begin(), r.vertices.end(), u) -
-                                    r.vertices.begin());
-  };
-  std::vector<int> next(n, -1);
-  auto label_of = [&](int u) { return labels[u] == id ? next[index(u)] : labels[u]; };
-  // The labels placed next to vertex k, sorted, with repeats.
-  auto placed_beside = [&](std::size_t k) {
-    std::vector<int> seen;
+  // The mesh neighbours of each vertex k of r (CSR from first[k]): the
+  // index in r of a neighbour in r, or -2 - its label outside (-1 none).
+  std::vector<std::size_t> first(n + 1, 0);
+  std::vector<long> beside;
+  for (std::size_t k = 0; k < n; ++k) {
     for (const int u : c.graph.Neighbors(r.vertices[k])) {
-      const int l = label_of(u);
+      if (labels[u] == id) {
+        beside.push_back(std::lower_bound(r.vertices.begin(), r.vertices.end(), u) -
+                         r.vertices.begin());
+      } else {
+        beside.push_back(-2L - labels[u]);
+      }
+    }
+    first[k + 1] = beside.size();
+  }
+  std::vector<int> next(n, -1);
+  auto label_at = [&](long b) { return b >= 0 ? next[b] : static_cast<int>(-2L - b); };
+  // The labels placed next to vertex k, sorted, with repeats, into `seen`.
+  std::vector<int> seen;
+  auto placed_beside = [&](std::size_t k) {
+    seen.clear();
+    for (std::size_t e = first[k]; e < first[k + 1]; ++e) {
+      const int l = label_at(beside[e]);
       if (l >= 0) seen.push_back(l);
     }
     std::sort(seen.begin(), seen.end());
-    return seen;
   };
-  // Grows with `choose(k, placed_beside(k))` (-1: not now) from every
-  // unplaced vertex beside a placed one until no layer places any.
+  // Grows with `choose(k, seen)` (-1: not now) from every unplaced vertex
+  // beside a placed one until no layer places any.
   auto grow = [&](const std::function<int(std::size_t, const std::vector<int>&)>& choose) {
     std::vector<std::size_t> layer;
     for (std::size_t k = 0; k < n; ++k) {
-      if (next[k] < 0) layer.push_back(k);
+      if (next[k] >= 0) continue;
+      for (std::size_t e = first[k]; e < first[k + 1]; ++e) {
+        if (label_at(beside[e]) >= 0) {
+          layer.push_back(k);
+          break;
+        }
+      }
     }
     std::vector<uint8_t> queued(n, 0);
+    std::vector<std::pair<std::size_t, int>> placed;
     while (!layer.empty()) {
-      std::vector<std::pair<std::size_t, int>> placed;
+      placed.clear();
       for (const std::size_t k : layer) {
-        const std::vector<int> seen = placed_beside(k);
+        placed_beside(k);
         if (seen.empty()) continue;
         const int l = choose(k, seen);
         if (l >= 0) placed.emplace_back(k, l);
@@ -227,10 +249,9 @@ std::vector<int> DropLabels(const SegmentContext& c, const std::vector<int>& lab
       layer.clear();
       for (const auto& [k, l] : placed) next[k] = l;
       for (const auto& [k, l] : placed) {
-        for (const int u : c.graph.Neighbors(r.vertices[k])) {
-          if (labels[u] != id) continue;
-          const std::size_t j = index(u);
-          if (next[j] < 0 && !queued[j]) queued[j] = 1, layer.push_back(j);
+        for (std::size_t e = first[k]; e < first[k + 1]; ++e) {
+          const long j = beside[e];
+          if (j >= 0 && next[j] < 0 && !queued[j]) queued[j] = 1, layer.push_back(j);
         }
       }
       for (const std::size_t k : layer) queued[k] = 0;
@@ -239,13 +260,21 @@ std::vector<int> DropLabels(const SegmentContext& c, const std::vector<int>& lab
   };
   // First each vertex within th_dis of a surface beside it takes the one it
   // costs least on (ties to the lowest id).
+  std::vector<std::pair<int, const Surface*>> surfaces;  // looked up once each
+  auto surface_of = [&](int l) -> const Surface& {
+    for (const auto& [label, surface] : surfaces) {
+      if (label == l) return *surface;
+    }
+    surfaces.emplace_back(l, &region(l).surface);
+    return *surfaces.back().second;
+  };
   grow([&](std::size_t k, const std::vector<int>& seen) {
     const int v = r.vertices[k];
     double best = OutlierCost(c, v);
     int pick = -1;
     for (std::size_t t = 0; t < seen.size(); ++t) {
       if (t > 0 && seen[t] == seen[t - 1]) continue;
-      const double cost = VertexCost(c, v, region(seen[t]).surface);
+      const double cost = VertexCost(c, v, surface_of(seen[t]));
       if (cost < best) best = cost, pick = seen[t];
     }
     return pick;
@@ -263,7 +292,21 @@ std::vector<int> DropLabels(const SegmentContext& c, const std::vector<int>& lab
     }
     return pick;
   });
-  return next;
+  // The edges at r's vertices, before and after (each edge inside r once).
+  DropLabeling out;
+  for (std::size_t k = 0; k < n; ++k) {
+    const int v = r.vertices[k];
+    std::size_t e = first[k];
+    for (const int u : c.graph.Neighbors(v)) {
+      const long b = beside[e++];
+      if (b >= 0 && u < v) continue;
+      const bool before = b < 0;
+      const bool after = next[k] != label_at(b);
+      if (before != after) out.boundary_delta += (after ? 1.0 : -1.0) * EdgeCost(c, u, v);
+    }
+  }
+  out.next = std::move(next);
+  return out;
 }
 
 }  // namespace
@@ -278,7 +321,8 @@ DropMove DropDelta(const SegmentContext& c, const std::vector<int>& labels,
                    const std::function<const RegionState&(int)>& region, int id) {
   const RegionState& r = region(id);
   DropMove move;
-  move.next = DropLabels(c, labels, region, id);
+  DropLabeling labeling = DropLabels(c, labels, region, id);
+  move.next = std::move(labeling.next);
   move.takers = move.next;
   std::sort(move.takers.begin(), move.takers.end());
   move.takers.erase(std::unique(move.takers.begin(), move.takers.end()), move.takers.end());
@@ -309,17 +353,7 @@ DropMove DropDelta(const SegmentContext& c, const std::vector<int>& labels,
     move.surfaces.push_back(surface);
   }
 
-  // The edges at r's vertices, before and after (each edge inside r once).
-  std::unordered_map<int, int> after;
-  for (std::size_t k = 0; k < r.vertices.size(); ++k) after[r.vertices[k]] = move.next[k];
-  auto label_after = [&](int u) { return labels[u] == id ? after.at(u) : labels[u]; };
-  for (const int v : r.vertices) {
-    for (const int u : c.graph.Neighbors(v)) {
-      if (labels[u] == id && u < v) continue;
-      const double w = EdgeCost(c, u, v);
-      delta += ((label_after(u) != label_after(v)) - (labels[u] != labels[v])) * w;
-    }
-  }
+  delta += labeling.boundary_delta;
   move.delta = delta;
   return move;
 }
