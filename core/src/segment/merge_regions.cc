@@ -26,6 +26,14 @@ absl::StatusOr<int> MergeRegions(const SegmentContext& c, std::vector<int>* labe
     }
     return it->second;
   };
+  // The price of each region's drop, by id and vertex count (as above).
+  std::map<std::pair<int, std::size_t>, double> drops;
+  auto drop = [&](int id) {
+    const std::pair key{id, (*regions)[id].vertices.size()};
+    auto it = drops.find(key);
+    if (it == drops.end()) it = drops.emplace(key, DropDelta(c, *labels, region, id).delta).first;
+    return it->second;
+  };
   return MergeBestPairs(
       c, labels, regions, [](const RegionArc& arc) { return arc.smooth; },
       [&](int a, int b) -> std::optional<PairMerge> {
@@ -34,12 +42,13 @@ absl::StatusOr<int> MergeRegions(const SegmentContext& c, std::vector<int>* labe
         const std::optional<Move> move =
             MergeDelta(c, *labels, region(a), a, region(b), b, MergeTypes(x.type, y.type));
         if (!move || !(move->delta < 0.0)) return std::nullopt;
-        // A fragment whose vertices lower E more by going each to the
-        // neighbour that meets it best, not all to one (rows of two faces),
-        // is no piece of one surface with either: the better move is its
-        // drop, which DropRegions (drop_regions.h) makes.
-        const int smaller = x.vertices.size() <= y.vertices.size() ? a : b;
-        if (DropDelta(c, *labels, region, smaller).delta < move->delta) return std::nullopt;
+        // A region whose vertices lower E more by going each to the
+        // neighbour that meets it best, not all to one (rows of two faces;
+        // a curved fit grown over a small face and the rows around it), is
+        // no piece of one surface with the other: the better move is its
+        // drop, which DropRegions (drop_regions.h) makes before the pair
+        // is priced again.
+        if (std::min(drop(a), drop(b)) < move->delta) return std::nullopt;
         return PairMerge{.score = -move->delta, .type = move->type, .surface = move->surface};
       });
 }
