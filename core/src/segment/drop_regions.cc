@@ -15,16 +15,9 @@ namespace meshseg::segment_internal {
 
 absl::StatusOr<int> DropRegions(const SegmentContext& c, std::vector<int>* labels,
                                 std::vector<RegionState>* regions) {
-  // Re-estimated regions by id and vertex count: within this step a region
-  // changes only by taking vertices, which grows it.
-  std::map<std::pair<int, std::size_t>, RegionState> reestimated;
+  ReestimatedRegions reestimated(c, *regions);
   const std::function<const RegionState&(int)> region = [&](int id) -> const RegionState& {
-    const RegionState& r = (*regions)[id];
-    auto it = reestimated.find({id, r.vertices.size()});
-    if (it == reestimated.end()) {
-      it = reestimated.emplace(std::pair{id, r.vertices.size()}, Reestimated(c, r)).first;
-    }
-    return it->second;
+    return reestimated(id);
   };
   // Each region's priced drop, until a drop changes it or a region next to it.
   std::vector<std::optional<DropMove>> priced(regions->size());

@@ -128,6 +128,15 @@ RegionState Reestimated(const SegmentContext& c, const RegionState& r) {
   return out;
 }
 
+const RegionState& ReestimatedRegions::operator()(int id) {
+  const RegionState& r = regions_[id];
+  auto it = cache_.find({id, r.vertices.size()});
+  if (it == cache_.end()) {
+    it = cache_.emplace(std::pair{id, r.vertices.size()}, Reestimated(c_, r)).first;
+  }
+  return it->second;
+}
+
 std::vector<SurfaceType> MergeTypes(SurfaceType a, SurfaceType b) {
   constexpr SurfaceType kAnalytic[] = {SurfaceType::kPlane, SurfaceType::kCylinder,
                                        SurfaceType::kSphere, SurfaceType::kCone,

@@ -50,9 +50,12 @@
 #ifndef MESHSEG_SRC_SEGMENT_ENERGY_H_
 #define MESHSEG_SRC_SEGMENT_ENERGY_H_
 
+#include <cstddef>
 #include <functional>
+#include <map>
 #include <optional>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "segment/segment_internal.h"
@@ -112,6 +115,20 @@ std::optional<Surface> FitForEnergy(const SegmentContext& c, SurfaceType type,
 // its vertices; priced with that stale surface, any move that refits it
 // looks a gain.
 RegionState Reestimated(const SegmentContext& c, const RegionState& r);
+
+// Reestimated regions of `regions` by id and vertex count, each computed
+// once: within a merge or drop step a region changes only by growing.
+class ReestimatedRegions {
+ public:
+  ReestimatedRegions(const SegmentContext& c, const std::vector<RegionState>& regions)
+      : c_(c), regions_(regions) {}
+  const RegionState& operator()(int id);
+
+ private:
+  const SegmentContext& c_;
+  const std::vector<RegionState>& regions_;
+  std::map<std::pair<int, std::size_t>, RegionState> cache_;
+};
 
 // The change of E from merging regions `a` and `b` into one surface of the
 // type among `types` that lowers E most (nullopt: no type fits the union).

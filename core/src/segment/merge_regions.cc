@@ -15,16 +15,9 @@ namespace meshseg::segment_internal {
 
 absl::StatusOr<int> MergeRegions(const SegmentContext& c, std::vector<int>* labels,
                                  std::vector<RegionState>* regions) {
-  // Re-estimated regions by id and vertex count: within this step regions
-  // change only by merging, which grows them.
-  std::map<std::pair<int, std::size_t>, RegionState> reestimated;
+  ReestimatedRegions reestimated(c, *regions);
   const std::function<const RegionState&(int)> region = [&](int id) -> const RegionState& {
-    const RegionState& r = (*regions)[id];
-    auto it = reestimated.find({id, r.vertices.size()});
-    if (it == reestimated.end()) {
-      it = reestimated.emplace(std::pair{id, r.vertices.size()}, Reestimated(c, r)).first;
-    }
-    return it->second;
+    return reestimated(id);
   };
   // The price of each region's drop, by id and vertex count (as above).
   std::map<std::pair<int, std::size_t>, double> drops;
