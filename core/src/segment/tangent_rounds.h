@@ -1,12 +1,12 @@
-// Rounds between two flat faces (our addition to seeds 000 and 002). A
-// round is tangent to the faces it joins by design, but a cylinder fitted
-// alone to its region gets all five of its values from a narrow arc: on
-// rounded_prism at 0.15 h (seeds 226, 235) a quarter round of r 4 (a
-// 65-degree arc, 11 voxels) kept a 55-degree arc of it after the tangent
-// rows went to the planes (both fit those rows within the noise) and came
-// out r 3.74 and 4.28, 0.75 h off; fitted tangent to the two planes, the
-// radius is the one value left and the planes' thousands of vertices fix the
-// rest.
+// Rounds between two flat faces (our addition to ALGORITHMS.md S1 and S2,
+// after S2's fillet recognition FLT3). A round is tangent to the faces it
+// joins by design, but a cylinder fitted alone to its region gets all five
+// of its values from a narrow arc: at sigma = 0.15 h a round of r 4 between
+// two planes (a 65-degree arc, 11 voxels) kept a 55-degree arc of it after
+// the tangent rows went to the planes (both fit those rows within the noise)
+// and came out r 3.74 to 4.28, 0.75 h off; fitted tangent to the two planes,
+// the radius is the one value left and the planes' thousands of vertices fix
+// the rest.
 #ifndef MESHSEG_SRC_SEGMENT_TANGENT_ROUNDS_H_
 #define MESHSEG_SRC_SEGMENT_TANGENT_ROUNDS_H_
 
