@@ -17,17 +17,17 @@
 namespace meshseg::segment_internal {
 
 // For every cylinder region, each pair of plane regions around it whose
-// normals are within kCoaxialMaxAngleDeg of square to its axis and at
-// least kMinRoundAngleDeg apart is a candidate: the cylinder tangent to both
-// (FitCylinderTangentToPlanes, on the side of each its own axis lies on)
-// is fitted to its interior vertices (InteriorVertices) that meet (5) and
-// (6) for its surface (sub-sampled). The best pair's fit replaces the surface if it raises the
-// sum of squared distances by at most kCoaxialChiSquare times the residual
-// variance of the cylinder fitted freely to the same vertices: tangency fixes
-// the same 4 values (axis direction and position) an axis shared with a
-// coaxial neighbour does, so a round that meets a face at an angle (a
-// cylinder cut by a plane, not blended into it) keeps its own. Returns the
-// ids of the regions whose surface changed.
+// normals are within kCoaxialMaxAngleDeg of square to its axis and at least
+// kMinRoundAngleDeg apart is a candidate: the cylinder tangent to both
+// (FitCylinderTangentToPlanes, on the side of each its own axis lies on) is
+// fitted to its interior vertices (InteriorVertices) that meet (5) and (6)
+// for its surface (sub-sampled). The best pair's fit replaces the surface if
+// it raises the sum of squared distances by at most kCoaxialChiSquare times
+// the residual variance of the cylinder fitted freely to the same vertices:
+// tangency fixes the same 4 values (axis direction and position) an axis
+// shared with a coaxial neighbour does, so a round that meets a face at an
+// angle (a cylinder cut by a plane, not blended into it) keeps its own.
+// Returns the ids of the regions whose surface changed.
 std::vector<int> FitRoundsTangentToPlanes(const SegmentContext& c, const std::vector<int>& labels,
                                           std::vector<RegionState>* regions);
 
