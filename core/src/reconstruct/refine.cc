@@ -20,8 +20,8 @@ namespace {
 // Newton steps of x towards f = 0 along the central-difference gradient of f
 // (step `delta`), each at most `max_step` long; stops where f is flat or a
 // step is shorter than `tolerance`.
-Eigen::Vector3d OntoZeroSet(const PuFunction& f, Eigen::Vector3d x, double delta,
-                            double max_step, double tolerance) {
+Eigen::Vector3d OntoZeroSet(const PuFunction& f, Eigen::Vector3d x, double delta, double max_step,
+                            double tolerance) {
   for (int step = 0; step < kZeroSetIterations; ++step) {
     const double value = f(x);
     Eigen::Vector3d gradient;
@@ -117,14 +117,13 @@ absl::StatusOr<Mesh> RefineOnPoints(const Mesh& mesh, const std::vector<Eigen::V
   // them onto f = 0; adds the creases found.
   const auto project = [&](const std::vector<int>* only) {
     std::vector<std::pair<int, Crease>> found;
-    std::vector<int> left =
-        ProjectToPoints(points, index, radius, kProjectionIterations, &fine.tri, crease_normals,
-                        stats->noise, &found, only);
+    std::vector<int> left = ProjectToPoints(points, index, radius, kProjectionIterations, &fine.tri,
+                                            crease_normals, stats->noise, &found, only);
     creases.insert(creases.end(), found.begin(), found.end());
     tbb::parallel_for(size_t{0}, left.size(), [&](size_t i) {
       const TriMesh::VertexHandle v(left[i]);
-      const Eigen::Vector3d x = OntoZeroSet(f, ToEigen(fine.tri.point(v)), 0.5 * h, radius,
-                                              kZeroSetTolerance * h);
+      const Eigen::Vector3d x =
+          OntoZeroSet(f, ToEigen(fine.tri.point(v)), 0.5 * h, radius, kZeroSetTolerance * h);
       fine.tri.set_point(v, TriMesh::Point(x[0], x[1], x[2]));
     });
     // A vertex that f = 0 brought within reach of the points is put on them

@@ -78,9 +78,9 @@ std::vector<uint8_t> SupportedFaces(const TriMesh& tri, const std::vector<Eigen:
       // Along the surface: across the face's normal (a sliver's normal is
       // noise, but its centroid is then near a point anyway or tested below).
       const Eigen::Vector3d normal = (corner[1] - corner[0]).cross(corner[2] - corner[0]);
-      const double along = normal.norm() > 0
-                               ? (offset - offset.dot(normal) / normal.squaredNorm() * normal).norm()
-                               : offset.norm();
+      const double along =
+          normal.norm() > 0 ? (offset - offset.dot(normal) / normal.squaredNorm() * normal).norm()
+                            : offset.norm();
       if (along <= kBorderSpacings * s) {
         supported[i] = 1;
         continue;
