@@ -126,14 +126,28 @@ absl::StatusOr<Mesh> RefineOnPoints(const Mesh& mesh, const std::vector<Eigen::V
           OntoZeroSet(f, ToEigen(fine.tri.point(v)), 0.5 * h, radius, kZeroSetTolerance * h);
       fine.tri.set_point(v, TriMesh::Point(x[0], x[1], x[2]));
     });
-    // A vertex that f = 0 brought within reach of the points is put on them
-    // like every other; the rest stay on f = 0.
-    if (!left.empty()) {
-      const std::vector<int> far = left;
-      left = ProjectToPoints(points, index, radius, kProjectionIterations, &fine.tri,
-                             crease_normals, stats->noise, &found, &far);
-      creases.insert(creases.end(), found.begin(), found.end());
+    // A vertex that f = 0 brought onto the sampled surface (its own
+    // projection neighbourhood holds points, no widening: in an occlusion gap
+    // the nearest points are often another face's) is put on the points like
+    // every other; the rest stay on f = 0.
+    std::vector<int> onto;
+    std::vector<int> stay;
+    {
+      std::vector<std::pair<uint32_t, double>> near;
+      for (const int v : left) {
+        index.WithinRadiusUnordered(ToEigen(fine.tri.point(TriMesh::VertexHandle(v))), radius,
+                                    &near);
+        (near.size() >= kMinProjectionPoints ? onto : stay).push_back(v);
+      }
     }
+    if (!onto.empty()) {
+      const std::vector<int> still =
+          ProjectToPoints(points, index, radius, kProjectionIterations, &fine.tri, crease_normals,
+                          stats->noise, &found, &onto);
+      creases.insert(creases.end(), found.begin(), found.end());
+      stay.insert(stay.end(), still.begin(), still.end());
+    }
+    left = std::move(stay);
     unsupported.resize(fine.tri.n_vertices(), 0);
     for (const int v : left) unsupported[v] = 1;
     stats->unsupported_vertex_count += static_cast<int64_t>(left.size());
