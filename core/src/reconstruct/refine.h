@@ -14,7 +14,8 @@
 //
 // Vertices with no points near them go onto f = 0 instead (Newton steps on
 // the partition-of-unity implicit, to convergence), and from there onto the
-// points if f = 0 brought them within reach. They are of two kinds: in
+// points if f = 0 brought them onto the sampled surface (their projection
+// neighbourhood holds points). They are of two kinds: in
 // occlusion gaps of a scan, where f = 0 is the surface the reconstruction
 // chose; and on "tents", marching-tetrahedra triangles up to 26 mm long that
 // span between two faces through the solid, where f = 0 follows the faces
