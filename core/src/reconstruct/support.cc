@@ -13,10 +13,16 @@
 namespace meshseg::reconstruct_internal {
 namespace {
 
+// Points whose second principal spread is under this fraction of the first
+// lie along a line (a single row of samples) and span no plane.
+constexpr double kMinSpread = 0.01;
+
 // Whether the points `near` (each with its squared distance to c) leave an
-// angular gap over π around c in their least-squares plane: c lies beyond
-// the border of the sampled area.
-bool BeyondSampledBorder(const Eigen::Vector3d& c, const std::vector<Eigen::Vector3d>& points,
+// angular gap over π around c in their least-squares plane (in the plane
+// normal to `normal`, unit, when they lie along a line and span no plane):
+// c lies beyond the border of the sampled area.
+bool BeyondSampledBorder(const Eigen::Vector3d& c, const Eigen::Vector3d& normal,
+                         const std::vector<Eigen::Vector3d>& points,
                          const std::vector<std::pair<uint32_t, double>>& near,
                          std::vector<double>* angles) {
   if (near.size() < 3) return true;
@@ -29,7 +35,11 @@ bool BeyondSampledBorder(const Eigen::Vector3d& c, const std::vector<Eigen::Vect
     scatter += d * d.transpose();
   }
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(scatter);
-  const Eigen::Vector3d u = eigen.eigenvectors().col(2), v = eigen.eigenvectors().col(1);
+  Eigen::Vector3d u = eigen.eigenvectors().col(2), v = eigen.eigenvectors().col(1);
+  if (!(eigen.eigenvalues()[1] > kMinSpread * eigen.eigenvalues()[2])) {
+    u = normal.unitOrthogonal();
+    v = normal.cross(u);
+  }
   angles->clear();
   for (const auto& [j, unused] : near) {
     const Eigen::Vector3d d = points[j] - c;
@@ -86,9 +96,16 @@ std::vector<uint8_t> SupportedFaces(const TriMesh& tri, const std::vector<Eigen:
         continue;
       }
       // A gap the support bridges from both sides (up to 2 reaches wide) is
-      // inside the sampled area: look for points across it that far.
+      // inside the sampled area: look for points across it that far (first
+      // within one reach, which surrounds almost every centroid inside).
+      const Eigen::Vector3d n = normal.norm() > 0 ? normal.normalized() : Eigen::Vector3d::UnitZ();
+      index.WithinRadiusUnordered(centroid, reach, &around);
+      if (!BeyondSampledBorder(centroid, n, points, around, &angles)) {
+        supported[i] = 1;
+        continue;
+      }
       index.WithinRadiusUnordered(centroid, 2.0 * reach, &around);
-      supported[i] = !BeyondSampledBorder(centroid, points, around, &angles);
+      supported[i] = !BeyondSampledBorder(centroid, n, points, around, &angles);
     }
   });
   return supported;
