@@ -21,8 +21,9 @@
 // lies between the last row of samples and the next, missing one. So a face
 // whose centroid is more than kBorderSpacings × s from its nearest point
 // along the surface (in the face's plane) is supported only if the points
-// around it surround it: their directions, projected into the face's plane,
-// leave no angular gap over π (the angle criterion for boundaries of point
+// around it surround it: their directions, projected into the points'
+// least-squares plane (the face's plane when they lie along one line), leave
+// no angular gap over π (the angle criterion for boundaries of point
 // sets, Bendels, Schnabel & Klein 2006, "Detecting holes in point set
 // surfaces"). Inside the sampled area a centroid between samples is
 // surrounded; beyond its border every nearby point lies on one side. The
