@@ -18,9 +18,10 @@ namespace meshseg::reconstruct_internal {
 namespace {
 
 // Newton steps of x towards f = 0 along the central-difference gradient of f
-// (step `delta`), each at most `max_step` long; stops where f is flat.
-Eigen::Vector3d OntoZeroSet(const PuFunction& f, Eigen::Vector3d x, double delta,
-                            double max_step) {
+// (step `delta`), each at most `max_step` long; stops where f is flat or a
+// step is shorter than `tolerance`.
+Eigen::Vector3d OntoZeroSet(const PuFunction& f, Eigen::Vector3d x, double delta, double max_step,
+                            double tolerance) {
   for (int step = 0; step < kZeroSetIterations; ++step) {
     const double value = f(x);
     Eigen::Vector3d gradient;
@@ -33,6 +34,7 @@ Eigen::Vector3d OntoZeroSet(const PuFunction& f, Eigen::Vector3d x, double delta
     Eigen::Vector3d move = -value / g2 * gradient;
     if (move.norm() > max_step) move *= max_step / move.norm();
     x += move;
+    if (move.norm() < tolerance) break;
   }
   return x;
 }
@@ -115,18 +117,40 @@ absl::StatusOr<Mesh> RefineOnPoints(const Mesh& mesh, const std::vector<Eigen::V
   // them onto f = 0; adds the creases found.
   const auto project = [&](const std::vector<int>* only) {
     std::vector<std::pair<int, Crease>> found;
-    const std::vector<int> left =
-        ProjectToPoints(points, index, radius, kProjectionIterations, &fine.tri, crease_normals,
-                        stats->noise, &found, only);
+    std::vector<int> left = ProjectToPoints(points, index, radius, kProjectionIterations, &fine.tri,
+                                            crease_normals, stats->noise, &found, only);
     creases.insert(creases.end(), found.begin(), found.end());
+    tbb::parallel_for(size_t{0}, left.size(), [&](size_t i) {
+      const TriMesh::VertexHandle v(left[i]);
+      const Eigen::Vector3d x =
+          OntoZeroSet(f, ToEigen(fine.tri.point(v)), 0.5 * h, radius, kZeroSetTolerance * h);
+      fine.tri.set_point(v, TriMesh::Point(x[0], x[1], x[2]));
+    });
+    // A vertex that f = 0 brought onto the sampled surface (its own
+    // projection neighbourhood holds points, no widening: in an occlusion gap
+    // the nearest points are often another face's) is put on the points like
+    // every other; the rest stay on f = 0.
+    std::vector<int> onto;
+    std::vector<int> stay;
+    {
+      std::vector<std::pair<uint32_t, double>> near;
+      for (const int v : left) {
+        index.WithinRadiusUnordered(ToEigen(fine.tri.point(TriMesh::VertexHandle(v))), radius,
+                                    &near);
+        (near.size() >= kMinProjectionPoints ? onto : stay).push_back(v);
+      }
+    }
+    if (!onto.empty()) {
+      const std::vector<int> still =
+          ProjectToPoints(points, index, radius, kProjectionIterations, &fine.tri, crease_normals,
+                          stats->noise, &found, &onto);
+      creases.insert(creases.end(), found.begin(), found.end());
+      stay.insert(stay.end(), still.begin(), still.end());
+    }
+    left = std::move(stay);
     unsupported.resize(fine.tri.n_vertices(), 0);
     for (const int v : left) unsupported[v] = 1;
     stats->unsupported_vertex_count += static_cast<int64_t>(left.size());
-    tbb::parallel_for(size_t{0}, left.size(), [&](size_t i) {
-      const TriMesh::VertexHandle v(left[i]);
-      const Eigen::Vector3d x = OntoZeroSet(f, ToEigen(fine.tri.point(v)), 0.5 * h, radius);
-      fine.tri.set_point(v, TriMesh::Point(x[0], x[1], x[2]));
-    });
   };
   project(nullptr);
   // An edge the projection stretched spans between two surfaces: vertices of
