@@ -51,37 +51,20 @@ struct FlatArray {
 // Protobuf's notation, compact: decimal int32, true/false, doubles by
 // SimpleDtoa (shortest of %.15g / %.17g that reads back, which is what the
 // printer uses for finite doubles).
-std::string Print(const google::protobuf::RepeatedField<int32_t>& values) {
-  std::string out;
-  out.resize(values.size() * 12 + 2);
-  char* p = out.data();
-  *p++ = '[';
-  for (int i = 0; i < values.size(); ++i) {
-    if (i > 0) *p++ = ',';
-    p = std::to_chars(p, p + 11, values.Get(i)).ptr;
-  }
-  *p++ = ']';
-  out.resize(p - out.data());
-  return out;
+void Append(int32_t v, std::string* out) {
+  char buf[12];
+  out->append(buf, std::to_chars(buf, buf + sizeof(buf), v).ptr);
 }
+void Append(bool v, std::string* out) { out->append(v ? "true" : "false"); }
+void Append(double v, std::string* out) { out->append(google::protobuf::SimpleDtoa(v)); }
 
-std::string Print(const google::protobuf::RepeatedField<bool>& values) {
+template <typename T>
+std::string Print(const google::protobuf::RepeatedField<T>& values) {
   std::string out = "[";
-  out.reserve(values.size() * 6 + 2);
+  out.reserve(values.size() * (std::is_same_v<T, double> ? 20 : 6) + 2);
   for (int i = 0; i < values.size(); ++i) {
     if (i > 0) out.push_back(',');
-    out.append(values.Get(i) ? "true" : "false");
-  }
-  out.push_back(']');
-  return out;
-}
-
-std::string Print(const google::protobuf::RepeatedField<double>& values) {
-  std::string out = "[";
-  out.reserve(values.size() * 20 + 2);
-  for (int i = 0; i < values.size(); ++i) {
-    if (i > 0) out.push_back(',');
-    out.append(google::protobuf::SimpleDtoa(values.Get(i)));
+    Append(values.Get(i), &out);
   }
   out.push_back(']');
   return out;
