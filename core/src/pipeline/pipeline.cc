@@ -154,9 +154,12 @@ absl::StatusOr<PipelineResult> RunOnPointCloud(const std::string& input_path,
 
 absl::StatusOr<PipelineResult> RunOnMesh(const std::string& input_path,
                                          const PipelineParams& params, const RunContext& ctx) {
-  MESHSEG_ASSIGN_OR_RETURN(
-      Mesh mesh,
-      ReadMesh(input_path, {.format = params.format, .max_elements = params.max_elements}));
+  // The mesh stays in the StatusOr: OpenMesh 9 meshes have no move
+  // constructor, so taking it out would copy it.
+  absl::StatusOr<Mesh> read =
+      ReadMesh(input_path, {.format = params.format, .max_elements = params.max_elements});
+  if (!read.ok()) return read.status();
+  const Mesh& mesh = *read;
   ctx.Progress("read", 1.0);
   PipelineResult result;
   // Binary occupancy first: a terraced surface's facets lie exactly in the

@@ -7,6 +7,8 @@
 #include <optional>
 #include <variant>
 
+#include <tbb/parallel_for.h>
+
 namespace meshseg::segment_internal {
 namespace {
 
@@ -212,10 +214,10 @@ std::optional<ScoredFit> TypeThatFitsInstead(const SegmentContext& c, const Regi
 
 std::array<ScoredFit, kCurvedTypes.size()> ScoreCurvedTypes(const SegmentContext& c,
                                                             std::span<const int> vertices) {
+  // The fits read only c and the vertices: concurrent, each into its slot.
   std::array<ScoredFit, kCurvedTypes.size()> out;
-  for (std::size_t t = 0; t < kCurvedTypes.size(); ++t) {
-    out[t] = ScoreType(c, kCurvedTypes[t], vertices);
-  }
+  tbb::parallel_for(std::size_t{0}, kCurvedTypes.size(),
+                    [&](std::size_t t) { out[t] = ScoreType(c, kCurvedTypes[t], vertices); });
   return out;
 }
 
@@ -260,10 +262,9 @@ std::optional<TypedFit> PlaneIfFits(const SegmentContext& c, std::span<const int
 
 TypedFit DecideCurvedType(const SegmentContext& c, std::span<const int> vertices,
                           const Tolerance& tol) {
-  std::array<TypedFit, 4> k = {TryType(c, SurfaceType::kCylinder, vertices, tol),
-                               TryType(c, SurfaceType::kSphere, vertices, tol),
-                               TryType(c, SurfaceType::kCone, vertices, tol),
-                               TryType(c, SurfaceType::kTorus, vertices, tol)};
+  std::array<TypedFit, kCurvedTypes.size()> k;  // concurrent fits, each into its slot
+  tbb::parallel_for(std::size_t{0}, kCurvedTypes.size(),
+                    [&](std::size_t t) { k[t] = TryType(c, kCurvedTypes[t], vertices, tol); });
   // Of cylinder and cone, the more accurate (ALGORITHMS.md S1 step 2.5).
   if (k[2].fraction >= k[0].fraction - kFractionTie &&
       k[2].fit.rms_distance < kConeGain * k[0].fit.rms_distance) {
