@@ -1,5 +1,6 @@
-// The type decision of seed 000 §3 steps 3 and 5: the first analytic type
-// whose fit meets (5) and (6) at more than alpha of the region's vertices.
+// The type decision of ALGORITHMS.md S1 steps 2.3 and 2.5: the first
+// analytic type whose fit meets (5) and (6) at more than alpha of the
+// region's vertices.
 #ifndef MESHSEG_SRC_SEGMENT_DECIDE_TYPE_H_
 #define MESHSEG_SRC_SEGMENT_DECIDE_TYPE_H_
 
@@ -97,7 +98,7 @@ struct ScoredFit {
 };
 ScoredFit ScoreType(const SegmentContext& c, SurfaceType type, std::span<const int> vertices);
 
-// The curved types in seed 000's order, then seed 002's torus.
+// The curved types in ALGORITHMS.md S1's order (step 2.5), then S2's torus.
 inline constexpr std::array<SurfaceType, 4> kCurvedTypes = {
     SurfaceType::kCylinder, SurfaceType::kSphere, SurfaceType::kCone, SurfaceType::kTorus};
 

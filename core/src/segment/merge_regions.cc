@@ -42,7 +42,7 @@ std::vector<int> BySize(const std::vector<RegionState>& regions) {
   return order;
 }
 
-// Seed 000 §4 step 3; returns the number of merges. All smooth arcs are
+// ALGORITHMS.md S1 step 3.3; returns the number of merges. All smooth arcs are
 // tried, whatever the types: a sphere of large radius seen as a small plane
 // fits the sphere's surface and is merged (the beta1 test is strict).
 int MergeByExtrapolation(const SegmentContext& c, std::vector<int>* labels,
@@ -74,7 +74,8 @@ int MergeByExtrapolation(const SegmentContext& c, std::vector<int>* labels,
   return merges;
 }
 
-// Seed 000's order of types: plane, cylinder, sphere, cone, torus, quadric.
+// The order of types of ALGORITHMS.md S1 step 2.5, with S2's torus: plane,
+// cylinder, sphere, cone, torus, quadric.
 int TypeRank(SurfaceType t) {
   switch (t) {
     case SurfaceType::kPlane: return 0;

@@ -145,7 +145,7 @@ absl::StatusOr<int> MergeSameSurface(const SegmentContext& c, std::vector<int>* 
         const SurfaceType type_a = (*regions)[arc.a].type;
         const SurfaceType type_b = (*regions)[arc.b].type;
         // A quadric piece next to an analytic one may be part of its
-        // surface (seed 000 keeps arcs to quadrics); pairs of quadrics are
+        // surface (ALGORITHMS.md S1 step 3.2 keeps arcs to quadrics); pairs of quadrics are
         // left to the refit merge.
         const bool a_ok = IsAnalytic(type_a) || type_a == SurfaceType::kQuadric;
         const bool b_ok = IsAnalytic(type_b) || type_b == SurfaceType::kQuadric;

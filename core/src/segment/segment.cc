@@ -1,5 +1,6 @@
-// Segment(): checks the params, derives the tolerances, then runs seed 000
-// §3-4 with seed 002's leftover absorption and face labels, in order.
+// Segment(): checks the params, derives the tolerances, then runs
+// ALGORITHMS.md S1 steps 2-3 with S2's leftover absorption and face labels,
+// in order.
 #include "meshseg/segment.h"
 
 #include <cmath>
