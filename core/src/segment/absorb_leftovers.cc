@@ -22,15 +22,16 @@ constexpr double kPi = 3.14159265358979323846;
 constexpr int kNoPick = -1;
 // Share of a region's vertices on a neighbour's surface that makes it a
 // piece of that neighbour (LiesOnANeighbour). Measured at the releases:
-// fragments of every type on the generated parts at 0.15 h (seeds 1-3) 0.44
-// to 1, strips of a round 0.95; test_piece's boss top 0 at 1.5 times its
-// voxel size and noise 0, 0.15 to 0.30 at 1.25 times and 0.15 h.
+// fragments of every type on the generated parts at sigma = 0.15 h (three
+// noise draws) 0.44 to 1, strips of a round 0.95; a small plane disc on top
+// of a conical frustum 0 at 1.5 times the part's voxel size without noise,
+// 0.15 to 0.30 at 1.25 times and sigma = 0.15 h.
 constexpr double kOnNeighbourShare = 1.0 / 3.0;
 // A small face is flat: its plane meets its vertices within this many
-// sigmas (rms). test_piece's boss top at 1.25 h and 0.15 h: 0.99 to 1.29
-// sigma; the rim fragments that pass the share above (sphere_cap at 0.05 h,
-// seed 26, on the cylinder's top rim: 30 and 37 vertices, 4 and 11 of them
-// on a neighbour): 4.2 and 2.9 sigma.
+// sigmas (rms). That plane disc at 1.25 h and sigma = 0.15 h: 0.99 to 1.29
+// sigma; the rim fragments that pass the share above (at sigma = 0.05 h, on
+// the 41-degree crease where a sphere cap of r 20 meets a cylinder of r 15:
+// 30 and 37 vertices, 4 and 11 of them on a neighbour): 4.2 and 2.9 sigma.
 constexpr double kFaceSigmas = 2.0;
 
 // The thresholds of step `step` (0 to kSteps - 1).
@@ -130,7 +131,7 @@ bool LiesOnANeighbour(const SegmentContext& c, const std::vector<int>& labels,
 
 // A mesh is exact when its estimated noise is below this fraction of l_avg
 // (CAD exports and noise-free generated parts: 0 to 1e-15 l_avg; the
-// cleanest scan in shared/data, fandisk, 2.5e-4).
+// cleanest scanned mesh measured, 2.5e-4).
 constexpr double kExactNoise = 1e-9;
 
 // A plane of kMinInteriorVertices, flat within kFaceSigmas (or exact), that

@@ -25,17 +25,19 @@ void ReleaseSmallQuadrics(const SegmentContext& c, std::vector<int>* labels,
 // from seeds on noisy rims (at high noise no neighbour's surface fits their
 // bent normals well enough to merge them); they are released like the small
 // quadrics and absorbed again. 60 vertices, as for quadrics: about 120 faces,
-// below the 200-face primitives the segmentation must find. (30 let a
-// 47-vertex cone on sphere_cap's bottom rim at 0.15 h survive, and the
-// boundary refinement then grew it to 148 on the rim's bent normals.)
+// below the 200-face primitives the segmentation must find. (A floor of 30
+// let a 47-vertex cone survive on the 90-degree rim between a cylinder of
+// r 15 and its plane bottom, at sigma = 0.15 h, and the boundary refinement
+// then grew it to 148 on the rim's bent normals.)
 // A small face stays: a plane of kMinInteriorVertices (retype_by_interior.h)
 // vertices, flat (their rms distance to it at most twice the noise, or
 // exact), that lies on no neighbour (fewer than a third of its vertices
 // meet the surface of a region beside it within twice the base thresholds,
 // the first leftover step). It is a face across a crease, and the region
-// that absorbed it would bend (test_piece's boss top at 1.5 times its voxel
-// size and noise 0: 41 vertices, none on the boss cone, which took them and
-// became a sphere). A fragment on a rounded rim is not flat.
+// that absorbed it would bend (a small plane disc on top of a conical
+// frustum, meshed at 1.5 times the part's voxel size without noise: 41
+// vertices, none on the cone, which took them and became a sphere). A
+// fragment on a rounded rim is not flat.
 inline constexpr std::size_t kMinRegionVertices = kMinQuadricVertices;
 inline constexpr double kMinRegionShare = 0.001;  // of all vertices
 // Returns the number of regions released.

@@ -157,17 +157,17 @@ bool FitsAsWellAsOwn(const SegmentContext& c, const RegionState& r, const PairFi
          f + kFractionTie >= FitFraction(c, r.surface, r.vertices, c.tolerance);
 }
 
-// Seed 000 §4 step 4: repeatedly merges the best-fitting pair: one whose
-// union one surface fits to beta2 on both regions, or, for two regions of
-// one type, as well as each region's own surface fits it. The second
-// clause is ours: at 0.15 h the rows along creases and the noise in n'_i
-// leave a region's own surface meeting (5) and (6) on 75-87 % of its
-// vertices (test_piece's groove, grown from two seeds: 80 and 86 % at
-// seed 107, 84 and 87 % at seed 67), so no union could pass beta2 and the
-// groove stayed two cylinders whose boundary the refinement then drew
-// through the noise. One type and kMinRegionVertices: two cone fragments
-// of 47 and 24 vertices (seed 4) and two plane strips read as one cylinder
-// (seed 13) merged without them, and each left the countersink in two
+// ALGORITHMS.md S1 step 3.4: repeatedly merges the best-fitting pair: one
+// whose union one surface fits to beta2 on both regions, or, for two regions
+// of one type, as well as each region's own surface fits it. The second
+// clause is ours: at sigma = 0.15 h the rows along creases and the noise in
+// n'_i leave a region's own surface meeting (5) and (6) on 75-87 % of its
+// vertices (a half-cylinder groove of r 7 across a plane face, grown from
+// two seeds: 80 to 87 % over two noise draws), so no union could pass beta2
+// and the groove stayed two cylinders whose boundary the refinement then
+// drew through the noise. One type and kMinRegionVertices: without them two
+// cone fragments of 47 and 24 vertices, and two plane strips read as one
+// cylinder, merged, and each left a 45-degree countersink band in two
 // pieces typed apart.
 absl::Status MergeByRefitting(const SegmentContext& c, std::vector<int>* labels,
                               std::vector<RegionState>* regions) {
@@ -262,7 +262,8 @@ std::vector<int> RetypeInaccurateCurved(const SegmentContext& c,
     TypedFit typed = plane.fraction > c.alpha ? plane : DecideCurvedType(c, smooth, c.tolerance);
     // With no valid fit left, a type that fits kStaleTypeFraction will do:
     // the boundary refinement that follows hands the rest to the
-    // neighbours (the boss top holds the first rows of its edge round).
+    // neighbours (a plane annulus retyped from a torus holds the first rows
+    // of its convex edge round).
     double needed = c.alpha;
     if (!current.ok() && !(typed.fraction > c.alpha)) {
       needed = kStaleTypeFraction;

@@ -50,13 +50,14 @@ std::optional<UnionTest> TestUnion(const SegmentContext& c, const std::vector<in
   const double squares_b = SumOfSquares(c, regions[b], part_b);
   // A plane part whose principal curvatures are a curved face's
   // (CurvedField) is a strip of its curved neighbour that a plane fits
-  // within the tolerances (rounded_prism at 0.15 h, seed 19: 67 interior
-  // vertices, where the information criterion cannot tell a narrow plane
-  // from a narrow cylinder): the pair merges, first, if the neighbour's
-  // type meets the union at the noise, or as closely as the plane meets the
-  // strip (test_piece's rounds at 0.15 h: seed 101, the cylinder 0.28
-  // sigma off the union, the plane 0.33 off its strip; seed 117, 0.44 and
-  // 0.58).
+  // within the tolerances (a 60-degree round of r 4 between two planes at
+  // sigma = 0.15 h: 67 interior vertices, where the information criterion
+  // cannot tell a narrow plane from a narrow cylinder): the pair merges,
+  // first, if the neighbour's type meets the union at the noise, or as
+  // closely as the plane meets the strip (quarter rounds of r 5 and 6 on
+  // the convex edges of a block at sigma = 0.15 h, on two noise draws: the
+  // cylinder 0.28 and 0.44 sigma off the union, the plane 0.33 and 0.58 off
+  // its strip).
   std::optional<SurfaceType> strip_of;
   double strip_mean_square = 0.0;
   if (type_a == SurfaceType::kPlane && IsCurved(type_b) && CurvedField(c, part_a)) {
@@ -77,9 +78,9 @@ std::optional<UnionTest> TestUnion(const SegmentContext& c, const std::vector<in
   const double squares = squares_a + squares_b;
   // One surface must meet the union at the noise, or as closely as the
   // closer of the two parts' own surfaces meets its part, or, near the
-  // noise, as the farther one does (test_piece's countersink at 0.15 h,
-  // seed 145: a sphere piece 0.39 sigma off, a cone piece 0.22, one cone
-  // 0.34 off the union and 17 better).
+  // noise, as the farther one does (a 45-degree countersink band at
+  // sigma = 0.15 h: a sphere piece 0.39 sigma off, a cone piece 0.22, one
+  // cone 0.34 off the union and 17 better).
   const double mean_square_a = squares_a / part_a.size();
   const double mean_square_b = squares_b / part_b.size();
   const double closer = ModelErrorOfMeanSquare(c, std::min(mean_square_a, mean_square_b));
@@ -91,7 +92,7 @@ std::optional<UnionTest> TestUnion(const SegmentContext& c, const std::vector<in
   // A surface that meets the union at the noise and misses it by at most
   // kScoredNearError sigma more than the two parts' own surfaces miss them
   // is one surface at this noise, whatever the scores say: they count the
-  // meshing's own bias (test_piece's countersink at 0.15 h, seed 198: a
+  // meshing's own bias (a 45-degree countersink band at sigma = 0.15 h: a
   // piece of 85 interior vertices 0.5 sigma outside the true cone on one
   // side of the voxel grid; one cone 0.15 sigma off the union, 0.33 sigma
   // more than the two pieces' cones, and 10.6 worse).
@@ -104,11 +105,12 @@ std::optional<UnionTest> TestUnion(const SegmentContext& c, const std::vector<in
                                                ParameterCount(type));
     // One surface near the noise is the simpler account of both parts: they
     // stay apart only if two surfaces score kScoreMargin better, as a limit
-    // type takes over near the noise (TakesOverNearTheNoise) (test_piece's
-    // countersink at 0.15 h, seed 98, in a sphere piece and a cone piece,
-    // each at the noise, the cone 0.08 sigma off the union and 7.0 worse;
-    // rounded_prism's round at 0.15 h, seed 288, in two plane strips, 0.17
-    // and 0.35 sigma off theirs, one cylinder 0.27 sigma off and 8.0 better).
+    // type takes over near the noise (TakesOverNearTheNoise) (a 45-degree
+    // countersink band at sigma = 0.15 h in a sphere piece and a cone piece,
+    // each at the noise, the cone 0.08 sigma off the union and 7.0 worse; a
+    // 60-degree round of r 4 between two planes at sigma = 0.15 h in two
+    // plane strips, 0.17 and 0.35 sigma off theirs, one cylinder 0.27 sigma
+    // off and 8.0 better).
     const double needed = FitsNearNoise(c, fit) ? -kScoreMargin : kScoreMargin;
     const double excess_square = fit.rms_distance * fit.rms_distance - squares / both.size();
     if (gain > needed || (FitsAtNoise(c, fit) && excess_square <= max_excess * max_excess)) {
@@ -121,9 +123,9 @@ std::optional<UnionTest> TestUnion(const SegmentContext& c, const std::vector<in
     if (t.gain > best->gain) best = &t;
   }
   // Its simplest limit if that gains within kScoreMargin as much, as in
-  // RetypeByInterior: a cone beats its cylinder by chance (test_piece's
-  // groove at 0.15 h, seed 197, with a plane strip of it: cone 67.5,
-  // cylinder 63.8).
+  // RetypeByInterior: a cone beats its cylinder by chance (a half-cylinder
+  // groove of r 7 across a plane face at sigma = 0.15 h, with a plane strip
+  // of it: cone 67.5, cylinder 63.8).
   const UnionTest* simplest = best;
   for (const UnionTest& t : passing) {
     if (IsLimitOf(t.type, best->type) && t.gain + kScoreMargin > best->gain &&

@@ -1,10 +1,11 @@
-// Merging pieces of one surface (our addition to seed 000 §4): the region
-// graph keeps an arc only between regions of the same type, so two pieces
-// of one surface that were typed apart stay apart. At 0.15 h test_piece's
-// countersink (a 45-degree cone band 4 h wide) grew from two seeds, one
-// typed a sphere and one a cone, and both are right within the tolerances.
-// Whether they are one surface is asked of their interiors, where the rows
-// along creases cannot bias the fits (retype_by_interior.h).
+// Merging pieces of one surface (our addition to ALGORITHMS.md S1 step 3):
+// the region graph keeps an arc only between regions of the same type, so
+// two pieces of one surface that were typed apart stay apart. At
+// sigma = 0.15 h a 45-degree countersink (a cone band 4 h wide between a
+// plane top and a bore) can grow from two seeds, one typed a sphere and one
+// a cone, and both are right within the tolerances. Whether they are one
+// surface is asked of their interiors, where the rows along creases cannot
+// bias the fits (retype_by_interior.h).
 #ifndef MESHSEG_SRC_SEGMENT_MERGE_SAME_SURFACE_H_
 #define MESHSEG_SRC_SEGMENT_MERGE_SAME_SURFACE_H_
 
@@ -33,11 +34,13 @@ namespace meshseg::segment_internal {
 // or, within kScoredNearError sigmas, as the farther part's does (model
 // errors), taking that type (or its simplest limit, IsLimitOf, if that gains
 // within kScoreMargin as much), largest gain first. The first and last clauses
-// join two plane strips along a round (rounded_prism at 0.15 h, seed 288: the
-// cylinder 0.27 sigma off the union, the planes 0.17 and 0.35 off theirs, 8.0
-// better; seed 16: 0.28, 0.34 and 0.47, better by more than kScoreMargin).
-// Both parts need kMinInteriorVertices. Does nothing at noise 0 (noise-free
-// meshes have no scale for the scores). Returns the number of merges.
+// join two plane strips along a round (a 60-degree round of r 4 between two
+// planes at sigma = 0.15 h: the cylinder 0.27 sigma off the union, the planes
+// 0.17 and 0.35 off theirs, 8.0 better; with other noise, 0.28, 0.34 and
+// 0.47, better by more than kScoreMargin). Both parts need
+// kMinInteriorVertices. Does nothing when the estimated noise is zero
+// (noise-free meshes have no scale for the scores). Returns the number of
+// merges.
 // Errors: CANCELLED on stop.
 absl::StatusOr<int> MergeSameSurface(const SegmentContext& c, std::vector<int>* labels,
                                      std::vector<RegionState>* regions);

@@ -86,10 +86,10 @@ absl::StatusOr<int> MergeBestPairs(
     MergeInto(into, a_larger ? b : a, labels, regions);
     RegionState& merged = (*regions)[into];
     // If the merged type cannot be fitted to all of the merged vertices, the
-    // larger region keeps its type with its surface: a torus accepted on a
-    // countersink's interior whose fit to the whole failed had left a
-    // region typed torus with a cone's surface (test_piece at 0.15 h, seed
-    // 74).
+    // larger region keeps its type with its surface: else a torus accepted
+    // on the interior of a 45-degree countersink band (at sigma = 0.15 h),
+    // whose fit to the whole band fails, leaves a region typed torus with a
+    // cone's surface.
     if (merge.surface) {
       merged.type = merge.type;
       merged.surface = *merge.surface;

@@ -135,9 +135,10 @@ absl::StatusOr<Segmentation> Segment(const Mesh& mesh, const CurvatureField& cur
   if (!GiveBackRows(c, &labels, &regions).empty()) {
     MESHSEG_RETURN_IF_ERROR(RefineBoundaries(c, &labels, &regions));
   }
-  // A small face across a crease that a curved region absorbed (a boss
-  // top in a piece of its cone) becomes a plane of its own; the rest of the
-  // region is then typed on its interior like every other.
+  // A small face across a crease that a curved region absorbed (a small
+  // plane disc on top of a conical frustum, in a piece of the cone) becomes
+  // a plane of its own; the rest of the region is then typed on its
+  // interior like every other.
   SplitOffPlanes(c, &labels, &regions);
   // The outer rows of a narrow band can decide its type (a chamfer between
   // rounded creases passes as a sphere); its interior tells.
@@ -152,7 +153,7 @@ absl::StatusOr<Segmentation> Segment(const Mesh& mesh, const CurvatureField& cur
   MESHSEG_ASSIGN_OR_RETURN(const int same_surface, MergeSameSurface(c, &labels, &regions));
   if (same_surface > 0) MESHSEG_RETURN_IF_ERROR(RefineBoundaries(c, &labels, &regions));
   // The steps since the last release can shrink a region below the size
-  // floor again (a plane strip on test_piece's groove at 0.15 h, seed 124:
+  // floor again (a plane strip on a half-cylinder groove at sigma = 0.15 h:
   // 62 vertices at the release, 56 at the end); a plane strip too narrow
   // for an interior was never typed by one. (Two statements: both change
   // the labels the other reads.)
