@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <numeric>
 #include <utility>
 #include <vector>
@@ -126,18 +127,26 @@ absl::StatusOr<Mesh> RefineOnPoints(const Mesh& mesh, const std::vector<Eigen::V
           OntoZeroSet(f, ToEigen(fine.tri.point(v)), 0.5 * h, radius, kZeroSetTolerance * h);
       fine.tri.set_point(v, TriMesh::Point(x[0], x[1], x[2]));
     });
-    // A vertex that f = 0 brought onto the sampled surface (its own
-    // projection neighbourhood holds points, no widening: in an occlusion gap
-    // the nearest points are often another face's) is put on the points like
-    // every other; the rest stay on f = 0.
+    // A vertex that f = 0 brought onto the sampled surface is put on the
+    // points like every other; the rest stay on f = 0. On the sampled surface
+    // means: its own projection neighbourhood holds points, or a point lies
+    // within one spacing h of it (no widening: in an occlusion gap the
+    // nearest points are often another face's). The count alone is not
+    // enough: a disc of the projection radius holds only ~π·2.5² ≈ 15 points
+    // of a random sample at spacing h (outliers.h), about
+    // kMinProjectionPoints, and a vertex beside a convex crease sees less
+    // than a disc of surface, so many vertices f = 0 put among the points
+    // failed it, stayed, and were left out of the crease splitting below.
     std::vector<int> onto;
     std::vector<int> stay;
     {
       std::vector<std::pair<uint32_t, double>> near;
       for (const int v : left) {
-        index.WithinRadiusUnordered(ToEigen(fine.tri.point(TriMesh::VertexHandle(v))), radius,
-                                    &near);
-        (near.size() >= kMinProjectionPoints ? onto : stay).push_back(v);
+        const Eigen::Vector3d x = ToEigen(fine.tri.point(TriMesh::VertexHandle(v)));
+        index.WithinRadiusUnordered(x, radius, &near);
+        const bool on_points = near.size() >= kMinProjectionPoints ||
+                               (points[index.Closest(x)] - x).squaredNorm() <= h * h;
+        (on_points ? onto : stay).push_back(v);
       }
     }
     if (!onto.empty()) {
@@ -162,6 +171,14 @@ absl::StatusOr<Mesh> RefineOnPoints(const Mesh& mesh, const std::vector<Eigen::V
   // normals of their nearest points kMinCreaseAngleDeg apart): a stretch
   // along one surface (a fold, a handle) is not a crease's.
   const double cos_crease = std::cos(kMinCreaseAngleDeg * M_PI / 180.0);
+  // The halving runs until no stretched edge is left or a round makes no
+  // progress. Tents are as large as the
+  // supports, tens of spacings on a dense sample, so the rounds needed,
+  // log2(longest / (kStretchedEdge × edge)) plus those for the new edges
+  // each split makes, are set by the geometry; kStretchedRounds only bounds
+  // the work.
+  size_t last_count = std::numeric_limits<size_t>::max();
+  double last_longest = std::numeric_limits<double>::infinity();
   for (int round = 0; sharp && round < kStretchedRounds; ++round) {
     const double longest = kStretchedEdge * stats->refine_edge_length;
     std::vector<TriMesh::EdgeHandle> stretched;
@@ -174,7 +191,18 @@ absl::StatusOr<Mesh> RefineOnPoints(const Mesh& mesh, const std::vector<Eigen::V
       const Eigen::Vector3d& nb = normals[index.Closest(ToEigen(fine.tri.point(b)))];
       if (na.dot(nb) < cos_crease) stretched.push_back(e);
     }
-    if (stretched.empty()) break;
+    double stretched_longest = 0.0;
+    for (const auto e : stretched) {
+      stretched_longest = std::max(stretched_longest, fine.tri.calc_edge_length(e));
+    }
+    // No progress: the same number of stretched edges as the last round (the
+    // same edges, their midpoints back on an end), or more and none shorter.
+    if (stretched.empty() || stretched.size() == last_count ||
+        (stretched.size() > last_count && stretched_longest >= last_longest)) {
+      break;
+    }
+    last_count = stretched.size();
+    last_longest = stretched_longest;
     std::vector<int> added;
     for (const auto e : stretched) {
       const auto he = fine.tri.halfedge_handle(e, 0);
