@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <limits>
 #include <numeric>
 #include <utility>
 #include <vector>
@@ -132,11 +131,13 @@ absl::StatusOr<Mesh> RefineOnPoints(const Mesh& mesh, const std::vector<Eigen::V
     // means: its own projection neighbourhood holds points, or a point lies
     // within one spacing h of it (no widening: in an occlusion gap the
     // nearest points are often another face's). The count alone is not
-    // enough: a disc of the projection radius holds only ~π·2.5² ≈ 15 points
-    // of a random sample at spacing h (outliers.h), about
-    // kMinProjectionPoints, and a vertex beside a convex crease sees less
-    // than a disc of surface, so many vertices f = 0 put among the points
-    // failed it, stayed, and were left out of the crease splitting below.
+    // enough: a disc of the projection radius holds only about 15 points of
+    // a uniform random sample (h is the median mean distance to several
+    // neighbours, outliers.h, so (2.5 h)² π covers ~15 points, not 20),
+    // close to kMinProjectionPoints; and a vertex beside a convex crease sees
+    // less than a disc of surface. Vertices that f = 0 had put among the
+    // points then failed the count, stayed on f = 0, and were left out of
+    // the crease halving below: their faces stayed chords of the crease.
     std::vector<int> onto;
     std::vector<int> stay;
     {
@@ -171,14 +172,6 @@ absl::StatusOr<Mesh> RefineOnPoints(const Mesh& mesh, const std::vector<Eigen::V
   // normals of their nearest points kMinCreaseAngleDeg apart): a stretch
   // along one surface (a fold, a handle) is not a crease's.
   const double cos_crease = std::cos(kMinCreaseAngleDeg * M_PI / 180.0);
-  // The halving runs until no stretched edge is left or a round makes no
-  // progress. Tents are as large as the
-  // supports, tens of spacings on a dense sample, so the rounds needed,
-  // log2(longest / (kStretchedEdge × edge)) plus those for the new edges
-  // each split makes, are set by the geometry; kStretchedRounds only bounds
-  // the work.
-  size_t last_count = std::numeric_limits<size_t>::max();
-  double last_longest = std::numeric_limits<double>::infinity();
   for (int round = 0; sharp && round < kStretchedRounds; ++round) {
     const double longest = kStretchedEdge * stats->refine_edge_length;
     std::vector<TriMesh::EdgeHandle> stretched;
@@ -191,18 +184,7 @@ absl::StatusOr<Mesh> RefineOnPoints(const Mesh& mesh, const std::vector<Eigen::V
       const Eigen::Vector3d& nb = normals[index.Closest(ToEigen(fine.tri.point(b)))];
       if (na.dot(nb) < cos_crease) stretched.push_back(e);
     }
-    double stretched_longest = 0.0;
-    for (const auto e : stretched) {
-      stretched_longest = std::max(stretched_longest, fine.tri.calc_edge_length(e));
-    }
-    // No progress: the same number of stretched edges as the last round (the
-    // same edges, their midpoints back on an end), or more and none shorter.
-    if (stretched.empty() || stretched.size() == last_count ||
-        (stretched.size() > last_count && stretched_longest >= last_longest)) {
-      break;
-    }
-    last_count = stretched.size();
-    last_longest = stretched_longest;
+    if (stretched.empty()) break;
     std::vector<int> added;
     for (const auto e : stretched) {
       const auto he = fine.tri.halfedge_handle(e, 0);

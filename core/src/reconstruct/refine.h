@@ -59,11 +59,9 @@ inline constexpr double kMinGradient = 1e-3;
 inline constexpr double kSerialRemeshFaces = 100'000;
 // After the projection an edge longer than this many refined edge lengths
 // (the remesher leaves them within 4/3) was stretched across a crease and
-// is halved, round after round until none is left or a round makes no
-// progress. kStretchedRounds only bounds the work: tents tens of spacings
-// wide need about ten rounds (each split adds edges that may cross too).
+// is halved, at most kStretchedRounds times over.
 inline constexpr double kStretchedEdge = 2.0;
-inline constexpr int kStretchedRounds = 30;
+inline constexpr int kStretchedRounds = 4;
 
 // Returns `mesh` with every triangle split into four at the midpoints of its
 // edges: edges halve, triangle shapes and the surface stay, a closed oriented
