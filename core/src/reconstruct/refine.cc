@@ -172,6 +172,16 @@ absl::StatusOr<Mesh> RefineOnPoints(const Mesh& mesh, const std::vector<Eigen::V
   // normals of their nearest points kMinCreaseAngleDeg apart): a stretch
   // along one surface (a fold, a handle) is not a crease's.
   const double cos_crease = std::cos(kMinCreaseAngleDeg * M_PI / 180.0);
+  // The halving runs until no stretched edge is left. Tents are as large as
+  // the supports, tens of spacings on a dense sample, so the rounds needed,
+  // log2(longest / (kStretchedEdge × edge)) plus those for the new edges
+  // each split makes, are set by the geometry; kStretchedRounds only bounds
+  // the work. A midpoint that the projection took back towards an end of
+  // its edge (nearer to it than kStuckFraction of the half edge: at a corner
+  // of three planes, which the crease fit does not model) made no progress;
+  // its edges are not split again, which would only add vertices off the
+  // surface.
+  std::vector<uint8_t> stuck(fine.tri.n_vertices(), 0);
   for (int round = 0; sharp && round < kStretchedRounds; ++round) {
     const double longest = kStretchedEdge * stats->refine_edge_length;
     std::vector<TriMesh::EdgeHandle> stretched;
@@ -179,6 +189,7 @@ absl::StatusOr<Mesh> RefineOnPoints(const Mesh& mesh, const std::vector<Eigen::V
       const auto he = fine.tri.halfedge_handle(e, 0);
       const auto a = fine.tri.from_vertex_handle(he), b = fine.tri.to_vertex_handle(he);
       if (unsupported[a.idx()] || unsupported[b.idx()]) continue;
+      if (stuck[a.idx()] || stuck[b.idx()]) continue;
       if (!(fine.tri.calc_edge_length(e) > longest)) continue;
       const Eigen::Vector3d& na = normals[index.Closest(ToEigen(fine.tri.point(a)))];
       const Eigen::Vector3d& nb = normals[index.Closest(ToEigen(fine.tri.point(b)))];
@@ -186,14 +197,24 @@ absl::StatusOr<Mesh> RefineOnPoints(const Mesh& mesh, const std::vector<Eigen::V
     }
     if (stretched.empty()) break;
     std::vector<int> added;
+    std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>> ends;
     for (const auto e : stretched) {
       const auto he = fine.tri.halfedge_handle(e, 0);
-      const auto mid = 0.5 * (fine.tri.point(fine.tri.from_vertex_handle(he)) +
-                              fine.tri.point(fine.tri.to_vertex_handle(he)));
-      added.push_back(fine.tri.split(e, mid).idx());
+      const Eigen::Vector3d pa = ToEigen(fine.tri.point(fine.tri.from_vertex_handle(he)));
+      const Eigen::Vector3d pb = ToEigen(fine.tri.point(fine.tri.to_vertex_handle(he)));
+      const Eigen::Vector3d mid = 0.5 * (pa + pb);
+      added.push_back(fine.tri.split(e, TriMesh::Point(mid[0], mid[1], mid[2])).idx());
+      ends.emplace_back(pa, pb);
     }
     stats->stretched_split_count += static_cast<int64_t>(added.size());
     project(&added);
+    stuck.resize(fine.tri.n_vertices(), 0);
+    for (size_t i = 0; i < added.size(); ++i) {
+      const Eigen::Vector3d m = ToEigen(fine.tri.point(TriMesh::VertexHandle(added[i])));
+      const double half = 0.5 * (ends[i].first - ends[i].second).norm();
+      const double nearer = std::min((m - ends[i].first).norm(), (m - ends[i].second).norm());
+      stuck[added[i]] = nearer < kStuckFraction * half;
+    }
   }
   stats->crease_vertex_count = static_cast<int64_t>(creases.size());
   if (sharp) {
