@@ -59,9 +59,14 @@ inline constexpr double kMinGradient = 1e-3;
 inline constexpr double kSerialRemeshFaces = 100'000;
 // After the projection an edge longer than this many refined edge lengths
 // (the remesher leaves them within 4/3) was stretched across a crease and
-// is halved, at most kStretchedRounds times over.
+// is halved, round after round until none is left; a midpoint projected to
+// within kStuckFraction of the half edge from an end made no progress, and
+// its edges are not split again. kStretchedRounds only bounds the work:
+// tents tens of spacings wide need about ten rounds (each split adds edges
+// that may cross too).
 inline constexpr double kStretchedEdge = 2.0;
-inline constexpr int kStretchedRounds = 4;
+inline constexpr int kStretchedRounds = 30;
+inline constexpr double kStuckFraction = 0.5;
 
 // Returns `mesh` with every triangle split into four at the midpoints of its
 // edges: edges halve, triangle shapes and the surface stay, a closed oriented
