@@ -283,8 +283,10 @@ std::vector<Eigen::Vector3d> SteppedBlockEdgePoints(double margin) {
 // edges' p95 distance to the reconstruction, away from the corners (three
 // planes, not modelled), over 2 sp rounded (sharp_creases off: one plane
 // per vertex; 3.2 sp at 8000 points) and 0.61 sp sharp on the clean cloud,
-// 1.08 sp sharp on the noisy one; the whole surface's accuracy p95 0.41 and
-// 0.71 sp.
+// 1.08 sp sharp on the noisy one; the whole surface's accuracy p95 0.30 and
+// 0.72 sp. The clean bound guards the halving of stretched crease edges to
+// convergence: stopped after four rounds, tents across the edges stayed and
+// the clean accuracy was 0.41 sp.
 TEST(SharpCreases, TheEdgesOfASteppedBlockStaySharp) {
   const test::Shape block = SteppedBlock();
   const std::vector<Eigen::Vector3d> edge_points = SteppedBlockEdgePoints(0.1);
@@ -292,7 +294,7 @@ TEST(SharpCreases, TheEdgesOfASteppedBlockStaySharp) {
   struct Case {
     double noise, max_edges, max_accuracy;  // noise in spacings, bounds in sp
   };
-  for (const Case c : {Case{0.0, 0.75, 0.5}, Case{0.1, 1.5, 1.0}}) {
+  for (const Case c : {Case{0.0, 0.75, 0.375}, Case{0.1, 1.5, 1.0}}) {
     const PointCloud cloud = test::MakeCloud(block, {.points = 6000, .noise = c.noise});
     const double sp = test::MedianSpacing(cloud.points);
     const auto sharp = Reconstruct(cloud);
