@@ -38,10 +38,7 @@ std::string JsonVec(const Eigen::Vector3d& v) {
 }
 
 absl::Status MeshInfo(const std::string& path, FileFormat format, bool json) {
-  // Held in the StatusOr: OpenMesh 9 meshes have no move constructor.
-  const absl::StatusOr<Mesh> read = ReadMesh(path);
-  if (!read.ok()) return read.status();
-  const Mesh& mesh = *read;
+  MESHSEG_ASSIGN_OR_RETURN(const Mesh& mesh, ReadMesh(path));
   const MeshStats s = MeshStatistics(mesh);
   const std::string name = std::filesystem::path(path).filename().string();
   if (json) {

@@ -156,12 +156,9 @@ absl::StatusOr<PipelineResult> RunOnPointCloud(const std::string& input_path,
 
 absl::StatusOr<PipelineResult> RunOnMesh(const std::string& input_path,
                                          const PipelineParams& params, const RunContext& ctx) {
-  // The mesh stays in the StatusOr: OpenMesh 9 meshes have no move
-  // constructor, so taking it out would copy it.
-  absl::StatusOr<Mesh> read =
-      ReadMesh(input_path, {.format = params.format, .max_elements = params.max_elements});
-  if (!read.ok()) return read.status();
-  const Mesh& mesh = *read;
+  MESHSEG_ASSIGN_OR_RETURN(
+      const Mesh& mesh,
+      ReadMesh(input_path, {.format = params.format, .max_elements = params.max_elements}));
   ctx.Progress("read", 1.0);
   PipelineResult result;
   // The three tests of what kind of mesh this is only read it, so they run
