@@ -79,14 +79,16 @@ double DataCost(const SegmentContext& c, const Surface& surface, std::span<const
   return sum;
 }
 
-double LabelCost(SurfaceType type, std::size_t vertex_count) {
-  if (vertex_count <= 1) return 0.0;
-  return 0.5 * ParameterCount(type) * std::log(static_cast<double>(vertex_count));
+double LabelCost(const SegmentContext& c, SurfaceType type, std::size_t vertex_count) {
+  const double f = c.evidence_share;
+  const double effective = f * static_cast<double>(vertex_count);
+  if (!(effective > 1.0)) return 0.0;
+  return 0.5 * ParameterCount(type) * std::log(effective) / f;
 }
 
 double EdgeCost(const SegmentContext& c, int u, int v) {
   const bool crease = c.curvature->sharp[u] || c.curvature->sharp[v];
-  return kBoundaryCost * (crease ? kCreaseEdgeWeight : 1.0);
+  return kBoundaryCost * (crease ? kCreaseEdgeWeight : 1.0) / c.evidence_share;
 }
 
 double BoundaryCost(const SegmentContext& c, const std::vector<int>& labels,
@@ -111,7 +113,7 @@ double TotalEnergy(const SegmentContext& c, const std::vector<int>& labels,
     }
   }
   for (const RegionState& r : regions) {
-    if (r.alive) e += LabelCost(r.type, r.vertices.size());
+    if (r.alive) e += LabelCost(c, r.type, r.vertices.size());
   }
   return e;
 }
@@ -166,12 +168,13 @@ std::optional<Move> MergeDelta(const SegmentContext& c, const std::vector<int>& 
   const double before = DataCost(c, x.surface, x.vertices) + DataCost(c, y.surface, y.vertices) +
                         BoundaryCost(c, labels, x_smaller ? x.vertices : y.vertices,
                                      x_smaller ? b : a) +
-                        LabelCost(x.type, x.vertices.size()) + LabelCost(y.type, y.vertices.size());
+                        LabelCost(c, x.type, x.vertices.size()) +
+                        LabelCost(c, y.type, y.vertices.size());
   std::optional<Move> best;
   for (const SurfaceType type : types) {
     const PricedFit fit = PriceFit(c, type, both);
     if (!fit.surface) continue;
-    const double delta = fit.cost + LabelCost(type, both.size()) - before;
+    const double delta = fit.cost + LabelCost(c, type, both.size()) - before;
     if (!best || delta < best->delta) {
       best = Move{.delta = delta, .type = type, .surface = *fit.surface};
     }
@@ -182,8 +185,8 @@ std::optional<Move> MergeDelta(const SegmentContext& c, const std::vector<int>& 
 std::optional<Move> RetypeDelta(const SegmentContext& c, const RegionState& r, SurfaceType type) {
   const PricedFit fit = PriceFit(c, type, r.vertices);
   if (!fit.surface) return std::nullopt;
-  const double before = DataCost(c, r.surface, r.vertices) + LabelCost(r.type, r.vertices.size());
-  return Move{.delta = fit.cost + LabelCost(type, r.vertices.size()) - before,
+  const double before = DataCost(c, r.surface, r.vertices) + LabelCost(c, r.type, r.vertices.size());
+  return Move{.delta = fit.cost + LabelCost(c, type, r.vertices.size()) - before,
               .type = type,
               .surface = *fit.surface};
 }
@@ -339,7 +342,7 @@ DropMove DropDelta(const SegmentContext& c, const std::vector<int>& labels,
 
   // Data and label costs: r's go, the outliers pay c_out / 2, each taker
   // pays for all it holds under its refitted surface.
-  double delta = -DataCost(c, r.surface, r.vertices) - LabelCost(r.type, r.vertices.size());
+  double delta = -DataCost(c, r.surface, r.vertices) - LabelCost(c, r.type, r.vertices.size());
   for (std::size_t k = 0; k < r.vertices.size(); ++k) {
     if (move.next[k] < 0) delta += OutlierCost(c, r.vertices[k]);
   }
@@ -357,8 +360,8 @@ DropMove DropDelta(const SegmentContext& c, const std::vector<int>& labels,
     Surface surface = taker.surface;
     const PricedFit fit = PriceFit(c, taker.type, grown);
     if (fit.surface && fit.cost < cost) cost = fit.cost, surface = *fit.surface;
-    delta += cost - own + LabelCost(taker.type, grown.size()) -
-             LabelCost(taker.type, taker.vertices.size());
+    delta += cost - own + LabelCost(c, taker.type, grown.size()) -
+             LabelCost(c, taker.type, taker.vertices.size());
     move.surfaces.push_back(surface);
   }
 

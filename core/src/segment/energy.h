@@ -6,8 +6,11 @@
 // A labeling L gives every vertex v a region L_v (or none, -1); every
 // region r has a type and a surface S_r. Its energy is
 //
-//   E(L) = sum_v D_v(L_v) + lambda sum_(u,v) w_uv [L_u != L_v]
-//          + sum_r (p_r / 2) ln n_r.
+//   E(L) = sum_v D_v(L_v) + (lambda / f) sum_(u,v) w_uv [L_u != L_v]
+//          + sum_r (p_r / (2 f)) ln (f n_r),
+//
+// f the share of independent samples in the residuals (1 for independent
+// noise; "Correlated residuals" below).
 //
 // Data term. With d_v(S) the distance of v to S and th_dis the distance
 // tolerance of S1 eq. (5),
@@ -44,6 +47,29 @@
 // that with the data term above a type or a second surface must lower the
 // residuals by more than its parameters' cost.
 //
+// Correlated residuals. The data term and the BIC count every vertex as an
+// independent sample of the noise. Where the residuals are correlated
+// along the surface they are not: on a surface from binary voxels
+// (thresholded CT, ALGORITHMS.md S4) the residual is the staircase of the
+// voxel grid, nearly the same at neighbouring vertices, and the vertices of
+// a noise-free tessellation share the chord error of their facet. n vertices then carry the evidence of only
+// n_eff = f n independent ones: the data term, a sum over vertices,
+// overstates the evidence by 1 / f, and a surface that follows the
+// correlated error (a plane on a terrace of a staircase cylinder, a cone
+// over two of its steps) seems to buy 1 / f times what its extra label is
+// worth. The evidence is f sum_v D_v, the BIC on n_eff samples is
+// (p / 2) ln (f n), and the boundary term, a prior in the data term's
+// units, stays; E above is that energy divided by f, so that D_v keeps its
+// units and f = 1 gives PEARL's energy unchanged. f comes from the lag-1
+// autocorrelation rho of the residuals over mesh edges, through the
+// first-order (AR(1)) effective sample size n_eff / n = (1 - rho) /
+// (1 + rho), measured once per mesh on the regions grown (EvidenceShare).
+// Independent noise (a CT-like scan) has rho near 0 and f near 1; negative
+// rho is taken as 0 (f = 1: correlation never makes a label cheaper). The
+// residuals of a surface from binary voxels have rho 0.4 to 0.6 (f 0.24 to
+// 0.42 on the generated parts). One rule for every input: nothing in it
+// knows where the mesh came from.
+//
 // A local move (merge two regions, retype one, drop one) is accepted iff it
 // lowers E; MergeDelta, RetypeDelta and DropDelta below price one without
 // touching the rest.
@@ -70,7 +96,8 @@ inline constexpr double kToleranceSigmas = 3.0;
 // distance tolerance (d = th_dis) being an outlier: k^2.
 inline constexpr double kOutlierMismatch = kToleranceSigmas * kToleranceSigmas;
 // lambda: the cost of one mesh edge between two labels through a smooth
-// face, that of a vertex one data unit (one sigma) off its surface, twice.
+// face, that of a vertex one data unit (one sigma) off its surface, twice
+// (divided by f in E, as the label cost is).
 inline constexpr double kBoundaryCost = 1.0;
 // w_uv for an edge with a sharp end, relative to a smooth one.
 inline constexpr double kCreaseEdgeWeight = 0.1;
@@ -81,9 +108,18 @@ double VertexCost(const SegmentContext& c, int v, const Surface& surface);
 double OutlierCost(const SegmentContext& c, int v);
 // sum of D_v(S) over `vertices`.
 double DataCost(const SegmentContext& c, const Surface& surface, std::span<const int> vertices);
-// (p_T / 2) ln n (0 for n <= 1).
-double LabelCost(SurfaceType type, std::size_t vertex_count);
-// lambda w_uv of the edge (u, v).
+// (p_T / (2 f)) ln (f n), f = c.evidence_share (0 for f n <= 1).
+double LabelCost(const SegmentContext& c, SurfaceType type, std::size_t vertex_count);
+
+// f = n_eff / n = (1 - rho) / (1 + rho) of the residuals of `labels` to
+// their regions' surfaces (1 if rho <= 0 or nothing to measure): rho the
+// correlation of the residuals at the two ends of a mesh edge, over the
+// edges inside a region with both ends non-sharp and within th_dis of its
+// surface (rows along creases are the model's error, not the meshing's),
+// from a fixed-stride sample of at most kMaxSample vertices.
+double EvidenceShare(const SegmentContext& c, const std::vector<int>& labels,
+                     const std::vector<RegionState>& regions);
+// (lambda / f) w_uv of the edge (u, v).
 double EdgeCost(const SegmentContext& c, int u, int v);
 // The smoothness cost of the edges between regions `a` and `b`, from the
 // vertices of `a`.

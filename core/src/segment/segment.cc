@@ -12,6 +12,7 @@
 #include "segment/absorb_leftovers.h"
 #include "segment/decide_type.h"
 #include "segment/dissolve_crease_bands.h"
+#include "segment/energy.h"
 #include "segment/drop_regions.h"
 #include "segment/estimate_noise.h"
 #include "segment/finalize_regions.h"
@@ -123,6 +124,9 @@ absl::StatusOr<Segmentation> Segment(const Mesh& mesh, const CurvatureField& cur
   ReleaseSmallQuadrics(c, &labels, &regions);
   MESHSEG_RETURN_IF_ERROR(AbsorbLeftovers(c, &labels, &regions));
   ctx.Progress("segment", 0.7);
+  // How many independent samples the residuals are worth, measured once on
+  // the regions grown, for the label cost of every move after (energy.h).
+  c.evidence_share = EvidenceShare(c, labels, regions);
   MESHSEG_RETURN_IF_ERROR(Merge(c, &labels, &regions));
   MESHSEG_RETURN_IF_ERROR(RefineBoundaries(c, &labels, &regions));
   // A plane retyped here held only part of its arc; the type is decided

@@ -7,6 +7,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
+#include <random>
 #include <set>
 #include <string>
 #include <utility>
@@ -17,7 +19,9 @@
 #include "meshseg/curvature.h"
 #include "meshseg/generate.h"
 #include "segment/absorb_leftovers.h"
+#include "segment/decide_type.h"
 #include "segment/estimate_noise.h"
+#include "sheet_context.h"
 
 namespace meshseg::segment_internal {
 namespace {
@@ -254,6 +258,58 @@ TEST(MergeTypes, EitherMembersOwnTypeButNoNewGeneralisation) {
       MergeTypes(SurfaceType::kQuadric, SurfaceType::kCylinder);
   EXPECT_TRUE(has(with_quadric, SurfaceType::kQuadric));
   EXPECT_TRUE(has(with_quadric, SurfaceType::kTorus));
+}
+
+// A plane z = 0.1 u over a 31 x 31 unit grid, its heights either with
+// independent normal noise of sigma 0.1 or rounded to a unit grid (the
+// staircase a surface from binary voxels follows: terraces 10 vertices
+// wide), labelled one plane region fitted to it; th_dis 1 (the staircase's
+// residuals are within 0.5).
+std::vector<RegionState> TiltedPlane(bool staircase, testing::Sheet* s, std::vector<int>* labels) {
+  std::mt19937 random(7);
+  std::normal_distribution<double> noise(0.0, 0.1);
+  testing::BuildSheet(
+      [&](double u, double v) {
+        const double z = staircase ? std::round(0.1 * u) : 0.1 * u + noise(random);
+        return std::pair{Eigen::Vector3d(u, v, z), Eigen::Vector3d(-0.1, 0.0, 1.0).normalized()};
+      },
+      0.0, 30.0, 31, 0.0, 30.0, 31, /*distance=*/1.0, /*angle_deg=*/10.0, s);
+  labels->assign(s->u.size(), 0);
+  std::vector<RegionState> regions = {{.type = SurfaceType::kPlane}};
+  RebuildVertexLists(*labels, &regions);
+  const std::optional<Surface> fit = FitForEnergy(s->c, SurfaceType::kPlane, regions[0].vertices);
+  EXPECT_TRUE(fit.has_value());
+  if (fit) regions[0].surface = *fit;
+  return regions;
+}
+
+// Independent noise leaves nearly every vertex an independent sample; the
+// staircase's residuals are equal along each terrace and change slowly
+// across it (correlation 0.6 over the grid's edges): a quarter of the
+// vertices' evidence (0.23), under the 0.35 bound.
+TEST(EvidenceShare, NearOneForIndependentNoiseSmallOnAStaircase) {
+  testing::Sheet noisy, stairs;
+  std::vector<int> labels;
+  const std::vector<RegionState> noisy_regions = TiltedPlane(false, &noisy, &labels);
+  EXPECT_GT(EvidenceShare(noisy.c, labels, noisy_regions), 0.85);
+  const std::vector<RegionState> stair_regions = TiltedPlane(true, &stairs, &labels);
+  EXPECT_LT(EvidenceShare(stairs.c, labels, stair_regions), 0.35);
+}
+
+// With f = 1 the label cost is the BIC's (p / 2) ln n and an edge between
+// labels costs lambda; with fewer independent samples (f < 1) the label
+// costs (p / (2 f)) ln (f n), nothing once f n <= 1, and the edge lambda / f
+// (the data term's evidence is f times what it sums).
+TEST(LabelCost, IsTheBicOnTheEffectiveSampleCount) {
+  testing::Sheet s;
+  testing::BuildSheet(testing::Fold45(5.0), 0.0, 10.0, 3, 0.0, 10.0, 3, 1.0, 10.0, &s);
+  const double p = ParameterCount(SurfaceType::kCone);
+  EXPECT_NEAR(LabelCost(s.c, SurfaceType::kCone, 100), 0.5 * p * std::log(100.0), 1e-12);
+  EXPECT_NEAR(EdgeCost(s.c, 0, 1), kBoundaryCost, 1e-12);
+  s.c.evidence_share = 0.25;
+  EXPECT_NEAR(LabelCost(s.c, SurfaceType::kCone, 100), 2.0 * p * std::log(25.0), 1e-12);
+  EXPECT_EQ(LabelCost(s.c, SurfaceType::kCone, 4), 0.0);
+  EXPECT_NEAR(EdgeCost(s.c, 0, 1), 4.0 * kBoundaryCost, 1e-12);
 }
 
 }  // namespace
