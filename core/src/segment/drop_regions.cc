@@ -2,8 +2,6 @@
 
 #include <algorithm>
 #include <cstddef>
-#include <functional>
-#include <map>
 #include <optional>
 #include <utility>
 #include <vector>
@@ -14,11 +12,11 @@
 namespace meshseg::segment_internal {
 
 absl::StatusOr<int> DropRegions(const SegmentContext& c, std::vector<int>* labels,
-                                std::vector<RegionState>* regions) {
-  ReestimatedRegions reestimated(c, *regions);
-  const std::function<const RegionState&(int)> region = [&](int id) -> const RegionState& {
-    return reestimated(id);
-  };
+                                std::vector<RegionState>* regions, KeptPrices* prices) {
+  KeptPrices local;
+  KeptPrices& kept = prices != nullptr ? *prices : local;
+  kept.Touch();
+  ReestimatedRegions region(c, *regions);
   // Each region's priced drop, until a drop changes it or a region next to it.
   std::vector<std::optional<DropMove>> priced(regions->size());
   int dropped = 0;
@@ -28,7 +26,7 @@ absl::StatusOr<int> DropRegions(const SegmentContext& c, std::vector<int>* label
     for (int id = 0; id < static_cast<int>(regions->size()); ++id) {
       const RegionState& r = (*regions)[id];
       if (!r.alive || r.vertices.empty()) continue;
-      if (!priced[id]) priced[id] = DropDelta(c, *labels, region, id);
+      if (!priced[id]) priced[id] = kept.Drop(c, *labels, *regions, region, id);
       if (priced[id]->delta < 0.0 && (best < 0 || priced[id]->delta < priced[best]->delta)) {
         best = id;
       }
@@ -56,6 +54,7 @@ absl::StatusOr<int> DropRegions(const SegmentContext& c, std::vector<int>* label
       stale.insert(stale.end(), around.begin(), around.end());
     }
     for (const int id : stale) priced[id].reset();
+    kept.Touch();
     ++dropped;
   }
 }

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "absl/status/statusor.h"
+#include "segment/kept_prices.h"
 #include "segment/segment_internal.h"
 
 namespace meshseg::segment_internal {
@@ -20,9 +21,11 @@ namespace meshseg::segment_internal {
 // re-estimated, energy.h) is the most negative, giving its vertices the
 // labels that move gives them and its takers the move's refitted surfaces;
 // stops when no drop lowers E. Dropped regions get alive = false and no
-// vertices. Returns the number of drops. Errors: CANCELLED on stop.
+// vertices. `prices` (may be null) keeps prices for the next step.
+// Returns the number of drops. Errors: CANCELLED on stop.
 absl::StatusOr<int> DropRegions(const SegmentContext& c, std::vector<int>* labels,
-                                std::vector<RegionState>* regions);
+                                std::vector<RegionState>* regions,
+                                KeptPrices* prices = nullptr);
 
 }  // namespace meshseg::segment_internal
 

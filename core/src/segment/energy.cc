@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <limits>
 
 #include "segment/absorb_leftovers.h"
@@ -28,14 +29,29 @@ double CostAtDistance(const SegmentContext& c, int v, double distance) {
                                            kOutlierMismatch);
 }
 
+// The data cost of `vertices` on `surface`, summed until it reaches `limit`
+// (the terms are not negative: a sum that reached it ends at least there).
+double DataCostUpTo(const SegmentContext& c, const Surface& surface,
+                    std::span<const int> vertices, double limit) {
+  double sum = 0.0;
+  for (const int v : vertices) {
+    sum += VertexCost(c, v, surface);
+    if (sum >= limit) break;
+  }
+  return sum;
+}
+
 // The data cost of `vertices` under a surface of `type` fitted to them for
-// least energy, with the surface (infinite cost if none is valid).
+// least energy, with the surface (infinite cost if none is valid). A cost
+// at or above `stop` is of no interest to the caller and may be reported
+// as any value at or above it.
 struct PricedFit {
   double cost = std::numeric_limits<double>::infinity();
   std::optional<Surface> surface;
 };
 
-PricedFit PriceFit(const SegmentContext& c, SurfaceType type, std::span<const int> vertices) {
+PricedFit PriceFit(const SegmentContext& c, SurfaceType type, std::span<const int> vertices,
+                   double stop = std::numeric_limits<double>::infinity()) {
   PricedFit out;
   const FitResult fit = FitType(c, type, vertices);
   if (!fit.ok()) return out;
@@ -55,8 +71,10 @@ PricedFit PriceFit(const SegmentContext& c, SurfaceType type, std::span<const in
   if (inliers.size() == vertices.size() || inliers.size() < kMinRegionVertices) return out;
   const FitResult refit = FitType(c, type, inliers);
   if (!refit.ok()) return out;
-  const double refit_cost = DataCost(c, refit.surface, vertices);
-  if (refit_cost < out.cost) {
+  // The refit is kept only if it costs less, and only a cost under `stop`
+  // matters: its sum ends where it reaches either.
+  const double refit_cost = DataCostUpTo(c, refit.surface, vertices, std::min(out.cost, stop));
+  if (refit_cost < out.cost && refit_cost < stop) {
     out.cost = refit_cost;
     out.surface = refit.surface;
   }
@@ -123,18 +141,39 @@ std::optional<Surface> FitForEnergy(const SegmentContext& c, SurfaceType type,
   return PriceFit(c, type, vertices).surface;
 }
 
-RegionState Reestimated(const SegmentContext& c, const RegionState& r) {
+namespace {
+
+// Region `r` re-estimated, with the data cost of its vertices on the surface
+// it keeps.
+std::pair<RegionState, double> ReestimatedWithCost(const SegmentContext& c, const RegionState& r) {
   RegionState out = r;
   const PricedFit fit = PriceFit(c, r.type, r.vertices);
-  if (fit.surface && fit.cost < DataCost(c, r.surface, r.vertices)) out.surface = *fit.surface;
-  return out;
+  const double cost = DataCost(c, r.surface, r.vertices);
+  if (fit.surface && fit.cost < cost) {
+    out.surface = *fit.surface;
+    return {std::move(out), fit.cost};
+  }
+  return {std::move(out), cost};
 }
 
-const RegionState& ReestimatedRegions::operator()(int id) {
+}  // namespace
+
+RegionState Reestimated(const SegmentContext& c, const RegionState& r) {
+  return ReestimatedWithCost(c, r).first;
+}
+
+const ReestimatedRegions::Priced& ReestimatedRegions::Get(int id) {
   const RegionState& r = regions_[id];
   auto it = cache_.find({id, r.vertices.size()});
   if (it == cache_.end()) {
-    it = cache_.emplace(std::pair{id, r.vertices.size()}, Reestimated(c_, r)).first;
+    Priced priced;
+    if (reestimate_) {
+      auto [region, cost] = ReestimatedWithCost(c_, r);
+      priced = {.region = std::move(region), .cost = cost};
+    } else {
+      priced = {.region = r, .cost = DataCost(c_, r.surface, r.vertices)};
+    }
+    it = cache_.emplace(std::pair{id, r.vertices.size()}, std::move(priced)).first;
   }
   return it->second;
 }
@@ -158,28 +197,56 @@ std::optional<Move> MergeDelta(const SegmentContext& c, const std::vector<int>& 
   return MergeDelta(c, labels, regions[a], a, regions[b], b, types);
 }
 
-std::optional<Move> MergeDelta(const SegmentContext& c, const std::vector<int>& labels,
-                               const RegionState& x, int a, const RegionState& y, int b,
-                               std::span<const SurfaceType> types) {
+namespace {
+
+// MergeDelta of `x` and `y` with data costs `x_cost` and `y_cost` on their
+// surfaces; a type whose move cannot lower E below `below` (nor below the
+// best type before it) is priced no further than that shows.
+std::optional<Move> PriceMerge(const SegmentContext& c, const std::vector<int>& labels,
+                               const RegionState& x, int a, double x_cost, const RegionState& y,
+                               int b, double y_cost, std::span<const SurfaceType> types,
+                               double below) {
   std::vector<int> both = x.vertices;
   both.insert(both.end(), y.vertices.begin(), y.vertices.end());
   std::sort(both.begin(), both.end());
   const bool x_smaller = x.vertices.size() <= y.vertices.size();
-  const double before = DataCost(c, x.surface, x.vertices) + DataCost(c, y.surface, y.vertices) +
+  const double before = x_cost + y_cost +
                         BoundaryCost(c, labels, x_smaller ? x.vertices : y.vertices,
                                      x_smaller ? b : a) +
                         LabelCost(c, x.type, x.vertices.size()) +
                         LabelCost(c, y.type, y.vertices.size());
   std::optional<Move> best;
   for (const SurfaceType type : types) {
-    const PricedFit fit = PriceFit(c, type, both);
+    const double label = LabelCost(c, type, both.size());
+    // A cost at or above this makes the move no better than `below` or the
+    // best so far (with a margin far above the rounding of the sums).
+    const double worth = best ? std::min(below, best->delta) : below;
+    const double stop = before - label + worth + 1e-9 * (std::abs(before) + label + 1.0);
+    const PricedFit fit = PriceFit(c, type, both, stop);
     if (!fit.surface) continue;
-    const double delta = fit.cost + LabelCost(c, type, both.size()) - before;
+    const double delta = fit.cost + label - before;
     if (!best || delta < best->delta) {
       best = Move{.delta = delta, .type = type, .surface = *fit.surface};
     }
   }
   return best;
+}
+
+}  // namespace
+
+std::optional<Move> MergeDelta(const SegmentContext& c, const std::vector<int>& labels,
+                               const RegionState& x, int a, const RegionState& y, int b,
+                               std::span<const SurfaceType> types) {
+  return PriceMerge(c, labels, x, a, DataCost(c, x.surface, x.vertices), y, b,
+                    DataCost(c, y.surface, y.vertices), types,
+                    std::numeric_limits<double>::infinity());
+}
+
+std::optional<Move> MergeDelta(const SegmentContext& c, const std::vector<int>& labels,
+                               ReestimatedRegions& region, int a, int b,
+                               std::span<const SurfaceType> types, double below) {
+  return PriceMerge(c, labels, region(a), a, region.Cost(a), region(b), b, region.Cost(b), types,
+                    below);
 }
 
 std::optional<Move> RetypeDelta(const SegmentContext& c, const RegionState& r, SurfaceType type) {
@@ -205,7 +272,7 @@ struct DropLabeling {
 };
 
 DropLabeling DropLabels(const SegmentContext& c, const std::vector<int>& labels,
-                        const std::function<const RegionState&(int)>& region, int id) {
+                        ReestimatedRegions& region, int id) {
   const RegionState& r = region(id);
   const std::size_t n = r.vertices.size();
   // The mesh neighbours of each vertex k of r (CSR from first[k]): the
@@ -325,12 +392,12 @@ DropLabeling DropLabels(const SegmentContext& c, const std::vector<int>& labels,
 
 DropMove DropDelta(const SegmentContext& c, const std::vector<int>& labels,
                    const std::vector<RegionState>& regions, int id) {
-  return DropDelta(
-      c, labels, [&](int r) -> const RegionState& { return regions[r]; }, id);
+  ReestimatedRegions as_given(c, regions, /*reestimate=*/false);
+  return DropDelta(c, labels, as_given, id);
 }
 
 DropMove DropDelta(const SegmentContext& c, const std::vector<int>& labels,
-                   const std::function<const RegionState&(int)>& region, int id) {
+                   ReestimatedRegions& region, int id) {
   const RegionState& r = region(id);
   DropMove move;
   DropLabeling labeling = DropLabels(c, labels, region, id);
@@ -342,7 +409,7 @@ DropMove DropDelta(const SegmentContext& c, const std::vector<int>& labels,
 
   // Data and label costs: r's go, the outliers pay c_out / 2, each taker
   // pays for all it holds under its refitted surface.
-  double delta = -DataCost(c, r.surface, r.vertices) - LabelCost(c, r.type, r.vertices.size());
+  double delta = -region.Cost(id) - LabelCost(c, r.type, r.vertices.size());
   for (std::size_t k = 0; k < r.vertices.size(); ++k) {
     if (move.next[k] < 0) delta += OutlierCost(c, r.vertices[k]);
   }
@@ -355,7 +422,7 @@ DropMove DropDelta(const SegmentContext& c, const std::vector<int>& labels,
     std::vector<int> grown(taker.vertices.size() + taken.size());
     std::merge(taker.vertices.begin(), taker.vertices.end(), taken.begin(), taken.end(),
                grown.begin());
-    const double own = DataCost(c, taker.surface, taker.vertices);
+    const double own = region.Cost(o);
     double cost = own + DataCost(c, taker.surface, taken);
     Surface surface = taker.surface;
     const PricedFit fit = PriceFit(c, taker.type, grown);

@@ -77,7 +77,6 @@
 #define MESHSEG_SRC_SEGMENT_ENERGY_H_
 
 #include <cstddef>
-#include <functional>
 #include <map>
 #include <optional>
 #include <span>
@@ -153,17 +152,28 @@ std::optional<Surface> FitForEnergy(const SegmentContext& c, SurfaceType type,
 RegionState Reestimated(const SegmentContext& c, const RegionState& r);
 
 // Reestimated regions of `regions` by id and vertex count, each computed
-// once: within a merge or drop step a region changes only by growing.
+// once, with the data cost of its vertices on its surface: within a merge
+// or drop step a region changes only by growing. With `reestimate` false,
+// each region as given.
 class ReestimatedRegions {
  public:
-  ReestimatedRegions(const SegmentContext& c, const std::vector<RegionState>& regions)
-      : c_(c), regions_(regions) {}
-  const RegionState& operator()(int id);
+  ReestimatedRegions(const SegmentContext& c, const std::vector<RegionState>& regions,
+                     bool reestimate = true)
+      : c_(c), regions_(regions), reestimate_(reestimate) {}
+  const RegionState& operator()(int id) { return Get(id).region; }
+  // DataCost of region `id`'s vertices on its surface, as operator() gives it.
+  double Cost(int id) { return Get(id).cost; }
 
  private:
+  struct Priced {
+    RegionState region;
+    double cost = 0.0;
+  };
+  const Priced& Get(int id);
   const SegmentContext& c_;
   const std::vector<RegionState>& regions_;
-  std::map<std::pair<int, std::size_t>, RegionState> cache_;
+  bool reestimate_ = true;
+  std::map<std::pair<int, std::size_t>, Priced> cache_;
 };
 
 // The change of E from merging regions `a` and `b` into one surface of the
@@ -176,6 +186,13 @@ std::optional<Move> MergeDelta(const SegmentContext& c, const std::vector<int>& 
 std::optional<Move> MergeDelta(const SegmentContext& c, const std::vector<int>& labels,
                                const RegionState& x, int a, const RegionState& y, int b,
                                std::span<const SurfaceType> types);
+// The same for regions `a` and `b` as `region` gives them, for a caller to
+// whom only a move that lowers E below `below` matters: the best move is
+// the same if it does; if it does not, the move returned (if any) does not
+// either (a type's union fit is summed only until it cannot do better).
+std::optional<Move> MergeDelta(const SegmentContext& c, const std::vector<int>& labels,
+                               ReestimatedRegions& region, int a, int b,
+                               std::span<const SurfaceType> types, double below);
 
 // The change of E from refitting region `r` as `type` (nullopt: no valid fit).
 std::optional<Move> RetypeDelta(const SegmentContext& c, const RegionState& r, SurfaceType type);
@@ -202,10 +219,10 @@ struct DropMove {
 // than its surface.
 DropMove DropDelta(const SegmentContext& c, const std::vector<int>& labels,
                    const std::vector<RegionState>& regions, int id);
-// The same with each region as `region(id)` gives it (e.g. re-estimated:
-// its surface may differ from the labeling's, its vertices may not).
+// The same with each region as `region(id)` gives it (re-estimated: its
+// surface may differ from the labeling's, its vertices may not).
 DropMove DropDelta(const SegmentContext& c, const std::vector<int>& labels,
-                   const std::function<const RegionState&(int)>& region, int id);
+                   ReestimatedRegions& region, int id);
 
 // The types a merge of regions of types `a` and `b` may take: each member's
 // own type, every analytic type that generalises neither member within its

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cstddef>
-#include <functional>
 #include <map>
 #include <optional>
 #include <utility>
@@ -14,26 +13,27 @@
 namespace meshseg::segment_internal {
 
 absl::StatusOr<int> MergeRegions(const SegmentContext& c, std::vector<int>* labels,
-                                 std::vector<RegionState>* regions) {
-  ReestimatedRegions reestimated(c, *regions);
-  const std::function<const RegionState&(int)> region = [&](int id) -> const RegionState& {
-    return reestimated(id);
-  };
-  // The price of each region's drop, by id and vertex count (as above).
+                                 std::vector<RegionState>* regions, KeptPrices* prices) {
+  ReestimatedRegions region(c, *regions);
+  KeptPrices local;
+  KeptPrices& kept = prices != nullptr ? *prices : local;
+  // The price of each region's drop, by id and vertex count (as the
+  // re-estimations), taken from `kept` where a step before priced it on
+  // the same regions.
   std::map<std::pair<int, std::size_t>, double> drops;
   auto drop = [&](int id) {
     const std::pair key{id, (*regions)[id].vertices.size()};
     auto it = drops.find(key);
-    if (it == drops.end()) it = drops.emplace(key, DropDelta(c, *labels, region, id).delta).first;
+    if (it == drops.end()) {
+      it = drops.emplace(key, kept.Drop(c, *labels, *regions, region, id).delta).first;
+    }
     return it->second;
   };
   return MergeBestPairs(
       c, labels, regions, [](const RegionArc& arc) { return arc.smooth; },
       [&](int a, int b) -> std::optional<PairMerge> {
-        const RegionState& x = (*regions)[a];
-        const RegionState& y = (*regions)[b];
-        const std::optional<Move> move =
-            MergeDelta(c, *labels, region(a), a, region(b), b, MergeTypes(x.type, y.type));
+        kept.Touch();  // merges since the last price
+        const std::optional<Move>& move = kept.Merge(c, *labels, *regions, region, a, b);
         if (!move || !(move->delta < 0.0)) return std::nullopt;
         // A region whose vertices lower E more by going each to the
         // neighbour that meets it best, not all to one (rows of two faces;

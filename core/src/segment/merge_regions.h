@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "absl/status/statusor.h"
+#include "segment/kept_prices.h"
 #include "segment/segment_internal.h"
 
 namespace meshseg::segment_internal {
@@ -20,10 +21,13 @@ namespace meshseg::segment_internal {
 // boundary strips within th_bnd, a necessary condition for one smooth
 // surface) whose MergeDelta over MergeTypes is the most negative, taking
 // that move's type and surface; stops when none is negative. Merged-away
-// regions get alive = false and no vertices. Returns the number of merges.
-// Errors: CANCELLED on stop.
+// regions get alive = false and no vertices. A merge is refused where the
+// drop of either member (drop_regions.h) lowers E more. `prices` (may be
+// null) keeps the merges' and drops' prices for the next step. Returns the
+// number of merges. Errors: CANCELLED on stop.
 absl::StatusOr<int> MergeRegions(const SegmentContext& c, std::vector<int>* labels,
-                                 std::vector<RegionState>* regions);
+                                 std::vector<RegionState>* regions,
+                                 KeptPrices* prices = nullptr);
 
 }  // namespace meshseg::segment_internal
 

@@ -18,6 +18,7 @@
 #include "segment/finalize_regions.h"
 #include "segment/give_back_rows.h"
 #include "segment/initial_segmentation.h"
+#include "segment/kept_prices.h"
 #include "segment/merge_regions.h"
 #include "segment/refine_boundaries.h"
 #include "segment/retype_by_interior.h"
@@ -56,11 +57,14 @@ absl::Status ValidateParams(const SegmentParams& p) {
 // that drop. Returns how many moves were made.
 absl::StatusOr<int> MergeAndDrop(const segment_internal::SegmentContext& c,
                                  std::vector<int>* labels,
-                                 std::vector<segment_internal::RegionState>* regions) {
+                                 std::vector<segment_internal::RegionState>* regions,
+                                 segment_internal::KeptPrices* prices) {
   int moves = 0;
   for (;;) {
-    MESHSEG_ASSIGN_OR_RETURN(const int merged, segment_internal::MergeRegions(c, labels, regions));
-    MESHSEG_ASSIGN_OR_RETURN(const int dropped, segment_internal::DropRegions(c, labels, regions));
+    MESHSEG_ASSIGN_OR_RETURN(const int merged,
+                             segment_internal::MergeRegions(c, labels, regions, prices));
+    MESHSEG_ASSIGN_OR_RETURN(const int dropped,
+                             segment_internal::DropRegions(c, labels, regions, prices));
     moves += merged + dropped;
     if (dropped == 0) return moves;
   }
@@ -69,8 +73,9 @@ absl::StatusOr<int> MergeAndDrop(const segment_internal::SegmentContext& c,
 // MergeAndDrop, then ALGORITHMS.md S1's type decision (step 2.5) for the
 // general quadrics left.
 absl::Status Merge(const segment_internal::SegmentContext& c, std::vector<int>* labels,
-                   std::vector<segment_internal::RegionState>* regions) {
-  MESHSEG_RETURN_IF_ERROR(MergeAndDrop(c, labels, regions).status());
+                   std::vector<segment_internal::RegionState>* regions,
+                   segment_internal::KeptPrices* prices) {
+  MESHSEG_RETURN_IF_ERROR(MergeAndDrop(c, labels, regions, prices).status());
   segment_internal::RetypeQuadrics(c, regions);
   return absl::OkStatus();
 }
@@ -127,7 +132,9 @@ absl::StatusOr<Segmentation> Segment(const Mesh& mesh, const CurvatureField& cur
   // How many independent samples the residuals are worth, measured once on
   // the regions grown, for the label cost of every move after (energy.h).
   c.evidence_share = EvidenceShare(c, labels, regions);
-  MESHSEG_RETURN_IF_ERROR(Merge(c, &labels, &regions));
+  // Merge and drop prices, kept from each step for the next.
+  KeptPrices kept_prices;
+  MESHSEG_RETURN_IF_ERROR(Merge(c, &labels, &regions, &kept_prices));
   MESHSEG_RETURN_IF_ERROR(RefineBoundaries(c, &labels, &regions));
   // A plane retyped here held only part of its arc; the type is decided
   // again once the refinement has given it the rest.
@@ -140,15 +147,15 @@ absl::StatusOr<Segmentation> Segment(const Mesh& mesh, const CurvatureField& cur
   // The refinement can shrink a region it started with to a sliver whose
   // vertices cost less on their neighbours' surfaces (between a countersink
   // and its plane); it is dropped, and the pieces it kept apart may merge.
-  MESHSEG_ASSIGN_OR_RETURN(const int dropped, DropRegions(c, &labels, &regions));
+  MESHSEG_ASSIGN_OR_RETURN(const int dropped, DropRegions(c, &labels, &regions, &kept_prices));
   if (dropped > 0) {
-    MESHSEG_RETURN_IF_ERROR(Merge(c, &labels, &regions));
+    MESHSEG_RETURN_IF_ERROR(Merge(c, &labels, &regions, &kept_prices));
     MESHSEG_RETURN_IF_ERROR(RefineBoundaries(c, &labels, &regions));
   }
   // A region whose type misses it by more than the noise gets the type that
   // fits; it may then merge with the pieces of its surface around it.
   if (!RetypeInaccurateCurved(c, &regions).empty()) {
-    MESHSEG_RETURN_IF_ERROR(Merge(c, &labels, &regions));
+    MESHSEG_RETURN_IF_ERROR(Merge(c, &labels, &regions, &kept_prices));
     MESHSEG_RETURN_IF_ERROR(RefineBoundaries(c, &labels, &regions));
   }
   if (DissolveCreaseBands(c, &labels, &regions) > 0) {
@@ -177,11 +184,11 @@ absl::StatusOr<Segmentation> Segment(const Mesh& mesh, const CurvatureField& cur
   }
   // Pieces of one surface typed apart are joined, and fragments dropped, by
   // the same energy.
-  MESHSEG_ASSIGN_OR_RETURN(const int moves, MergeAndDrop(c, &labels, &regions));
+  MESHSEG_ASSIGN_OR_RETURN(const int moves, MergeAndDrop(c, &labels, &regions, &kept_prices));
   if (moves > 0) MESHSEG_RETURN_IF_ERROR(RefineBoundaries(c, &labels, &regions));
   // The refinement can narrow a region to a strip that lies on its
   // neighbours' surfaces (a plane strip along a groove): dropped.
-  MESHSEG_ASSIGN_OR_RETURN(const int late, DropRegions(c, &labels, &regions));
+  MESHSEG_ASSIGN_OR_RETURN(const int late, DropRegions(c, &labels, &regions, &kept_prices));
   if (late > 0) MESHSEG_RETURN_IF_ERROR(RefineBoundaries(c, &labels, &regions));
   FlattenNearlyFlatRegions(c, &regions);
   StraightenNearlyCylindricalCones(c, &regions);
