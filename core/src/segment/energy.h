@@ -52,23 +52,23 @@
 // along the surface they are not: on a surface from binary voxels
 // (thresholded CT, ALGORITHMS.md S4) the residual is the staircase of the
 // voxel grid, nearly the same at neighbouring vertices, and the vertices of
-// a noise-free tessellation share the chord error of their facet. n vertices then carry the evidence of only
-// n_eff = f n independent ones: the data term, a sum over vertices,
-// overstates the evidence by 1 / f, and a surface that follows the
-// correlated error (a plane on a terrace of a staircase cylinder, a cone
-// over two of its steps) seems to buy 1 / f times what its extra label is
-// worth. The evidence is f sum_v D_v, the BIC on n_eff samples is
-// (p / 2) ln (f n), and the boundary term, a prior in the data term's
-// units, stays; E above is that energy divided by f, so that D_v keeps its
-// units and f = 1 gives PEARL's energy unchanged. f comes from the lag-1
-// autocorrelation rho of the residuals over mesh edges, through the
-// first-order (AR(1)) effective sample size n_eff / n = (1 - rho) /
-// (1 + rho), measured once per mesh on the regions grown (EvidenceShare).
-// Independent noise (a CT-like scan) has rho near 0 and f near 1; negative
-// rho is taken as 0 (f = 1: correlation never makes a label cheaper). The
-// residuals of a surface from binary voxels have rho 0.4 to 0.6 (f 0.24 to
-// 0.42 on the generated parts). One rule for every input: nothing in it
-// knows where the mesh came from.
+// a noise-free tessellation share the chord error of their facet. n
+// vertices then carry the evidence of only n_eff = f n independent ones:
+// the data term, a sum over vertices, overstates the evidence by 1 / f,
+// and a surface that follows the correlated error (a plane on a terrace of
+// a staircase cylinder, a cone over two of its steps) seems to buy 1 / f
+// times what its extra label is worth. The evidence is f sum_v D_v, the
+// BIC on n_eff samples is (p / 2) ln (f n), and the boundary term, a prior
+// in the data term's units, stays; E above is that energy divided by f, so
+// that D_v keeps its units and f = 1 gives PEARL's energy unchanged. f
+// comes from the lag-1 autocorrelation rho of the residuals over mesh
+// edges, through the first-order (AR(1)) effective sample size n_eff / n =
+// (1 - rho) / (1 + rho), measured once per mesh on the regions grown
+// (EvidenceShare). Independent noise (a CT-like scan) has rho near 0 and f
+// near 1; negative rho is taken as 0 (f = 1: correlation never makes a
+// label cheaper). The residuals of a surface from binary voxels have rho
+// 0.4 to 0.6 (f 0.24 to 0.42 on the generated parts). One rule for every
+// input: nothing in it knows where the mesh came from.
 //
 // A local move (merge two regions, retype one, drop one) is accepted iff it
 // lowers E; MergeDelta, RetypeDelta and DropDelta below price one without
@@ -77,6 +77,7 @@
 #define MESHSEG_SRC_SEGMENT_ENERGY_H_
 
 #include <cstddef>
+#include <limits>
 #include <map>
 #include <optional>
 #include <span>
@@ -136,6 +137,17 @@ struct Move {
   SurfaceType type = SurfaceType::kQuadric;
   Surface surface;
 };
+
+// The data cost of `vertices` under a surface of `type` fitted to them for
+// least energy (FitForEnergy), with the surface (infinite cost if none is
+// valid). A cost at or above `stop` is of no interest to the caller and may
+// be reported as any value at or above it.
+struct PricedFit {
+  double cost = std::numeric_limits<double>::infinity();
+  std::optional<Surface> surface;
+};
+PricedFit PriceFit(const SegmentContext& c, SurfaceType type, std::span<const int> vertices,
+                   double stop = std::numeric_limits<double>::infinity());
 
 // The surface of `type` that fits `vertices` at least cost: the least
 // squares fit, then (if it costs less) the fit to the vertices within th_dis

@@ -125,7 +125,9 @@ TEST(DropRegionsTest, ConeStripOfAConeBandEndsInOneRegionWithIt) {
   EXPECT_NE(regions[0].alive, regions[3].alive);
   const int band = regions[0].alive ? 0 : 3;
   for (std::size_t v = 0; v < labels.size(); ++v) {
-    if (s.u[v] >= 12.0 && s.u[v] <= 17.0) EXPECT_EQ(labels[v], band) << "row " << s.u[v];
+    if (s.u[v] >= 12.0 && s.u[v] <= 17.0) {
+      EXPECT_EQ(labels[v], band) << "row " << s.u[v];
+    }
   }
 }
 

@@ -275,7 +275,8 @@ std::vector<RegionState> TiltedPlane(bool staircase, testing::Sheet* s, std::vec
       },
       0.0, 30.0, 31, 0.0, 30.0, 31, /*distance=*/1.0, /*angle_deg=*/10.0, s);
   labels->assign(s->u.size(), 0);
-  std::vector<RegionState> regions = {{.type = SurfaceType::kPlane}};
+  std::vector<RegionState> regions = {
+      {.type = SurfaceType::kPlane, .surface = Plane{}, .vertices = {}}};
   RebuildVertexLists(*labels, &regions);
   const std::optional<Surface> fit = FitForEnergy(s->c, SurfaceType::kPlane, regions[0].vertices);
   EXPECT_TRUE(fit.has_value());
