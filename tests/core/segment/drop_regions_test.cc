@@ -19,36 +19,15 @@ namespace {
 using testing::BuildSheet;
 using testing::Fold45;
 using testing::RegionsFromLabels;
+using testing::RippledFoldWithStrip;
 using testing::Sheet;
 
 constexpr double kSigma = 0.01;
 
-// A sheet over u in [0, 12], v in [0, 20] folded by 45 degrees at u = 5.5
-// (Fold45), with a ripple of amplitude kSigma along z (the least-squares
-// planes of its pieces differ), th_dis 5 sigma; labelled 0 for u < 5, 1
-// for u > 6, and 2 for the two rows u = 5 and 6 either side of the fold
-// (42 vertices).
-std::vector<RegionState> RippledFoldWithStrip(Sheet* s, std::vector<int>* labels) {
-  BuildSheet(
-      [](double u, double v) {
-        auto [p, n] = Fold45(5.5)(u, v);
-        p.z() += kSigma * std::sin(1.3 * u + 0.7 * v);
-        return std::pair{p, n};
-      },
-      0.0, 12.0, 13, 0.0, 20.0, 21, /*distance=*/5.0 * kSigma, /*angle_deg=*/8.0, s);
-  s->c.noise_sigma = kSigma;
-  labels->resize(s->u.size());
-  for (std::size_t v = 0; v < labels->size(); ++v) {
-    (*labels)[v] = s->u[v] < 5.0 ? 0 : s->u[v] <= 6.0 ? 2 : 1;
-  }
-  return RegionsFromLabels(s->c, *labels,
-                           {SurfaceType::kPlane, SurfaceType::kPlane, SurfaceType::kPlane});
-}
-
 TEST(DropDeltaTest, IsTheChangeOfTheTotalEnergy) {
   Sheet s;
   std::vector<int> labels;
-  std::vector<RegionState> regions = RippledFoldWithStrip(&s, &labels);
+  std::vector<RegionState> regions = RippledFoldWithStrip(kSigma, &s, &labels);
   const double before = TotalEnergy(s.c, labels, regions);
   const DropMove move = DropDelta(s.c, labels, regions, 2);
   // Both sides take rows, and both are refitted to what they then hold.
@@ -69,7 +48,7 @@ TEST(DropDeltaTest, IsTheChangeOfTheTotalEnergy) {
 TEST(DropRegionsTest, StripOnItsNeighboursIsDropped) {
   Sheet s;
   std::vector<int> labels;
-  std::vector<RegionState> regions = RippledFoldWithStrip(&s, &labels);
+  std::vector<RegionState> regions = RippledFoldWithStrip(kSigma, &s, &labels);
   EXPECT_EQ(DropRegions(s.c, &labels, &regions).value(), 1);
   EXPECT_FALSE(regions[2].alive);
   EXPECT_TRUE(regions[2].vertices.empty());

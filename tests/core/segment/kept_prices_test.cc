@@ -1,11 +1,11 @@
-// KeptPrices (kept_prices.h) on a folded sheet with a strip along the fold:
-// a kept price is the price DropDelta / MergeDelta give on the same
-// regions, and is made again once a region it depends on changes.
+// KeptPrices (kept_prices.h) on a folded sheet with a strip along the fold
+// (RippledFoldWithStrip): a kept price is the price DropDelta / MergeDelta
+// give on the same regions, and is made again once a region it depends on
+// changes.
 #include "segment/kept_prices.h"
 
 #include <gtest/gtest.h>
 
-#include <cmath>
 #include <optional>
 #include <utility>
 #include <vector>
@@ -15,35 +15,13 @@
 namespace meshseg::segment_internal {
 namespace {
 
-using testing::BuildSheet;
-using testing::Fold45;
-using testing::RegionsFromLabels;
+using testing::RippledFoldWithStrip;
 using testing::Sheet;
-
-// The sheet over u in [0, 12], v in [0, 20] folded by 45 degrees at
-// u = 5.5, with a ripple of amplitude 0.01 along z; labelled 0 for u < 5,
-// 1 for u > 6, and 2 for the rows u = 5 and 6 either side of the fold.
-std::vector<RegionState> FoldWithStrip(Sheet* s, std::vector<int>* labels) {
-  BuildSheet(
-      [](double u, double v) {
-        auto [p, n] = Fold45(5.5)(u, v);
-        p.z() += 0.01 * std::sin(1.3 * u + 0.7 * v);
-        return std::pair{p, n};
-      },
-      0.0, 12.0, 13, 0.0, 20.0, 21, /*distance=*/0.05, /*angle_deg=*/8.0, s);
-  s->c.noise_sigma = 0.01;
-  labels->resize(s->u.size());
-  for (std::size_t v = 0; v < labels->size(); ++v) {
-    (*labels)[v] = s->u[v] < 5.0 ? 0 : s->u[v] <= 6.0 ? 2 : 1;
-  }
-  return RegionsFromLabels(s->c, *labels,
-                           {SurfaceType::kPlane, SurfaceType::kPlane, SurfaceType::kPlane});
-}
 
 TEST(KeptPricesTest, ReusesAPriceWhileItsRegionsAreUnchangedAndRemakesItAfter) {
   Sheet s;
   std::vector<int> labels;
-  std::vector<RegionState> regions = FoldWithStrip(&s, &labels);
+  std::vector<RegionState> regions = RippledFoldWithStrip(0.01, &s, &labels);
   KeptPrices kept;
   // The regions as given (not re-estimated), so that a changed surface
   // stays changed.

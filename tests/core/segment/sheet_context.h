@@ -206,6 +206,29 @@ inline std::vector<RegionState> OneRegion(const Sheet& s, SurfaceType type,
   return regions;
 }
 
+// A sheet over u in [0, 12], v in [0, 20] folded by 45 degrees at u = 5.5
+// (Fold45), with a ripple of amplitude `sigma` along z (the least-squares
+// planes of its pieces differ), noise sigma `sigma`, th_dis 5 sigma; labelled 0 for u < 5, 1
+// for u > 6, and 2 for the two rows u = 5 and 6 either side of the fold
+// (42 vertices).
+inline std::vector<RegionState> RippledFoldWithStrip(double sigma, Sheet* s,
+                                                     std::vector<int>* labels) {
+  BuildSheet(
+      [sigma](double u, double v) {
+        auto [p, n] = Fold45(5.5)(u, v);
+        p.z() += sigma * std::sin(1.3 * u + 0.7 * v);
+        return std::pair{p, n};
+      },
+      0.0, 12.0, 13, 0.0, 20.0, 21, /*distance=*/5.0 * sigma, /*angle_deg=*/8.0, s);
+  s->c.noise_sigma = sigma;
+  labels->resize(s->u.size());
+  for (std::size_t v = 0; v < labels->size(); ++v) {
+    (*labels)[v] = s->u[v] < 5.0 ? 0 : s->u[v] <= 6.0 ? 2 : 1;
+  }
+  return RegionsFromLabels(s->c, *labels,
+                           {SurfaceType::kPlane, SurfaceType::kPlane, SurfaceType::kPlane});
+}
+
 }  // namespace meshseg::segment_internal::testing
 
 #endif  // MESHSEG_TESTS_CORE_SEGMENT_SHEET_CONTEXT_H_
