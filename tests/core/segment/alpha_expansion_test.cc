@@ -11,9 +11,13 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
+#include "meshseg/curvature.h"
+#include "meshseg/generate.h"
 #include "segment/energy.h"
+#include "segment/estimate_noise.h"
 #include "sheet_context.h"
 
 namespace meshseg::segment_internal {
@@ -182,6 +186,121 @@ TEST(ExpandRegionsTest, ARoundBentOverAFaceGivesItsRowsBack) {
   }
   EXPECT_EQ(kept, 0);
   EXPECT_NEAR(std::get<Cylinder>(regions[1].surface).radius, 2.0, 0.02) << "bent " << bent;
+}
+
+// rounded_prism at noise 0.15 h: six radius-3.5 fillets (about 10 h), each
+// tangent to two planes; one region per true primitive with its true
+// surface and the generator's labels.
+class RoundedPrismTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    absl::StatusOr<GeneratedPart> part = GeneratePart("rounded_prism", {.noise = 0.15, .seed = 7});
+    ASSERT_TRUE(part.ok()) << part.status();
+    part_ = *std::move(part);
+    absl::StatusOr<CurvatureField> field = EstimateCurvature(part_.mesh);
+    ASSERT_TRUE(field.ok()) << field.status();
+    field_ = *std::move(field);
+    estimates_ = EstimateNoise(field_, MeanEdgeLength(part_.mesh.tri), {});
+    for (const PrimitiveTruth& p : part_.primitives) {
+      regions_.push_back({.type = TypeOf(p.surface), .surface = p.surface, .vertices = {}});
+    }
+  }
+
+  bool IsPlane(int r) const { return r >= 0 && regions_[r].type == SurfaceType::kPlane; }
+
+  GeneratedPart part_;
+  CurvatureField field_;
+  SegmentEstimates estimates_;
+  std::vector<RegionState> regions_;
+  RunContext run_;
+};
+
+// What region growing does at high noise: every plane takes the first rings
+// of the fillets next to it (the vertices that meet (5) and (6) for it).
+// The expansions give them back.
+TEST_F(RoundedPrismTest, GivesFilletsBackTheRingsThePlanesTook) {
+  const SegmentContext c = MakeSegmentContext(part_.mesh.tri, field_, estimates_, 0.9, run_);
+  std::vector<int> labels = part_.vertex_primitive;
+  std::vector<int> taken;
+  for (int ring = 0; ring < 3; ++ring) {
+    std::vector<int> next = labels;
+    for (int v = 0; v < c.vertex_count(); ++v) {
+      if (labels[v] < 0 || IsPlane(labels[v])) continue;
+      for (const int u : c.graph.Neighbors(v)) {
+        if (!IsPlane(labels[u])) continue;
+        if (Fits(c, v, ProjectVertex(c, regions_[labels[u]].surface, v), c.tolerance)) {
+          next[v] = labels[u];
+        }
+      }
+      if (next[v] != labels[v]) taken.push_back(v);
+    }
+    labels.swap(next);
+  }
+  ASSERT_GT(taken.size(), 1000u);
+  std::vector<RegionState> regions = regions_;
+  RebuildVertexLists(labels, &regions);
+  const double before = TotalEnergy(c, labels, regions);
+
+  ASSERT_TRUE(ExpandRegions(c, &labels, &regions).ok());
+
+  EXPECT_LT(TotalEnergy(c, labels, regions), before);
+  // The rows that lie off the plane by more than half of th_dis (a data
+  // cost of 9/8 or more there, about the noise's on the fillet) go back;
+  // nearer the tangent line plane and fillet differ by less than the noise
+  // in position and E does not decide (the refinement's normal term does).
+  int off = 0;
+  int returned = 0;
+  for (const int v : taken) {
+    const int fillet = part_.vertex_primitive[v];
+    // The plane that took v: a plane neighbour region of the fillet.
+    double nearest = std::numeric_limits<double>::infinity();
+    for (std::size_t r = 0; r < regions_.size(); ++r) {
+      if (!IsPlane(static_cast<int>(r))) continue;
+      nearest = std::min(nearest, std::abs(ProjectVertex(c, regions_[r].surface, v).distance));
+    }
+    if (nearest < 0.5 * c.tolerance.distance) continue;
+    ++off;
+    returned += labels[v] == fillet;
+  }
+  // Measured 140 of 182: a fillet re-estimated with plane rows past its
+  // tangent line widens and holds some of them (why Segment() lets the
+  // refinement's normal term settle tangent joins after the expansions).
+  ASSERT_GT(off, 100);
+  EXPECT_GT(returned, off / 2) << "of " << off;
+}
+
+// With the true labels, E does not rise and the only vertices that move lie
+// on the surface they go to (within th_dis of its true surface): rows along
+// the tangent lines, which both faces explain within the noise.
+TEST_F(RoundedPrismTest, MovesOnlyRowsTheOtherFaceExplains) {
+  const SegmentContext c = MakeSegmentContext(part_.mesh.tri, field_, estimates_, 0.9, run_);
+  std::vector<int> labels = part_.vertex_primitive;
+  std::vector<RegionState> regions = regions_;
+  RebuildVertexLists(labels, &regions);
+  const double before = TotalEnergy(c, labels, regions);
+  ASSERT_TRUE(ExpandRegions(c, &labels, &regions).ok());
+  EXPECT_LE(TotalEnergy(c, labels, regions), before);
+  int moved = 0;
+  int off = 0;
+  for (int v = 0; v < c.vertex_count(); ++v) {
+    if (labels[v] == part_.vertex_primitive[v]) continue;
+    ++moved;
+    const double d = ProjectVertex(c, regions_[labels[v]].surface, v).distance;
+    off += !(std::abs(d) < c.tolerance.distance);
+  }
+  EXPECT_LT(moved, 0.05 * c.vertex_count());
+  EXPECT_EQ(off, 0) << "of " << moved << " moved";
+}
+
+TEST_F(RoundedPrismTest, StopsWhenCancelled) {
+  std::stop_source source;
+  source.request_stop();
+  const RunContext cancelled{.stop = source.get_token(), .on_progress = {}};
+  const SegmentContext c = MakeSegmentContext(part_.mesh.tri, field_, estimates_, 0.9, cancelled);
+  std::vector<int> labels = part_.vertex_primitive;
+  std::vector<RegionState> regions = regions_;
+  RebuildVertexLists(labels, &regions);
+  EXPECT_EQ(ExpandRegions(c, &labels, &regions).status().code(), absl::StatusCode::kCancelled);
 }
 
 }  // namespace
