@@ -14,10 +14,8 @@
 #include <limits>
 #include <vector>
 
-#include "meshseg/curvature.h"
-#include "meshseg/generate.h"
 #include "segment/energy.h"
-#include "segment/estimate_noise.h"
+#include "rounded_prism_truth.h"
 #include "sheet_context.h"
 
 namespace meshseg::segment_internal {
@@ -105,7 +103,9 @@ TEST(ExpandRegionTest, PricedChangeIsTheChangeOfTheTotalEnergy) {
     const double before = TotalEnergy(s.c, l, r);
     const Expansion move = ExpandRegion(s.c, l, r, alpha);
     EXPECT_LE(move.smooth_data_delta, 1e-12) << "alpha " << alpha;
-    if (alpha == 1) EXPECT_EQ(move.taken.size(), 3u * 21u);
+    if (alpha == 1) {
+      EXPECT_EQ(move.taken.size(), 3u * 21u);
+    }
     Apply(move, alpha, &l, &r);
     EXPECT_NEAR(TotalEnergy(s.c, l, r) - before, move.delta, 1e-9 * std::abs(before))
         << "alpha " << alpha;
@@ -188,54 +188,14 @@ TEST(ExpandRegionsTest, ARoundBentOverAFaceGivesItsRowsBack) {
   EXPECT_NEAR(std::get<Cylinder>(regions[1].surface).radius, 2.0, 0.02) << "bent " << bent;
 }
 
-// rounded_prism at noise 0.15 h: six radius-3.5 fillets (about 10 h), each
-// tangent to two planes; one region per true primitive with its true
-// surface and the generator's labels.
-class RoundedPrismTest : public ::testing::Test {
- protected:
-  void SetUp() override {
-    absl::StatusOr<GeneratedPart> part = GeneratePart("rounded_prism", {.noise = 0.15, .seed = 7});
-    ASSERT_TRUE(part.ok()) << part.status();
-    part_ = *std::move(part);
-    absl::StatusOr<CurvatureField> field = EstimateCurvature(part_.mesh);
-    ASSERT_TRUE(field.ok()) << field.status();
-    field_ = *std::move(field);
-    estimates_ = EstimateNoise(field_, MeanEdgeLength(part_.mesh.tri), {});
-    for (const PrimitiveTruth& p : part_.primitives) {
-      regions_.push_back({.type = TypeOf(p.surface), .surface = p.surface, .vertices = {}});
-    }
-  }
+using RoundedPrismTest = testing::RoundedPrismTruth;
 
-  bool IsPlane(int r) const { return r >= 0 && regions_[r].type == SurfaceType::kPlane; }
-
-  GeneratedPart part_;
-  CurvatureField field_;
-  SegmentEstimates estimates_;
-  std::vector<RegionState> regions_;
-  RunContext run_;
-};
-
-// What region growing does at high noise: every plane takes the first rings
-// of the fillets next to it (the vertices that meet (5) and (6) for it).
-// The expansions give them back.
+// Every plane took three rings of the fillets next to it, as region growing
+// does at high noise. The expansions give them back.
 TEST_F(RoundedPrismTest, GivesFilletsBackTheRingsThePlanesTook) {
   const SegmentContext c = MakeSegmentContext(part_.mesh.tri, field_, estimates_, 0.9, run_);
-  std::vector<int> labels = part_.vertex_primitive;
-  std::vector<int> taken;
-  for (int ring = 0; ring < 3; ++ring) {
-    std::vector<int> next = labels;
-    for (int v = 0; v < c.vertex_count(); ++v) {
-      if (labels[v] < 0 || IsPlane(labels[v])) continue;
-      for (const int u : c.graph.Neighbors(v)) {
-        if (!IsPlane(labels[u])) continue;
-        if (Fits(c, v, ProjectVertex(c, regions_[labels[u]].surface, v), c.tolerance)) {
-          next[v] = labels[u];
-        }
-      }
-      if (next[v] != labels[v]) taken.push_back(v);
-    }
-    labels.swap(next);
-  }
+  std::vector<int> labels;
+  const std::vector<int> taken = PlanesTakeFilletRings(c, 3, &labels);
   ASSERT_GT(taken.size(), 1000u);
   std::vector<RegionState> regions = regions_;
   RebuildVertexLists(labels, &regions);
