@@ -25,7 +25,7 @@ absl::Status RunConvert(const Argv& argv) {
     std::printf("wrote %s: %zu points\n", out.c_str(), points.points.size());
     return absl::OkStatus();
   }
-  MESHSEG_ASSIGN_OR_RETURN(const Mesh mesh, ReadMesh(in));
+  MESHSEG_ASSIGN_OR_RETURN(const Mesh& mesh, ReadMesh(in));
   MESHSEG_RETURN_IF_ERROR(WriteMesh(mesh.tri, out));
   std::printf("wrote %s: %zu faces, %zu vertices\n", out.c_str(), mesh.tri.n_faces(),
               mesh.tri.n_vertices());

@@ -38,7 +38,7 @@ std::string JsonVec(const Eigen::Vector3d& v) {
 }
 
 absl::Status MeshInfo(const std::string& path, FileFormat format, bool json) {
-  MESHSEG_ASSIGN_OR_RETURN(const Mesh mesh, ReadMesh(path));
+  MESHSEG_ASSIGN_OR_RETURN(const Mesh& mesh, ReadMesh(path));
   const MeshStats s = MeshStatistics(mesh);
   const std::string name = std::filesystem::path(path).filename().string();
   if (json) {

@@ -100,7 +100,7 @@ absl::Status WriteColored(const std::string& input, const std::optional<FileForm
     }
     return WriteColoredPointPly(cloud, labels, out);
   }
-  MESHSEG_ASSIGN_OR_RETURN(const Mesh mesh, ReadMesh(input, {.format = format}));
+  MESHSEG_ASSIGN_OR_RETURN(const Mesh& mesh, ReadMesh(input, {.format = format}));
   if (mesh.face_of_input.size() != static_cast<std::size_t>(result.face_labels_size())) {
     return absl::InternalError(absl::StrCat("colored ply: result has ", result.face_labels_size(),
                                             " face labels, input has ",

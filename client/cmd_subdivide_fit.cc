@@ -50,7 +50,7 @@ absl::Status RunSubdivideFit(const Argv& argv) {
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   MESHSEG_RETURN_IF_ERROR(WriteControlObj(fit->control, *out));
   if (limit) {
-    MESHSEG_ASSIGN_OR_RETURN(const Mesh limit_mesh,
+    MESHSEG_ASSIGN_OR_RETURN(const Mesh& limit_mesh,
                              BuildMesh(fit->limit_vertices, fit->limit_faces, "limit surface"));
     MESHSEG_RETURN_IF_ERROR(WriteMesh(limit_mesh.tri, *limit));
   }

@@ -89,7 +89,7 @@ absl::Status AddCurves(const v1::SegmentationResult& result, const std::string& 
 absl::StatusOr<ReportGeometry> MeshGeometry(const std::string& path,
                                             const v1::SegmentationResult& result,
                                             const std::optional<FileFormat>& format) {
-  MESHSEG_ASSIGN_OR_RETURN(const Mesh mesh, ReadMesh(path, {.format = format}));
+  MESHSEG_ASSIGN_OR_RETURN(const Mesh& mesh, ReadMesh(path, {.format = format}));
   const int64_t input_faces = static_cast<int64_t>(mesh.face_of_input.size());
   if (result.face_labels_size() != input_faces) {
     return CountMismatch(mesh.name, input_faces, "faces", result.face_labels_size(), "face labels");

@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
 """Same results, face for face: segments generated parts with two meshseg
 binaries and compares the result JSONs (every face label, and every other
-field: region types, surface parameters, rms, topology). A speed change that
-keeps the arithmetic prints "differ 0" on every line.
+field: region types, surface parameters, rms, topology), and their bytes. A
+speed change that keeps the arithmetic prints "differ 0" and "bytes same" on
+every line.
 
 usage: same_results.py OLD_MESHSEG NEW_MESHSEG [DIR]
   parts test_piece small_block stepped_shaft plate_boss rounded_prism
@@ -66,11 +67,12 @@ def main():
         faces = sum(x != y for x, y in zip(fa, fb)) + abs(len(fa) - len(fb))
         out = []
         differences(a, b, "", out)
-        print("%-20s faces %8d  labels differ %d  fields differ %d" %
-              (name, len(fa), faces, len(out)))
+        same_bytes = open(before, "rb").read() == open(after, "rb").read()
+        print("%-20s faces %8d  labels differ %d  fields differ %d  bytes %s" %
+              (name, len(fa), faces, len(out), "same" if same_bytes else "DIFFER"))
         for path, what in out[:5]:
             print("    %s: %s" % (path, what))
-        failed += bool(out)
+        failed += bool(out) or not same_bytes
     print("SAME" if failed == 0 else "%d cases DIFFER" % failed)
     return 1 if failed else 0
 

@@ -47,25 +47,23 @@ int main(int argc, char** argv) {
   }
   const std::string first = argv[1];
   Timer timer;
-  meshseg::Mesh mesh;
-  if (first == "--file") {
-    auto read = meshseg::ReadMesh(argv[2]);
-    if (!read.ok()) {
-      std::fprintf(stderr, "%s\n", read.status().ToString().c_str());
-      return 1;
-    }
-    mesh = std::move(*read);
-    timer.Lap("read");
-  } else {
-    const double noise = argc > 3 ? std::atof(argv[3]) : 0.0;
-    auto part = meshseg::GeneratePart(first, {.voxel_size = std::atof(argv[2]), .noise = noise});
-    if (!part.ok()) {
-      std::fprintf(stderr, "%s\n", part.status().ToString().c_str());
-      return 1;
-    }
-    mesh = std::move(part->mesh);
-    timer.Lap("generate");
+  // The mesh stays in the StatusOr it was made in: OpenMesh 9 meshes have no
+  // move constructor, so taking it out (or assigning a StatusOr) copies it.
+  const bool from_file = first == "--file";
+  const double noise = !from_file && argc > 3 ? std::atof(argv[3]) : 0.0;
+  const absl::StatusOr<meshseg::Mesh> read =
+      from_file ? meshseg::ReadMesh(argv[2])
+                : absl::StatusOr<meshseg::Mesh>(absl::UnknownError("no mesh read"));
+  const absl::StatusOr<meshseg::GeneratedPart> part =
+      from_file ? absl::StatusOr<meshseg::GeneratedPart>(absl::UnknownError("no part generated"))
+                : meshseg::GeneratePart(first, {.voxel_size = std::atof(argv[2]), .noise = noise});
+  const absl::Status status = from_file ? read.status() : part.status();
+  if (!status.ok()) {
+    std::fprintf(stderr, "%s\n", status.ToString().c_str());
+    return 1;
   }
+  timer.Lap(from_file ? "read" : "generate");
+  const meshseg::Mesh& mesh = from_file ? *read : part->mesh;
   std::printf("mesh       %zu vertices, %zu faces\n", mesh.tri.n_vertices(), mesh.tri.n_faces());
   auto field = meshseg::EstimateCurvature(mesh);
   if (!field.ok()) {
@@ -88,7 +86,7 @@ int main(int argc, char** argv) {
   std::printf("regions    %zu:", seg->regions.size());
   for (const auto& [type, count] : by_type) std::printf(" %s %d", type.c_str(), count);
   std::printf("\n");
-  if (first == "--file" && argc > 3) {
+  if (from_file && argc > 3) {
     const auto status = meshseg::WriteColoredPly(mesh.tri, seg->face_labels, argv[3]);
     if (!status.ok()) std::fprintf(stderr, "%s\n", status.ToString().c_str());
   }

@@ -88,6 +88,9 @@ struct ReconstructParams {
   // distance to the 6 nearest) plus the off-surface band of its centroid
   // (sampling condition: every point of a sampled surface lies within about
   // one local spacing of a sample; 2 leaves a factor 2 for random sampling).
+  // Past the border of the sampled area (no points on one side of the face)
+  // only half a local spacing along the surface is supported: the true border
+  // lies between the last row of samples and the next, missing, one.
   // Unsupported faces are removed and each hole closed by a minimal
   // (membrane-faired) patch whose faces Reconstruction::is_filled flags.
   // 0 keeps the surface the graph cut gives, flaps included.

@@ -22,6 +22,10 @@
 
 // `lhs` = value of `rexpr` (an absl::StatusOr<T>), or returns its status.
 // `lhs` may be a declaration: MESHSEG_ASSIGN_OR_RETURN(Mesh m, ReadMesh(p));
+// A reference declaration, MESHSEG_ASSIGN_OR_RETURN(const Mesh& m, ...),
+// leaves the value in the StatusOr (which lives to the end of the enclosing
+// scope) instead of moving it out: use it for a Mesh, whose OpenMesh kernel
+// has no move constructor, so that moving it out copies the whole mesh.
 #define MESHSEG_ASSIGN_OR_RETURN(lhs, rexpr) \
   MESHSEG_ASSIGN_OR_RETURN_IMPL_(            \
       MESHSEG_STATUS_CONCAT_(meshseg_statusor_, __LINE__), lhs, rexpr)

@@ -11,7 +11,7 @@
 //       45 548 faces 36.3 MiB, 93 032 faces 55.1 MiB, 182 516 faces 91.5 MiB,
 //       372 756 faces 166.8 MiB  ->  18.2 MiB + 418 B per face (binary PLY's
 //       own 25 B per face included; the file is mapped whole)
-//   CAD tessellations segmented on a remesh (plate_holes.stl, 1 252 faces
+//   CAD tessellations segmented on a remesh (the script's STL, 1 252 faces
 //       remeshed to 136 406): 93.6 MiB  ->  580 B per remesh face over the
 //       base; the remesh holds at most RemeshParams::max_faces faces
 //   point clouds (XYZ of the same parts' vertices, 22 774 .. 91 258 points):
@@ -21,7 +21,7 @@
 // the binary file's share, which the file term counts for every format),
 // room for a full-size remesh whenever the remesh may run, and 700 B per
 // point, and multiplies the sum by a safety margin of 1.5 (threads' scratch,
-// shapes with more regions than the test parts).
+// shapes with more regions than the measured parts).
 #ifndef MESHSEG_PIPELINE_MEMORY_MODEL_H_
 #define MESHSEG_PIPELINE_MEMORY_MODEL_H_
 
@@ -61,8 +61,8 @@ int64_t PeakBytes(const InputSize& input, const PipelineParams& params);
 // (holes, pockets): faces = 2 * 1.5 * 2 (nx ny + ny nz + nx nz), i.e. 6 per
 // face of the box product. Samples stream two slices at a time (16 B per
 // slice voxel).
-// A volume that may be binary (mode binary, or auto with 8-bit samples,
-// the usual occupancy type) adds seed 003's 15 B per voxel (occupancy and
+// A volume that may be binary (mode binary, or auto with 8-bit samples, the
+// usual occupancy type) adds ALGORITHMS.md S4's 15 B per voxel (occupancy and
 // the morphology's masks and distance map, voxel.h).
 inline constexpr int64_t kVolumeFacesPerBoxFace = 6;
 inline constexpr int64_t kBytesPerSliceVoxel = 16;

@@ -8,6 +8,8 @@
 #include <span>
 #include <utility>
 
+#include <tbb/parallel_invoke.h>
+
 #include "absl/strings/str_cat.h"
 #include "meshseg/point_cloud.h"
 #include "meshseg/status_macros.h"
@@ -155,13 +157,27 @@ absl::StatusOr<PipelineResult> RunOnPointCloud(const std::string& input_path,
 absl::StatusOr<PipelineResult> RunOnMesh(const std::string& input_path,
                                          const PipelineParams& params, const RunContext& ctx) {
   MESHSEG_ASSIGN_OR_RETURN(
-      Mesh mesh,
+      const Mesh& mesh,
       ReadMesh(input_path, {.format = params.format, .max_elements = params.max_elements}));
   ctx.Progress("read", 1.0);
   PipelineResult result;
+  // The three tests of what kind of mesh this is only read it, so they run
+  // side by side; on a binary or exact input the later ones are wasted work
+  // on an otherwise idle core, never a different answer.
+  const bool estimate_exactness =
+      params.segment.exact != ExactMode::kNever && params.remesh.mode != RemeshMode::kAlways;
+  std::optional<BinaryLattice> lattice;
+  Exactness exactness;
+  TessellationShape shape;
+  tbb::parallel_invoke(
+      [&] { lattice = DetectBinaryLattice(mesh.tri); },
+      [&] {
+        if (estimate_exactness) exactness = EstimateExactness(mesh, params.segment.exact_tolerance);
+      },
+      [&] { shape = Assess(mesh, params.remesh); });
   // Binary occupancy first: a terraced surface's facets lie exactly in the
   // planes of their neighbours, so it would pass for an exact tessellation.
-  if (const std::optional<BinaryLattice> lattice = DetectBinaryLattice(mesh.tri)) {
+  if (lattice) {
     MESHSEG_ASSIGN_OR_RETURN(const BinaryVertices binary,
                              BinaryMeshFeatures(mesh.tri, *lattice, params.volume));
     MESHSEG_ASSIGN_OR_RETURN(
@@ -174,20 +190,16 @@ absl::StatusOr<PipelineResult> RunOnMesh(const std::string& input_path,
   }
   // An exact tessellation is segmented facet by facet, as read; the share
   // of exact facets is reported either way (estimates.exact_share).
-  Exactness exactness;
-  if (params.segment.exact != ExactMode::kNever && params.remesh.mode != RemeshMode::kAlways) {
-    exactness = EstimateExactness(mesh, params.segment.exact_tolerance);
-    if (exactness.exact || params.segment.exact == ExactMode::kAlways) {
-      MESHSEG_ASSIGN_OR_RETURN(const std::vector<int> labels,
-                               SegmentExact(mesh, exactness, params, ctx, &result));
-      result.face_labels = pipeline_internal::InputFaceLabels(mesh.face_of_input, labels);
-      MESHSEG_RETURN_IF_ERROR(ExportStep(mesh, labels, params, ctx, &result));
-      MESHSEG_RETURN_IF_ERROR(pipeline_internal::FitFreeform(mesh, labels, params, ctx, &result));
-      AttachMesh(mesh, mesh.face_of_input, params, &result);
-      return result;
-    }
+  if (estimate_exactness &&
+      (exactness.exact || params.segment.exact == ExactMode::kAlways)) {
+    MESHSEG_ASSIGN_OR_RETURN(const std::vector<int> labels,
+                             SegmentExact(mesh, exactness, params, ctx, &result));
+    result.face_labels = pipeline_internal::InputFaceLabels(mesh.face_of_input, labels);
+    MESHSEG_RETURN_IF_ERROR(ExportStep(mesh, labels, params, ctx, &result));
+    MESHSEG_RETURN_IF_ERROR(pipeline_internal::FitFreeform(mesh, labels, params, ctx, &result));
+    AttachMesh(mesh, mesh.face_of_input, params, &result);
+    return result;
   }
-  const TessellationShape shape = Assess(mesh, params.remesh);
   const bool remesh = params.remesh.mode == RemeshMode::kAlways ||
                       (params.remesh.mode == RemeshMode::kAuto && shape.cad_like);
   const double edge_length = params.remesh.target_edge_length > 0.0

@@ -82,12 +82,12 @@ void RefitToPoints(std::span<const std::vector<Eigen::Vector3d>> points_of_regio
       region.max_distance = before.max;
     }
     // A cone fitted on the remesh's chords can be a cylinder on the input's
-    // own vertices: one that does not widen (plate_holes.stl in micrometres:
-    // an edge round, 0.29 degrees on the remesh, 0.009 on the input, 39 um
-    // wider over 250 mm), or one the cylinder fits as closely (jittered by
-    // 1e-12, draw 8: a corner round 4 remesh edges high went to a cone of
-    // 7.7 degrees on an axis 8.5 degrees off, rms 0.14 on the input, where
-    // the cylinder fits to 2e-6).
+    // own vertices: one that does not widen (a CAD tessellation in
+    // micrometres: an edge round, 0.29 degrees on the remesh, 0.009 on the
+    // input, 39 um wider over 250 mm), or one the cylinder fits as closely
+    // (the same tessellation with its coordinates jittered by 1e-12: a corner
+    // round 4 remesh edges high went to a cone of 7.7 degrees on an axis 8.5
+    // degrees off, rms 0.14 on the input, where the cylinder fits to 2e-6).
     const auto* cone = std::get_if<Cone>(&region.surface);
     if (cone != nullptr) {
       const FitResult cylinder =

@@ -25,7 +25,7 @@ void RefitOnInputVertices(const TriMesh& mesh, std::span<const int> face_labels,
 
 // A face of a CAD export has its corners on its own surface; its label,
 // carried over from the remesh by four samples, can still be the next
-// region's when the face is long and thin (plate_holes.stl with its
+// region's when the face is long and thin (a CAD tessellation with its
 // coordinates moved by 1e-12: a torus face in the corner cylinder beside it,
 // rms 0.04). Gives a face on a region boundary to a neighbouring face's
 // region when its corners lie on that region's surface, farthest corner

@@ -98,7 +98,7 @@ absl::StatusOr<std::vector<int>> SegmentRemeshed(const Mesh& surface, const Mesh
                                                  const RunContext& ctx, PipelineResult* result,
                                                  const BinaryVertices* binary) {
   RemeshStats remesh;
-  MESHSEG_ASSIGN_OR_RETURN(const Mesh fine,
+  MESHSEG_ASSIGN_OR_RETURN(const Mesh& fine,
                            IsotropicRemesh(surface, edge_length, params.remesh, ctx, &remesh));
   MESHSEG_ASSIGN_OR_RETURN(CurvatureField curvature,
                            EstimateCurvature(fine, params.curvature, ctx));

@@ -42,7 +42,7 @@ absl::StatusOr<std::vector<int>> SegmentRemeshed(const Mesh& surface, const Mesh
                                                  const RunContext& ctx, PipelineResult* result,
                                                  const BinaryVertices* binary = nullptr);
 
-// Seed 003 (ALGORITHMS.md S4) for a binary-occupancy surface `mesh` on
+// ALGORITHMS.md S4 (binary voxels) for a binary-occupancy surface `mesh` on
 // voxels of size h: its terraces (steps of one voxel on every slanted face)
 // defeat curvature and growing, so it is segmented on a de-terraced surface
 // (PipelineParams::BinarySurface) that keeps the feature vertices; labels

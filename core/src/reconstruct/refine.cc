@@ -18,9 +18,10 @@ namespace meshseg::reconstruct_internal {
 namespace {
 
 // Newton steps of x towards f = 0 along the central-difference gradient of f
-// (step `delta`), each at most `max_step` long; stops where f is flat.
-Eigen::Vector3d OntoZeroSet(const PuFunction& f, Eigen::Vector3d x, double delta,
-                            double max_step) {
+// (step `delta`), each at most `max_step` long; stops where f is flat or a
+// step is shorter than `tolerance`.
+Eigen::Vector3d OntoZeroSet(const PuFunction& f, Eigen::Vector3d x, double delta, double max_step,
+                            double tolerance) {
   for (int step = 0; step < kZeroSetIterations; ++step) {
     const double value = f(x);
     Eigen::Vector3d gradient;
@@ -33,6 +34,7 @@ Eigen::Vector3d OntoZeroSet(const PuFunction& f, Eigen::Vector3d x, double delta
     Eigen::Vector3d move = -value / g2 * gradient;
     if (move.norm() > max_step) move *= max_step / move.norm();
     x += move;
+    if (move.norm() < tolerance) break;
   }
   return x;
 }
@@ -115,18 +117,50 @@ absl::StatusOr<Mesh> RefineOnPoints(const Mesh& mesh, const std::vector<Eigen::V
   // them onto f = 0; adds the creases found.
   const auto project = [&](const std::vector<int>* only) {
     std::vector<std::pair<int, Crease>> found;
-    const std::vector<int> left =
-        ProjectToPoints(points, index, radius, kProjectionIterations, &fine.tri, crease_normals,
-                        stats->noise, &found, only);
+    std::vector<int> left = ProjectToPoints(points, index, radius, kProjectionIterations, &fine.tri,
+                                            crease_normals, stats->noise, &found, only);
     creases.insert(creases.end(), found.begin(), found.end());
+    tbb::parallel_for(size_t{0}, left.size(), [&](size_t i) {
+      const TriMesh::VertexHandle v(left[i]);
+      const Eigen::Vector3d x =
+          OntoZeroSet(f, ToEigen(fine.tri.point(v)), 0.5 * h, radius, kZeroSetTolerance * h);
+      fine.tri.set_point(v, TriMesh::Point(x[0], x[1], x[2]));
+    });
+    // A vertex that f = 0 brought onto the sampled surface is put on the
+    // points like every other; the rest stay on f = 0. On the sampled surface
+    // means: its own projection neighbourhood holds points, or a point lies
+    // within one spacing h of it (no widening: in an occlusion gap the
+    // nearest points are often another face's). The count alone is not
+    // enough: a disc of the projection radius holds only about 15 points of
+    // a uniform random sample (h is the median mean distance to several
+    // neighbours, outliers.h, so (2.5 h)² π covers ~15 points, not 20),
+    // close to kMinProjectionPoints; and a vertex beside a convex crease sees
+    // less than a disc of surface. Vertices that f = 0 had put among the
+    // points then failed the count, stayed on f = 0, and were left out of
+    // the crease halving below: their faces stayed chords of the crease.
+    std::vector<int> onto;
+    std::vector<int> stay;
+    {
+      std::vector<std::pair<uint32_t, double>> near;
+      for (const int v : left) {
+        const Eigen::Vector3d x = ToEigen(fine.tri.point(TriMesh::VertexHandle(v)));
+        index.WithinRadiusUnordered(x, radius, &near);
+        const bool on_points = near.size() >= kMinProjectionPoints ||
+                               (points[index.Closest(x)] - x).squaredNorm() <= h * h;
+        (on_points ? onto : stay).push_back(v);
+      }
+    }
+    if (!onto.empty()) {
+      const std::vector<int> still =
+          ProjectToPoints(points, index, radius, kProjectionIterations, &fine.tri, crease_normals,
+                          stats->noise, &found, &onto);
+      creases.insert(creases.end(), found.begin(), found.end());
+      stay.insert(stay.end(), still.begin(), still.end());
+    }
+    left = std::move(stay);
     unsupported.resize(fine.tri.n_vertices(), 0);
     for (const int v : left) unsupported[v] = 1;
     stats->unsupported_vertex_count += static_cast<int64_t>(left.size());
-    tbb::parallel_for(size_t{0}, left.size(), [&](size_t i) {
-      const TriMesh::VertexHandle v(left[i]);
-      const Eigen::Vector3d x = OntoZeroSet(f, ToEigen(fine.tri.point(v)), 0.5 * h, radius);
-      fine.tri.set_point(v, TriMesh::Point(x[0], x[1], x[2]));
-    });
   };
   project(nullptr);
   // An edge the projection stretched spans between two surfaces: vertices of
@@ -138,6 +172,16 @@ absl::StatusOr<Mesh> RefineOnPoints(const Mesh& mesh, const std::vector<Eigen::V
   // normals of their nearest points kMinCreaseAngleDeg apart): a stretch
   // along one surface (a fold, a handle) is not a crease's.
   const double cos_crease = std::cos(kMinCreaseAngleDeg * M_PI / 180.0);
+  // The halving runs until no stretched edge is left. Tents are as large as
+  // the supports, tens of spacings on a dense sample, so the rounds needed,
+  // log2(longest / (kStretchedEdge × edge)) plus those for the new edges
+  // each split makes, are set by the geometry; kStretchedRounds only bounds
+  // the work. A midpoint that the projection took back towards an end of
+  // its edge (nearer to it than kStuckFraction of the half edge: at a corner
+  // of three planes, which the crease fit does not model) made no progress;
+  // its edges are not split again, which would only add vertices off the
+  // surface.
+  std::vector<uint8_t> stuck(fine.tri.n_vertices(), 0);
   for (int round = 0; sharp && round < kStretchedRounds; ++round) {
     const double longest = kStretchedEdge * stats->refine_edge_length;
     std::vector<TriMesh::EdgeHandle> stretched;
@@ -145,6 +189,7 @@ absl::StatusOr<Mesh> RefineOnPoints(const Mesh& mesh, const std::vector<Eigen::V
       const auto he = fine.tri.halfedge_handle(e, 0);
       const auto a = fine.tri.from_vertex_handle(he), b = fine.tri.to_vertex_handle(he);
       if (unsupported[a.idx()] || unsupported[b.idx()]) continue;
+      if (stuck[a.idx()] || stuck[b.idx()]) continue;
       if (!(fine.tri.calc_edge_length(e) > longest)) continue;
       const Eigen::Vector3d& na = normals[index.Closest(ToEigen(fine.tri.point(a)))];
       const Eigen::Vector3d& nb = normals[index.Closest(ToEigen(fine.tri.point(b)))];
@@ -152,14 +197,24 @@ absl::StatusOr<Mesh> RefineOnPoints(const Mesh& mesh, const std::vector<Eigen::V
     }
     if (stretched.empty()) break;
     std::vector<int> added;
+    std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>> ends;
     for (const auto e : stretched) {
       const auto he = fine.tri.halfedge_handle(e, 0);
-      const auto mid = 0.5 * (fine.tri.point(fine.tri.from_vertex_handle(he)) +
-                              fine.tri.point(fine.tri.to_vertex_handle(he)));
-      added.push_back(fine.tri.split(e, mid).idx());
+      const Eigen::Vector3d pa = ToEigen(fine.tri.point(fine.tri.from_vertex_handle(he)));
+      const Eigen::Vector3d pb = ToEigen(fine.tri.point(fine.tri.to_vertex_handle(he)));
+      const Eigen::Vector3d mid = 0.5 * (pa + pb);
+      added.push_back(fine.tri.split(e, TriMesh::Point(mid[0], mid[1], mid[2])).idx());
+      ends.emplace_back(pa, pb);
     }
     stats->stretched_split_count += static_cast<int64_t>(added.size());
     project(&added);
+    stuck.resize(fine.tri.n_vertices(), 0);
+    for (size_t i = 0; i < added.size(); ++i) {
+      const Eigen::Vector3d m = ToEigen(fine.tri.point(TriMesh::VertexHandle(added[i])));
+      const double half = 0.5 * (ends[i].first - ends[i].second).norm();
+      const double nearer = std::min((m - ends[i].first).norm(), (m - ends[i].second).norm());
+      stuck[added[i]] = nearer < kStuckFraction * half;
+    }
   }
   stats->crease_vertex_count = static_cast<int64_t>(creases.size());
   if (sharp) {

@@ -13,11 +13,17 @@
 // mesh the curvature and segmentation stages expect, with the same topology.
 //
 // Vertices with no points near them go onto f = 0 instead (Newton steps on
-// the partition-of-unity implicit). They are of two kinds: in occlusion gaps
-// of a scan, where f = 0 is the surface the reconstruction chose; and on
-// "tents", marching-tetrahedra triangles up to 26 mm long that span between
-// two faces through the solid (on the test piece at h 0.68, along its
-// back-bottom edge), where f = 0 follows the faces the triangles cut off.
+// the partition-of-unity implicit, to convergence), and from there onto the
+// points if f = 0 brought them onto the sampled surface (their projection
+// neighbourhood holds points). They are of two kinds: in
+// occlusion gaps of a scan, where f = 0 is the surface the reconstruction
+// chose; and on "tents", marching-tetrahedra triangles up to 26 mm long that
+// span between two faces through the solid, where f = 0 follows the faces
+// the triangles cut off. Tents are as large as the supports (flat faces fit
+// one plane over many spacings), so on a dense sample they reach tens of
+// spacings from the points: a fixed number of bounded Newton steps left them
+// there (15 % of the refined vertices on a 1M-point sample), and the support
+// step cut their faces out and patched the holes across the creases.
 #ifndef MESHSEG_RECONSTRUCT_REFINE_H_
 #define MESHSEG_RECONSTRUCT_REFINE_H_
 
@@ -37,18 +43,30 @@ namespace meshseg::reconstruct_internal {
 // Projection steps per vertex; the second and third move a vertex by less
 // than a hundredth of a spacing on the test parts.
 inline constexpr int kProjectionIterations = 3;
-// Newton steps onto f = 0 for the vertices far from every point; below this
-// gradient norm f is flat (no support reaches there) and the vertex stays.
-inline constexpr int kZeroSetIterations = 10;
+// Newton steps onto f = 0 for the vertices far from every point, each at
+// most projection_radius long, until a step moves less than
+// kZeroSetTolerance × h: such a vertex sits on a marching-tetrahedra
+// triangle spanning between support centres, as far from f = 0 as those
+// triangles are large, which is fixed by the supports' sizes, not by h (on
+// a dense sample tens of spacings). kZeroSetIterations only bounds the
+// work. Below kMinGradient f is flat (no support reaches there) and the
+// vertex stays.
+inline constexpr int kZeroSetIterations = 100;
+inline constexpr double kZeroSetTolerance = 0.01;
 inline constexpr double kMinGradient = 1e-3;
 // Above this many triangles the surface is remeshed at twice the edge and
 // split in four (CGAL's remesher takes ~5 s for as many here, on one thread).
 inline constexpr double kSerialRemeshFaces = 100'000;
 // After the projection an edge longer than this many refined edge lengths
 // (the remesher leaves them within 4/3) was stretched across a crease and
-// is halved, at most kStretchedRounds times over.
+// is halved, round after round until none is left; a midpoint projected to
+// within kStuckFraction of the half edge from an end made no progress, and
+// its edges are not split again. kStretchedRounds only bounds the work:
+// tents tens of spacings wide need about ten rounds (each split adds edges
+// that may cross too).
 inline constexpr double kStretchedEdge = 2.0;
-inline constexpr int kStretchedRounds = 4;
+inline constexpr int kStretchedRounds = 30;
+inline constexpr double kStuckFraction = 0.5;
 
 // Returns `mesh` with every triangle split into four at the midpoints of its
 // edges: edges halve, triangle shapes and the surface stay, a closed oriented

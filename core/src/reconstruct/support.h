@@ -12,6 +12,24 @@
 // nearest input point p, s measured at p: the cloud's own density where the
 // face is, not a global constant, so sparse but genuine regions (grazing
 // views, far from the scanner) keep their surface.
+//
+// The factor `spacings` and the band are room for gaps between samples and
+// for noise along the normal; past the border of the sampled area (an
+// occlusion edge, the side a part stood on) they would let the surface run on
+// by 2 s + band beyond the last samples, and the patch closing the unseen side
+// then spans a loop that far out (below a flat bottom, say). The true border
+// lies between the last row of samples and the next, missing one. So a face
+// whose centroid is more than kBorderSpacings × s from its nearest point
+// along the surface (in the face's plane) is supported only if the points
+// around it surround it: their directions, projected into the points'
+// least-squares plane (the face's plane when they lie along one line), leave
+// no angular gap over π (the angle criterion for boundaries of point
+// sets, Bendels, Schnabel & Klein 2006, "Detecting holes in point set
+// surfaces"). Inside the sampled area a centroid between samples is
+// surrounded; beyond its border every nearby point lies on one side. The
+// points looked at are those within twice the reach: a gap between samples
+// that the reach bridges from both sides (random sampling leaves voids of
+// several local spacings) has points across it and stays supported.
 #ifndef MESHSEG_RECONSTRUCT_SUPPORT_H_
 #define MESHSEG_RECONSTRUCT_SUPPORT_H_
 
@@ -27,6 +45,9 @@ namespace meshseg::reconstruct_internal {
 
 // Neighbours whose mean distance is the local spacing s (as MeanNeighborDistances).
 inline constexpr int kSpacingNeighbors = 6;
+// Tangential reach of the support beyond the border of the sampled area, in
+// local spacings: half the gap to the next, missing, row of samples.
+inline constexpr double kBorderSpacings = 0.5;
 
 // The local spacing s at input point `p` (one of `points`): the mean distance
 // to its kSpacingNeighbors nearest others. `near` and `dist2` are scratch.
@@ -34,8 +55,10 @@ double SpacingAtPoint(const Eigen::Vector3d& p, const mesh_internal::PointIndex&
                       std::vector<uint32_t>* near, std::vector<double>* dist2);
 
 // Returns one flag per face of `tri`: 1 when the face is supported by
-// `points` (indexed by `index`, at least kSpacingNeighbors + 1 of them), see
-// above; `band` in model units.
+// `points` (indexed by `index`, at least kSpacingNeighbors + 1 of them):
+// within `spacings` × s + `band` of its nearest point, and, if more than
+// kBorderSpacings × s from it along the face, surrounded by the points within
+// twice that reach (see above); `band` in model units.
 std::vector<uint8_t> SupportedFaces(const TriMesh& tri, const std::vector<Eigen::Vector3d>& points,
                                     const mesh_internal::PointIndex& index, double spacings,
                                     double band);

@@ -13,7 +13,7 @@
 namespace meshseg::segment_internal {
 namespace {
 
-// Seed 002 STB3 steps (1.0, 16°), (1.5, 24°), (2.0, 32°), ... from the base
+// ALGORITHMS.md S2 STB3 steps (1.0, 16°), (1.5, 24°), (2.0, 32°), ... from the base
 // (0.5, 8°): multiples 2, 3, 4, ... of the base thresholds.
 constexpr int kSteps = 5;
 constexpr double kMaxAngleDeg = 80.0;

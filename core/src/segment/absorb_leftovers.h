@@ -1,7 +1,8 @@
-// Leftover absorption of seed 002 STB3: free vertices (mostly near sharp
-// edges) join a neighbouring region whose surface they meet with thresholds
-// stepped up from the base ones; what is still free then joins its nearest
-// labelled neighbour, and free islands without any region become regions.
+// Leftover absorption of ALGORITHMS.md S2 (STB3): free vertices (mostly
+// near sharp edges) join a neighbouring region whose surface they meet with
+// thresholds stepped up from the base ones; what is still free then joins
+// its nearest labelled neighbour, and free islands without any region become
+// regions.
 #ifndef MESHSEG_SRC_SEGMENT_ABSORB_LEFTOVERS_H_
 #define MESHSEG_SRC_SEGMENT_ABSORB_LEFTOVERS_H_
 

@@ -1,9 +1,10 @@
-// One axis for the surfaces of one turned feature (our addition to seeds 000
-// and 002). A countersink and the bore below it, a chamfer and its shaft, a
-// shaft's steps share their axis by design, but each region fitted alone
-// gets its axis from its own vertices only, and a narrow band has few:
-// test_piece's 45-degree countersink at 0.05 h (seed 54) tilts 0.51 degrees
-// while the bore beside it is within 0.01. Fitted together, the band takes
+// One axis for the surfaces of one turned feature (our addition to
+// ALGORITHMS.md S1 and S2; S2's D3 recognises such surfaces of revolution,
+// this fits them on one axis). A countersink and the bore below it, a chamfer
+// and its shaft, a shaft's steps share their axis by design, but each region
+// fitted alone gets its axis from its own vertices only, and a narrow band
+// has few: a 45-degree countersink band at sigma = 0.05 h tilted 0.51 degrees
+// while the bore beside it was within 0.01. Fitted together, the band takes
 // the axis the bore's many rows define.
 #ifndef MESHSEG_SRC_SEGMENT_ALIGN_COAXIAL_H_
 #define MESHSEG_SRC_SEGMENT_ALIGN_COAXIAL_H_
@@ -26,12 +27,12 @@ namespace meshseg::segment_internal {
 // joint fit meets every member's points at the noise (FitsAtNoise): a
 // separate axis must be both significant and larger than the noise can
 // hide. A 99.9 % test still rejects 1 true shared axis in 1000, and a
-// narrow band's own axis is then far off: stepped_shaft's chamfer at 0.15 h
-// (6 h wide; seeds 82, 208), where on its true vertices alone the true
-// cone costs 24 and 17 noise variances more than the free one (chi-square
-// with 6 values: 22.5 at 99.9 %), came out 1.8 and 1.6 degrees off its
-// shaft's axis; the shared axis met its points at the noise (rms 0.0525,
-// sigma 0.0527).
+// narrow band's own axis is then far off: a 45-degree chamfer band 6 h
+// wide at sigma = 0.15 h, where on its true vertices alone the true cone
+// cost 17 to 24 noise variances more than the free one (chi-square with 6
+// values: 22.5 at 99.9 %), came out 1.6 to 1.8 degrees off its shaft's
+// axis; the shared axis met its points at the noise (rms 0.0525, sigma
+// 0.0527).
 // Every region of a group of two or more takes the joint fit. Returns those
 // groups.
 std::vector<std::vector<int>> AlignCoaxialRegions(const SegmentContext& c,
@@ -42,8 +43,8 @@ std::vector<std::vector<int>> AlignCoaxialRegions(const SegmentContext& c,
 // by less than th_dis are one face that growth left in pieces: each merges
 // into the largest it matches, whose radius is then the least-squares one
 // about the shared axis over the vertices that meet (5) and (6) for its
-// surface. test_piece's r 5 round at 0.15 h (seed 372) ended in pieces of
-// 126 and 423 vertices, r 5.35 and 5.14 on one axis, and the face labels cut
+// surface. A noisy round of r 5 (sigma = 0.15 h) ended in pieces of 126
+// and 423 vertices, r 5.35 and 5.14 on one axis, and the face labels cut
 // the boundary between them into 4 pieces. Returns the number of merges.
 int MergeCoaxialCylinders(const SegmentContext& c, const std::vector<std::vector<int>>& groups,
                           std::vector<int>* labels, std::vector<RegionState>* regions);

@@ -7,6 +7,8 @@
 #include <optional>
 #include <variant>
 
+#include <tbb/parallel_for.h>
+
 namespace meshseg::segment_internal {
 namespace {
 
@@ -18,7 +20,8 @@ constexpr double kConeGain = 0.8;
 // kConeGain of the other's, which must exceed kMinModelError noise sigmas.
 constexpr double kBentNormalFraction = 0.75;
 // Types within this fraction of the best count as equally good; the earlier
-// one in seed 000's order (cylinder, sphere, cone, torus) wins.
+// one in the order of ALGORITHMS.md S1 step 2.5 (cylinder, sphere, cone,
+// then our torus) wins.
 constexpr double kFractionTie = 0.02;
 constexpr double kTorusFractionTie = 0.05;
 
@@ -51,8 +54,9 @@ double SmallestRadius(const Surface& surface, const Eigen::Vector3d& at) {
   if (const auto* t = std::get_if<Torus>(&surface)) {
     // The tube's radius, or the radius around the axis, rho / cos(theta) at
     // the tube angle theta of the point nearest `at`: R - r at the inner
-    // equator of a torus fitted to a cylinder band (test_piece's r 6 round
-    // at 0.15 h, seed 88: R 1253, r 1247).
+    // equator of a torus fitted to a cylinder band (noise can turn a
+    // cylinder band's fit into a torus with R and r some 200 times the
+    // cylinder's radius and R - r equal to it).
     const Eigen::Vector3d d = at - t->center;
     const double along = d.dot(t->axis_direction);
     const Eigen::Vector2d from_tube((d - along * t->axis_direction).norm() - t->major_radius,
@@ -78,8 +82,9 @@ bool NearlyFlatImpl(const SegmentContext& c, const Surface& surface, double rms,
   for (const int v : vertices) centroid += c.position(v);
   centroid /= static_cast<double>(vertices.size());
   // A cylinder or cone is straight along its rulings; it bends only across
-  // them (plate_boss's side at 0.15 h, seed 92, grew as a cylinder of
-  // r 572 whose axis runs along the side, 60 long and 10 high).
+  // them (a noisy plane strip 60 long and 10 high can grow as a cylinder of
+  // radius ~570 with its axis along the strip: bent only across its 10, by
+  // a sagitta of 0.02).
   Eigen::Vector3d straight = Eigen::Vector3d::Zero();
   if (const auto* cylinder = std::get_if<Cylinder>(&surface)) straight = cylinder->axis_direction;
   if (const auto* cone = std::get_if<Cone>(&surface)) {
@@ -209,10 +214,10 @@ std::optional<ScoredFit> TypeThatFitsInstead(const SegmentContext& c, const Regi
 
 std::array<ScoredFit, kCurvedTypes.size()> ScoreCurvedTypes(const SegmentContext& c,
                                                             std::span<const int> vertices) {
+  // The fits read only c and the vertices: concurrent, each into its slot.
   std::array<ScoredFit, kCurvedTypes.size()> out;
-  for (std::size_t t = 0; t < kCurvedTypes.size(); ++t) {
-    out[t] = ScoreType(c, kCurvedTypes[t], vertices);
-  }
+  tbb::parallel_for(std::size_t{0}, kCurvedTypes.size(),
+                    [&](std::size_t t) { out[t] = ScoreType(c, kCurvedTypes[t], vertices); });
   return out;
 }
 
@@ -257,11 +262,10 @@ std::optional<TypedFit> PlaneIfFits(const SegmentContext& c, std::span<const int
 
 TypedFit DecideCurvedType(const SegmentContext& c, std::span<const int> vertices,
                           const Tolerance& tol) {
-  std::array<TypedFit, 4> k = {TryType(c, SurfaceType::kCylinder, vertices, tol),
-                               TryType(c, SurfaceType::kSphere, vertices, tol),
-                               TryType(c, SurfaceType::kCone, vertices, tol),
-                               TryType(c, SurfaceType::kTorus, vertices, tol)};
-  // Of cylinder and cone, the more accurate (seed 000 §3 step 5).
+  std::array<TypedFit, kCurvedTypes.size()> k;  // concurrent fits, each into its slot
+  tbb::parallel_for(std::size_t{0}, kCurvedTypes.size(),
+                    [&](std::size_t t) { k[t] = TryType(c, kCurvedTypes[t], vertices, tol); });
+  // Of cylinder and cone, the more accurate (ALGORITHMS.md S1 step 2.5).
   if (k[2].fraction >= k[0].fraction - kFractionTie &&
       k[2].fit.rms_distance < kConeGain * k[0].fit.rms_distance) {
     k[0].fraction = 0.0;
@@ -273,8 +277,8 @@ TypedFit DecideCurvedType(const SegmentContext& c, std::span<const int> vertices
   // kTorusFractionTie count as equal and the simpler type wins. So does a
   // simpler type that meets (5) at alpha with a model error at the noise:
   // the torus then gains fraction only by bending with n'_i where it is
-  // bent (a countersink at 0.15 h: cone 0.71, torus 0.76, both at rms =
-  // sigma).
+  // bent (a narrow countersink band at sigma = 0.15 h: cone 0.71, torus
+  // 0.76, both at rms = sigma).
   const TypedFit* simple = &k[0];
   for (int t = 1; t < 3; ++t) {
     if (k[t].fraction > simple->fraction) simple = &k[t];
@@ -287,13 +291,14 @@ TypedFit DecideCurvedType(const SegmentContext& c, std::span<const int> vertices
       !(k[3].fit.rms_distance < kConeGain * simple->fit.rms_distance)) {
     k[3].fraction = 0.0;
   }
-  // The first type in seed 000's order that passes the alpha test, unless
+  // The first type in S1's order that passes the alpha test, unless
   // a later passing one is clearly more accurate at no loss of fraction (a
   // sphere passes on a noisy cone band only thanks to the tolerances), or
   // a later one wins on distance where n'_i is bent: on a band narrower
   // than N'(i, W2) between two creases the sharp test misses (a 45-degree
   // chamfer, 6 h wide), n'_i turns toward both neighbours as a sphere's
-  // normals would, and at 0.15 h a fifth of the n_i miss th_nm by noise.
+  // normals would, and at sigma = 0.15 h a fifth of the n_i miss th_nm by
+  // noise.
   // The later type then keeps the fraction the earlier one earned ...
   TypedFit* pass = nullptr;
   for (TypedFit& t : k) {

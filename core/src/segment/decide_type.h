@@ -1,5 +1,6 @@
-// The type decision of seed 000 §3 steps 3 and 5: the first analytic type
-// whose fit meets (5) and (6) at more than alpha of the region's vertices.
+// The type decision of ALGORITHMS.md S1 steps 2.3 and 2.5: the first
+// analytic type whose fit meets (5) and (6) at more than alpha of the
+// region's vertices.
 #ifndef MESHSEG_SRC_SEGMENT_DECIDE_TYPE_H_
 #define MESHSEG_SRC_SEGMENT_DECIDE_TYPE_H_
 
@@ -34,9 +35,9 @@ inline constexpr double kMinModelError = 0.25;
 inline constexpr double kScoredNearError = 0.5;
 
 // How far `fit` misses its vertices beyond the noise, sqrt(rms^2 - sigma^2).
-// At 0.15 h the rms of a sphere on a narrow 45-degree chamfer is only 10 %
-// above the cone's, which sits at the noise; their model errors are
-// 0.45 sigma and 0.
+// At sigma = 0.15 h the rms of a sphere on a narrow 45-degree chamfer is
+// only 10 % above the cone's, which sits at the noise; their model errors
+// are 0.45 sigma and 0.
 double ModelError(const SegmentContext& c, const FitResult& fit);
 // The same for residuals of mean square `mean_square`.
 double ModelErrorOfMeanSquare(const SegmentContext& c, double mean_square);
@@ -96,7 +97,7 @@ struct ScoredFit {
 };
 ScoredFit ScoreType(const SegmentContext& c, SurfaceType type, std::span<const int> vertices);
 
-// The curved types in seed 000's order, then seed 002's torus.
+// The curved types in ALGORITHMS.md S1's order (step 2.5), then S2's torus.
 inline constexpr std::array<SurfaceType, 4> kCurvedTypes = {
     SurfaceType::kCylinder, SurfaceType::kSphere, SurfaceType::kCone, SurfaceType::kTorus};
 
@@ -109,10 +110,11 @@ ScoredFit BestScoredType(const SegmentContext& c, std::span<const int> vertices)
 // (InformationScore, with r's type's parameter count). A region keeps the
 // surface it grew with until a refit; when its vertices change so much that
 // its type no longer fits them, that surface can miss them by far (a torus
-// grown on the rounded rim of a small flat face, that then took most of the
-// flat face from the leftovers: 5 sigma), or still meet them better than
-// any other type (a torus band of a noisy scan whose torus fit fails for a
-// while: a cylinder would miss it by 1.3 sigma, the torus by 0.5).
+// grown on the crease ring between a small plane disc and the conical
+// frustum under it, at sigma = 0.15 h, that took most of the disc from the
+// leftovers: 5 sigma), or still meet them better than any other type (a
+// torus blend band on a noisy CAD mesh whose torus fit fails for a while: a
+// cylinder would miss it by 1.3 sigma, the torus by 0.5).
 std::optional<ScoredFit> TypeThatFitsInstead(const SegmentContext& c, const RegionState& r);
 
 // ScoreType of each of kCurvedTypes on `vertices`.
@@ -149,8 +151,8 @@ int FlattenNearlyFlatRegions(const SegmentContext& c, std::vector<RegionState>* 
 // the tolerance over the region: its radius changes by L tan(half angle)
 // along the region's extent L on the axis, under th_dis (or twice the fit's
 // own rms scatter). Such a cone passes only by fitting what a cylinder
-// leaves (a CAD part's edge round of radius 6.35 and length 150 came out as
-// a cone of half angle 0.06 degrees: 0.16 wider at one end, th_dis 0.75).
+// leaves (on a CAD tessellation an edge round of r 6.35, 150 long, came out
+// as a cone of half angle 0.06 degrees: 0.16 wider at one end, th_dis 0.75).
 bool NearlyCylindrical(const SegmentContext& c, const Cone& cone, double rms,
                        std::span<const int> vertices, const Tolerance& tol);
 

@@ -11,7 +11,7 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kSigmas = 3.0;           // th_dis >= 3 sigma
-constexpr double kMinAngleDeg = 5.0;      // seed 000 default for CT meshes
+constexpr double kMinAngleDeg = 5.0;      // ALGORITHMS.md S1 th_nm for CT meshes
 constexpr double kMaxAngleDeg = 30.0;
 // Test (6) uses n'_i, whose noise is a fraction of the tilt of n_i against
 // it; the median tilt of n_i is a generous bound for n'_i's scatter.
@@ -22,7 +22,7 @@ constexpr double kAngleSpread = 1.5;
 // them), and their residual measures the edge, not the noise.
 constexpr double kCleanResidual = 1.5;
 // Below this share of clean vertices the mode is not trusted and every
-// vertex counts, as in seed 000.
+// vertex counts, as in ALGORITHMS.md S1.
 constexpr double kMinCleanShare = 0.1;
 
 double Median(std::vector<double> x) {

@@ -1,5 +1,5 @@
 // "No tuning by default": the noise level and resolution of the mesh, and
-// the tolerances of seed 000 eqs. (5), (6) derived from them.
+// the tolerances of ALGORITHMS.md S1 eqs. (5), (6) derived from them.
 #ifndef MESHSEG_SRC_SEGMENT_ESTIMATE_NOISE_H_
 #define MESHSEG_SRC_SEGMENT_ESTIMATE_NOISE_H_
 

@@ -12,6 +12,7 @@
 
 #include "meshseg/fit.h"
 #include "meshseg/status_macros.h"
+#include "segment/exact_fit.h"
 #include "segment/exact_hypotheses.h"
 #include "segment/exact_joint_hypotheses.h"
 #include "segment/exact_seed_walk.h"

@@ -1,17 +1,17 @@
 // Hypotheses of the exact-facet path: a surface fitted exactly (within the
-// tolerance tau) to a small group of facets, verified on every facet of the
-// group by the criterion of facet_on_surface.h, and grown over the facets
-// around it that meet that criterion. Types are tried in order of
+// tolerance tau, exact_fit.h) to a small group of facets, verified on every
+// facet of the group by the criterion of facet_on_surface.h, and grown over
+// the facets around it that meet that criterion. Types are tried in order of
 // simplicity: plane, cylinder, cone, sphere, torus; the first that fits is
 // the group's.
 #ifndef MESHSEG_SRC_SEGMENT_EXACT_HYPOTHESES_H_
 #define MESHSEG_SRC_SEGMENT_EXACT_HYPOTHESES_H_
 
 #include <optional>
-#include <span>
 #include <vector>
 
 #include "meshseg/surface.h"
+#include "segment/exact_fit.h"
 #include "segment/facet_mesh.h"
 
 namespace meshseg::segment_internal {
@@ -41,20 +41,6 @@ struct Hypothesis {
   // evidence is held by all its pieces, not by each.
   bool joint = false;
 };
-
-// The exact fit of `type` to the corners of `facets`: nullopt unless every
-// corner lies within `tau` of it.
-std::optional<Surface> FitExactly(const FacetMesh& fm, SurfaceType type,
-                                  std::span<const int> facets, double tau);
-
-// True if `facets` hold enough evidence for a surface of `type`: a plane
-// needs 4 distinct corners (a facet alone fixes its own plane); a curved
-// type kMinCurvedFacets facets of distinct normals (three parallel lines lie
-// on a cylinder whatever they are, four do not) and as many corners as its
-// parameters plus kSpareCorners.
-bool HoldsEvidence(const FacetMesh& fm, SurfaceType type, std::span<const int> facets);
-inline constexpr int kMinCurvedFacets = 3;
-inline constexpr int kSpareCorners = 3;
 
 // The plane of facet f grown over the facets that lie in it (refitted as it
 // grows); nullopt if f is degenerate or the plane holds no evidence.

@@ -12,6 +12,7 @@
 #include <tbb/parallel_sort.h>
 
 #include "meshseg/fit.h"
+#include "segment/exact_fit.h"
 #include "segment/facet_on_surface.h"
 
 namespace meshseg::segment_internal {

@@ -32,8 +32,8 @@ double CoordinateResolution(const std::vector<Eigen::Vector3d>& positions);
 inline constexpr double kRoundingSpan = 8.0;
 // No tolerance below this fraction of the bounding-box diagonal: float32,
 // the STL format's own numbers, rounds at 6e-8 of a coordinate, and a file
-// may carry that rounding under more digits (ABC's STL in metres, scaled to
-// millimetres and printed with 9 digits); a modeller's own accuracy
+// may carry that rounding under more digits (an STL exported in metres,
+// scaled to millimetres and printed with 9 digits); a modeller's own accuracy
 // (OpenCASCADE's Precision::Confusion, 1e-7 mm) is finer still on parts of
 // 1 mm and more. The surfaces of a part are never this close without being
 // one.

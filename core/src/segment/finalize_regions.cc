@@ -87,8 +87,9 @@ Segmentation Assemble(const SegmentContext& c, const TriMesh& mesh,
 // The fit of `type` to a region's `vertices`, refitted on those that meet
 // (5) and (6) for it while they are at least kMinInlierShare of the region.
 // Leftover absorption can hand a region vertices of a small face it could
-// not tell apart: test_piece's boss cone at 0.15 h took the 183-face boss
-// top, and its half-angle came out 29.7 degrees for 20.6.
+// not tell apart: at sigma = 0.15 h the cone of a frustum took the
+// 183-face plane disc on top of it, and its half-angle came out 29.7
+// degrees for 20.6.
 FitResult InlierFit(const SegmentContext& c, SurfaceType type, const std::vector<int>& vertices) {
   FitResult fit = FitType(c, type, vertices);
   std::vector<int> inliers;
@@ -121,9 +122,9 @@ Segmentation FinalizeRegions(const SegmentContext& c, const TriMesh& mesh, std::
       }
     }
     // The inliers can leave a curved fit flat where the fit to all of the
-    // region (FlattenNearlyFlatRegions) was not: test_piece's boss top at
-    // 0.15 h (seed 137), a sphere of radius 28.7 over it and its rim rows,
-    // 128.0 over the top alone, would be reported so.
+    // region (FlattenNearlyFlatRegions) was not: a small plane disc at
+    // sigma = 0.15 h, grown as a sphere of radius 28.7 over it and its rim
+    // rows, 128.0 over the disc alone, would be reported so.
     if (fit.ok() && IsCurved(r.type) &&
         NearlyFlat(c, fit.surface, fit.rms_distance, r.vertices, c.tolerance)) {
       FitResult plane = InlierFit(c, SurfaceType::kPlane, r.vertices);

@@ -17,7 +17,7 @@
 // A cylinder of axis a is the same with |p|^2 replaced by |P_a p|^2 (P_a =
 // I - a a^T): Q(p) = 2d + d^2/R again, with d the distance from the
 // cylinder. Its axis is known to within an angle w of a direction e when
-// the facet normals bound |n . a| (exact_hypotheses.cc: FitExactly accepts
+// the facet normals bound |n . a| (exact_fit.cc: FitExactly accepts
 // only cylinders as perpendicular to the normals as they allow); then
 // | |P_e p|^2 - |P_a p|^2 | = |p.(e - a)| |p.(e + a)| <= ((1 - cos w) |p.e| +
 // sin w |P_e p|) (2 |p.e| + sin w |P_e p|) adds that over R_min to eps (the

@@ -17,8 +17,9 @@ namespace {
 // rows along a rounded crease n'_i is bent toward both faces. Neighbours
 // under kMinRegionVertices take nothing: they are fragments the last
 // release frees, not faces that lost rows, and one may be a piece of the
-// region's own surface (test_piece's countersink at 0.15 h, seed 171: a
-// sphere piece of 50 vertices would have taken 466 of its torus' 928).
+// region's own surface (on a noisy countersink band grown as a torus of
+// 928 vertices, a sphere piece of the same band, 50 vertices, would have
+// taken 466 of them).
 void GrowBack(const SegmentContext& c, const std::vector<int>& labels,
               const std::vector<RegionState>& regions, int id, std::vector<int>* taker) {
   const auto fits = [&](int v, int n) {
@@ -53,9 +54,9 @@ void GrowBack(const SegmentContext& c, const std::vector<int>& labels,
 // True if region `id` has kMinInteriorVertices interior vertices and its
 // surface, or its type refitted to them, misses them beyond the noise
 // (kMinModelError): the rows it took bent it. The type alone can hide that:
-// test_piece's boss top at 0.15 h (seed 7) grew as a sphere of radius 12.4
-// over the disc and the rows of the boss cone round it, and a flatter
-// sphere meets the disc alone at the noise.
+// a small plane disc on top of a conical frustum, at sigma = 0.15 h, grew
+// as a sphere of radius 12.4 over the disc and the rows of the cone round
+// it, and a flatter sphere meets the disc alone at the noise.
 bool RowsBendIt(const SegmentContext& c, const std::vector<int>& labels, int id,
                 const RegionState& r) {
   const int ids[] = {id};
@@ -112,8 +113,8 @@ std::optional<GiveBack> Weigh(const SegmentContext& c, const std::vector<RegionS
     if (score < out.rest_fit.score) out.rest_fit = scored.back();
   }
   // A type with more parameters than the rest needs can still score best on
-  // it: test_piece's countersink at 0.15 h (seed 382) kept a torus 29 below
-  // the cone, its rms 0.140 under the noise (0.152) where the cone's, 0.151,
+  // it: a countersink band at sigma = 0.15 h kept a torus 29 below the
+  // cone, its rms 0.140 under the noise (0.152) where the cone's, 0.151,
   // was at it; the torus then grew back over the rows (983 vertices) and won
   // on the interior. The simplest limit of the best type that meets the rest
   // at the noise takes it instead.

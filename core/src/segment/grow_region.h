@@ -1,5 +1,5 @@
-// Region growing of seed 000 §3 step 2, written once against a model that
-// can be refitted to a vertex set and projects a vertex onto itself: the
+// Region growing of ALGORITHMS.md S1 step 2.2, written once against a model
+// that can be refitted to a vertex set and projects a vertex onto itself: the
 // local height function, or any analytic surface / quadric of the fit stage.
 #ifndef MESHSEG_SRC_SEGMENT_GROW_REGION_H_
 #define MESHSEG_SRC_SEGMENT_GROW_REGION_H_
@@ -46,8 +46,8 @@ class SurfaceModel : public GrowModel {
 
 // Grows `region` (whose vertices have labels[v] == id) over vertices with
 // labels[v] == -1 that meet (5) and (6) for `model`, refitting after each
-// round until no vertex is added (seed 000 §3 step 2). Added vertices get
-// labels[v] = id. Returns false if the model could not be fitted at all.
+// round until no vertex is added (ALGORITHMS.md S1 step 2.2). Added vertices
+// get labels[v] = id. Returns false if the model could not be fitted at all.
 bool GrowRegion(const SegmentContext& c, GrowModel* model, const Tolerance& tol, int id,
                 std::vector<int>* labels, std::vector<int>* region);
 

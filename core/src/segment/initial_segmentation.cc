@@ -20,8 +20,9 @@ constexpr int kStopCheckEvery = 16;  // seeds between stop checks
 // (but not alpha) has grown past its surface, typically into a tangent
 // plane: it keeps only the fitting vertices and regrows with that type.
 constexpr double kTrimFraction = 0.75;
-// Types a seed is grown with when its quadric region fits none, in seed
-// 000's order; a later type must grow this much larger to win.
+// Types a seed is grown with when its quadric region fits none, in the
+// order of ALGORITHMS.md S1 step 2.5; a later type must grow this much
+// larger to win.
 constexpr std::array<SurfaceType, 5> kSeedTypes = {SurfaceType::kPlane, SurfaceType::kCylinder,
                                                    SurfaceType::kSphere, SurfaceType::kCone,
                                                    SurfaceType::kTorus};
@@ -86,7 +87,7 @@ void GrowAndType(const SegmentContext& c, int id, std::vector<int>* labels,
   const std::vector<int> seed = region.vertices;
   HeightModel height;
   GrowRegion(c, &height, c.tolerance, id, labels, &region.vertices);
-  // seed 000 §3 step 3: a plane if alpha of the vertices fit one.
+  // ALGORITHMS.md S1 step 2.3: a plane if alpha of the vertices fit one.
   if (auto plane = PlaneIfFits(c, region.vertices, c.tolerance)) {
     GrowTyped(c, *plane, id, labels, &region);
     return;
@@ -152,9 +153,10 @@ void GrowAndType(const SegmentContext& c, int id, std::vector<int>* labels,
         typed.fit = FitType(c, type, from);
       }
       // The trial starts from the piece of them at the seed, cut only once
-      // the fit has settled: an early fit is off where the quadric bent
-      // away, and the piece of its vertices at the seed can be smaller than
-      // the seed (test_piece's boss top at 0.15 h, seed 317: 10 of 14).
+      // the fit has settled: an early fit is off where the quadric bent away,
+      // and the piece of its vertices at the seed can be smaller than the
+      // seed (on a small flat top of a conical frustum at sigma = 0.15 h, 10
+      // of the 14 seed vertices).
       if (start == 1 && typed.fit.ok() && from.size() >= seed.size()) {
         const std::size_t fitted = from.size();
         from = PieceHoldingSeed(c, from, seed);
@@ -187,7 +189,7 @@ void GrowAndType(const SegmentContext& c, int id, std::vector<int>* labels,
     region = std::move(*best);
     for (const int v : region.vertices) (*labels)[v] = id;
     // A torus or cone of huge radius found this way may be a plane: plane
-    // comes first in seed 000's order.
+    // comes first in S1's order (step 2.3 before 2.5).
     if (region.type != SurfaceType::kPlane) {
       if (auto plane = PlaneIfFits(c, region.vertices, c.tolerance)) {
         GrowTyped(c, *plane, id, labels, &region);

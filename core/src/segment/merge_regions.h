@@ -1,10 +1,10 @@
 // Region merging (ALGORITHMS.md S1 step 3) decided by the segmentation
 // energy (energy.h): of the pairs of regions across a smooth arc of the
 // region graph, the one whose merge into one refitted surface lowers E
-// most is merged, until no merge lowers it. This takes the place of seed
-// 000's merge by extrapolation (beta1) and by refitting (beta2) and of the
-// test of two typed pieces against one surface: a merge pays, or does not,
-// by the same data, boundary and label costs.
+// most is merged, until no merge lowers it. This takes the place of S1's
+// merge by extrapolation (beta1, step 3.3) and by refitting (beta2, step
+// 3.4) and of the test of two typed pieces against one surface: a merge
+// pays, or does not, by the same data, boundary and label costs.
 #ifndef MESHSEG_SRC_SEGMENT_MERGE_REGIONS_H_
 #define MESHSEG_SRC_SEGMENT_MERGE_REGIONS_H_
 

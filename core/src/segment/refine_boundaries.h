@@ -1,7 +1,7 @@
-// Boundary refinement (our addition to seeds 000 and 002): region growing
-// takes every vertex that meets (5) and (6), so where a plane runs tangent
-// into a fillet the plane, grown first, keeps the fillet's first th_nm
-// degrees of arc. At noise 0.15 h (th_nm ≈ 11°) that was 13–28 % of a
+// Boundary refinement (our addition to ALGORITHMS.md S1 and S2): region
+// growing takes every vertex that meets (5) and (6), so where a plane runs
+// tangent into a fillet the plane, grown first, keeps the fillet's first
+// th_nm degrees of arc. At sigma = 0.15 h (th_nm ≈ 11°) that was 13–28 % of a
 // radius-10 h fillet. Here each non-sharp boundary vertex goes to whichever
 // neighbouring region's surface it matches best, distance and normal
 // together, and the regions are refitted.

@@ -1,8 +1,8 @@
-// The region graph of seed 000 §4 step 1 and its simplification (step 2):
-// regions are adjacent where a mesh edge joins them; an arc is smooth if
-// the mean normals of the two boundary strips are within th_bnd. (Whether
-// the types agree no longer matters: the energy of a merge decides it,
-// merge_regions.h.)
+// The region graph of ALGORITHMS.md S1 step 3.1 and its simplification
+// (step 3.2): regions are adjacent where a mesh edge joins them; an arc is
+// smooth if the mean normals of the two boundary strips are within th_bnd.
+// (Whether the types agree no longer matters: the energy of a merge decides
+// it, merge_regions.h.)
 #ifndef MESHSEG_SRC_SEGMENT_REGION_GRAPH_H_
 #define MESHSEG_SRC_SEGMENT_REGION_GRAPH_H_
 
@@ -22,7 +22,7 @@ struct RegionArc {
   bool smooth = false;     // angle below th_bnd
 };
 
-inline constexpr double kSharpBoundaryDeg = 45.0;  // th_bnd, seed 000 §4 step 2
+inline constexpr double kSharpBoundaryDeg = 45.0;  // th_bnd, ALGORITHMS.md S1 step 3.2
 
 // Returns the arcs between alive regions, sorted by (a, b).
 std::vector<RegionArc> BuildRegionGraph(const SegmentContext& c, const std::vector<int>& labels,
@@ -36,11 +36,11 @@ struct PairMerge {
   Surface surface;
 };
 
-// The loop of seed 000 §4 step 4 (MergeRegions): repeatedly merges, the
-// smaller region into the larger, the pair across an arc that `eligible`
-// admits with the highest score `test(a, b)` gives (nullopt: not to be
-// merged), until none is left. Tests are cached
-// per arc and redone only for pairs a merge changed. Returns the number of
+// The loop of ALGORITHMS.md S1 step 3.4 (MergeRegions): repeatedly merges,
+// the smaller region into the larger, the pair across an arc that
+// `eligible` admits with the highest score `test(a, b)` gives (nullopt: not
+// to be merged), until none is left. Tests are cached per arc and redone
+// only for pairs a merge changed. Returns the number of
 // merges. Errors: CANCELLED on stop.
 absl::StatusOr<int> MergeBestPairs(
     const SegmentContext& c, std::vector<int>* labels, std::vector<RegionState>* regions,

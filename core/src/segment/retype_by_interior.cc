@@ -39,17 +39,18 @@ const ScoredFit* SimplestLimit(const SegmentContext& c, std::span<const ScoredFi
 // The curved type to give a region of type `own` with interior `interior`,
 // and its fit there: the simplest limit of `own` (IsLimitOf) that fits at
 // the noise and scores within kScoreMargin of the best type, since a more
-// general model beats its own limit by chance (test_piece's countersink at
-// 0.15 h, seed 9: cone 1.008 sigma, torus 0.997, scores -1118.1 and
-// -1119.0); else the best type if it scores kScoreMargin below `own`, or
-// the simplest limit of that type chosen the same way; else `own`.
+// general model beats its own limit by chance (on a noisy countersink band
+// a torus came 0.011 sigma closer than the cone, 0.997 against 1.008, and
+// scored 0.9 lower); else the best type if it scores kScoreMargin below
+// `own`, or the simplest limit of that type chosen the same way; else `own`.
 SurfaceType BestInteriorType(const SegmentContext& c, SurfaceType own,
                              const std::vector<int>& interior, FitResult* interior_fit) {
   const auto scored = ScoreCurvedTypes(c, interior);
   // Some type must fit at the noise, or near it and either far closer than
-  // `own` (seed 26's countersink at 0.15 h: torus 3.26 sigma, cone 0.28) or
-  // scoring kScoreMargin below it (stepped_shaft's chamfer at 0.15 h, seed
-  // 59: sphere 0.49 sigma, cone 0.26 sigma and 70 below), or a limit of
+  // `own` (a countersink band grown as a torus 3.26 sigma off, where the
+  // cone meets it at 0.28) or scoring kScoreMargin below it (a 45-degree
+  // chamfer band grown as a sphere 0.49 sigma off, where the cone meets it
+  // at 0.26 sigma and scores 70 lower), or a limit of
   // `own` scoring less than kScoreMargin above it, within kScoredNearError
   // (own's extra parameters must buy kScoreMargin): a round of a part
   // reconstructed from points, 0.85 sigma off its cylinder, would go to a
@@ -76,9 +77,10 @@ SurfaceType BestInteriorType(const SegmentContext& c, SurfaceType own,
   const double at_noise = kMinModelError * c.noise_sigma;
   // The simplest special case of `own` that does as well; or, near the
   // noise, that scores less than kScoreMargin above `own`: its extra
-  // parameters buy too little (test_piece's countersink at 0.15 h, seed 75:
-  // torus 0.39 sigma, cone 0.40 and 2.6 lower; seed 105: torus 0.38, cone
-  // 0.40 and 1.3 higher).
+  // parameters buy too little (on noisy countersink bands the torus and the
+  // cone both meet the interior at ~0.4 sigma, and their scores differ by
+  // one or two units either way: torus 0.39, cone 0.40 and 2.6 lower, or
+  // torus 0.38, cone 0.40 and 1.3 higher).
   const ScoredFit* simplest =
       SimplestLimit(c, scored, own, at_noise, best->score + kScoreMargin);
   if (simplest == nullptr) {
@@ -90,9 +92,9 @@ SurfaceType BestInteriorType(const SegmentContext& c, SurfaceType own,
     return simplest->type;
   }
   if (!(best->score + kScoreMargin < own_score)) return own;
-  // The best type may itself beat its own limit by chance (test_piece's
-  // countersink at 0.15 h, seed 47: a sphere whose interior scores torus
-  // -1295.7, cone -1294.2, both at the noise).
+  // The best type may itself beat its own limit by chance (a countersink
+  // band grown as a sphere, whose interior scores torus -1295.7 and cone
+  // -1294.2, both at the noise: the cone is the surface).
   if (const ScoredFit* limit_of_best =
           SimplestLimit(c, scored, best->type, at_noise, best->score + kScoreMargin)) {
     best = limit_of_best;
@@ -107,9 +109,9 @@ SurfaceType BestInteriorType(const SegmentContext& c, SurfaceType own,
 // scores kScoreMargin below `own`, or its simplest limit scoring within
 // kScoreMargin of it; else `own`. All of the vertices: without noise the
 // rims are as true as the interior, and on a narrow band they are what
-// tells a sphere from a cylinder (plate_holes' r 25.4 corner rounds, 4
-// edges high: on the interior the cylinder misses by 0.067 and the sphere
-// by 0.072; on all of it by 0.076 and 0.096).
+// tells a sphere from a cylinder (a CAD tessellation's corner rounds of
+// r 25.4, 4 edges high: on the interior the cylinder misses by 0.067 and
+// the sphere by 0.072; on all of it by 0.076 and 0.096).
 SurfaceType BestTypeOnFacets(const SegmentContext& c, SurfaceType own,
                              std::span<const int> vertices, FitResult* fit) {
   const auto scored = ScoreCurvedTypes(c, vertices);

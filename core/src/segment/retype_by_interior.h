@@ -1,9 +1,10 @@
-// Type decision on a region's interior (our addition to seeds 000 and 002).
+// Type decision on a region's interior (our addition to ALGORITHMS.md S1
+// and S2).
 // A region's outer row of vertices sits on the crease it shares with its
 // neighbour, which the mesh rounds off (marching cubes blurs it over a
 // voxel) and where n'_i turns toward the neighbour. On a narrow band between
-// two such creases those rows decide the type: stepped_shaft's 45-degree
-// chamfer (6 h wide) at 0.15 h fits a sphere (rms 1.06 sigma) better than
+// two such creases those rows decide the type: a 45-degree chamfer band
+// 6 h wide at sigma = 0.15 h fits a sphere (rms 1.06 sigma) better than
 // a cone (1.11 sigma) over all its vertices, and the alpha test, which
 // passes the sphere first, agrees. Without the outer row the cone fits at
 // the noise (0.98 sigma) and the sphere does not (1.02 sigma).
@@ -46,9 +47,9 @@ bool TypeMissesInterior(const SegmentContext& c, const std::vector<int>& labels,
 // sigma, scoring kScoreMargin below it (a sphere on a chamfer, 0.49 sigma,
 // the cone 0.26) or, for a limit of its own type, less than kScoreMargin
 // above it: on a noise-free or remeshed CAD mesh the residuals are the
-// meshing's, which a type with more parameters follows better (plate_holes'
-// countersinks would become tori), and on a mixed region the scores of
-// misfits say nothing.
+// meshing's, which a type with more parameters follows better (the
+// countersinks of a remeshed CAD part would become tori), and on a mixed
+// region the scores of misfits say nothing.
 // On a mesh whose vertices lie on facets (SegmentParams::on_facets) no type
 // fits at the noise; there the type of lowest score over all of the
 // region's vertices takes over if it scores kScoreMargin below its own, or

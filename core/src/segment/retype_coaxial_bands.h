@@ -1,10 +1,10 @@
-// A band on the axis of a turned face beside it (our addition to seeds 000
-// and 002). A countersink or a chamfer shares its bore's or shaft's axis by
-// design; fitted alone, a narrow band at 0.15 h can take a torus that beats
-// the cone it is by bending its axis and its profile into the noise
-// (test_piece's countersink, seed 172: the torus R 25.6, r 22.3, 19 below the
-// cone on the interior). On the axis of the face beside it the cone has 2
-// free parameters, not 6.
+// A band on the axis of a turned face beside it (our addition to
+// ALGORITHMS.md S1 and S2). A countersink or a chamfer shares its bore's or
+// shaft's axis by design; fitted alone, a narrow band at sigma = 0.15 h can
+// take a torus that beats the cone it is by bending its axis and its profile
+// into the noise (on a 45-degree countersink band between r 8 and 12: the
+// torus R 25.6, r 22.3, 19 below the cone on the interior). On the axis of
+// the face beside it the cone has 2 free parameters, not 6.
 #ifndef MESHSEG_SRC_SEGMENT_RETYPE_COAXIAL_BANDS_H_
 #define MESHSEG_SRC_SEGMENT_RETYPE_COAXIAL_BANDS_H_
 
@@ -25,7 +25,7 @@ namespace meshseg::segment_internal {
 // kScoredNearError sigmas and scores less than kScoreMargin above a torus
 // (the cone is its limit, IsLimitOf) or kScoreMargin below a sphere (or any
 // cone, if the region's own type has no valid fit there). Nothing happens
-// at noise 0. Returns the ids of the regions retyped.
+// when the estimated noise is zero. Returns the ids of the regions retyped.
 inline constexpr int kCoaxialConeParameters = 2;  // apex along the axis, half angle
 
 std::vector<int> RetypeCoaxialBands(const SegmentContext& c, const std::vector<int>& labels,

@@ -91,7 +91,8 @@ std::vector<int> RetypeInaccurateCurved(const SegmentContext& c,
     TypedFit typed = plane.fraction > c.alpha ? plane : DecideCurvedType(c, smooth, c.tolerance);
     // With no valid fit left, a type that fits kStaleTypeFraction will do:
     // the boundary refinement that follows hands the rest to the
-    // neighbours (a small flat face holds the first rows of its edge round).
+    // neighbours (a plane annulus retyped from a torus holds the first rows
+    // of its convex edge round).
     double needed = c.alpha;
     if (!current.ok() && !(typed.fraction > c.alpha)) {
       needed = kStaleTypeFraction;

@@ -14,7 +14,7 @@ inline constexpr std::size_t kMinRetypeVertices = 10;
 
 // Gives general-quadric regions the first analytic type passing the alpha
 // test on their non-sharp vertices (regions change after absorption and
-// merging, so seed 000 §3 step 5 is asked again).
+// merging, so ALGORITHMS.md S1 step 2.5 is asked again).
 void RetypeQuadrics(const SegmentContext& c, std::vector<RegionState>* regions);
 
 // Gives plane regions that their plane no longer fits (the alpha test fails
@@ -30,13 +30,15 @@ bool RetypeCurved(const SegmentContext& c, RegionState* r);
 
 // Gives a curved region whose fit misses it by more than kInaccurateError
 // noise sigmas beyond the noise (ModelError), or that its type no longer
-// fits validly, the type of seed 000's order on its non-sharp vertices (the
-// plane, else DecideCurvedType's), if that passes the alpha test with under
-// half the model error. A seed on a long noisy cone can grow as a sphere
-// that passes the tolerances (at 0.15 h a sphere 1.0 sigma off a long
-// cone band the cone meets at the noise); a torus typed on a ring at the
-// rim of a small round flat face can be grown over the whole disc, where
-// only a spindle torus with its cusp inside fits. Returns the ids retyped.
+// fits validly, the type of ALGORITHMS.md S1's order (step 2.5) on its
+// non-sharp vertices (the plane, else DecideCurvedType's), if that passes
+// the alpha test with under half the model error. A seed on a noisy cone can
+// grow as a sphere that passes the tolerances (a 45-degree cone joining
+// coaxial cylinders of radius 12 and 8, at sigma = 0.15 h: a sphere of
+// r 14.7, model error 1.0 sigma, where the cone's is 0); a torus typed on a
+// ring at the rim of a plane annulus (the flat top of a turned cylinder with
+// a convex edge round) can be grown over the whole top, where only a
+// spindle torus with its cusp inside fits. Returns the ids retyped.
 std::vector<int> RetypeInaccurateCurved(const SegmentContext& c,
                                         std::vector<RegionState>* regions);
 

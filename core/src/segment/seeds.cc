@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <utility>
 
 #include <tbb/blocked_range.h>
 #include <tbb/enumerable_thread_specific.h>
@@ -34,14 +35,18 @@ std::vector<int> SeedOrder(const SegmentContext& c) {
       d[i] = dev / s.ids.size() * k.mean_edge_length[i];
     }
   });
-  std::vector<int> order;
-  order.reserve(n);
+  // Ties in d keep the vertex order (the stable order), on both cores. The
+  // key (d, vertex) is a strict total order (d is finite), so the sorted
+  // order is unique whatever the algorithm; sorting the keys themselves
+  // compares contiguous pairs instead of looking d up at random.
+  std::vector<std::pair<double, int>> keyed;
+  keyed.reserve(n);
   for (int i = 0; i < n; ++i) {
-    if (!k.sharp[i]) order.push_back(i);
+    if (!k.sharp[i]) keyed.emplace_back(d[i], i);
   }
-  // Ties in d keep the vertex order (the stable order), on both cores.
-  tbb::parallel_sort(order.begin(), order.end(),
-                     [&](int a, int b) { return d[a] < d[b] || (d[a] == d[b] && a < b); });
+  tbb::parallel_sort(keyed.begin(), keyed.end());
+  std::vector<int> order(keyed.size());
+  for (std::size_t j = 0; j < keyed.size(); ++j) order[j] = keyed[j].second;
   return order;
 }
 

@@ -1,4 +1,4 @@
-// Seeds of seed 000 §3 step 1: vertices ordered by the mean absolute
+// Seeds of ALGORITHMS.md S1 step 2.1: vertices ordered by the mean absolute
 // deviation d(i) of kappa_max over N(i, W3), and the seed N(i, W4) of
 // non-sharp free vertices around the chosen one.
 #ifndef MESHSEG_SRC_SEGMENT_SEEDS_H_
@@ -10,9 +10,9 @@
 
 namespace meshseg::segment_internal {
 
-inline constexpr double kW3 = 3.0;      // seed 000 §3 step 1
-inline constexpr double kW4 = 3.0;      // seed 000 §3 step 1
-inline constexpr std::size_t kMinSeed = 10;  // th_seed, seed 000 §3 step 1
+inline constexpr double kW3 = 3.0;      // ALGORITHMS.md S1 step 2.1
+inline constexpr double kW4 = 3.0;      // ALGORITHMS.md S1 step 2.1
+inline constexpr std::size_t kMinSeed = 10;  // th_seed, ALGORITHMS.md S1 step 2.1
 
 // Returns the non-sharp vertices by increasing d(i) (ties by index).
 std::vector<int> SeedOrder(const SegmentContext& c);

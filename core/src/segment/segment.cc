@@ -1,5 +1,6 @@
-// Segment(): checks the params, derives the tolerances, then runs seed 000
-// §3-4 with seed 002's leftover absorption and face labels, in order.
+// Segment(): checks the params, derives the tolerances, then runs
+// ALGORITHMS.md S1 steps 2-3 with S2's leftover absorption and face labels,
+// in order.
 #include "meshseg/segment.h"
 
 #include <cmath>
@@ -65,7 +66,8 @@ absl::StatusOr<int> MergeAndDrop(const segment_internal::SegmentContext& c,
   }
 }
 
-// MergeAndDrop, then seed 000's type decision for the general quadrics left.
+// MergeAndDrop, then ALGORITHMS.md S1's type decision (step 2.5) for the
+// general quadrics left.
 absl::Status Merge(const segment_internal::SegmentContext& c, std::vector<int>* labels,
                    std::vector<segment_internal::RegionState>* regions) {
   MESHSEG_RETURN_IF_ERROR(MergeAndDrop(c, labels, regions).status());
@@ -174,9 +176,10 @@ absl::StatusOr<Segmentation> Segment(const Mesh& mesh, const CurvatureField& cur
   if (!GiveBackRows(c, &labels, &regions).empty()) {
     MESHSEG_RETURN_IF_ERROR(RefineBoundaries(c, &labels, &regions));
   }
-  // A small face across a crease that a curved region absorbed (the flat
-  // top of a boss in a piece of its cone) becomes a plane of its own; the rest of the
-  // region is then typed on its interior like every other.
+  // A small face across a crease that a curved region absorbed (a small
+  // plane disc on top of a conical frustum, in a piece of the cone) becomes
+  // a plane of its own; the rest of the region is then typed on its
+  // interior like every other.
   SplitOffPlanes(c, &labels, &regions);
   // The outer rows of a narrow band can decide its type (a chamfer between
   // rounded creases passes as a sphere); its interior tells.

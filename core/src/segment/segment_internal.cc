@@ -28,8 +28,8 @@ std::vector<double> VertexAreas(const TriMesh& mesh) {
 // True if `torus` is a spindle torus (tube radius above the major radius)
 // and some of `points` lie within r - R of its axis, where its two sheets
 // meet in a cusp. Such a fit bends a flat disc with a small step to its rim
-// (plate_boss's boss top with the first rows of its edge round: R 6.5,
-// r 88); no machined surface has that shape.
+// (a plane annulus with the first rows of the convex round along its outer
+// rim: R 6.5, r 88); no machined surface has that shape.
 bool ReachesSpindleCusp(const Torus& torus, std::span<const Eigen::Vector3d> points) {
   const double inner = torus.minor_radius - torus.major_radius;
   if (!(inner > 0.0)) return false;

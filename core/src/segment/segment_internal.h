@@ -1,6 +1,7 @@
 // What the steps of the segment stage share: the mesh as a vertex graph with
 // per-vertex normals and areas, the derived tolerances, the (5)/(6) test of
-// seed 000 and the per-type fit over a (sub-sampled) vertex set.
+// ALGORITHMS.md S1 step 2.2 and the per-type fit over a (sub-sampled) vertex
+// set.
 #ifndef MESHSEG_SRC_SEGMENT_SEGMENT_INTERNAL_H_
 #define MESHSEG_SRC_SEGMENT_SEGMENT_INTERNAL_H_
 
@@ -38,7 +39,7 @@ inline bool IsCurved(SurfaceType type) {
 // True for the plane and the curved analytic types (not the quadric).
 inline bool IsAnalytic(SurfaceType type) { return type == SurfaceType::kPlane || IsCurved(type); }
 
-// Thresholds of seed 000 eqs. (5) and (6).
+// Thresholds of ALGORITHMS.md S1 eqs. (5) and (6) (step 2.2).
 struct Tolerance {
   double distance = 0.0;  // th_dis, model units
   double cos_angle = 1.0; // cos(th_nm)
@@ -52,7 +53,7 @@ struct SegmentContext {
   double noise_sigma = 0.0;                   // estimated, model units
   Tolerance tolerance;                        // the base (5)/(6) thresholds
   double angle_tolerance_deg = 0.0;
-  double alpha = 0.9;                         // seed 000 §3 step 3
+  double alpha = 0.9;                         // ALGORITHMS.md S1 step 2.3
   bool on_facets = false;                     // SegmentParams::on_facets
   const RunContext* run = nullptr;
 
@@ -105,12 +106,12 @@ inline constexpr int kPieceBridge = 2;
 // The piece of `vertices` that holds the most of `seed`, in the order of
 // `vertices`: connected over mesh edges within the set and the seed, and
 // across up to kPieceBridge vertices outside both. A fit's vertices can lie
-// in pieces: on plate_holes.stl (jittered by 1e-12) a cone tangent to two
-// sides along lines through the corner fitted both sides' strips, and not
-// the corner round between them, 24 rows wide. The seed is walked over as
-// part of the set, as a fit need not explain the seed itself (a seed
-// trial's fit of test_piece's boss top at 0.15 h held 5 of its 11 seed
-// vertices); empty when no vertex of the set is in the seed's piece.
+// in pieces: on a CAD tessellation (jittered by 1e-12) a cone tangent to
+// two plane sides along lines through their corner fitted both sides'
+// strips, and not the corner round between them, 24 rows wide. The seed is
+// walked over as part of the set, as a fit need not explain the seed itself
+// (a seed trial's fit on a small plane disc at sigma = 0.15 h held 5 of its
+// 11 seed vertices); empty when no vertex of the set is in the seed's piece.
 std::vector<int> PieceHoldingSeed(const SegmentContext& c, std::span<const int> vertices,
                                   std::span<const int> seed);
 
@@ -122,9 +123,10 @@ double SquaredDistances(const SegmentContext& c, const Surface& surface,
 // kappa_max has one sign at kCurvedSignShare of them, and its direction is
 // shared (the largest eigenvalue of the mean d d^T is at least
 // kCurvedDirection; 1/2 for directions spread in the tangent plane). A strip
-// of a round that a plane fits within the tolerances (rounded_prism at
-// 0.15 h) scores 0.96-1.0 and 0.92-0.97; flat faces have direction 0.5-0.76
-// (the noise biases kappa on them to one sign at 60-95 % of the vertices).
+// of a round that a plane fits within the tolerances (a 60-degree round of
+// r 11 h at sigma = 0.15 h) scores 0.96-1.0 and 0.92-0.97; flat faces have
+// direction 0.5-0.76 (the noise biases kappa on them to one sign at 60-95 %
+// of the vertices).
 bool CurvedField(const SegmentContext& c, std::span<const int> vertices);
 inline constexpr double kCurvedSignShare = 0.9;
 inline constexpr double kCurvedDirection = 0.85;

@@ -13,7 +13,7 @@
 #include <tbb/parallel_for.h>
 
 #include "meshseg/fit.h"
-#include "segment/exact_hypotheses.h"
+#include "segment/exact_fit.h"
 
 namespace meshseg::segment_internal {
 namespace {

@@ -20,8 +20,9 @@ constexpr std::size_t kDirectionSamples = 200;
 constexpr int kSplitRounds = 3;
 // A junction is a crease at min(th_bnd, this many th_nm): measured on
 // fitted surfaces, a tangent junction stays within a row's turn (9 degrees
-// on plate_boss's boss fillet at 0.05 h, th_nm 5), the boss top's crease
-// (69 degrees) comes out at 40-51 against a quadric or sphere bent toward it.
+// on a concave torus fillet of r 8 h at sigma = 0.05 h, th_nm 5), while a
+// 69-degree crease between a small plane disc and a cone comes out at 40-51
+// against a quadric or sphere bent toward it.
 constexpr double kCreaseAngles = 3.0;
 
 struct Split {
@@ -89,10 +90,10 @@ constexpr int8_t kOnRest = 1;
 // Puts every vertex of `vertices` whose neighbours are all of `vertices`
 // and all on the other side on that side (decided on the sides as they
 // were). Where the curved fit passes close to the flat face, the noise
-// leaves single vertices of the face nearer to it: test_piece's boss top at
-// 0.15 h (seed 56) kept 100 of its 115 vertices with the plane, but the
-// holes left it 21 interior vertices, and the last release took it for a
-// strip (ReleaseNarrowPlanes).
+// leaves single vertices of the face nearer to it: a small plane disc at
+// sigma = 0.15 h kept 100 of its 115 vertices with the plane, but the holes
+// left it 21 interior vertices, too few for its interior to tell it from a
+// strip (kMinInteriorVertices).
 void FillOneVertexHoles(const SegmentContext& c, const std::vector<int>& vertices,
                         std::vector<int8_t>* side) {
   std::vector<int> flip;
@@ -119,10 +120,10 @@ std::optional<Split> FindSplit(const SegmentContext& c, const RegionState& r) {
         .push_back(v);
   }
   // The face itself must be flat, near the noise: the rows the tests add
-  // along the crease are rounded by the meshing (test_piece's boss top at
-  // 0.15 h, seeds 261 and 385: its plane 0.41 and 0.36 sigma off the 58 and
-  // 52 vertices the tests give it; on 261 the rounds below end with 78). The
-  // crease and the scores of step 3 decide.
+  // along the crease are rounded by the meshing (a small plane disc beside
+  // a 69-degree crease, at sigma = 0.15 h: its plane 0.36 to 0.41 sigma off
+  // the 52 to 58 vertices the tests give it, up to 78 after the rounds
+  // below). The crease and the scores of step 3 decide.
   if (s.on_plane.size() < kMinInteriorVertices ||
       !FitsNearNoise(c, FitType(c, SurfaceType::kPlane, s.on_plane))) {
     return std::nullopt;

@@ -1,12 +1,12 @@
-// Splitting a flat face off a region grown over it (our addition to seeds
-// 000 and 002). A small face across a crease from a curved one can be
-// absorbed by it: test_piece's boss top (a disc of radius 5 h, 183 faces)
-// at 0.15 h has no seed that passes the plane test, since N'(i, W2) of every
-// vertex on it reaches over the rim and bends n'_i; its vertices end in a
-// piece of the boss cone, typed sphere or quadric for the mix, and the cone
-// comes in pieces no type joins. The raw normals n_i still tell the face:
-// on the top they scatter about its normal, on the cone they lie 69 degrees
-// away.
+// Splitting a flat face off a region grown over it (our addition to
+// ALGORITHMS.md S1 and S2). A small face across a crease from a curved one
+// can be absorbed by it: a plane disc of radius 5 h (183 faces) on top of a
+// conical frustum, at sigma = 0.15 h, has no seed that passes the plane test,
+// since N'(i, W2) of every vertex on it reaches over the rim and bends n'_i;
+// its vertices end in a piece of the cone, typed sphere or quadric for the
+// mix, and the cone comes in pieces no type joins. The raw normals n_i still
+// tell the face: on the top they scatter about its normal, on the cone they
+// lie 69 degrees away.
 #ifndef MESHSEG_SRC_SEGMENT_SPLIT_OFF_PLANES_H_
 #define MESHSEG_SRC_SEGMENT_SPLIT_OFF_PLANES_H_
 
@@ -33,8 +33,9 @@ namespace meshseg::segment_internal {
 //     and rest explain the region better than its type alone
 //     (InformationScore, by kScoreMargin).
 // A quadric region left without the plane gets the curved type that passes
-// the alpha test on the rest, if any. Nothing happens at noise 0. Returns
-// the ids of the regions split (their planes are appended to `regions`).
+// the alpha test on the rest, if any. Nothing happens when the estimated
+// noise is zero. Returns the ids of the regions split (their planes are
+// appended to `regions`).
 std::vector<int> SplitOffPlanes(const SegmentContext& c, std::vector<int>* labels,
                                 std::vector<RegionState>* regions);
 

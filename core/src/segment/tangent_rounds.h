@@ -1,12 +1,12 @@
-// Rounds between two flat faces (our addition to seeds 000 and 002). A
-// round is tangent to the faces it joins by design, but a cylinder fitted
-// alone to its region gets all five of its values from a narrow arc: on
-// rounded_prism at 0.15 h (seeds 226, 235) a quarter round of r 4 (a
-// 65-degree arc, 11 voxels) kept a 55-degree arc of it after the tangent
-// rows went to the planes (both fit those rows within the noise) and came
-// out r 3.74 and 4.28, 0.75 h off; fitted tangent to the two planes, the
-// radius is the one value left and the planes' thousands of vertices fix the
-// rest.
+// Rounds between two flat faces (our addition to ALGORITHMS.md S1 and S2,
+// after S2's fillet recognition FLT3). A round is tangent to the faces it
+// joins by design, but a cylinder fitted alone to its region gets all five
+// of its values from a narrow arc: at sigma = 0.15 h a round of r 4 between
+// two planes (a 65-degree arc, 11 voxels) kept a 55-degree arc of it after
+// the tangent rows went to the planes (both fit those rows within the noise)
+// and came out r 3.74 to 4.28, 0.75 h off; fitted tangent to the two planes,
+// the radius is the one value left and the planes' thousands of vertices fix
+// the rest.
 #ifndef MESHSEG_SRC_SEGMENT_TANGENT_ROUNDS_H_
 #define MESHSEG_SRC_SEGMENT_TANGENT_ROUNDS_H_
 
@@ -17,17 +17,17 @@
 namespace meshseg::segment_internal {
 
 // For every cylinder region, each pair of plane regions around it whose
-// normals are within kCoaxialMaxAngleDeg of square to its axis and at
-// least kMinRoundAngleDeg apart is a candidate: the cylinder tangent to both
-// (FitCylinderTangentToPlanes, on the side of each its own axis lies on)
-// is fitted to its interior vertices (InteriorVertices) that meet (5) and
-// (6) for its surface (sub-sampled). The best pair's fit replaces the surface if it raises the
-// sum of squared distances by at most kCoaxialChiSquare times the residual
-// variance of the cylinder fitted freely to the same vertices: tangency fixes
-// the same 4 values (axis direction and position) an axis shared with a
-// coaxial neighbour does, so a round that meets a face at an angle (a
-// cylinder cut by a plane, not blended into it) keeps its own. Returns the
-// ids of the regions whose surface changed.
+// normals are within kCoaxialMaxAngleDeg of square to its axis and at least
+// kMinRoundAngleDeg apart is a candidate: the cylinder tangent to both
+// (FitCylinderTangentToPlanes, on the side of each its own axis lies on) is
+// fitted to its interior vertices (InteriorVertices) that meet (5) and (6)
+// for its surface (sub-sampled). The best pair's fit replaces the surface if
+// it raises the sum of squared distances by at most kCoaxialChiSquare times
+// the residual variance of the cylinder fitted freely to the same vertices:
+// tangency fixes the same 4 values (axis direction and position) an axis
+// shared with a coaxial neighbour does, so a round that meets a face at an
+// angle (a cylinder cut by a plane, not blended into it) keeps its own.
+// Returns the ids of the regions whose surface changed.
 std::vector<int> FitRoundsTangentToPlanes(const SegmentContext& c, const std::vector<int>& labels,
                                           std::vector<RegionState>* regions);
 

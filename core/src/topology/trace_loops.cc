@@ -2,6 +2,10 @@
 
 #include <cassert>
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/parallel_invoke.h>
+
 #include "topology/chain_curves.h"
 
 namespace meshseg::topology_internal {
@@ -57,14 +61,29 @@ TracedLoops TraceLoops(const TriMesh& mesh, std::span<const int> face_labels,
                        std::span<const int> halfedge_curve, int region_count) {
   TracedLoops out;
   out.patch_count.assign(region_count, 0);
-  LabelPatches(mesh, face_labels, &out);
+  // Which halfedges can start a loop (a labelled face on the left, another
+  // label across) is a test of each halfedge alone: flag them in parallel,
+  // beside the (serial) patch flood fill, and walk only the flagged ones in
+  // index order, so the loops come out exactly as from a scan of all.
+  std::vector<char> boundary(mesh.n_halfedges(), 0);
+  tbb::parallel_invoke(
+      [&] { LabelPatches(mesh, face_labels, &out); },
+      [&] {
+        tbb::parallel_for(tbb::blocked_range<int>(0, static_cast<int>(mesh.n_halfedges()), 1 << 14),
+                          [&](const tbb::blocked_range<int>& range) {
+                            for (int i = range.begin(); i < range.end(); ++i) {
+                              const HalfedgeHandle h(i);
+                              const FaceHandle f = mesh.face_handle(h);
+                              boundary[i] = f.is_valid() && face_labels[f.idx()] >= 0 &&
+                                            IsBoundaryHalfedge(mesh, face_labels, h);
+                            }
+                          });
+      });
   std::vector<char> visited(mesh.n_halfedges(), 0);
-  for (HalfedgeHandle start : mesh.halfedges()) {
+  for (int i = 0; i < static_cast<int>(mesh.n_halfedges()); ++i) {
+    if (!boundary[i] || visited[i]) continue;
+    const HalfedgeHandle start(i);
     const FaceHandle f = mesh.face_handle(start);
-    if (!f.is_valid() || face_labels[f.idx()] < 0 || visited[start.idx()] ||
-        !IsBoundaryHalfedge(mesh, face_labels, start)) {
-      continue;
-    }
     Loop loop;
     loop.id = static_cast<int>(out.loops.size());
     loop.region = face_labels[f.idx()];

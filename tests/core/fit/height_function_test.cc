@@ -1,6 +1,8 @@
+#include <array>
 #include <cmath>
 #include <vector>
 
+#include <Eigen/Eigenvalues>
 #include <gtest/gtest.h>
 
 #include "meshseg/fit.h"
@@ -54,6 +56,60 @@ TEST(FitHeightFunction, DegenerateInputIsInvalid) {
   EXPECT_FALSE(FitHeightFunction(pts, Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()).valid);
   const HeightFunction bad = FitHeightFunction(line, Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitZ());
   for (double a : bad.a) EXPECT_TRUE(std::isfinite(a));
+}
+
+// z = 0.1 x^2 - 0.2 y^2 + 0.3 x + 0.5 on 40 points around the unit circle,
+// the radius varied by `ripple` sin(7 t). On the circle (ripple 0) the
+// columns u^2, w^2 and 1 of the normal equations are dependent, so the
+// height function is not determined.
+std::vector<Eigen::Vector3d> AroundCircle(double ripple) {
+  std::vector<Eigen::Vector3d> pts;
+  for (int k = 0; k < 40; ++k) {
+    const double t = 2.0 * M_PI * k / 40.0;
+    const double r = 1.0 + ripple * std::sin(7.0 * t);
+    const double x = r * std::cos(t), y = r * std::sin(t);
+    pts.emplace_back(x, y, 0.1 * x * x - 0.2 * y * y + 0.3 * x + 0.5);
+  }
+  return pts;
+}
+
+// Smallest / largest eigenvalue of the normal equations FitHeightFunction
+// solves (u, w at unit RMS) for points given in the frame's coordinates.
+double EigenvalueRatio(const std::vector<Eigen::Vector3d>& pts) {
+  double r2 = 0.0;
+  for (const auto& p : pts) r2 += p.x() * p.x() + p.y() * p.y();
+  const double s = std::sqrt(r2 / pts.size());
+  Eigen::Matrix<double, 6, 6> m = Eigen::Matrix<double, 6, 6>::Zero();
+  for (const auto& p : pts) {
+    const double u = p.x() / s, w = p.y() / s;
+    Eigen::Matrix<double, 6, 1> phi;
+    phi << u * u, w * w, u * w, u, w, 1.0;
+    m += phi * phi.transpose();
+  }
+  const Eigen::Matrix<double, 6, 1> ev = Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, 6, 6>>(m).eigenvalues();
+  return ev(0) / ev(5);
+}
+
+TEST(FitHeightFunction, PointsOnACircleAreSingular) {
+  const auto pts = AroundCircle(0.0);
+  ASSERT_LT(EigenvalueRatio(pts), 1e-12);
+  EXPECT_FALSE(FitHeightFunction(pts, Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitZ()).valid);
+}
+
+// Near the singularity limit (eigenvalue ratio 1e-10) but above it, the
+// fit is made and exact: the data lie on a quadratic, so any backward
+// stable solve of a system of condition ~1e8 reproduces it to ~1e-8.
+TEST(FitHeightFunction, NearlySingularButAboveTheLimitFitsExactly) {
+  const auto pts = AroundCircle(3e-4);
+  const double ratio = EigenvalueRatio(pts);
+  ASSERT_GT(ratio, 1e-10);
+  ASSERT_LT(ratio, 1e-6);
+  HeightFunction h;
+  ASSERT_TRUE(HeightFrame(Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitZ(), &h));
+  FitHeightInFrame(pts, {}, &h);  // the frame's own coordinates
+  ASSERT_TRUE(h.valid);
+  const std::array<double, 6> want = {0.1, -0.2, 0.0, 0.3, 0.0, 0.5};
+  for (int i = 0; i < 6; ++i) EXPECT_NEAR(h.a[i], want[i], 1e-6) << i;
 }
 
 TEST(ProjectHeightFunction, DistanceAlongNormal) {

@@ -132,6 +132,45 @@ TEST_F(RefineOnPointsTest, MaxFacesLengthensTheEdges) {
   EXPECT_LT(fine->tri.n_faces(), 1.5 * kMaxFaces);
 }
 
+// A coarse mesh far inside the points, as marching-tetrahedra triangles
+// between large supports are on a dense sample: the sphere shrunk to a
+// quarter, 30 spacings from every point, beyond any projection's reach.
+// Newton steps take its vertices onto f = 0 however far that is (ten steps
+// of a projection radius left them 5 h short); where the points fill the
+// projection neighbourhood there, they end on the points like every other
+// vertex, elsewhere they stay on f = 0 (on this coarse grid up to ~1.4 h
+// off the sphere).
+TEST_F(RefineOnPointsTest, VerticesFarInsideGoOntoTheImplicitAndThenOntoThePoints) {
+  const double h = Spacing();
+  ReconstructParams params;
+  params.sharp_creases = false;  // no normals given
+  const std::vector<Eigen::Vector3d> points = SpherePoints();
+  const mesh_internal::PointIndex index(points);
+  Mesh coarse = CoarseSphere();
+  for (const auto v : coarse.tri.vertices()) coarse.tri.set_point(v, 0.25 * coarse.tri.point(v));
+  ReconstructStats stats;
+  const absl::StatusOr<Mesh> fine =
+      RefineOnPoints(coarse, points, {}, index, f_, h, params, {}, &stats);
+  ASSERT_TRUE(fine.ok()) << fine.status();
+  const TriMesh& m = fine->tri;
+  const double r = params.projection_radius * h;
+  int64_t on_points = 0;
+  for (const auto v : m.vertices()) {
+    const Eigen::Vector3d x = ToEigen(m.point(v));
+    if (std::abs(x.norm() - (kRadius - r * r / (8 * kRadius))) < 0.1 * h) {
+      ++on_points;
+    } else {
+      ASSERT_LT(std::abs(f_(x)), 0.01 * h)
+          << "vertex " << v.idx() << " neither on the points nor on f = 0";
+    }
+  }
+  EXPECT_GT(on_points, m.n_vertices() / 2);  // 78 % measured
+  EXPECT_EQ(stats.unsupported_vertex_count, static_cast<int64_t>(m.n_vertices()) - on_points);
+  for (const auto e : m.edges()) ASSERT_FALSE(m.is_boundary(e));
+  ::testing::Test::RecordProperty("on_points",
+                                  std::to_string(on_points) + "/" + std::to_string(m.n_vertices()));
+}
+
 // Points on the upper part only, as if the scanner never saw the rest:
 // vertices over kFallbackReach projection radii from every point go onto
 // f = 0 instead (the grid supports put it near the unit sphere).
@@ -244,8 +283,10 @@ std::vector<Eigen::Vector3d> SteppedBlockEdgePoints(double margin) {
 // edges' p95 distance to the reconstruction, away from the corners (three
 // planes, not modelled), over 2 sp rounded (sharp_creases off: one plane
 // per vertex; 3.2 sp at 8000 points) and 0.61 sp sharp on the clean cloud,
-// 1.08 sp sharp on the noisy one; the whole surface's accuracy p95 0.41 and
-// 0.71 sp.
+// 1.08 sp sharp on the noisy one; the whole surface's accuracy p95 0.30 and
+// 0.72 sp. The clean bound guards the halving of stretched crease edges to
+// convergence: stopped after four rounds, tents across the edges stayed and
+// the clean accuracy was 0.41 sp.
 TEST(SharpCreases, TheEdgesOfASteppedBlockStaySharp) {
   const test::Shape block = SteppedBlock();
   const std::vector<Eigen::Vector3d> edge_points = SteppedBlockEdgePoints(0.1);
@@ -253,7 +294,7 @@ TEST(SharpCreases, TheEdgesOfASteppedBlockStaySharp) {
   struct Case {
     double noise, max_edges, max_accuracy;  // noise in spacings, bounds in sp
   };
-  for (const Case c : {Case{0.0, 0.75, 0.5}, Case{0.1, 1.5, 1.0}}) {
+  for (const Case c : {Case{0.0, 0.75, 0.375}, Case{0.1, 1.5, 1.0}}) {
     const PointCloud cloud = test::MakeCloud(block, {.points = 6000, .noise = c.noise});
     const double sp = test::MedianSpacing(cloud.points);
     const auto sharp = Reconstruct(cloud);

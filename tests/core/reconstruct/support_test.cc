@@ -1,12 +1,16 @@
 #include "reconstruct/support.h"
 
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
 
 #include "mesh/point_index.h"
+#include "meshseg/generate.h"
+#include "meshseg/reconstruct.h"
 #include "reconstruct/surface_mesh.h"
+#include "surface_metrics.h"
 
 namespace meshseg::reconstruct_internal {
 namespace {
@@ -49,10 +53,12 @@ double CentroidX(const TriMesh& tri, TriMesh::FaceHandle f) {
 
 // On a square grid of spacing a the mean distance to the 6 nearest is
 // (4 a + 2 √2 a) / 6 = 1.14 a inside, (3 a + 2 √2 a + 2 a) / 6 = 1.30 a on
-// the last row and (2 a + √2 a + 2 · 2 a + 2 √5 a) / 6 = 1.61 a at a corner:
-// sampling is sparser at the edge of the sampled area. The support reaches
-// 2 × that (plus the band) past the last row of points.
-TEST(SupportedFaces, FacesBeyondTwoLocalSpacingsOfTheSampledAreaAreUnsupported) {
+// the last row and (2 a + √2 a + 2 · 2 a + 2 √5 a) / 6 = 1.61 a at a corner.
+// Inside the sampled area every centroid is supported; past its last row the
+// support reaches half a local spacing along the surface, not 2 × that plus
+// the band (the true border lies between the last row and the next, missing
+// one).
+TEST(SupportedFaces, PastTheSampledAreaOnlyHalfASpacingIsSupported) {
   const Mesh strip = Strip(0.02);
   const double a = 0.05;
   const std::vector<Eigen::Vector3d> points = HalfCovered(a);
@@ -60,36 +66,96 @@ TEST(SupportedFaces, FacesBeyondTwoLocalSpacingsOfTheSampledAreaAreUnsupported) 
   const double band = 0.01;
   const std::vector<uint8_t> supported = SupportedFaces(strip.tri, points, index, 2.0, band);
   ASSERT_EQ(supported.size(), strip.tri.n_faces());
-  const double reach = 2.0 * 1.61 * a + band;  // 0.171
+  int past = 0;
   for (const auto f : strip.tri.faces()) {
     const double x = CentroidX(strip.tri, f);
-    // Up to 0.1 past the last row a face is within √(0.1² + 0.025²) = 0.103
-    // of a point whose reach is at least 2 × 1.30 a + band = 0.14.
-    if (x < 1.1) EXPECT_TRUE(supported[f.idx()]) << "x " << x;
-    // Off the sampled area the nearest point is at least x − 1 away.
-    if (x - 1.0 > reach) EXPECT_FALSE(supported[f.idx()]) << "x " << x;
+    if (x < 1.0) {
+      EXPECT_TRUE(supported[f.idx()]) << "x " << x;
+    } else if (x - 1.0 > 0.041) {
+      // The nearest point is at least x − 1 away, more than half of any
+      // local spacing here (at most 0.5 × 1.61 a = 0.040); the isotropic
+      // reach 2 × 1.30 a + band = 0.14 would keep those up to 0.14.
+      past += x - 1.0 < 0.14;
+      EXPECT_FALSE(supported[f.idx()]) << "x " << x;
+    }
   }
+  EXPECT_GT(past, 100);
 }
 
-// The distance is relative to the density where the face is: the same gap is
-// supported next to sparse points and not next to dense ones.
-TEST(SupportedFaces, TheSameGapIsSupportedNextToSparsePointsOnly) {
+// Points on the unit square with no point within `radius` of its centre.
+std::vector<Eigen::Vector3d> WithHole(double spacing, double radius) {
+  std::vector<Eigen::Vector3d> points;
+  for (const Eigen::Vector3d& p : HalfCovered(spacing)) {
+    if ((p - Eigen::Vector3d(0.5, 0.5, 0.0)).norm() >= radius) points.push_back(p);
+  }
+  return points;
+}
+
+// Inside the sampled area a gap is judged relative to the density around it:
+// the same gap is supported among sparse points and not among dense ones
+// (its centroids are surrounded by points either way).
+TEST(SupportedFaces, TheSameGapIsSupportedAmongSparsePointsOnly) {
   const Mesh strip = Strip(0.02);
   int dense_supported = 0, sparse_supported = 0, probed = 0;
-  const std::vector<Eigen::Vector3d> dense = HalfCovered(0.025), sparse = HalfCovered(0.1);
+  const std::vector<Eigen::Vector3d> dense = WithHole(0.025, 0.13), sparse = WithHole(0.1, 0.13);
   const mesh_internal::PointIndex dense_index(dense), sparse_index(sparse);
   const std::vector<uint8_t> by_dense = SupportedFaces(strip.tri, dense, dense_index, 2.0, 0.0);
   const std::vector<uint8_t> by_sparse = SupportedFaces(strip.tri, sparse, sparse_index, 2.0, 0.0);
   for (const auto f : strip.tri.faces()) {
-    const double x = CentroidX(strip.tri, f);
-    if (x < 1.1 || x > 1.15) continue;  // 0.1-0.15 past the last row
+    Eigen::Vector3d c = Eigen::Vector3d::Zero();
+    for (const auto v : strip.tri.fv_range(f)) c += ToEigen(strip.tri.point(v)) / 3.0;
+    if ((c - Eigen::Vector3d(0.5, 0.5, 0.0)).norm() > 0.04) continue;
     ++probed;
     dense_supported += by_dense[f.idx()];
     sparse_supported += by_sparse[f.idx()];
   }
   ASSERT_GT(probed, 0);
-  EXPECT_EQ(dense_supported, 0);        // reach at most 2 × 1.61 × 0.025 = 0.081
-  EXPECT_EQ(sparse_supported, probed);  // reach 2 × 1.14 × 0.1 = 0.228
+  // Dense: the nearest point is over 0.09 away, its reach 2 s with s at most
+  // 1.61 × 0.025 on the hole's rim, 0.081. Sparse: within 0.19 of points whose s
+  // is at least 1.14 × 0.1, reach 0.228.
+  EXPECT_EQ(dense_supported, 0);
+  EXPECT_EQ(sparse_supported, probed);
+}
+
+// Issue 38 item 1, through the whole reconstruction: generated scans (four
+// views 35° above the part, range noise, grazing rays lost) of a turned part
+// never see its flat underside, which the reconstruction closes with a
+// patch. Measured in the cloud's median spacing sp against the part's truth:
+// accuracy p95 (the whole mesh, patches included) ≤ 3.5 sp and completeness
+// p95 of the visible truth (within 3 sp of a point) ≤ 5.5 sp, at once. With
+// the support reaching 2 s + band past the last samples, the walls ran on
+// below the true bottom and the patch closed there: accuracy p95 10.0 and
+// 9.5 sp on these two draws. (A membrane cannot follow an unseen region that
+// turns a corner or a curved underside; those still miss the bar.)
+TEST(SupportedFaces, TheUnseenFlatUndersideOfAScanIsClosedAtTheSeenBorder) {
+  for (const uint64_t seed : {1, 2}) {
+    const std::string part = "stepped_shaft";
+    ScanParams sp;
+    sp.points = 15000;
+    sp.seed = seed;
+    const auto scan = ScanPart(part, sp);
+    ASSERT_TRUE(scan.ok()) << scan.status();
+    const auto rec = Reconstruct(scan->cloud);
+    ASSERT_TRUE(rec.ok()) << rec.status();
+    EXPECT_GT(rec->stats.filled_area, 0.0) << part << ": the underside is closed";
+    const double spacing = test::MedianSpacing(scan->cloud.points);
+    const auto mesh = test::Triangles(rec->mesh.tri);
+    const auto truth = test::Triangles(scan->part.mesh.tri);
+    const test::SurfaceDistance to_mesh(mesh), to_truth(truth);
+    const mesh_internal::PointIndex index(scan->cloud.points);
+    std::vector<Eigen::Vector3d> visible;
+    for (const Eigen::Vector3d& p : test::AreaSamples(truth, 20000)) {
+      if ((scan->cloud.points[index.Closest(p)] - p).norm() <= 3.0 * spacing) visible.push_back(p);
+    }
+    const double accuracy =
+        test::Quantile(test::SortedDistances(test::AreaSamples(mesh, 20000), to_truth), 0.95);
+    const double completeness = test::Quantile(test::SortedDistances(visible, to_mesh), 0.95);
+    EXPECT_LE(accuracy, 3.5 * spacing) << part << ": accuracy p95 " << accuracy / spacing << " sp";
+    EXPECT_LE(completeness, 5.5 * spacing)
+        << part << ": completeness p95 " << completeness / spacing << " sp";
+    ::testing::Test::RecordProperty("accuracy_p95_sp_draw_" + std::to_string(seed),
+                                    std::to_string(accuracy / spacing));
+  }
 }
 
 }  // namespace

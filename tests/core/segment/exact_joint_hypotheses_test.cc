@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "meshseg/segment.h"
+#include "segment/exact_fit.h"
 #include "segment/exact_hypotheses.h"
 #include "segment/facet_mesh.h"
 
