@@ -5,69 +5,20 @@
 
 #include <gtest/gtest.h>
 
-#include "meshseg/curvature.h"
-#include "meshseg/generate.h"
-#include "segment/estimate_noise.h"
+#include "rounded_prism_truth.h"
 
 namespace meshseg::segment_internal {
 namespace {
 
-// rounded_prism at noise 0.15 h: six radius-3.5 fillets (about 10 h), each
-// tangent to two planes.
-class RefineBoundariesTest : public ::testing::Test {
- protected:
-  void SetUp() override {
-    absl::StatusOr<GeneratedPart> part = GeneratePart("rounded_prism", {.noise = 0.15, .seed = 7});
-    ASSERT_TRUE(part.ok()) << part.status();
-    part_ = *std::move(part);
-    absl::StatusOr<CurvatureField> field = EstimateCurvature(part_.mesh);
-    ASSERT_TRUE(field.ok()) << field.status();
-    field_ = *std::move(field);
-    estimates_ = EstimateNoise(field_, MeanEdgeLength(part_.mesh.tri), {});
-  }
-
-  // One region per true primitive, with the true surface, labelled with
-  // the primitive each vertex was generated on.
-  std::vector<RegionState> TrueRegions() const {
-    std::vector<RegionState> regions;
-    for (const PrimitiveTruth& p : part_.primitives) {
-      regions.push_back({.type = TypeOf(p.surface), .surface = p.surface, .vertices = {}, .alive = true});
-    }
-    return regions;
-  }
-
-  GeneratedPart part_;
-  CurvatureField field_;
-  SegmentEstimates estimates_;
-  RunContext run_;
-};
-
-bool IsPlane(const RegionState& r) { return r.type == SurfaceType::kPlane; }
+using RefineBoundariesTest = testing::RoundedPrismTruth;
 
 // What region growing does at high noise: every plane takes the first rings
 // of the fillets next to it. The refinement gives them back.
 TEST_F(RefineBoundariesTest, GivesFilletsBackTheRingsThePlanesTook) {
   const SegmentContext c = MakeSegmentContext(part_.mesh.tri, field_, estimates_, 0.9, run_);
-  std::vector<RegionState> regions = TrueRegions();
-  std::vector<int> labels = part_.vertex_primitive;
-  // Rings of fillet vertices that meet (5) and (6) for the plane next to
-  // them, as region growing from the plane would take them.
-  constexpr int kRings = 3;
-  std::vector<int> taken;
-  for (int ring = 0; ring < kRings; ++ring) {
-    std::vector<int> next = labels;
-    for (int v = 0; v < c.vertex_count(); ++v) {
-      if (labels[v] < 0 || IsPlane(regions[labels[v]])) continue;
-      for (const int u : c.graph.Neighbors(v)) {
-        if (labels[u] < 0 || !IsPlane(regions[labels[u]])) continue;
-        if (Fits(c, v, ProjectVertex(c, regions[labels[u]].surface, v), c.tolerance)) {
-          next[v] = labels[u];
-        }
-      }
-      if (next[v] != labels[v]) taken.push_back(v);
-    }
-    labels.swap(next);
-  }
+  std::vector<int> labels;
+  const std::vector<int> taken = PlanesTakeFilletRings(c, 3, &labels);
+  std::vector<RegionState> regions = regions_;
   ASSERT_GT(taken.size(), 1000u);
   RebuildVertexLists(labels, &regions);
 
@@ -93,7 +44,7 @@ TEST_F(RefineBoundariesTest, GivesFilletsBackTheRingsThePlanesTook) {
 // Vertices already on the right side of every boundary stay there.
 TEST_F(RefineBoundariesTest, LeavesTheTrueLabelsAlmostAlone) {
   const SegmentContext c = MakeSegmentContext(part_.mesh.tri, field_, estimates_, 0.9, run_);
-  std::vector<RegionState> regions = TrueRegions();
+  std::vector<RegionState> regions = regions_;
   std::vector<int> labels = part_.vertex_primitive;
   RebuildVertexLists(labels, &regions);
   ASSERT_TRUE(RefineBoundaries(c, &labels, &regions).ok());
@@ -107,7 +58,7 @@ TEST_F(RefineBoundariesTest, StopsWhenCancelled) {
   source.request_stop();
   const RunContext cancelled{.stop = source.get_token(), .on_progress = {}};
   const SegmentContext c = MakeSegmentContext(part_.mesh.tri, field_, estimates_, 0.9, cancelled);
-  std::vector<RegionState> regions = TrueRegions();
+  std::vector<RegionState> regions = regions_;
   std::vector<int> labels = part_.vertex_primitive;
   RebuildVertexLists(labels, &regions);
   EXPECT_EQ(RefineBoundaries(c, &labels, &regions).code(), absl::StatusCode::kCancelled);
