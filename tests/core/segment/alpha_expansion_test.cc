@@ -35,7 +35,7 @@ double DataAndSmoothness(const SegmentContext& c, const std::vector<int>& labels
   RebuildVertexLists(labels, &regions);
   double e = TotalEnergy(c, labels, regions);
   for (const RegionState& r : regions) {
-    if (r.alive) e -= LabelCost(r.type, r.vertices.size());
+    if (r.alive) e -= LabelCost(c, r.type, r.vertices.size());
   }
   return e;
 }
