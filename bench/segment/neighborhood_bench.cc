@@ -69,7 +69,7 @@ int main(int argc, char** argv) {
   }
   const meshseg::VertexGraph g = meshseg::BuildVertexGraph(mesh->tri);
   const meshseg::curvature_internal::OrderedGraph walk =
-      meshseg::curvature_internal::MortonOrdered(g);
+      meshseg::curvature_internal::MortonOrderedGraph(mesh->tri);
   const std::vector<uint8_t> sharp = walk.Permuted<uint8_t>(field->sharp);
   const int n = g.vertex_count();
   const std::vector<uint8_t> none;

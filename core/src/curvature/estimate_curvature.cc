@@ -97,12 +97,11 @@ absl::StatusOr<CurvatureField> EstimateCurvature(const Mesh& mesh, const Curvatu
     return absl::InvalidArgumentError(absl::StrCat("curvature: \"", mesh.name, "\" has no faces"));
   }
   const int n = static_cast<int>(mesh.tri.n_vertices());
-  const VertexGraph graph = BuildVertexGraph(mesh.tri);
   const curvature_internal::VertexFrames frames = curvature_internal::ComputeVertexFrames(mesh.tri);
-  // Both passes walk and fit in the Morton order (spatial_order.h): the same
-  // neighbourhoods and sums, with fewer waits on memory; results are stored
-  // under each vertex's own index.
-  const curvature_internal::OrderedGraph walk = curvature_internal::MortonOrdered(graph);
+  // Both passes and the filter walk and fit in the Morton order
+  // (spatial_order.h): the same neighbourhoods and sums, with fewer waits on
+  // memory; results are stored under each vertex's own index.
+  const curvature_internal::OrderedGraph walk = curvature_internal::MortonOrderedGraph(mesh.tri);
   const std::vector<double> area = walk.Permuted<double>(frames.area);
   CurvatureField field;
   field.kappa_max.assign(n, 0.0);
@@ -155,7 +154,7 @@ absl::StatusOr<CurvatureField> EstimateCurvature(const Mesh& mesh, const Curvatu
   }));
   if (params.filter_curvature) {
     MESHSEG_RETURN_IF_ERROR(ctx.CheckStop("curvature"));
-    curvature_internal::FilterCurvature(graph, &field);
+    curvature_internal::FilterCurvature(walk, &field);
   }
   ctx.Progress("curvature", 1.0);
   return field;

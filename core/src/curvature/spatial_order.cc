@@ -32,12 +32,13 @@ uint64_t Spread(uint64_t c) {
 
 }  // namespace
 
-OrderedGraph MortonOrdered(const VertexGraph& graph) {
-  const int n = graph.vertex_count();
+OrderedGraph MortonOrderedGraph(const TriMesh& mesh) {
+  const int n = static_cast<int>(mesh.n_vertices());
   OrderedGraph r;
   Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
   Eigen::Vector3d hi = -lo;
-  for (const Eigen::Vector3d& p : graph.positions) {
+  for (int v = 0; v < n; ++v) {
+    const Eigen::Vector3d p = ToEigen(mesh.point(TriMesh::VertexHandle(v)));
     if (!p.allFinite()) continue;
     lo = lo.cwiseMin(p);
     hi = hi.cwiseMax(p);
@@ -48,7 +49,7 @@ OrderedGraph MortonOrdered(const VertexGraph& graph) {
   std::vector<uint64_t> key(n);
   tbb::parallel_for(tbb::blocked_range<int>(0, n, 4096), [&](const tbb::blocked_range<int>& b) {
     for (int v = b.begin(); v < b.end(); ++v) {
-      const Eigen::Vector3d& p = graph.positions[v];
+      const Eigen::Vector3d p = ToEigen(mesh.point(TriMesh::VertexHandle(v)));
       const uint64_t code = Spread(Cell(p.x(), lo.x(), extent.x())) |
                             Spread(Cell(p.y(), lo.y(), extent.y())) << 1 |
                             Spread(Cell(p.z(), lo.z(), extent.z())) << 2;
@@ -58,27 +59,29 @@ OrderedGraph MortonOrdered(const VertexGraph& graph) {
   tbb::parallel_sort(key.begin(), key.end());
   r.order.resize(n);
   r.rank.resize(n);
-  tbb::parallel_for(tbb::blocked_range<int>(0, n, 4096), [&](const tbb::blocked_range<int>& b) {
-    for (int k = b.begin(); k < b.end(); ++k) {
-      const int v = static_cast<int>(key[k] & 0xffffffffu);
-      r.order[k] = v;
-      r.rank[v] = k;
-    }
-  });
   VertexGraph& g = r.graph;
   g.offsets.assign(n + 1, 0);
   g.positions.resize(n);
-  for (int k = 0; k < n; ++k) {
-    const int v = r.order[k];
-    g.offsets[k + 1] = g.offsets[k] + (graph.offsets[v + 1] - graph.offsets[v]);
-  }
-  g.neighbors.resize(graph.neighbors.size());
+  // Rows as BuildVertexGraph makes them, in OpenMesh's circulator order.
   tbb::parallel_for(tbb::blocked_range<int>(0, n, 4096), [&](const tbb::blocked_range<int>& b) {
     for (int k = b.begin(); k < b.end(); ++k) {
-      const int v = r.order[k];
-      g.positions[k] = graph.positions[v];
+      const TriMesh::VertexHandle vh(static_cast<int>(key[k] & 0xffffffffu));
+      r.order[k] = vh.idx();
+      r.rank[vh.idx()] = k;
+      g.positions[k] = ToEigen(mesh.point(vh));
+      int valence = 0;
+      for (auto it = mesh.cvv_iter(vh); it.is_valid(); ++it) ++valence;
+      g.offsets[k + 1] = valence;
+    }
+  });
+  for (int k = 0; k < n; ++k) g.offsets[k + 1] += g.offsets[k];
+  g.neighbors.resize(g.offsets[n]);
+  tbb::parallel_for(tbb::blocked_range<int>(0, n, 4096), [&](const tbb::blocked_range<int>& b) {
+    for (int k = b.begin(); k < b.end(); ++k) {
       int out = g.offsets[k];
-      for (const int j : graph.Neighbors(v)) g.neighbors[out++] = r.rank[j];
+      for (auto it = mesh.cvv_iter(TriMesh::VertexHandle(r.order[k])); it.is_valid(); ++it) {
+        g.neighbors[out++] = r.rank[it->idx()];
+      }
     }
   });
   return r;

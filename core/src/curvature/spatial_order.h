@@ -22,6 +22,7 @@
 #include <Eigen/Core>
 
 #include "meshseg/curvature.h"
+#include "meshseg/mesh.h"
 
 namespace meshseg::curvature_internal {
 
@@ -41,9 +42,10 @@ struct OrderedGraph {
   }
 };
 
-// Returns `graph` renumbered in the Morton order of its positions (ties, in
-// one cell of a 1024^3 grid over the bounding box, by original index).
-OrderedGraph MortonOrdered(const VertexGraph& graph);
+// Returns the vertex graph of `mesh` (as BuildVertexGraph) renumbered in the
+// Morton order of its positions (ties, in one cell of a 1024^3 grid over
+// the bounding box, by vertex index).
+OrderedGraph MortonOrderedGraph(const TriMesh& mesh);
 
 }  // namespace meshseg::curvature_internal
 

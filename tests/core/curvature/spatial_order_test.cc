@@ -20,11 +20,11 @@ absl::StatusOr<Mesh> WavyGrid() {
   }, "wavy");
 }
 
-TEST(MortonOrdered, IsARenumberingThatKeepsEachRowsOrder) {
+TEST(MortonOrderedGraph, IsARenumberingThatKeepsEachRowsOrder) {
   const absl::StatusOr<Mesh> mesh = WavyGrid();
   ASSERT_TRUE(mesh.ok()) << mesh.status();
   const VertexGraph g = BuildVertexGraph(mesh->tri);
-  const OrderedGraph walk = MortonOrdered(g);
+  const OrderedGraph walk = MortonOrderedGraph(mesh->tri);
   const int n = g.vertex_count();
   ASSERT_EQ(walk.graph.vertex_count(), n);
   ASSERT_EQ(walk.order.size(), static_cast<std::size_t>(n));
@@ -46,11 +46,11 @@ TEST(MortonOrdered, IsARenumberingThatKeepsEachRowsOrder) {
   EXPECT_GT(moved, n / 2);
 }
 
-TEST(MortonOrdered, NeighbourhoodsAreTheSameVerticesInTheSameOrder) {
+TEST(MortonOrderedGraph, NeighbourhoodsAreTheSameVerticesInTheSameOrder) {
   const absl::StatusOr<Mesh> mesh = WavyGrid();
   ASSERT_TRUE(mesh.ok()) << mesh.status();
   const VertexGraph g = BuildVertexGraph(mesh->tri);
-  const OrderedGraph walk = MortonOrdered(g);
+  const OrderedGraph walk = MortonOrderedGraph(mesh->tri);
   // Every fifth vertex excluded, as the sharp vertices in pass 2.
   std::vector<uint8_t> excluded(g.vertex_count(), 0);
   for (std::size_t v = 0; v < excluded.size(); v += 5) excluded[v] = 1;
