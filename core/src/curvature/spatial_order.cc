@@ -59,31 +59,13 @@ OrderedGraph MortonOrderedGraph(const TriMesh& mesh) {
   tbb::parallel_sort(key.begin(), key.end());
   r.order.resize(n);
   r.rank.resize(n);
-  VertexGraph& g = r.graph;
-  g.offsets.assign(n + 1, 0);
-  g.positions.resize(n);
-  // Rows as BuildVertexGraph makes them, in OpenMesh's circulator order.
   tbb::parallel_for(tbb::blocked_range<int>(0, n, 4096), [&](const tbb::blocked_range<int>& b) {
     for (int k = b.begin(); k < b.end(); ++k) {
-      const TriMesh::VertexHandle vh(static_cast<int>(key[k] & 0xffffffffu));
-      r.order[k] = vh.idx();
-      r.rank[vh.idx()] = k;
-      g.positions[k] = ToEigen(mesh.point(vh));
-      int valence = 0;
-      for (auto it = mesh.cvv_iter(vh); it.is_valid(); ++it) ++valence;
-      g.offsets[k + 1] = valence;
+      r.order[k] = static_cast<int>(key[k] & 0xffffffffu);
+      r.rank[r.order[k]] = k;
     }
   });
-  for (int k = 0; k < n; ++k) g.offsets[k + 1] += g.offsets[k];
-  g.neighbors.resize(g.offsets[n]);
-  tbb::parallel_for(tbb::blocked_range<int>(0, n, 4096), [&](const tbb::blocked_range<int>& b) {
-    for (int k = b.begin(); k < b.end(); ++k) {
-      int out = g.offsets[k];
-      for (auto it = mesh.cvv_iter(TriMesh::VertexHandle(r.order[k])); it.is_valid(); ++it) {
-        g.neighbors[out++] = r.rank[it->idx()];
-      }
-    }
-  });
+  r.graph = NumberedVertexGraph(mesh, r.order, r.rank);
   return r;
 }
 

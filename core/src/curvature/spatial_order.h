@@ -42,6 +42,13 @@ struct OrderedGraph {
   }
 };
 
+// The vertex graph of `mesh` in which vertex k is mesh vertex order[k] and
+// mesh vertex v is rank[v] (empty spans: the mesh's own numbering, which is
+// BuildVertexGraph). Each row lists the neighbours in OpenMesh's circulator
+// order, renumbered.
+VertexGraph NumberedVertexGraph(const TriMesh& mesh, std::span<const int> order,
+                                std::span<const int> rank);
+
 // Returns the vertex graph of `mesh` (as BuildVertexGraph) renumbered in the
 // Morton order of its positions (ties, in one cell of a 1024^3 grid over
 // the bounding box, by vertex index).
