@@ -1,6 +1,6 @@
 // A renumbering of the vertex graph in which vertices that are close in
 // space are close in memory, for the neighbourhood walks of both curvature
-// passes. Each walk N(i, W) touches ~100 vertices within a few edge lengths
+// passes and the filter's ring reads. Each walk N(i, W) touches ~100 vertices within a few edge lengths
 // of v_i; in the order the mesh came in (a scan order: rows of a slice,
 // slice after slice) those lie far apart in the arrays, and each walk waits
 // on memory. In the Morton (Z-curve) order of the vertices' positions a
@@ -12,7 +12,8 @@
 // A walk's result does not depend on the numbering: the queue visits the
 // same vertices in the same order (each row keeps its order, mapped), so a
 // fit over the renumbered neighbourhood sums the same numbers in the same
-// order as one over the original.
+// order as one over the original, and a filter reads each ring's values in
+// the same order.
 #ifndef MESHSEG_SRC_CURVATURE_SPATIAL_ORDER_H_
 #define MESHSEG_SRC_CURVATURE_SPATIAL_ORDER_H_
 
