@@ -10,6 +10,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_invoke.h>
 
 #include "absl/status/status.h"
 #include "absl/strings/str_cat.h"
@@ -97,11 +98,14 @@ absl::StatusOr<CurvatureField> EstimateCurvature(const Mesh& mesh, const Curvatu
     return absl::InvalidArgumentError(absl::StrCat("curvature: \"", mesh.name, "\" has no faces"));
   }
   const int n = static_cast<int>(mesh.tri.n_vertices());
-  const curvature_internal::VertexFrames frames = curvature_internal::ComputeVertexFrames(mesh.tri);
   // Both passes and the filter walk and fit in the Morton order
   // (spatial_order.h): the same neighbourhoods and sums, with fewer waits on
-  // memory; results are stored under each vertex's own index.
-  const curvature_internal::OrderedGraph walk = curvature_internal::MortonOrderedGraph(mesh.tri);
+  // memory; results are stored under each vertex's own index. The frames
+  // and the ordered graph only read the mesh, so they are built side by side.
+  curvature_internal::VertexFrames frames;
+  curvature_internal::OrderedGraph walk;
+  tbb::parallel_invoke([&] { frames = curvature_internal::ComputeVertexFrames(mesh.tri); },
+                       [&] { walk = curvature_internal::MortonOrderedGraph(mesh.tri); });
   const std::vector<double> area = walk.Permuted<double>(frames.area);
   CurvatureField field;
   field.kappa_max.assign(n, 0.0);
