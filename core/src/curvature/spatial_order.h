@@ -1,13 +1,13 @@
 // A renumbering of the vertex graph in which vertices that are close in
 // space are close in memory, for the neighbourhood walks of both curvature
-// passes and the filter's ring reads. Each walk N(i, W) touches ~100 vertices within a few edge lengths
-// of v_i; in the order the mesh came in (a scan order: rows of a slice,
-// slice after slice) those lie far apart in the arrays, and each walk waits
-// on memory. In the Morton (Z-curve) order of the vertices' positions a
-// small ball of space maps to a few runs of consecutive indices, so
-// consecutive walks share cache lines (Morton 1966; the locality argument
-// of space-filling-curve mesh orderings, e.g. Isenburg & Lindstrom,
-// "Streaming meshes", IEEE Visualization 2005).
+// passes and the filter's ring reads. Each walk N(i, W) touches ~100
+// vertices within a few edge lengths of v_i; in the order the mesh came in
+// (a scan order: rows of a slice, slice after slice) those lie far apart in
+// the arrays, and each walk waits on memory. In the Morton (Z-curve) order
+// of the vertices' positions a small ball of space maps to a few runs of
+// consecutive indices, so consecutive walks share cache lines (Morton 1966;
+// the locality argument of space-filling-curve mesh orderings, e.g.
+// Isenburg & Lindstrom, "Streaming meshes", IEEE Visualization 2005).
 //
 // A walk's result does not depend on the numbering: the queue visits the
 // same vertices in the same order (each row keeps its order, mapped), so a
