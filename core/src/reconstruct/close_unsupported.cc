@@ -8,6 +8,7 @@
 #include <Eigen/Geometry>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/compute_normal.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_hole.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/Euler_operations.h>
@@ -15,6 +16,7 @@
 #include "absl/strings/str_cat.h"
 #include "mesh/union_find.h"
 #include "meshseg/status_macros.h"
+#include "reconstruct/seen_planes.h"
 #include "reconstruct/surface_mesh.h"
 
 namespace meshseg::reconstruct_internal {
@@ -136,6 +138,59 @@ void FanClose(Sm::Halfedge_index h, Sm* sm) {
   sm->point(sm->target(spoke)) = CGAL::ORIGIN + sum / n;
 }
 
+Eigen::Vector3d ToEigen3(const Kernel::Point_3& p) { return {p.x(), p.y(), p.z()}; }
+
+// +1 when the faces of the closed `tri` face outwards (positive volume), else -1.
+double Outwards(const TriMesh& tri) {
+  double volume = 0.0;
+  for (const auto f : tri.faces()) {
+    std::array<Eigen::Vector3d, 3> c;
+    int k = 0;
+    for (const auto v : tri.fv_range(f)) c[k++] = ToEigen(tri.point(v));
+    volume += c[0].dot(c[1].cross(c[2]));
+  }
+  return volume >= 0 ? 1.0 : -1.0;
+}
+
+// The vertices of the loop of border halfedge `h` and the outward normals of
+// the surface there (`sign` × the area-weighted normal of their faces).
+void LoopWithNormals(const Sm& sm, Sm::Halfedge_index h, double sign,
+                     std::vector<Eigen::Vector3d>* loop, std::vector<Eigen::Vector3d>* normals) {
+  loop->clear();
+  normals->clear();
+  for (auto g = h;;) {
+    const auto v = sm.target(g);
+    loop->push_back(ToEigen3(sm.point(v)));
+    const auto n = PMP::compute_vertex_normal(v, sm);
+    normals->push_back(sign * Eigen::Vector3d(n.x(), n.y(), n.z()));
+    g = sm.next(g);
+    if (g == h) break;
+  }
+}
+
+// Bends the patch `faces` (free vertices `vertices`) of a hole whose loop was
+// `loop` onto the seen planes (seen_planes.h).
+void BendPatch(const std::vector<Eigen::Vector3d>& loop,
+               const std::vector<Eigen::Vector3d>& normals, double sign,
+               const std::vector<Sm::Face_index>& faces,
+               const std::vector<Sm::Vertex_index>& vertices, Sm* sm) {
+  Eigen::Vector3d patch_normal = Eigen::Vector3d::Zero();
+  for (const auto f : faces) {
+    const auto h = sm->halfedge(f);
+    const Eigen::Vector3d a = ToEigen3(sm->point(sm->source(h)));
+    const Eigen::Vector3d b = ToEigen3(sm->point(sm->target(h)));
+    const Eigen::Vector3d c = ToEigen3(sm->point(sm->target(sm->next(h))));
+    patch_normal += sign * (b - a).cross(c - a);
+  }
+  std::vector<Eigen::Vector3d> free_vertices;
+  for (const auto v : vertices) free_vertices.push_back(ToEigen3(sm->point(v)));
+  if (!BendOntoSeenPlanes(loop, normals, patch_normal, &free_vertices)) return;
+  for (size_t i = 0; i < vertices.size(); ++i) {
+    sm->point(vertices[i]) =
+        Kernel::Point_3(free_vertices[i].x(), free_vertices[i].y(), free_vertices[i].z());
+  }
+}
+
 int Components(const TriMesh& tri) {
   std::vector<int> parent(tri.n_vertices());
   std::iota(parent.begin(), parent.end(), 0);
@@ -205,14 +260,21 @@ absl::StatusOr<ClosedSurface> CloseUnsupported(const Mesh& mesh,
   const std::vector<Sm::Halfedge_index> loops = BorderLoops(sm, &lengths);
   out.hole_count = static_cast<int64_t>(loops.size());
   if (!leave_open) {
+    const double sign = Outwards(tri);
+    std::vector<Eigen::Vector3d> loop, normals;
     for (size_t i = 0; i < loops.size(); ++i) {
+      LoopWithNormals(sm, loops[i], sign, &loop, &normals);
       std::vector<Sm::Face_index> faces;
       std::vector<Sm::Vertex_index> vertices;
       PMP::triangulate_refine_and_fair_hole(
           sm, loops[i], std::back_inserter(faces), std::back_inserter(vertices),
           PMP::parameters::fairing_continuity(0).do_not_use_cubic_algorithm(lengths[i] >
                                                                             kMaxCubicLoop));
-      if (faces.empty() && sm.is_border(loops[i])) FanClose(loops[i], &sm);
+      if (faces.empty() && sm.is_border(loops[i])) {
+        FanClose(loops[i], &sm);
+      } else {
+        BendPatch(loop, normals, sign, faces, vertices, &sm);
+      }
     }
   }
   const auto filled = sm.property_map<Sm::Face_index, uint8_t>("f:filled").first;

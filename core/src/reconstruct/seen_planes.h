@@ -1,0 +1,55 @@
+// The patch over an unseen region bent onto the seen surfaces extended past
+// their border (issue 38 item 1; a step of close_unsupported.h).
+//
+// The membrane that closes a hole (harmonic fairing, Liepa 2003) is the
+// unseen surface only where that surface is the plane of a flat loop. The
+// unseen side of a scanned solid is bounded by the seen surfaces around the
+// hole, and where the hole is convex (a face the part stood on, the far side
+// of a convex edge) the solid there is the intersection of their half-spaces.
+// So when the seen surfaces stop at different heights above the unseen face,
+// the loop climbs the walls, and the membrane spanning it cuts the corner
+// between each wall and the unseen face, as a chord cuts a convex edge.
+//
+// The hull: the tangent plane of the seen surface at every loop vertex (the
+// kept faces' area-weighted normal), plus the cap plane, whose outward normal is
+// the patch's own mean normal. The cap plane supports the loop: it passes through
+// the vertices farthest out along that normal. It is refitted to them while they
+// span a plane, because a loop that climbs one wall more than another tilts the
+// mean normal. Each free vertex of the patch goes to the nearest point of the
+// hull's boundary, i.e. onto the plane with the least clearance. Near a wall
+// that is the wall extended, in the middle the cap plane; their intersection
+// is the edge the scan did not see.
+//
+// The hull is right only for a convex hole. A membrane inside a concave one
+// (a bore, an inner corner) lies outside the hull, and so does one over a
+// saddle; there the patch is left as it is.
+#ifndef MESHSEG_RECONSTRUCT_SEEN_PLANES_H_
+#define MESHSEG_RECONSTRUCT_SEEN_PLANES_H_
+
+#include <vector>
+
+#include <Eigen/Core>
+
+namespace meshseg::reconstruct_internal {
+
+// Largest fraction of a patch's free vertices allowed outside the hull (by
+// more than the loop's mean edge length) for the hull to be taken.
+inline constexpr double kMaxOutsideFraction = 0.02;
+// Largest fraction of the loop's tangent planes that may cut off more than
+// kMaxOutsideFraction of the loop (folds at the border) for the hull to be taken.
+inline constexpr double kMaxCuttingFraction = 0.5;
+
+// `loop` (the border vertices of a hole, in order) with `normals` (unit,
+// outward, of the seen surface at each), `patch_normal` (the area-weighted
+// outward normal sum of the patch's faces) and the patch's free vertices in
+// `*free_vertices`. Moves them onto the hull as above and returns true, or
+// leaves them and returns false when the hole is not convex (more than
+// kMaxOutsideFraction of them outside the hull) or the loop is degenerate.
+bool BendOntoSeenPlanes(const std::vector<Eigen::Vector3d>& loop,
+                        const std::vector<Eigen::Vector3d>& normals,
+                        const Eigen::Vector3d& patch_normal,
+                        std::vector<Eigen::Vector3d>* free_vertices);
+
+}  // namespace meshseg::reconstruct_internal
+
+#endif  // MESHSEG_RECONSTRUCT_SEEN_PLANES_H_
