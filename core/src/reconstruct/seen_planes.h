@@ -11,18 +11,21 @@
 // between each wall and the unseen face, as a chord cuts a convex edge.
 //
 // The hull: the tangent plane of the seen surface at every loop vertex (the
-// kept faces' area-weighted normal), plus the cap plane, whose outward normal is
-// the patch's own mean normal. The cap plane supports the loop: it passes through
-// the vertices farthest out along that normal. It is refitted to them while they
-// span a plane, because a loop that climbs one wall more than another tilts the
-// mean normal. Each free vertex of the patch goes to the nearest point of the
-// hull's boundary, i.e. onto the plane with the least clearance. Near a wall
-// that is the wall extended, in the middle the cap plane; their intersection
-// is the edge the scan did not see.
+// kept faces' area-weighted normal) and the cap plane, the unseen face's
+// own. The seen surfaces end at it where they were seen all the way down, so
+// it is the plane the most loop vertices lie on, of those within 45° of the
+// patch's mean normal that leave the loop on their inner side (a consensus
+// over planes through three loop vertices, then least squares; the mean
+// normal alone tilts when the loop climbs one wall more than another). Each
+// free vertex of the patch goes to the nearest point of the hull's boundary,
+// i.e. onto the plane with the least clearance. Near a wall that is the wall
+// extended, in the middle the cap plane; their intersection is the edge the
+// scan did not see. A tangent plane that cuts off part of the loop is no
+// face of the hull (a fold of the seen surface at the border) and is left out.
 //
-// The hull is right only for a convex hole. A membrane inside a concave one
-// (a bore, an inner corner) lies outside the hull, and so does one over a
-// saddle; there the patch is left as it is.
+// The hull is right only for a convex hole. Around a concave one (a bore, an
+// inner corner) most tangent planes cut off part of the loop, and a membrane
+// over a saddle lies outside the hull; there the patch is left as it is.
 #ifndef MESHSEG_RECONSTRUCT_SEEN_PLANES_H_
 #define MESHSEG_RECONSTRUCT_SEEN_PLANES_H_
 
@@ -33,18 +36,19 @@
 namespace meshseg::reconstruct_internal {
 
 // Largest fraction of a patch's free vertices allowed outside the hull (by
-// more than the loop's mean edge length) for the hull to be taken.
+// more than two mean edge lengths of the loop) for the hull to be taken.
 inline constexpr double kMaxOutsideFraction = 0.02;
 // Largest fraction of the loop's tangent planes that may cut off more than
-// kMaxOutsideFraction of the loop (folds at the border) for the hull to be taken.
+// kMaxOutsideFraction of the loop (folds at the border) for the hull to be
+// taken; around a concave hole nearly all of them do.
 inline constexpr double kMaxCuttingFraction = 0.5;
 
 // `loop` (the border vertices of a hole, in order) with `normals` (unit,
 // outward, of the seen surface at each), `patch_normal` (the area-weighted
 // outward normal sum of the patch's faces) and the patch's free vertices in
 // `*free_vertices`. Moves them onto the hull as above and returns true, or
-// leaves them and returns false when the hole is not convex (more than
-// kMaxOutsideFraction of them outside the hull) or the loop is degenerate.
+// leaves them and returns false when the hole is not convex (as above), no
+// cap plane is found, or the loop is degenerate.
 bool BendOntoSeenPlanes(const std::vector<Eigen::Vector3d>& loop,
                         const std::vector<Eigen::Vector3d>& normals,
                         const Eigen::Vector3d& patch_normal,
