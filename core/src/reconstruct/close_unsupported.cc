@@ -228,7 +228,8 @@ int Genus(const TriMesh& tri) {
 absl::StatusOr<ClosedSurface> CloseUnsupported(const Mesh& mesh,
                                                const std::vector<uint8_t>& supported,
                                                double min_component_fraction, bool leave_open,
-                                               const std::vector<uint8_t>& prior_filled) {
+                                               const std::vector<uint8_t>& prior_filled,
+                                               bool bend_onto_seen_planes) {
   const TriMesh& tri = mesh.tri;
   ClosedSurface out;
   std::vector<uint8_t> removed(tri.n_faces());
@@ -272,7 +273,7 @@ absl::StatusOr<ClosedSurface> CloseUnsupported(const Mesh& mesh,
                                                                             kMaxCubicLoop));
       if (faces.empty() && sm.is_border(loops[i])) {
         FanClose(loops[i], &sm);
-      } else {
+      } else if (bend_onto_seen_planes) {
         BendPatch(loop, normals, sign, faces, vertices, &sm);
       }
     }

@@ -42,11 +42,14 @@ struct ClosedSurface {
 // or two faces). A loop CGAL cannot triangulate is closed by a fan around its
 // centroid. `prior_filled` (one per face of `mesh`, or empty) flags faces a
 // previous closing made; kept ones stay flagged in `filled` and count in
-// `filled_area`. Errors: INTERNAL if the result breaks these invariants.
+// `filled_area`. With `bend_onto_seen_planes` the patch over an unseen
+// region is bent onto the seen surfaces extended (seen_planes.h); a cut
+// handle's two discs stay membranes. Errors: INTERNAL if the result breaks these invariants.
 absl::StatusOr<ClosedSurface> CloseUnsupported(const Mesh& mesh,
                                                const std::vector<uint8_t>& supported,
                                                double min_component_fraction, bool leave_open,
-                                               const std::vector<uint8_t>& prior_filled = {});
+                                               const std::vector<uint8_t>& prior_filled = {},
+                                               bool bend_onto_seen_planes = false);
 
 // Total genus of `tri`: (2 C − χ − B) / 2 with C components, χ = V − E + F
 // and B border loops (a closed mesh has B = 0).

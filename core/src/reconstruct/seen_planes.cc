@@ -26,6 +26,9 @@ constexpr double kMinSpreadRatio = 0.1;
 // At most this fraction of the loop may lie beyond the cap plane (folds of
 // the seen surface hanging past the unseen face's plane).
 constexpr double kMaxBeyondCap = 0.1;
+// Tangent planes looked at per loop at most (the work is free vertices ×
+// planes).
+constexpr size_t kMaxPlanes = 1024;
 // A point is outside a plane when it is more than this many mean edge lengths
 // beyond it: room for the noise of the normals, which the planes carry across
 // the hole.
@@ -111,16 +114,21 @@ bool BendOntoSeenPlanes(const std::vector<Eigen::Vector3d>& loop,
   // A plane that cuts off more than kMaxOutsideFraction of the loop is not a
   // face of the hull: a fold of the seen surface at the border, or, when
   // many are, a hole that is not convex.
-  std::vector<uint8_t> face(loop.size(), 1);
-  size_t cutting = 0;
-  for (size_t k = 0; k < loop.size(); ++k) {
+  // On a long loop every stride-th tangent plane stands for its neighbours.
+  const size_t stride = (loop.size() + kMaxPlanes - 1) / kMaxPlanes;
+  std::vector<uint8_t> face(loop.size(), 0);
+  size_t planes = 0, cutting = 0;
+  for (size_t k = 0; k < loop.size(); k += stride) {
+    ++planes;
     size_t cut = 0;
     for (const Eigen::Vector3d& p : loop) cut += normals[k].dot(loop[k] - p) < -kSlackEdges * edge;
-    if (static_cast<double>(cut) <= kMaxOutsideFraction * static_cast<double>(loop.size())) continue;
-    face[k] = 0;
-    ++cutting;
+    if (static_cast<double>(cut) <= kMaxOutsideFraction * static_cast<double>(loop.size())) {
+      face[k] = 1;
+    } else {
+      ++cutting;
+    }
   }
-  if (static_cast<double>(cutting) > kMaxCuttingFraction * static_cast<double>(loop.size())) {
+  if (static_cast<double>(cutting) > kMaxCuttingFraction * static_cast<double>(planes)) {
     return false;
   }
   // Each free vertex goes onto the plane it is nearest to inside the hull.
@@ -129,7 +137,7 @@ bool BendOntoSeenPlanes(const std::vector<Eigen::Vector3d>& loop,
   for (Eigen::Vector3d& x : moved) {
     double least = offset - cap.dot(x);
     Eigen::Vector3d normal = cap;
-    for (size_t k = 0; k < loop.size(); ++k) {
+    for (size_t k = 0; k < loop.size(); k += stride) {
       if (!face[k]) continue;
       const double clearance = normals[k].dot(loop[k] - x);
       if (clearance < least) {
@@ -137,8 +145,11 @@ bool BendOntoSeenPlanes(const std::vector<Eigen::Vector3d>& loop,
         normal = normals[k];
       }
     }
+    // Outwards onto any plane; inwards onto the cap plane only, which is
+    // fitted to the loop's far run: a tangent plane carried across the hole
+    // is as near the surface as its noise tells.
     if (least < -kSlackEdges * edge) ++outside;
-    x += least * normal;
+    if (least > 0 || normal == cap) x += least * normal;
   }
   if (static_cast<double>(outside) > kMaxOutsideFraction * static_cast<double>(moved.size())) {
     return false;

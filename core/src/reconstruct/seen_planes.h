@@ -17,8 +17,8 @@
 // patch's mean normal that leave the loop on their inner side (a consensus
 // over planes through three loop vertices, then least squares; the mean
 // normal alone tilts when the loop climbs one wall more than another). Each
-// free vertex of the patch goes to the nearest point of the hull's boundary,
-// i.e. onto the plane with the least clearance. Near a wall that is the wall
+// free vertex of the patch inside the hull goes to the nearest point of its
+// boundary, i.e. onto the plane with the least clearance. Near a wall that is the wall
 // extended, in the middle the cap plane; their intersection is the edge the
 // scan did not see. A tangent plane that cuts off part of the loop is no
 // face of the hull (a fold of the seen surface at the border) and is left out.

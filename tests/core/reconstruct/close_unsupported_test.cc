@@ -153,7 +153,7 @@ TEST(CloseUnsupported, AnUnseenFaceBelowWallsSeenToDifferentHeightsMeetsTheWalls
     supported[f.idx()] = 0;
     removed_area += box.tri.calc_face_area(f);
   }
-  const auto closed = CloseUnsupported(box, supported, 0.01, false);
+  const auto closed = CloseUnsupported(box, supported, 0.01, false, {}, true);
   ASSERT_TRUE(closed.ok()) << closed.status();
   EXPECT_EQ(closed->hole_count, 1);
   ExpectEveryEdgeTwoFaces(closed->mesh.tri);
