@@ -30,8 +30,16 @@ using Sm = CGAL::Surface_mesh<Kernel::Point_3>;
 namespace PMP = CGAL::Polygon_mesh_processing;
 
 // Loops longer than this skip CGAL's cubic search over all triangles of the
-// loop when the Delaunay search space fails (O(n³) time); the fan closes them.
-constexpr size_t kMaxCubicLoop = 150;
+// loop when the Delaunay search space fails (O(n³) time, about 1 s CPU at 400
+// vertices); the fan closes them. The underside of a scanned part is such a
+// loop, zigzagging along the walls' lowest seen rows, and its fan (no inner
+// vertex, spokes as long as the part) cannot be bent onto the seen planes.
+constexpr size_t kMaxCubicLoop = 500;
+// A triangle is flat when twice its area is at most this fraction of its
+// longest edge squared (a hundred times the mesh readers' limit).
+constexpr double kFlatRatio = 1e-10;
+// Rounds of flipping flat patch triangles at most.
+constexpr int kFlatFlipPasses = 3;
 
 // Marks every face of a vertex whose fan alternates kept/removed more than
 // once; returns whether it marked any.
@@ -191,6 +199,41 @@ void BendPatch(const std::vector<Eigen::Vector3d>& loop,
   }
 }
 
+// A patch triangle on three (nearly) collinear vertices (loop vertices the
+// refinement put on one straight crease line) has no area: mesh readers drop
+// it, and the surface read back is open. Flipping its longest edge, when a
+// patch face lies across it, replaces it by two triangles with the apex of
+// that face.
+void FlipFlatPatchFaces(Sm* sm) {
+  const auto filled = sm->property_map<Sm::Face_index, uint8_t>("f:filled").first;
+  for (int pass = 0; pass < kFlatFlipPasses; ++pass) {
+    bool changed = false;
+    for (const auto f : sm->faces()) {
+      if (!filled[f]) continue;
+      Sm::Halfedge_index longest;
+      double longest2 = -1.0;
+      for (const auto h : CGAL::halfedges_around_face(sm->halfedge(f), *sm)) {
+        const double l2 = CGAL::squared_distance(sm->point(sm->source(h)), sm->point(sm->target(h)));
+        if (l2 > longest2) {
+          longest2 = l2;
+          longest = h;
+        }
+      }
+      const Eigen::Vector3d a = ToEigen3(sm->point(sm->source(longest)));
+      const Eigen::Vector3d b = ToEigen3(sm->point(sm->target(longest)));
+      const Eigen::Vector3d c = ToEigen3(sm->point(sm->target(sm->next(longest))));
+      if ((b - a).cross(c - a).norm() > kFlatRatio * longest2) continue;
+      const auto across = sm->opposite(longest);
+      if (sm->is_border(across) || !filled[sm->face(across)]) continue;
+      const auto u = sm->target(sm->next(longest)), w = sm->target(sm->next(across));
+      if (u == w || CGAL::halfedge(u, w, *sm).second) continue;
+      CGAL::Euler::flip_edge(longest, *sm);
+      changed = true;
+    }
+    if (!changed) break;
+  }
+}
+
 int Components(const TriMesh& tri) {
   std::vector<int> parent(tri.n_vertices());
   std::iota(parent.begin(), parent.end(), 0);
@@ -278,6 +321,7 @@ absl::StatusOr<ClosedSurface> CloseUnsupported(const Mesh& mesh,
       }
     }
   }
+  FlipFlatPatchFaces(&sm);
   const auto filled = sm.property_map<Sm::Face_index, uint8_t>("f:filled").first;
   std::vector<Eigen::Vector3d> points;
   std::vector<int> index(sm.num_vertices(), -1);
