@@ -113,12 +113,13 @@ bool BendOntoSeenPlanes(const std::vector<Eigen::Vector3d>& loop,
   if (!CapPlane(loop, patch_normal.normalized(), kCapBandEdges * edge, &cap, &offset)) return false;
   // A plane that cuts off more than kMaxOutsideFraction of the loop is not a
   // face of the hull: a fold of the seen surface at the border, or, when
-  // many are, a hole that is not convex.
-  // On a long loop every stride-th tangent plane stands for its neighbours.
+  // many are, a hole that is not convex. On a long loop every stride-th
+  // tangent plane stands for its neighbours.
   const size_t stride = (loop.size() + kMaxPlanes - 1) / kMaxPlanes;
   std::vector<uint8_t> face(loop.size(), 0);
   size_t planes = 0, cutting = 0;
   for (size_t k = 0; k < loop.size(); k += stride) {
+    if (!(normals[k].squaredNorm() > 0.5)) continue;  // no tangent plane there
     ++planes;
     size_t cut = 0;
     for (const Eigen::Vector3d& p : loop) cut += normals[k].dot(loop[k] - p) < -kSlackEdges * edge;
@@ -137,19 +138,21 @@ bool BendOntoSeenPlanes(const std::vector<Eigen::Vector3d>& loop,
   for (Eigen::Vector3d& x : moved) {
     double least = offset - cap.dot(x);
     Eigen::Vector3d normal = cap;
+    bool onto_cap = true;
     for (size_t k = 0; k < loop.size(); k += stride) {
       if (!face[k]) continue;
       const double clearance = normals[k].dot(loop[k] - x);
       if (clearance < least) {
         least = clearance;
         normal = normals[k];
+        onto_cap = false;
       }
     }
     // Outwards onto any plane; inwards onto the cap plane only, which is
     // fitted to the loop's far run: a tangent plane carried across the hole
     // is as near the surface as its noise tells.
     if (least < -kSlackEdges * edge) ++outside;
-    if (least > 0 || normal == cap) x += least * normal;
+    if (least > 0 || onto_cap) x += least * normal;
   }
   if (static_cast<double>(outside) > kMaxOutsideFraction * static_cast<double>(moved.size())) {
     return false;
