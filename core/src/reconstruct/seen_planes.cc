@@ -149,10 +149,14 @@ bool BendOntoSeenPlanes(const std::vector<Eigen::Vector3d>& loop,
       }
     }
     // Outwards onto any plane; inwards onto the cap plane only, which is
-    // fitted to the loop's far run: a tangent plane carried across the hole
-    // is as near the surface as its noise tells.
-    if (least < -kSlackEdges * edge) ++outside;
-    if (least > 0 || onto_cap) x += least * normal;
+    // fitted to the loop's far run, and by no more than the slack: a tangent
+    // plane carried across the hole is as near the surface as its noise
+    // tells, and a vertex farther out is not explained by noise at all.
+    if (least < -kSlackEdges * edge) {
+      ++outside;
+    } else if (least > 0 || onto_cap) {
+      x += least * normal;
+    }
   }
   if (static_cast<double>(outside) > kMaxOutsideFraction * static_cast<double>(moved.size())) {
     return false;
