@@ -117,6 +117,36 @@ TEST(SupportedFaces, TheSameGapIsSupportedAmongSparsePointsOnly) {
   EXPECT_EQ(sparse_supported, probed);
 }
 
+// Reconstructs the generated scan of `part` (`points`, draw `seed`) and
+// expects accuracy p95 ≤ 3.5 sp and visible completeness p95 ≤ 5.5 sp.
+void ExpectScanMeetsTheBar(const std::string& part, int points, uint64_t seed) {
+  ScanParams sp;
+  sp.points = points;
+  sp.seed = seed;
+  const auto scan = ScanPart(part, sp);
+  ASSERT_TRUE(scan.ok()) << scan.status();
+  const auto rec = Reconstruct(scan->cloud);
+  ASSERT_TRUE(rec.ok()) << rec.status();
+  EXPECT_GT(rec->stats.filled_area, 0.0) << part << ": the underside is closed";
+  const double spacing = test::MedianSpacing(scan->cloud.points);
+  const auto mesh = test::Triangles(rec->mesh.tri);
+  const auto truth = test::Triangles(scan->part.mesh.tri);
+  const test::SurfaceDistance to_mesh(mesh), to_truth(truth);
+  const mesh_internal::PointIndex index(scan->cloud.points);
+  std::vector<Eigen::Vector3d> visible;
+  for (const Eigen::Vector3d& p : test::AreaSamples(truth, 20000)) {
+    if ((scan->cloud.points[index.Closest(p)] - p).norm() <= 3.0 * spacing) visible.push_back(p);
+  }
+  const double accuracy =
+      test::Quantile(test::SortedDistances(test::AreaSamples(mesh, 20000), to_truth), 0.95);
+  const double completeness = test::Quantile(test::SortedDistances(visible, to_mesh), 0.95);
+  EXPECT_LE(accuracy, 3.5 * spacing) << part << ": accuracy p95 " << accuracy / spacing << " sp";
+  EXPECT_LE(completeness, 5.5 * spacing)
+      << part << ": completeness p95 " << completeness / spacing << " sp";
+  ::testing::Test::RecordProperty(part + "_accuracy_p95_sp_draw_" + std::to_string(seed),
+                                  std::to_string(accuracy / spacing));
+}
+
 // Issue 38 item 1, through the whole reconstruction: generated scans (four
 // views 35° above the part, range noise, grazing rays lost) of a turned part
 // never see its flat underside, which the reconstruction closes with a
@@ -125,37 +155,22 @@ TEST(SupportedFaces, TheSameGapIsSupportedAmongSparsePointsOnly) {
 // p95 of the visible truth (within 3 sp of a point) ≤ 5.5 sp, at once. With
 // the support reaching 2 s + band past the last samples, the walls ran on
 // below the true bottom and the patch closed there: accuracy p95 10.0 and
-// 9.5 sp on these two draws. (A membrane cannot follow an unseen region that
-// turns a corner or a curved underside; those still miss the bar.)
+// 9.5 sp on these two draws. (A curved underside, or one whose loop spans
+// more than the cubic search takes, still misses the bar.)
 TEST(SupportedFaces, TheUnseenFlatUndersideOfAScanIsClosedAtTheSeenBorder) {
-  for (const uint64_t seed : {1, 2}) {
-    const std::string part = "stepped_shaft";
-    ScanParams sp;
-    sp.points = 15000;
-    sp.seed = seed;
-    const auto scan = ScanPart(part, sp);
-    ASSERT_TRUE(scan.ok()) << scan.status();
-    const auto rec = Reconstruct(scan->cloud);
-    ASSERT_TRUE(rec.ok()) << rec.status();
-    EXPECT_GT(rec->stats.filled_area, 0.0) << part << ": the underside is closed";
-    const double spacing = test::MedianSpacing(scan->cloud.points);
-    const auto mesh = test::Triangles(rec->mesh.tri);
-    const auto truth = test::Triangles(scan->part.mesh.tri);
-    const test::SurfaceDistance to_mesh(mesh), to_truth(truth);
-    const mesh_internal::PointIndex index(scan->cloud.points);
-    std::vector<Eigen::Vector3d> visible;
-    for (const Eigen::Vector3d& p : test::AreaSamples(truth, 20000)) {
-      if ((scan->cloud.points[index.Closest(p)] - p).norm() <= 3.0 * spacing) visible.push_back(p);
-    }
-    const double accuracy =
-        test::Quantile(test::SortedDistances(test::AreaSamples(mesh, 20000), to_truth), 0.95);
-    const double completeness = test::Quantile(test::SortedDistances(visible, to_mesh), 0.95);
-    EXPECT_LE(accuracy, 3.5 * spacing) << part << ": accuracy p95 " << accuracy / spacing << " sp";
-    EXPECT_LE(completeness, 5.5 * spacing)
-        << part << ": completeness p95 " << completeness / spacing << " sp";
-    ::testing::Test::RecordProperty("accuracy_p95_sp_draw_" + std::to_string(seed),
-                                    std::to_string(accuracy / spacing));
-  }
+  for (const uint64_t seed : {1, 2}) ExpectScanMeetsTheBar("stepped_shaft", 15000, seed);
+}
+
+// The same bar on a machined block whose walls the views see down to
+// different heights: the loop round its unseen underside zigzags along the
+// walls' lowest seen rows (about 400 vertices) and climbs them. A fan closed
+// it before (CGAL's Delaunay search fails on it, and the cubic one was
+// skipped past 150 vertices), and a membrane cuts the corners between the
+// walls and the underside: accuracy p95 3.76 sp. Now the cubic search
+// triangulates it and the patch is bent onto the walls extended and the
+// underside's plane (seen_planes.h).
+TEST(SupportedFaces, TheUnseenUndersideBelowWallsSeenToDifferentHeightsMeetsTheBar) {
+  ExpectScanMeetsTheBar("test_piece", 15000, 1);
 }
 
 }  // namespace
