@@ -18,21 +18,22 @@
 // whose corners lie on the points chords the surface between them, by its
 // sagitta ≈ e² / (8 R) for edge e on a surface of curvature radius R, or by
 // more where a crease runs through the face. Its centroid then lies that far
-// off the points although the face is on the surface, so the reach of a face
-// whose three corners are themselves supported grows by the face's own chord
-// error (when its edges are no longer than `max_chord_edge`, the edge the
-// mesh was refined to at most: a longer face is a marching-tetrahedra tent
-// spanning between two faces through the solid, refine.h, and the patch
-// over its hole is bent onto the seen planes, seen_planes.h): the largest
-// distance of its centroid from the tangent planes at its
-// corners (the planes normal to the area-weighted vertex normals). That bounds
-// how far the surface can lie off the face: on a smooth surface the face lies
-// half of it below the surface (along an edge whose normals turn by θ the
-// sagitta is e θ / 8, the edge midpoint's distance from either end's tangent
-// plane e θ / 4), and a crease midway between two corners lies all of it off
-// the chord (e tan(θ/2) / 2 ≈ e θ / 4). A face in
-// the plane of its corners' normals (a flap or a membrane continuing the seen
-// surface) gains nothing, nor does a face with a corner off the points.
+// off the points although the face is on the surface. So the reach grows by
+// the face's own chord error, the largest distance of its centroid from the
+// tangent planes at its corners (normal to the area-weighted vertex normals).
+// That bounds how far the surface can lie off the face: along an edge whose
+// normals turn by θ, a smooth surface lies e θ / 8 off its midpoint (the
+// sagitta) and either end's tangent plane e θ / 4; a crease midway between
+// the ends lies e tan(θ/2) / 2 ≈ e θ / 4 off it. Only a face that can be such
+// a chord gains:
+// - its three corners are supported (a flap into empty space has corners
+//   off the points);
+// - its edges are no longer than the mesh's resolution (`max_chord_edge`):
+//   a longer face is a marching-tetrahedra tent spanning between two faces
+//   through the solid (refine.h), whose hole the patch closes onto the seen
+//   planes (seen_planes.h).
+// A face in the tangent planes of its corners (a flap or membrane continuing
+// the seen surface) gains nothing.
 //
 // The factor `spacings` and the band are room for gaps between samples and
 // for noise along the normal; past the border of the sampled area (an

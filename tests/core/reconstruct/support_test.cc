@@ -121,6 +121,23 @@ TEST(SupportedFaces, TheSameGapIsSupportedAmongSparsePointsOnly) {
   EXPECT_EQ(sparse_supported, probed);
 }
 
+// On a sphere the centroid of an inscribed triangle lies r² / R from the
+// tangent plane at each corner (r its circumradius): the circle through the
+// corners is tilted by asin(r / R) against each corner's tangent plane.
+TEST(ChordError, OfATriangleOnASphereIsItsCircumradiusSquaredOverTheRadius) {
+  const double R = 2.0, r = 0.3, depth = std::sqrt(R * R - r * r);
+  std::array<Eigen::Vector3d, 3> corner, normal;
+  for (int k = 0; k < 3; ++k) {
+    corner[k] = Eigen::Vector3d(r * std::cos(2 * M_PI * k / 3), r * std::sin(2 * M_PI * k / 3),
+                                depth);
+    normal[k] = corner[k] / R;
+  }
+  EXPECT_NEAR(ChordError(corner, normal), r * r / R, 1e-12);
+  // The face in its corners' tangent planes (a flat surface) has none.
+  for (Eigen::Vector3d& n : normal) n = Eigen::Vector3d::UnitZ();
+  EXPECT_NEAR(ChordError(corner, normal), 0.0, 1e-12);
+}
+
 // An open prism z in [0, 2] over the closed polygon `section` (counter-
 // clockwise), with rings every 0.25: the faces are as coarse as the polygon.
 Mesh Prism(const std::vector<Eigen::Vector2d>& section) {
