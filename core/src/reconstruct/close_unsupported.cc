@@ -2,7 +2,10 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
+#include <limits>
 #include <numeric>
+#include <optional>
 #include <utility>
 
 #include <Eigen/Geometry>
@@ -31,9 +34,10 @@ namespace PMP = CGAL::Polygon_mesh_processing;
 
 // Loops longer than this skip CGAL's cubic search over all triangles of the
 // loop when the Delaunay search space fails (O(n³) time, about 1 s CPU at 400
-// vertices); the fan closes them. The underside of a scanned part is such a
-// loop, zigzagging along the walls' lowest seen rows, and its fan (no inner
-// vertex, spokes as long as the part) cannot be bent onto the seen planes.
+// vertices), so they are split by a chord first (SplitHole); a fan closes
+// what still fails. The underside of a scanned part is such a loop,
+// zigzagging along the walls' lowest seen rows, and its fan (no inner vertex,
+// spokes as long as the part) cannot be bent onto the seen planes.
 constexpr size_t kMaxCubicLoop = 500;
 // A triangle is flat when twice its area is at most this fraction of its
 // longest edge squared (a hundred times the mesh readers' limit).
@@ -199,6 +203,74 @@ void BendPatch(const std::vector<Eigen::Vector3d>& loop,
   }
 }
 
+// Splits the hole of border halfedge `h` (a loop of `n` vertices) in two by
+// a chord between the two loop vertices nearest each other in space among
+// those at least a third of the loop apart along it, so each half has at most
+// about 2 n / 3 vertices; the chord lies across the unseen area, in the
+// surface where the loop's two sides are near. Returns a halfedge of the
+// chord whose face is one half's polygon (the other half's polygon lies
+// across it), or nothing when every such pair is already joined by an edge.
+std::optional<Sm::Halfedge_index> SplitHole(Sm::Halfedge_index h, size_t n, Sm* sm) {
+  std::vector<Sm::Halfedge_index> loop;
+  for (auto g = h; loop.size() < n; g = sm->next(g)) loop.push_back(g);
+  const size_t min_arc = n / 3;
+  double best = std::numeric_limits<double>::infinity();
+  size_t bi = 0, bj = 0;
+  for (size_t i = 0; i < n; ++i) {
+    const auto u = sm->target(loop[i]);
+    for (size_t j = i + min_arc; j + min_arc <= i + n && j < n; ++j) {
+      const auto w = sm->target(loop[j]);
+      const double d2 = CGAL::squared_distance(sm->point(u), sm->point(w));
+      if (d2 >= best || u == w || CGAL::halfedge(u, w, *sm).second) continue;
+      best = d2;
+      bi = i;
+      bj = j;
+    }
+  }
+  if (!std::isfinite(best)) return std::nullopt;
+  CGAL::Euler::fill_hole(h, *sm);
+  return CGAL::Euler::split_face(loop[bi], loop[bj], *sm);
+}
+
+// The number of halfedges around the cycle of `h`.
+size_t CycleLength(Sm::Halfedge_index h, const Sm& sm) {
+  size_t n = 0;
+  for (auto g = h;;) {
+    ++n;
+    g = sm.next(g);
+    if (g == h) return n;
+  }
+}
+
+// Closes the hole of border halfedge `h` (a loop of `n` vertices) by CGAL's
+// triangulation, refinement and fairing (Liepa 2003), or by a fan when that
+// fails; a loop over kMaxCubicLoop vertices is first split by a chord
+// (SplitHole). With `bend`, each patch is bent onto the seen planes of the
+// whole hole's `loop` (with outward `normals`; seen_planes.h).
+void CloseHole(Sm::Halfedge_index h, size_t n, const std::vector<Eigen::Vector3d>& loop,
+               const std::vector<Eigen::Vector3d>& normals, double sign, bool bend, Sm* sm) {
+  if (n > kMaxCubicLoop) {
+    if (const auto chord = SplitHole(h, n, sm)) {
+      const auto other = sm->opposite(*chord);
+      CGAL::Euler::make_hole(*chord, *sm);
+      CloseHole(*chord, CycleLength(*chord, *sm), loop, normals, sign, bend, sm);
+      CGAL::Euler::make_hole(other, *sm);
+      CloseHole(other, CycleLength(other, *sm), loop, normals, sign, bend, sm);
+      return;
+    }
+  }
+  std::vector<Sm::Face_index> faces;
+  std::vector<Sm::Vertex_index> vertices;
+  PMP::triangulate_refine_and_fair_hole(
+      *sm, h, std::back_inserter(faces), std::back_inserter(vertices),
+      PMP::parameters::fairing_continuity(0).do_not_use_cubic_algorithm(n > kMaxCubicLoop));
+  if (faces.empty() && sm->is_border(h)) {
+    FanClose(h, sm);
+  } else if (bend) {
+    BendPatch(loop, normals, sign, faces, vertices, sm);
+  }
+}
+
 // A patch triangle on three (nearly) collinear vertices (loop vertices the
 // refinement put on one straight crease line) has no area: mesh readers drop
 // it, and the surface read back is open. Flipping its longest edge, when a
@@ -308,17 +380,7 @@ absl::StatusOr<ClosedSurface> CloseUnsupported(const Mesh& mesh,
     std::vector<Eigen::Vector3d> loop, normals;
     for (size_t i = 0; i < loops.size(); ++i) {
       LoopWithNormals(sm, loops[i], sign, &loop, &normals);
-      std::vector<Sm::Face_index> faces;
-      std::vector<Sm::Vertex_index> vertices;
-      PMP::triangulate_refine_and_fair_hole(
-          sm, loops[i], std::back_inserter(faces), std::back_inserter(vertices),
-          PMP::parameters::fairing_continuity(0).do_not_use_cubic_algorithm(lengths[i] >
-                                                                            kMaxCubicLoop));
-      if (faces.empty() && sm.is_border(loops[i])) {
-        FanClose(loops[i], &sm);
-      } else if (bend_onto_seen_planes) {
-        BendPatch(loop, normals, sign, faces, vertices, &sm);
-      }
+      CloseHole(loops[i], lengths[i], loop, normals, sign, bend_onto_seen_planes, &sm);
     }
   }
   FlipFlatPatchFaces(&sm);
