@@ -7,16 +7,10 @@
 
 #include <Eigen/Geometry>
 
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Polygon_mesh_processing/compute_normal.h>
-#include <CGAL/Polygon_mesh_processing/triangulate_hole.h>
-#include <CGAL/Surface_mesh.h>
-#include <CGAL/boost/graph/Euler_operations.h>
-
 #include "absl/strings/str_cat.h"
 #include "mesh/union_find.h"
 #include "meshseg/status_macros.h"
-#include "reconstruct/seen_planes.h"
+#include "reconstruct/close_hole.h"
 #include "reconstruct/surface_mesh.h"
 
 namespace meshseg::reconstruct_internal {
@@ -25,21 +19,8 @@ using mesh_internal::FindRoot;
 
 namespace {
 
-using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-using Sm = CGAL::Surface_mesh<Kernel::Point_3>;
-namespace PMP = CGAL::Polygon_mesh_processing;
-
-// Loops longer than this skip CGAL's cubic search over all triangles of the
-// loop when the Delaunay search space fails (O(n³) time, about 1 s CPU at 400
-// vertices); the fan closes them. The underside of a scanned part is such a
-// loop, zigzagging along the walls' lowest seen rows, and its fan (no inner
-// vertex, spokes as long as the part) cannot be bent onto the seen planes.
-constexpr size_t kMaxCubicLoop = 500;
-// A triangle is flat when twice its area is at most this fraction of its
-// longest edge squared (a hundred times the mesh readers' limit).
-constexpr double kFlatRatio = 1e-10;
-// Rounds of flipping flat patch triangles at most.
-constexpr int kFlatFlipPasses = 3;
+using Kernel = HoleKernel;
+using Sm = HoleMesh;
 
 // Marks every face of a vertex whose fan alternates kept/removed more than
 // once; returns whether it marked any.
@@ -131,23 +112,6 @@ std::vector<Sm::Halfedge_index> BorderLoops(const Sm& sm, std::vector<size_t>* l
   return loops;
 }
 
-// Closes the loop of `h` by a fan around the centroid of its vertices.
-void FanClose(Sm::Halfedge_index h, Sm* sm) {
-  Kernel::Vector_3 sum(0, 0, 0);
-  int n = 0;
-  for (auto g = h;;) {
-    sum = sum + (sm->point(sm->target(g)) - CGAL::ORIGIN);
-    ++n;
-    g = sm->next(g);
-    if (g == h) break;
-  }
-  CGAL::Euler::fill_hole(h, *sm);  // h now borders the new polygon
-  const auto spoke = CGAL::Euler::add_center_vertex(h, *sm);
-  sm->point(sm->target(spoke)) = CGAL::ORIGIN + sum / n;
-}
-
-Eigen::Vector3d ToEigen3(const Kernel::Point_3& p) { return {p.x(), p.y(), p.z()}; }
-
 // +1 when the faces of the closed `tri` face outwards (positive volume), else -1.
 double Outwards(const TriMesh& tri) {
   double volume = 0.0;
@@ -158,80 +122,6 @@ double Outwards(const TriMesh& tri) {
     volume += c[0].dot(c[1].cross(c[2]));
   }
   return volume >= 0 ? 1.0 : -1.0;
-}
-
-// The vertices of the loop of border halfedge `h` and the outward normals of
-// the surface there (`sign` × the area-weighted normal of their faces).
-void LoopWithNormals(const Sm& sm, Sm::Halfedge_index h, double sign,
-                     std::vector<Eigen::Vector3d>* loop, std::vector<Eigen::Vector3d>* normals) {
-  loop->clear();
-  normals->clear();
-  for (auto g = h;;) {
-    const auto v = sm.target(g);
-    loop->push_back(ToEigen3(sm.point(v)));
-    const auto n = PMP::compute_vertex_normal(v, sm);
-    normals->push_back(sign * Eigen::Vector3d(n.x(), n.y(), n.z()));
-    g = sm.next(g);
-    if (g == h) break;
-  }
-}
-
-// Bends the patch `faces` (free vertices `vertices`) of a hole whose loop was
-// `loop` onto the seen planes (seen_planes.h).
-void BendPatch(const std::vector<Eigen::Vector3d>& loop,
-               const std::vector<Eigen::Vector3d>& normals, double sign,
-               const std::vector<Sm::Face_index>& faces,
-               const std::vector<Sm::Vertex_index>& vertices, Sm* sm) {
-  Eigen::Vector3d patch_normal = Eigen::Vector3d::Zero();
-  for (const auto f : faces) {
-    const auto h = sm->halfedge(f);
-    const Eigen::Vector3d a = ToEigen3(sm->point(sm->source(h)));
-    const Eigen::Vector3d b = ToEigen3(sm->point(sm->target(h)));
-    const Eigen::Vector3d c = ToEigen3(sm->point(sm->target(sm->next(h))));
-    patch_normal += sign * (b - a).cross(c - a);
-  }
-  std::vector<Eigen::Vector3d> free_vertices;
-  for (const auto v : vertices) free_vertices.push_back(ToEigen3(sm->point(v)));
-  if (!BendOntoSeenPlanes(loop, normals, patch_normal, &free_vertices)) return;
-  for (size_t i = 0; i < vertices.size(); ++i) {
-    sm->point(vertices[i]) =
-        Kernel::Point_3(free_vertices[i].x(), free_vertices[i].y(), free_vertices[i].z());
-  }
-}
-
-// A patch triangle on three (nearly) collinear vertices (loop vertices the
-// refinement put on one straight crease line) has no area: mesh readers drop
-// it, and the surface read back is open. Flipping its longest edge, when a
-// patch face lies across it, replaces it by two triangles with the apex of
-// that face.
-void FlipFlatPatchFaces(Sm* sm) {
-  const auto filled = sm->property_map<Sm::Face_index, uint8_t>("f:filled").first;
-  for (int pass = 0; pass < kFlatFlipPasses; ++pass) {
-    bool changed = false;
-    for (const auto f : sm->faces()) {
-      if (!filled[f]) continue;
-      Sm::Halfedge_index longest;
-      double longest2 = -1.0;
-      for (const auto h : CGAL::halfedges_around_face(sm->halfedge(f), *sm)) {
-        const double l2 = CGAL::squared_distance(sm->point(sm->source(h)), sm->point(sm->target(h)));
-        if (l2 > longest2) {
-          longest2 = l2;
-          longest = h;
-        }
-      }
-      const Eigen::Vector3d a = ToEigen3(sm->point(sm->source(longest)));
-      const Eigen::Vector3d b = ToEigen3(sm->point(sm->target(longest)));
-      const Eigen::Vector3d c = ToEigen3(sm->point(sm->target(sm->next(longest))));
-      if ((b - a).cross(c - a).norm() > kFlatRatio * longest2) continue;
-      const auto across = sm->opposite(longest);
-      if (sm->is_border(across) || !filled[sm->face(across)]) continue;
-      const auto u = sm->target(sm->next(longest)), w = sm->target(sm->next(across));
-      if (u == w || CGAL::halfedge(u, w, *sm).second) continue;
-      CGAL::Euler::flip_edge(longest, *sm);
-      changed = true;
-    }
-    if (!changed) break;
-  }
 }
 
 int Components(const TriMesh& tri) {
@@ -305,20 +195,8 @@ absl::StatusOr<ClosedSurface> CloseUnsupported(const Mesh& mesh,
   out.hole_count = static_cast<int64_t>(loops.size());
   if (!leave_open) {
     const double sign = Outwards(tri);
-    std::vector<Eigen::Vector3d> loop, normals;
     for (size_t i = 0; i < loops.size(); ++i) {
-      LoopWithNormals(sm, loops[i], sign, &loop, &normals);
-      std::vector<Sm::Face_index> faces;
-      std::vector<Sm::Vertex_index> vertices;
-      PMP::triangulate_refine_and_fair_hole(
-          sm, loops[i], std::back_inserter(faces), std::back_inserter(vertices),
-          PMP::parameters::fairing_continuity(0).do_not_use_cubic_algorithm(lengths[i] >
-                                                                            kMaxCubicLoop));
-      if (faces.empty() && sm.is_border(loops[i])) {
-        FanClose(loops[i], &sm);
-      } else if (bend_onto_seen_planes) {
-        BendPatch(loop, normals, sign, faces, vertices, &sm);
-      }
+      CloseHole(loops[i], lengths[i], sign, bend_onto_seen_planes, &sm);
     }
   }
   FlipFlatPatchFaces(&sm);

@@ -42,8 +42,9 @@ struct ClosedSurface {
 // Removes the faces of the closed manifold `mesh` whose `supported` flag is
 // 0 (grown as above) and, unless `leave_open`, closes every hole. The result
 // is an oriented manifold; closed unless `leave_open` (then every edge has one
-// or two faces). A loop CGAL cannot triangulate is closed by a fan around its
-// centroid. `prior_filled` (one per face of `mesh`, or empty) flags faces a
+// or two faces). Each hole is closed by close_hole.h: a loop too long for
+// CGAL's cubic search is split by a chord first, and one CGAL cannot
+// triangulate is closed by a fan around its centroid. `prior_filled` (one per face of `mesh`, or empty) flags faces a
 // previous closing made; kept ones stay flagged in `filled` and count in
 // `filled_area`. With `bend_onto_seen_planes` each patch over a convex hole
 // is bent onto the seen surfaces extended past it (seen_planes.h); a cut
