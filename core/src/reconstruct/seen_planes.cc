@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdint>
 #include <utility>
+#include <vector>
 
 #include <Eigen/Eigenvalues>
 
@@ -70,21 +71,18 @@ bool CapPlane(const std::vector<Eigen::Vector3d>& loop, const Eigen::Vector3d& m
   if (!(best > 0)) return false;
   // Least squares to the vertices on it, twice as near: on a scan the ends
   // of the seen surfaces scatter by about a spacing.
+  std::vector<Eigen::Vector3d> on_plane;
   for (int round = 0; round < kCapRefits; ++round) {
+    on_plane.clear();
+    for (const Eigen::Vector3d& p : loop) {
+      if (std::abs(normal->dot(p) - *offset) <= 0.5 * band) on_plane.push_back(p);
+    }
+    if (on_plane.size() < 3) break;
     Eigen::Vector3d mean = Eigen::Vector3d::Zero();
-    int count = 0;
-    for (const Eigen::Vector3d& p : loop) {
-      if (std::abs(normal->dot(p) - *offset) > 0.5 * band) continue;
-      mean += p;
-      ++count;
-    }
-    if (count < 3) break;
-    mean /= count;
+    for (const Eigen::Vector3d& p : on_plane) mean += p;
+    mean /= static_cast<double>(on_plane.size());
     Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
-    for (const Eigen::Vector3d& p : loop) {
-      if (std::abs(normal->dot(p) - *offset) > 0.5 * band) continue;
-      cov += (p - mean) * (p - mean).transpose();
-    }
+    for (const Eigen::Vector3d& p : on_plane) cov += (p - mean) * (p - mean).transpose();
     const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(cov);  // ascending
     Eigen::Vector3d fitted = eig.eigenvectors().col(0);
     if (fitted.dot(*normal) < 0) fitted = -fitted;

@@ -108,7 +108,10 @@ std::vector<uint8_t> SupportedFaces(const TriMesh& tri, const std::vector<Eigen:
                                     const mesh_internal::PointIndex& index, double spacings,
                                     double band, double max_chord_edge) {
   std::vector<uint8_t> supported(tri.n_faces(), 0);
-  const std::vector<Eigen::Vector3d> vertex_normal = VertexNormals(tri);
+  // The chord error needs the vertex normals; without a resolution to allow
+  // it at (max_chord_edge 0) no face gains, and they are not computed.
+  const std::vector<Eigen::Vector3d> vertex_normal =
+      max_chord_edge > 0 ? VertexNormals(tri) : std::vector<Eigen::Vector3d>{};
   tbb::parallel_for(tbb::blocked_range<size_t>(0, tri.n_faces()), [&](const auto& range) {
     std::vector<uint32_t> near;
     std::vector<double> dist2;
@@ -119,7 +122,7 @@ std::vector<uint8_t> SupportedFaces(const TriMesh& tri, const std::vector<Eigen:
       std::array<Eigen::Vector3d, 3> corner, corner_normal;
       int k = 0;
       for (const auto v : tri.fv_range(f)) {
-        corner_normal[k] = vertex_normal[v.idx()];
+        if (!vertex_normal.empty()) corner_normal[k] = vertex_normal[v.idx()];
         corner[k++] = ToEigen(tri.point(v));
       }
       const Eigen::Vector3d centroid = (corner[0] + corner[1] + corner[2]) / 3.0;
@@ -135,7 +138,7 @@ std::vector<uint8_t> SupportedFaces(const TriMesh& tri, const std::vector<Eigen:
         const double longest = std::max({(corner[1] - corner[0]).norm(),
                                          (corner[2] - corner[1]).norm(),
                                          (corner[0] - corner[2]).norm()});
-        if (!(longest <= max_chord_edge)) continue;
+        if (!(max_chord_edge > 0 && longest <= max_chord_edge)) continue;
         const bool corners_near = std::all_of(corner.begin(), corner.end(), [&](const auto& c) {
           return NearPoints(c, points, index, spacings, band, &near, &dist2);
         });
