@@ -44,12 +44,17 @@ std::vector<double> FilterPass(const VertexGraph& graph, const std::vector<uint8
 
 }  // namespace
 
-void FilterCurvature(const VertexGraph& graph, CurvatureField* field) {
+void FilterCurvature(const OrderedGraph& walk, CurvatureField* field) {
+  // In the walk's numbering (each ring the same values in the same order,
+  // so the same medians and means), then back under each vertex's index.
+  const std::vector<uint8_t> sharp = walk.Permuted<uint8_t>(field->sharp);
   for (std::vector<double>* values : {&field->kappa_max, &field->kappa_min}) {
-    *values = FilterPass(graph, field->sharp, *values, /*use_median=*/true);
+    std::vector<double> walked = walk.Permuted<double>(*values);
+    walked = FilterPass(walk.graph, sharp, walked, /*use_median=*/true);
     for (int k = 0; k < kMeanPasses; ++k) {
-      *values = FilterPass(graph, field->sharp, *values, /*use_median=*/false);
+      walked = FilterPass(walk.graph, sharp, walked, /*use_median=*/false);
     }
+    for (std::size_t k = 0; k < walked.size(); ++k) (*values)[walk.order[k]] = walked[k];
   }
   for (std::size_t v = 0; v < field->kappa_max.size(); ++v) {
     if (std::abs(field->kappa_min[v]) > std::abs(field->kappa_max[v])) {

@@ -7,38 +7,50 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include "curvature/spatial_order.h"
 #include "meshseg/curvature.h"
 
 namespace meshseg {
 
-VertexGraph BuildVertexGraph(const TriMesh& mesh) {
+namespace curvature_internal {
+
+VertexGraph NumberedVertexGraph(const TriMesh& mesh, std::span<const int> order,
+                                std::span<const int> rank) {
   // Two parallel passes over the vertices (valences, then the rows in the
   // order OpenMesh circulates them) around a prefix sum: each vertex's row
   // is the same as a serial build's.
+  const bool renumbered = !order.empty();
   VertexGraph g;
   const int n = static_cast<int>(mesh.n_vertices());
   g.offsets.assign(n + 1, 0);
   g.positions.resize(n);
   tbb::parallel_for(tbb::blocked_range<int>(0, n, 4096), [&](const tbb::blocked_range<int>& r) {
-    for (int v = r.begin(); v < r.end(); ++v) {
-      const TriMesh::VertexHandle vh(v);
-      g.positions[v] = ToEigen(mesh.point(vh));
+    for (int k = r.begin(); k < r.end(); ++k) {
+      const TriMesh::VertexHandle vh(renumbered ? order[k] : k);
+      g.positions[k] = ToEigen(mesh.point(vh));
       int valence = 0;
       for (auto it = mesh.cvv_iter(vh); it.is_valid(); ++it) ++valence;
-      g.offsets[v + 1] = valence;
+      g.offsets[k + 1] = valence;
     }
   });
-  for (int v = 0; v < n; ++v) g.offsets[v + 1] += g.offsets[v];
+  for (int k = 0; k < n; ++k) g.offsets[k + 1] += g.offsets[k];
   g.neighbors.resize(g.offsets[n]);
   tbb::parallel_for(tbb::blocked_range<int>(0, n, 4096), [&](const tbb::blocked_range<int>& r) {
-    for (int v = r.begin(); v < r.end(); ++v) {
-      int k = g.offsets[v];
-      for (auto it = mesh.cvv_iter(TriMesh::VertexHandle(v)); it.is_valid(); ++it) {
-        g.neighbors[k++] = it->idx();
+    for (int k = r.begin(); k < r.end(); ++k) {
+      int out = g.offsets[k];
+      const TriMesh::VertexHandle vh(renumbered ? order[k] : k);
+      for (auto it = mesh.cvv_iter(vh); it.is_valid(); ++it) {
+        g.neighbors[out++] = renumbered ? rank[it->idx()] : it->idx();
       }
     }
   });
   return g;
+}
+
+}  // namespace curvature_internal
+
+VertexGraph BuildVertexGraph(const TriMesh& mesh) {
+  return curvature_internal::NumberedVertexGraph(mesh, {}, {});
 }
 
 void CollectNeighborhood(const VertexGraph& graph, int i, double radius,

@@ -90,8 +90,8 @@ FitResult FitCone(const FitInput& input, const FitParams& params) {
     // The cylinder's start (seed 002) as well: angle 0 about the smallest
     // eigenvector of Σ w n nᵀ. The apex solve trusts every normal; where
     // smoothed normals turn toward the faces beyond a region's creases (a
-    // groove's rims and ends) it can put the axis far off: on test_piece's
-    // groove at 0.15 h (seed 197) the normals gave 52 degrees, and LM went
+    // groove's rims and ends) it can put the axis far off: on a narrow
+    // cylindrical groove at 0.15 h the normals gave 52 degrees, and LM went
     // on to a cone of 87 degrees, rms 2.1 against a noise of 0.15.
     AxialSurface cylinder;
     if (FitCrossSection(input, m.centroid, SymmetricEigen(gauss).vectors.col(0), &cylinder)) {

@@ -44,7 +44,7 @@ FitResult FitCylinder(const FitInput& input, const FitParams& params) {
     // r 2077 across the true axis); the fan direction is tried as well, and
     // the points' longest direction, for normals scattered aslant, where
     // both of the Gauss sphere's are well off the axis (22 and 68 degrees on
-    // a band of rounded_prism at 0.15 h, which fitted r 469).
+    // a quarter-round edge band of a prism at 0.15 h, which fitted r 469).
     if (e.values(1) < kNarrowFanRatio * e.values(2)) {
       axes.push_back(e.vectors.col(1));
       axes.push_back(pca.vectors.col(2));

@@ -5,6 +5,8 @@
 
 #include <Eigen/Geometry>
 #include <OpenMesh/Core/System/omstream.hh>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
 
 #include "absl/strings/str_cat.h"
 #include "meshseg/input_size.h"
@@ -103,9 +105,12 @@ absl::Status Fill(RawMesh raw, const Source& src, Mesh* out) {
   mesh.input_vertex_count = raw.input_vertex_count > 0 ? raw.input_vertex_count : nv;
   InputTopology& topo = mesh.input_topology;
   LargeVector<uint8_t> keep(tris.size(), 1);
-  for (size_t t = 0; t < tris.size(); ++t) {
-    if (IsDegenerate(tris[t], raw.vertices)) keep[t] = 0;
-  }
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, tris.size(), 8192),
+                    [&](const tbb::blocked_range<size_t>& range) {
+                      for (size_t t = range.begin(); t < range.end(); ++t) {
+                        if (IsDegenerate(tris[t], raw.vertices)) keep[t] = 0;
+                      }
+                    });
   // Degenerate input faces: those whose triangles are all degenerate.
   for (int64_t f = 0, t = 0; f < nf; ++f) {
     bool any = false;

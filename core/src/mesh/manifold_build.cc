@@ -1,9 +1,13 @@
 #include "mesh/manifold_build.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cstdint>
 #include <numeric>
 #include <utility>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
 
 namespace meshseg::mesh_internal {
 namespace {
@@ -28,22 +32,31 @@ LargeVector<int> Twins(const LargeVector<std::array<int, 3>>& triangles, int ver
     const auto& t = triangles[h / 3];
     out[next[t[h % 3]]++] = {t[(h % 3 + 1) % 3], h};
   }
-  for (int v = 0; v < vertex_count; ++v) {
-    std::sort(out.begin() + start[v], out.begin() + start[v + 1]);
-    for (int k = start[v] + 1; k < start[v + 1]; ++k) {
-      if (out[k].first == out[k - 1].first) return {};
-    }
-  }
+  // Each vertex's row on its own, then each halfedge's lookup on its own
+  // (independent; the pairs are distinct, so a row's sorted order is unique).
+  std::atomic<bool> repeated{false};
+  tbb::parallel_for(tbb::blocked_range<int>(0, vertex_count, 4096),
+                    [&](const tbb::blocked_range<int>& range) {
+                      for (int v = range.begin(); v < range.end(); ++v) {
+                        std::sort(out.begin() + start[v], out.begin() + start[v + 1]);
+                        for (int k = start[v] + 1; k < start[v + 1]; ++k) {
+                          if (out[k].first == out[k - 1].first) repeated = true;
+                        }
+                      }
+                    });
+  if (repeated) return {};
   LargeVector<int> twin(n, -1);
-  for (int h = 0; h < n; ++h) {
-    const auto& t = triangles[h / 3];
-    const int from = t[h % 3];
-    const int to = t[(h % 3 + 1) % 3];
-    const auto first = out.begin() + start[to];
-    const auto last = out.begin() + start[to + 1];
-    const auto it = std::lower_bound(first, last, std::make_pair(from, -1));
-    if (it != last && it->first == from) twin[h] = it->second;
-  }
+  tbb::parallel_for(tbb::blocked_range<int>(0, n, 8192), [&](const tbb::blocked_range<int>& range) {
+    for (int h = range.begin(); h < range.end(); ++h) {
+      const auto& t = triangles[h / 3];
+      const int from = t[h % 3];
+      const int to = t[(h % 3 + 1) % 3];
+      const auto first = out.begin() + start[to];
+      const auto last = out.begin() + start[to + 1];
+      const auto it = std::lower_bound(first, last, std::make_pair(from, -1));
+      if (it != last && it->first == from) twin[h] = it->second;
+    }
+  });
   return twin;
 }
 

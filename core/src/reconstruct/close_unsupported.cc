@@ -7,14 +7,10 @@
 
 #include <Eigen/Geometry>
 
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Polygon_mesh_processing/triangulate_hole.h>
-#include <CGAL/Surface_mesh.h>
-#include <CGAL/boost/graph/Euler_operations.h>
-
 #include "absl/strings/str_cat.h"
 #include "mesh/union_find.h"
 #include "meshseg/status_macros.h"
+#include "reconstruct/close_hole.h"
 #include "reconstruct/surface_mesh.h"
 
 namespace meshseg::reconstruct_internal {
@@ -23,13 +19,8 @@ using mesh_internal::FindRoot;
 
 namespace {
 
-using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-using Sm = CGAL::Surface_mesh<Kernel::Point_3>;
-namespace PMP = CGAL::Polygon_mesh_processing;
-
-// Loops longer than this skip CGAL's cubic search over all triangles of the
-// loop when the Delaunay search space fails (O(n³) time); the fan closes them.
-constexpr size_t kMaxCubicLoop = 150;
+using Kernel = HoleKernel;
+using Sm = HoleMesh;
 
 // Marks every face of a vertex whose fan alternates kept/removed more than
 // once; returns whether it marked any.
@@ -121,19 +112,16 @@ std::vector<Sm::Halfedge_index> BorderLoops(const Sm& sm, std::vector<size_t>* l
   return loops;
 }
 
-// Closes the loop of `h` by a fan around the centroid of its vertices.
-void FanClose(Sm::Halfedge_index h, Sm* sm) {
-  Kernel::Vector_3 sum(0, 0, 0);
-  int n = 0;
-  for (auto g = h;;) {
-    sum = sum + (sm->point(sm->target(g)) - CGAL::ORIGIN);
-    ++n;
-    g = sm->next(g);
-    if (g == h) break;
+// +1 when the faces of the closed `tri` face outwards (positive volume), else -1.
+double Outwards(const TriMesh& tri) {
+  double volume = 0.0;
+  for (const auto f : tri.faces()) {
+    std::array<Eigen::Vector3d, 3> c;
+    int k = 0;
+    for (const auto v : tri.fv_range(f)) c[k++] = ToEigen(tri.point(v));
+    volume += c[0].dot(c[1].cross(c[2]));
   }
-  CGAL::Euler::fill_hole(h, *sm);  // h now borders the new polygon
-  const auto spoke = CGAL::Euler::add_center_vertex(h, *sm);
-  sm->point(sm->target(spoke)) = CGAL::ORIGIN + sum / n;
+  return volume >= 0 ? 1.0 : -1.0;
 }
 
 int Components(const TriMesh& tri) {
@@ -173,7 +161,8 @@ int Genus(const TriMesh& tri) {
 absl::StatusOr<ClosedSurface> CloseUnsupported(const Mesh& mesh,
                                                const std::vector<uint8_t>& supported,
                                                double min_component_fraction, bool leave_open,
-                                               const std::vector<uint8_t>& prior_filled) {
+                                               const std::vector<uint8_t>& prior_filled,
+                                               bool bend_onto_seen_planes) {
   const TriMesh& tri = mesh.tri;
   ClosedSurface out;
   std::vector<uint8_t> removed(tri.n_faces());
@@ -205,16 +194,12 @@ absl::StatusOr<ClosedSurface> CloseUnsupported(const Mesh& mesh,
   const std::vector<Sm::Halfedge_index> loops = BorderLoops(sm, &lengths);
   out.hole_count = static_cast<int64_t>(loops.size());
   if (!leave_open) {
+    const double sign = Outwards(tri);
     for (size_t i = 0; i < loops.size(); ++i) {
-      std::vector<Sm::Face_index> faces;
-      std::vector<Sm::Vertex_index> vertices;
-      PMP::triangulate_refine_and_fair_hole(
-          sm, loops[i], std::back_inserter(faces), std::back_inserter(vertices),
-          PMP::parameters::fairing_continuity(0).do_not_use_cubic_algorithm(lengths[i] >
-                                                                            kMaxCubicLoop));
-      if (faces.empty() && sm.is_border(loops[i])) FanClose(loops[i], &sm);
+      CloseHole(loops[i], lengths[i], sign, bend_onto_seen_planes, &sm);
     }
   }
+  FlipFlatPatchFaces(&sm);
   const auto filled = sm.property_map<Sm::Face_index, uint8_t>("f:filled").first;
   std::vector<Eigen::Vector3d> points;
   std::vector<int> index(sm.num_vertices(), -1);

@@ -14,8 +14,11 @@
 // triangulation of the loop (area, then dihedral angles), refined to the
 // density of the loop's edges and faired with harmonic (membrane, continuity
 // 0) weights: the least-area smooth patch the loop spans, not an
-// extrapolation of the fits. A removed tube of a handle leaves two loops,
-// each closed by a disk: the handle the points did not support is cut.
+// extrapolation of the fits. Where the loop climbs the seen walls of a convex
+// hole, the membrane cuts their corners with the unseen face; the support
+// step then bends it onto the seen surfaces extended (seen_planes.h). A
+// removed tube of a handle leaves two loops, each closed by a disk: the
+// handle the points did not support is cut.
 #ifndef MESHSEG_RECONSTRUCT_CLOSE_UNSUPPORTED_H_
 #define MESHSEG_RECONSTRUCT_CLOSE_UNSUPPORTED_H_
 
@@ -39,14 +42,19 @@ struct ClosedSurface {
 // Removes the faces of the closed manifold `mesh` whose `supported` flag is
 // 0 (grown as above) and, unless `leave_open`, closes every hole. The result
 // is an oriented manifold; closed unless `leave_open` (then every edge has one
-// or two faces). A loop CGAL cannot triangulate is closed by a fan around its
-// centroid. `prior_filled` (one per face of `mesh`, or empty) flags faces a
+// or two faces). Each hole is closed by close_hole.h: a loop too long for
+// CGAL's cubic search is split by a chord first, and one CGAL cannot
+// triangulate is closed by a fan around its centroid. `prior_filled` (one per face of `mesh`, or empty) flags faces a
 // previous closing made; kept ones stay flagged in `filled` and count in
-// `filled_area`. Errors: INTERNAL if the result breaks these invariants.
+// `filled_area`. With `bend_onto_seen_planes` each patch over a convex hole
+// is bent onto the seen surfaces extended past it (seen_planes.h); a cut
+// handle's two discs stay membranes. Errors: INTERNAL if the result breaks
+// these invariants.
 absl::StatusOr<ClosedSurface> CloseUnsupported(const Mesh& mesh,
                                                const std::vector<uint8_t>& supported,
                                                double min_component_fraction, bool leave_open,
-                                               const std::vector<uint8_t>& prior_filled = {});
+                                               const std::vector<uint8_t>& prior_filled = {},
+                                               bool bend_onto_seen_planes = false);
 
 // Total genus of `tri`: (2 C − χ − B) / 2 with C components, χ = V − E + F
 // and B border loops (a closed mesh has B = 0).

@@ -273,12 +273,16 @@ absl::StatusOr<Reconstruction> Reconstruct(const PointCloud& cloud, const Recons
     ctx.Progress("reconstruct: support", 0.0);
     const double band =
         std::max(params.off_surface_distance * h, params.outlier_noise_sigmas * stats.noise);
+    // The refinement leaves no edge over kStretchedEdge refined lengths
+    // unless it is a tent (refine.h); faces up to that may chord the surface.
     const std::vector<uint8_t> supported =
-        SupportedFaces(out.mesh.tri, points, index, params.support_spacings, band);
+        SupportedFaces(out.mesh.tri, points, index, params.support_spacings, band,
+                       kStretchedEdge * stats.refine_edge_length);
     MESHSEG_RETURN_IF_ERROR(ctx.CheckStop(kStage));
     MESHSEG_ASSIGN_OR_RETURN(ClosedSurface closed,
                              CloseUnsupported(out.mesh, supported, params.min_component_fraction,
-                                              params.leave_unsupported_open));
+                                              params.leave_unsupported_open, {},
+                                              /*bend_onto_seen_planes=*/true));
     stats.unsupported_face_count = closed.removed_face_count;
     stats.hole_count = closed.hole_count;
     stats.filled_area = closed.filled_area;

@@ -53,7 +53,46 @@ bool BeyondSampledBorder(const Eigen::Vector3d& c, const Eigen::Vector3d& normal
   return gap > M_PI;
 }
 
+// Area-weighted unit vertex normals of `tri` (zero at a vertex with no area).
+std::vector<Eigen::Vector3d> VertexNormals(const TriMesh& tri) {
+  std::vector<Eigen::Vector3d> normal(tri.n_vertices(), Eigen::Vector3d::Zero());
+  for (const auto f : tri.faces()) {
+    std::array<int, 3> v;
+    std::array<Eigen::Vector3d, 3> c;
+    int k = 0;
+    for (const auto u : tri.fv_range(f)) {
+      v[k] = u.idx();
+      c[k++] = ToEigen(tri.point(u));
+    }
+    const Eigen::Vector3d n = (c[1] - c[0]).cross(c[2] - c[0]);
+    for (const int u : v) normal[u] += n;
+  }
+  for (Eigen::Vector3d& n : normal) {
+    if (n.norm() > 0) n.normalize();
+  }
+  return normal;
+}
+
+// Whether `q` lies within `spacings` × s + `band` of its nearest point, s
+// measured at that point.
+bool NearPoints(const Eigen::Vector3d& q, const std::vector<Eigen::Vector3d>& points,
+                const mesh_internal::PointIndex& index, double spacings, double band,
+                std::vector<uint32_t>* near, std::vector<double>* dist2) {
+  const Eigen::Vector3d& p = points[index.Closest(q)];
+  return (q - p).norm() <= spacings * SpacingAtPoint(p, index, near, dist2) + band;
+}
+
 }  // namespace
+
+double ChordError(const std::array<Eigen::Vector3d, 3>& corner,
+                  const std::array<Eigen::Vector3d, 3>& normal) {
+  const Eigen::Vector3d centroid = (corner[0] + corner[1] + corner[2]) / 3.0;
+  double error = 0.0;
+  for (int k = 0; k < 3; ++k) {
+    error = std::max(error, std::abs((centroid - corner[k]).dot(normal[k])));
+  }
+  return error;
+}
 
 double SpacingAtPoint(const Eigen::Vector3d& p, const mesh_internal::PointIndex& index,
                       std::vector<uint32_t>* near, std::vector<double>* dist2) {
@@ -67,8 +106,12 @@ double SpacingAtPoint(const Eigen::Vector3d& p, const mesh_internal::PointIndex&
 
 std::vector<uint8_t> SupportedFaces(const TriMesh& tri, const std::vector<Eigen::Vector3d>& points,
                                     const mesh_internal::PointIndex& index, double spacings,
-                                    double band) {
+                                    double band, double max_chord_edge) {
   std::vector<uint8_t> supported(tri.n_faces(), 0);
+  // The chord error needs the vertex normals; without a resolution to allow
+  // it at (max_chord_edge 0) no face gains, and they are not computed.
+  const std::vector<Eigen::Vector3d> vertex_normal =
+      max_chord_edge > 0 ? VertexNormals(tri) : std::vector<Eigen::Vector3d>{};
   tbb::parallel_for(tbb::blocked_range<size_t>(0, tri.n_faces()), [&](const auto& range) {
     std::vector<uint32_t> near;
     std::vector<double> dist2;
@@ -76,15 +119,33 @@ std::vector<uint8_t> SupportedFaces(const TriMesh& tri, const std::vector<Eigen:
     std::vector<double> angles;
     for (size_t i = range.begin(); i != range.end(); ++i) {
       const TriMesh::FaceHandle f(static_cast<int>(i));
-      std::array<Eigen::Vector3d, 3> corner;
+      std::array<Eigen::Vector3d, 3> corner, corner_normal;
       int k = 0;
-      for (const auto v : tri.fv_range(f)) corner[k++] = ToEigen(tri.point(v));
+      for (const auto v : tri.fv_range(f)) {
+        if (!vertex_normal.empty()) corner_normal[k] = vertex_normal[v.idx()];
+        corner[k++] = ToEigen(tri.point(v));
+      }
       const Eigen::Vector3d centroid = (corner[0] + corner[1] + corner[2]) / 3.0;
       const Eigen::Vector3d& p = points[index.Closest(centroid)];
       const Eigen::Vector3d offset = centroid - p;
       const double s = SpacingAtPoint(p, index, &near, &dist2);
-      const double reach = spacings * s + band;
-      if (!(offset.norm() <= reach)) continue;
+      double reach = spacings * s + band;
+      if (!(offset.norm() <= reach)) {
+        // A face on the points chords the surface: allow for its own chord
+        // error, but only when it is no longer than the mesh's resolution (a
+        // tent is not) and its corners are on the points (a flap into empty
+        // space has corners off them).
+        const double longest = std::max({(corner[1] - corner[0]).norm(),
+                                         (corner[2] - corner[1]).norm(),
+                                         (corner[0] - corner[2]).norm()});
+        if (!(max_chord_edge > 0 && longest <= max_chord_edge)) continue;
+        const bool corners_near = std::all_of(corner.begin(), corner.end(), [&](const auto& c) {
+          return NearPoints(c, points, index, spacings, band, &near, &dist2);
+        });
+        if (!corners_near) continue;
+        reach += ChordError(corner, corner_normal);
+        if (!(offset.norm() <= reach)) continue;
+      }
       // Along the surface: across the face's normal (a sliver's normal is
       // noise, but its centroid is then near a point anyway or tested below).
       const Eigen::Vector3d normal = (corner[1] - corner[0]).cross(corner[2] - corner[0]);

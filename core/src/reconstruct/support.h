@@ -13,6 +13,28 @@
 // face is, not a global constant, so sparse but genuine regions (grazing
 // views, far from the scanner) keep their surface.
 //
+// The mesh itself is piecewise linear: where its faces are coarser than the
+// points (a refine edge capped by the face budget on a dense cloud), a face
+// whose corners lie on the points chords the surface between them, by its
+// sagitta ≈ e² / (8 R) for edge e on a surface of curvature radius R, or by
+// more where a crease runs through the face. Its centroid then lies that far
+// off the points although the face is on the surface. So the reach grows by
+// the face's own chord error, the largest distance of its centroid from the
+// tangent planes at its corners (normal to the area-weighted vertex normals).
+// That bounds how far the surface can lie off the face: along an edge whose
+// normals turn by θ, a smooth surface lies e θ / 8 off its midpoint (the
+// sagitta) and either end's tangent plane e θ / 4; a crease midway between
+// the ends lies e tan(θ/2) / 2 ≈ e θ / 4 off it. Only a face that can be such
+// a chord gains:
+// - its three corners are supported (a flap into empty space has corners
+//   off the points);
+// - its edges are no longer than the mesh's resolution (`max_chord_edge`):
+//   a longer face is a marching-tetrahedra tent spanning between two faces
+//   through the solid (refine.h), whose hole the patch closes onto the seen
+//   planes (seen_planes.h).
+// A face in the tangent planes of its corners (a flap or membrane continuing
+// the seen surface) gains nothing.
+//
 // The factor `spacings` and the band are room for gaps between samples and
 // for noise along the normal; past the border of the sampled area (an
 // occlusion edge, the side a part stood on) they would let the surface run on
@@ -33,6 +55,7 @@
 #ifndef MESHSEG_RECONSTRUCT_SUPPORT_H_
 #define MESHSEG_RECONSTRUCT_SUPPORT_H_
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -54,14 +77,23 @@ inline constexpr double kBorderSpacings = 0.5;
 double SpacingAtPoint(const Eigen::Vector3d& p, const mesh_internal::PointIndex& index,
                       std::vector<uint32_t>* near, std::vector<double>* dist2);
 
+// The chord error of a face with corners `corner` whose surface has unit
+// normals `normal` there: the largest distance of the centroid from the
+// tangent plane at a corner. On a sphere of radius R it is r² / R for
+// circumradius r, twice the centroid's depth below the sphere (see above).
+double ChordError(const std::array<Eigen::Vector3d, 3>& corner,
+                  const std::array<Eigen::Vector3d, 3>& normal);
+
 // Returns one flag per face of `tri`: 1 when the face is supported by
 // `points` (indexed by `index`, at least kSpacingNeighbors + 1 of them):
 // within `spacings` × s + `band` of its nearest point, and, if more than
 // kBorderSpacings × s from it along the face, surrounded by the points within
-// twice that reach (see above); `band` in model units.
+// twice that reach (see above); the reach grows by the face's chord error when
+// its corners are within reach of the points and its edges within
+// `max_chord_edge` (0: never); `band` and `max_chord_edge` in model units.
 std::vector<uint8_t> SupportedFaces(const TriMesh& tri, const std::vector<Eigen::Vector3d>& points,
                                     const mesh_internal::PointIndex& index, double spacings,
-                                    double band);
+                                    double band, double max_chord_edge);
 
 }  // namespace meshseg::reconstruct_internal
 

@@ -4,6 +4,9 @@
 #include <cmath>
 #include <vector>
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/parallel_invoke.h>
 #include <tbb/parallel_sort.h>
 
 namespace meshseg::segment_internal {
@@ -49,13 +52,24 @@ double Mode(std::vector<double> x) {
 
 SegmentEstimates EstimateNoise(const CurvatureField& curvature, double l_avg,
                                const SegmentParams& params) {
+  // Each vertex's tilt on its own (independent), then the non-sharp ones
+  // in vertex order.
+  const int n = static_cast<int>(curvature.sharp.size());
+  std::vector<double> tilt_of(n, 0.0);
+  tbb::parallel_for(tbb::blocked_range<int>(0, n, 8192), [&](const tbb::blocked_range<int>& r) {
+    for (int v = r.begin(); v < r.end(); ++v) {
+      if (curvature.sharp[v]) continue;
+      const double cosine =
+          std::clamp(curvature.normal[v].dot(curvature.smooth_normal[v]), -1.0, 1.0);
+      tilt_of[v] = std::acos(cosine) * 180.0 / kPi;
+    }
+  });
   std::vector<double> residual;
   std::vector<double> tilt_deg;
-  for (std::size_t v = 0; v < curvature.sharp.size(); ++v) {
+  for (int v = 0; v < n; ++v) {
     if (curvature.sharp[v]) continue;
     residual.push_back(curvature.fit_residual[v]);
-    const double cosine = std::clamp(curvature.normal[v].dot(curvature.smooth_normal[v]), -1.0, 1.0);
-    tilt_deg.push_back(std::acos(cosine) * 180.0 / kPi);
+    tilt_deg.push_back(tilt_of[v]);
   }
   const double limit = kCleanResidual * Mode(residual);
   std::vector<double> clean_residual;
@@ -71,10 +85,13 @@ SegmentEstimates EstimateNoise(const CurvatureField& curvature, double l_avg,
   }
   SegmentEstimates e;
   e.mean_edge_length = l_avg;
-  e.noise_sigma = Median(residual);
+  // The two medians side by side (independent).
+  double median_tilt_deg = 0.0;
+  tbb::parallel_invoke([&] { e.noise_sigma = Median(residual); },
+                       [&] { median_tilt_deg = Median(tilt_deg); });
   e.distance_tolerance = std::max(params.distance_tolerance * l_avg, kSigmas * e.noise_sigma);
   e.angle_tolerance_deg = params.angle_tolerance_deg.value_or(
-      std::clamp(kAngleSpread * Median(tilt_deg), kMinAngleDeg, kMaxAngleDeg));
+      std::clamp(kAngleSpread * median_tilt_deg, kMinAngleDeg, kMaxAngleDeg));
   e.sharp_threshold = curvature.sharp_threshold;
   return e;
 }

@@ -36,13 +36,22 @@ Segmentation Assemble(const SegmentContext& c, const TriMesh& mesh,
     region.surface = regions[old].surface;
     seg.regions.push_back(region);
   }
+  // Face areas each on its own (independent), summed per region in face
+  // order as before.
+  const int n_faces = static_cast<int>(face_old.size());
+  std::vector<double> face_area(n_faces, 0.0);
+  tbb::parallel_for(tbb::blocked_range<int>(0, n_faces, 8192), [&](const auto& r) {
+    for (int f = r.begin(); f < r.end(); ++f) {
+      if (face_old[f] >= 0) face_area[f] = mesh.calc_face_area(TriMesh::FaceHandle(f));
+    }
+  });
   seg.face_labels.resize(face_old.size());
-  for (std::size_t f = 0; f < face_old.size(); ++f) {
+  for (int f = 0; f < n_faces; ++f) {
     const int id = face_old[f] < 0 ? -1 : new_id[face_old[f]];
     seg.face_labels[f] = id;
     if (id < 0) continue;
     seg.regions[id].face_count += 1;
-    seg.regions[id].area += mesh.calc_face_area(TriMesh::FaceHandle(static_cast<int>(f)));
+    seg.regions[id].area += face_area[f];
   }
   const int n = c.vertex_count();
   seg.vertex_labels.assign(n, -1);

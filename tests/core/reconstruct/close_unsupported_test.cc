@@ -1,6 +1,8 @@
 #include "reconstruct/close_unsupported.h"
 
+#include <array>
 #include <cmath>
+#include <map>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -77,6 +79,98 @@ TEST(CloseUnsupported, AnUnsupportedBandAroundATubeIsClosedByTwoFlatDiscs) {
     EXPECT_LT(std::min(std::abs(c.y()), std::abs(c.dot(cut_normal))), 1e-6) << c.transpose();
   }
   EXPECT_GE(filled, 2 * (kNv - 2));
+}
+
+// A closed box [0, kBoxX] × [0, kBoxY] × [0, kBoxZ] triangulated on a grid of
+// step kBoxStep, faces outwards.
+constexpr double kBoxX = 8.0, kBoxY = 6.0, kBoxZ = 4.0, kBoxStep = 0.25;
+
+Mesh BoxMesh() {
+  const std::array<int, 3> n = {static_cast<int>(kBoxX / kBoxStep),
+                                static_cast<int>(kBoxY / kBoxStep),
+                                static_cast<int>(kBoxZ / kBoxStep)};
+  std::map<std::array<int, 3>, int> id;
+  std::vector<Eigen::Vector3d> vertices;
+  const auto vertex = [&](const std::array<int, 3>& g) {
+    const auto [it, added] = id.emplace(g, static_cast<int>(vertices.size()));
+    if (added) vertices.emplace_back(g[0] * kBoxStep, g[1] * kBoxStep, g[2] * kBoxStep);
+    return it->second;
+  };
+  std::vector<std::array<int, 3>> triangles;
+  for (int d = 0; d < 3; ++d) {
+    const int u = (d + 1) % 3, w = (d + 2) % 3;  // u × w = d
+    for (const int side : {0, 1}) {
+      for (int i = 0; i < n[u]; ++i) {
+        for (int j = 0; j < n[w]; ++j) {
+          std::array<std::array<int, 3>, 4> q;
+          for (int c = 0; c < 4; ++c) {
+            q[c][d] = side * n[d];
+            q[c][u] = i + (c == 1 || c == 2);
+            q[c][w] = j + (c >= 2);
+          }
+          const int a = vertex(q[0]), b = vertex(q[1]), c = vertex(q[2]), e = vertex(q[3]);
+          if (side == 1) {
+            triangles.push_back({a, b, c});
+            triangles.push_back({a, c, e});
+          } else {
+            triangles.push_back({a, c, b});
+            triangles.push_back({a, e, c});
+          }
+        }
+      }
+    }
+  }
+  return *SurfaceMesh(vertices, triangles, "box");
+}
+
+// Distance from `p` to the surface of the box.
+double DistanceToBox(const Eigen::Vector3d& p) {
+  const Eigen::Vector3d hi(kBoxX, kBoxY, kBoxZ);
+  const Eigen::Vector3d outside = (-p).cwiseMax(p - hi).cwiseMax(0.0);
+  if (outside.norm() > 0) return outside.norm();
+  return std::min(p.minCoeff(), (hi - p).minCoeff());
+}
+
+// The unseen underside of a box whose walls were seen down to different
+// heights: the whole bottom is unsupported, and so are the left wall below
+// z = 1 and a notch of the front wall below z = 2 (2 < x < 6). The loop
+// climbs the walls, so a membrane across it cuts the corners between the
+// walls and the bottom. The truth is the box: the walls extended down to
+// the plane of the loop's lowest run, the bottom. Every patch vertex must
+// lie on the box's surface.
+TEST(CloseUnsupported, AnUnseenFaceBelowWallsSeenToDifferentHeightsMeetsTheWallsExtended) {
+  const Mesh box = BoxMesh();
+  ASSERT_EQ(Genus(box.tri), 0);
+  std::vector<uint8_t> supported(box.tri.n_faces(), 1);
+  double removed_area = 0.0;
+  for (const auto f : box.tri.faces()) {
+    Eigen::Vector3d c = Eigen::Vector3d::Zero();
+    for (const auto v : box.tri.fv_range(f)) c += ToEigen(box.tri.point(v)) / 3;
+    const bool bottom = c.z() < 1e-9;
+    const bool left = c.x() < 1e-9 && c.z() < 1.0;
+    const bool notch = c.y() < 1e-9 && c.z() < 2.0 && c.x() > 2.0 && c.x() < 6.0;
+    if (!(bottom || left || notch)) continue;
+    supported[f.idx()] = 0;
+    removed_area += box.tri.calc_face_area(f);
+  }
+  const auto closed = CloseUnsupported(box, supported, 0.01, false, {}, true);
+  ASSERT_TRUE(closed.ok()) << closed.status();
+  EXPECT_EQ(closed->hole_count, 1);
+  ExpectEveryEdgeTwoFaces(closed->mesh.tri);
+  EXPECT_EQ(Genus(closed->mesh.tri), 0);
+  EXPECT_EQ(test::ComponentCount(closed->mesh.tri), 1);
+  // The patch is the removed surface again, not the smaller membrane.
+  EXPECT_NEAR(closed->filled_area, removed_area, 0.08 * removed_area);
+  double farthest = 0.0;
+  for (const auto f : closed->mesh.tri.faces()) {
+    if (!closed->filled[f.idx()]) continue;
+    for (const auto v : closed->mesh.tri.fv_range(f)) {
+      farthest = std::max(farthest, DistanceToBox(ToEigen(closed->mesh.tri.point(v))));
+    }
+  }
+  // A vertex sits on one face of the box; a triangle straddling an edge
+  // still has its corners on the surface.
+  EXPECT_LT(farthest, 1e-6 * kBoxX);
 }
 
 TEST(CloseUnsupported, OpenLeavesTheTwoBorderLoopsOfTheBand) {

@@ -1,0 +1,197 @@
+#include "reconstruct/close_hole.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <iterator>
+#include <limits>
+#include <optional>
+#include <vector>
+
+#include <Eigen/Geometry>
+
+#include <CGAL/Polygon_mesh_processing/compute_normal.h>
+#include <CGAL/Polygon_mesh_processing/triangulate_hole.h>
+#include <CGAL/boost/graph/Euler_operations.h>
+
+#include "reconstruct/seen_planes.h"
+
+namespace meshseg::reconstruct_internal {
+namespace {
+
+using Kernel = HoleKernel;
+using Sm = HoleMesh;
+namespace PMP = CGAL::Polygon_mesh_processing;
+
+// Loops longer than this skip CGAL's cubic search over all triangles of the
+// loop when the Delaunay search space fails (O(n³) time, about 1 s CPU at 400
+// vertices), so they are split by a chord first (SplitHole); a fan closes
+// what still fails. The underside of a scanned part is such a loop,
+// zigzagging along the walls' lowest seen rows, and its fan (no inner vertex,
+// spokes as long as the part) cannot be bent onto the seen planes.
+constexpr size_t kMaxCubicLoop = 500;
+// A triangle is flat when twice its area is at most this fraction of its
+// longest edge squared (a hundred times the mesh readers' limit).
+constexpr double kFlatRatio = 1e-10;
+// Rounds of flipping flat patch triangles at most.
+constexpr int kFlatFlipPasses = 3;
+
+// Closes the loop of `h` by a fan around the centroid of its vertices.
+void FanClose(Sm::Halfedge_index h, Sm* sm) {
+  Kernel::Vector_3 sum(0, 0, 0);
+  int n = 0;
+  for (auto g = h;;) {
+    sum = sum + (sm->point(sm->target(g)) - CGAL::ORIGIN);
+    ++n;
+    g = sm->next(g);
+    if (g == h) break;
+  }
+  CGAL::Euler::fill_hole(h, *sm);  // h now borders the new polygon
+  const auto spoke = CGAL::Euler::add_center_vertex(h, *sm);
+  sm->point(sm->target(spoke)) = CGAL::ORIGIN + sum / n;
+}
+
+Eigen::Vector3d ToEigen3(const Kernel::Point_3& p) { return {p.x(), p.y(), p.z()}; }
+
+// The vertices of the loop of border halfedge `h` and the outward normals of
+// the surface there (`sign` × the area-weighted normal of their faces).
+void LoopWithNormals(const Sm& sm, Sm::Halfedge_index h, double sign,
+                     std::vector<Eigen::Vector3d>* loop, std::vector<Eigen::Vector3d>* normals) {
+  loop->clear();
+  normals->clear();
+  for (auto g = h;;) {
+    const auto v = sm.target(g);
+    loop->push_back(ToEigen3(sm.point(v)));
+    const auto n = PMP::compute_vertex_normal(v, sm);
+    normals->push_back(sign * Eigen::Vector3d(n.x(), n.y(), n.z()));
+    g = sm.next(g);
+    if (g == h) break;
+  }
+}
+
+// Bends the patch `faces` (free vertices `vertices`) of a hole whose loop was
+// `loop` onto the seen planes (seen_planes.h).
+void BendPatch(const std::vector<Eigen::Vector3d>& loop,
+               const std::vector<Eigen::Vector3d>& normals, double sign,
+               const std::vector<Sm::Face_index>& faces,
+               const std::vector<Sm::Vertex_index>& vertices, Sm* sm) {
+  Eigen::Vector3d patch_normal = Eigen::Vector3d::Zero();
+  for (const auto f : faces) {
+    const auto h = sm->halfedge(f);
+    const Eigen::Vector3d a = ToEigen3(sm->point(sm->source(h)));
+    const Eigen::Vector3d b = ToEigen3(sm->point(sm->target(h)));
+    const Eigen::Vector3d c = ToEigen3(sm->point(sm->target(sm->next(h))));
+    patch_normal += sign * (b - a).cross(c - a);
+  }
+  std::vector<Eigen::Vector3d> free_vertices;
+  for (const auto v : vertices) free_vertices.push_back(ToEigen3(sm->point(v)));
+  if (!BendOntoSeenPlanes(loop, normals, patch_normal, &free_vertices)) return;
+  for (size_t i = 0; i < vertices.size(); ++i) {
+    sm->point(vertices[i]) =
+        Kernel::Point_3(free_vertices[i].x(), free_vertices[i].y(), free_vertices[i].z());
+  }
+}
+
+// Splits the hole of border halfedge `h` (a loop of `n` vertices) in two by
+// a chord between the two loop vertices nearest each other in space among
+// those at least a third of the loop apart along it, so each half has at most
+// about 2 n / 3 vertices; the chord lies across the unseen area, in the
+// surface where the loop's two sides are near. Returns a halfedge of the
+// chord whose face is one half's polygon (the other half's polygon lies
+// across it), or nothing when every such pair is already joined by an edge.
+std::optional<Sm::Halfedge_index> SplitHole(Sm::Halfedge_index h, size_t n, Sm* sm) {
+  std::vector<Sm::Halfedge_index> loop;
+  for (auto g = h; loop.size() < n; g = sm->next(g)) loop.push_back(g);
+  const size_t min_arc = n / 3;
+  double best = std::numeric_limits<double>::infinity();
+  size_t bi = 0, bj = 0;
+  for (size_t i = 0; i < n; ++i) {
+    const auto u = sm->target(loop[i]);
+    for (size_t j = i + min_arc; j + min_arc <= i + n && j < n; ++j) {
+      const auto w = sm->target(loop[j]);
+      const double d2 = CGAL::squared_distance(sm->point(u), sm->point(w));
+      if (d2 >= best || u == w || CGAL::halfedge(u, w, *sm).second) continue;
+      best = d2;
+      bi = i;
+      bj = j;
+    }
+  }
+  if (!std::isfinite(best)) return std::nullopt;
+  CGAL::Euler::fill_hole(h, *sm);
+  return CGAL::Euler::split_face(loop[bi], loop[bj], *sm);
+}
+
+// The number of halfedges around the cycle of `h`.
+size_t CycleLength(Sm::Halfedge_index h, const Sm& sm) {
+  size_t n = 0;
+  for (auto g = h;;) {
+    ++n;
+    g = sm.next(g);
+    if (g == h) return n;
+  }
+}
+
+// CloseHole below, with the whole hole's `loop` and outward `normals`.
+void CloseLoop(Sm::Halfedge_index h, size_t n, const std::vector<Eigen::Vector3d>& loop,
+               const std::vector<Eigen::Vector3d>& normals, double sign, bool bend, Sm* sm) {
+  if (n > kMaxCubicLoop) {
+    if (const auto chord = SplitHole(h, n, sm)) {
+      const auto other = sm->opposite(*chord);
+      CGAL::Euler::make_hole(*chord, *sm);
+      CloseLoop(*chord, CycleLength(*chord, *sm), loop, normals, sign, bend, sm);
+      CGAL::Euler::make_hole(other, *sm);
+      CloseLoop(other, CycleLength(other, *sm), loop, normals, sign, bend, sm);
+      return;
+    }
+  }
+  std::vector<Sm::Face_index> faces;
+  std::vector<Sm::Vertex_index> vertices;
+  PMP::triangulate_refine_and_fair_hole(
+      *sm, h, std::back_inserter(faces), std::back_inserter(vertices),
+      PMP::parameters::fairing_continuity(0).do_not_use_cubic_algorithm(n > kMaxCubicLoop));
+  if (faces.empty() && sm->is_border(h)) {
+    FanClose(h, sm);
+  } else if (bend) {
+    BendPatch(loop, normals, sign, faces, vertices, sm);
+  }
+}
+
+}  // namespace
+
+void CloseHole(HoleMesh::Halfedge_index h, size_t n, double sign, bool bend, HoleMesh* sm) {
+  std::vector<Eigen::Vector3d> loop, normals;
+  LoopWithNormals(*sm, h, sign, &loop, &normals);
+  CloseLoop(h, n, loop, normals, sign, bend, sm);
+}
+
+void FlipFlatPatchFaces(Sm* sm) {
+  const auto filled = sm->property_map<Sm::Face_index, uint8_t>("f:filled").first;
+  for (int pass = 0; pass < kFlatFlipPasses; ++pass) {
+    bool changed = false;
+    for (const auto f : sm->faces()) {
+      if (!filled[f]) continue;
+      Sm::Halfedge_index longest;
+      double longest2 = -1.0;
+      for (const auto h : CGAL::halfedges_around_face(sm->halfedge(f), *sm)) {
+        const double l2 = CGAL::squared_distance(sm->point(sm->source(h)), sm->point(sm->target(h)));
+        if (l2 > longest2) {
+          longest2 = l2;
+          longest = h;
+        }
+      }
+      const Eigen::Vector3d a = ToEigen3(sm->point(sm->source(longest)));
+      const Eigen::Vector3d b = ToEigen3(sm->point(sm->target(longest)));
+      const Eigen::Vector3d c = ToEigen3(sm->point(sm->target(sm->next(longest))));
+      if ((b - a).cross(c - a).norm() > kFlatRatio * longest2) continue;
+      const auto across = sm->opposite(longest);
+      if (sm->is_border(across) || !filled[sm->face(across)]) continue;
+      const auto u = sm->target(sm->next(longest)), w = sm->target(sm->next(across));
+      if (u == w || CGAL::halfedge(u, w, *sm).second) continue;
+      CGAL::Euler::flip_edge(longest, *sm);
+      changed = true;
+    }
+    if (!changed) break;
+  }
+}
+
+}  // namespace meshseg::reconstruct_internal

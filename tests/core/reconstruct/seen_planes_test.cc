@@ -1,0 +1,76 @@
+#include "reconstruct/seen_planes.h"
+
+#include <cmath>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+namespace meshseg::reconstruct_internal {
+namespace {
+
+constexpr int kLoop = 64;
+
+// The bottom edge of a box [-1, 1]² × [0, 1] whose bottom is unseen: the loop
+// runs round z = 0 on the walls, whose outward normals are horizontal.
+void SquareLoop(std::vector<Eigen::Vector3d>* loop, std::vector<Eigen::Vector3d>* normals) {
+  for (int side = 0; side < 4; ++side) {
+    for (int k = 0; k < kLoop / 4; ++k) {
+      const double t = -1.0 + 2.0 * k / (kLoop / 4);
+      const Eigen::Vector2d p[4] = {{t, -1}, {1, t}, {-t, 1}, {-1, -t}};
+      const Eigen::Vector2d n[4] = {{0, -1}, {1, 0}, {0, 1}, {-1, 0}};
+      loop->emplace_back(p[side].x(), p[side].y(), 0.0);
+      normals->emplace_back(n[side].x(), n[side].y(), 0.0);
+    }
+  }
+}
+
+// Free vertices inside the box, 0.3 above its bottom (a membrane sagging
+// into the solid): each goes onto the nearest face of the box, here the
+// bottom, the plane of the loop.
+TEST(BendOntoSeenPlanes, AVertexInsideAConvexHoleGoesOntoTheNearestPlane) {
+  std::vector<Eigen::Vector3d> loop, normals;
+  SquareLoop(&loop, &normals);
+  std::vector<Eigen::Vector3d> free = {{0, 0, 0.3}, {0.5, -0.2, 0.3}, {-0.6, 0.6, 0.3}};
+  const std::vector<Eigen::Vector3d> before = free;
+  ASSERT_TRUE(BendOntoSeenPlanes(loop, normals, Eigen::Vector3d(0, 0, -1), &free));
+  for (size_t i = 0; i < free.size(); ++i) {
+    EXPECT_NEAR(free[i].z(), 0.0, 1e-9);
+    EXPECT_NEAR((free[i] - before[i]).head<2>().norm(), 0.0, 1e-9);
+  }
+  // Nearer a wall than the bottom: onto the wall (x = 1).
+  std::vector<Eigen::Vector3d> near_wall = {{0.9, 0.0, 0.5}};
+  ASSERT_TRUE(BendOntoSeenPlanes(loop, normals, Eigen::Vector3d(0, 0, -1), &near_wall));
+  EXPECT_NEAR(near_wall[0].x(), 1.0, 1e-9);
+  EXPECT_NEAR(near_wall[0].z(), 0.5, 1e-9);
+}
+
+// One loop vertex on a fold of the seen surface (its normal points into the
+// solid): its plane would cut off the whole loop, so it is no face of the
+// hull, and the rest still bend the patch.
+TEST(BendOntoSeenPlanes, AFoldAtTheBorderIsNoFaceOfTheHull) {
+  std::vector<Eigen::Vector3d> loop, normals;
+  SquareLoop(&loop, &normals);
+  normals[5] = -normals[5];
+  std::vector<Eigen::Vector3d> free = {{0, 0, 0.3}};
+  ASSERT_TRUE(BendOntoSeenPlanes(loop, normals, Eigen::Vector3d(0, 0, -1), &free));
+  EXPECT_NEAR(free[0].z(), 0.0, 1e-9);
+}
+
+// The rim of a bore (a circle whose seen surface faces the axis): every
+// tangent plane cuts off the far side of the loop. The hole is concave and
+// the patch is left as it is.
+TEST(BendOntoSeenPlanes, ThePatchOfAConcaveHoleIsLeftAsItIs) {
+  std::vector<Eigen::Vector3d> loop, normals;
+  for (int k = 0; k < kLoop; ++k) {
+    const double a = 2 * M_PI * k / kLoop;
+    loop.emplace_back(std::cos(a), std::sin(a), 0.0);
+    normals.emplace_back(-std::cos(a), -std::sin(a), 0.0);
+  }
+  std::vector<Eigen::Vector3d> free = {{0, 0, -0.2}, {0.3, 0.1, -0.1}};
+  const std::vector<Eigen::Vector3d> before = free;
+  EXPECT_FALSE(BendOntoSeenPlanes(loop, normals, Eigen::Vector3d(0, 0, 1), &free));
+  EXPECT_EQ(free, before);
+}
+
+}  // namespace
+}  // namespace meshseg::reconstruct_internal
