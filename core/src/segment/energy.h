@@ -69,6 +69,16 @@
 // label cheaper). The residuals of a surface from binary voxels have rho
 // 0.4 to 0.6 (f 0.24 to 0.42 on the generated parts). One rule for every
 // input: nothing in it knows where the mesh came from.
+// Only residuals the data term resolves carry evidence to overstate: D
+// knows a residual to its resolution delta, a fixed fraction of its unit
+// th_dis / k, and rho is the correlation of the residuals each with an
+// independent term of variance delta^2 added (sum d_u d_v over
+// sum ((d_u^2 + d_v^2) / 2 + delta^2)). Residuals far above delta (noise,
+// staircases) keep their rho; far below it (exact vertices with the fit's
+// smooth error of 1e-10, which alone would give rho near 1 and f near 0,
+// so that lambda / f and the label cost grow without bound) give rho near
+// 0 and f near 1: residuals D cannot see prove no correlation. As residuals
+// within th_dis are kept, f >= delta^2 / (2 th_dis^2 + delta^2) > 0.
 //
 // A local move (merge two regions, retype one, drop one) is accepted iff it
 // lowers E; MergeDelta, RetypeDelta and DropDelta below price one without
@@ -101,6 +111,11 @@ inline constexpr double kOutlierMismatch = kToleranceSigmas * kToleranceSigmas;
 inline constexpr double kBoundaryCost = 1.0;
 // w_uv for an edge with a sharp end, relative to a smooth one.
 inline constexpr double kCreaseEdgeWeight = 0.1;
+// delta / (th_dis / k): the resolution of the data term in its unit. A
+// residual of delta costs delta^2 / 2 = 0.005 units, so a region of a
+// hundred vertices all within delta of its surface moves E by less than one
+// boundary edge through a smooth face (lambda = 1).
+inline constexpr double kResidualResolution = 0.1;
 
 // D_v(S) for vertex v on `surface`.
 double VertexCost(const SegmentContext& c, int v, const Surface& surface);
@@ -113,7 +128,8 @@ double LabelCost(const SegmentContext& c, SurfaceType type, std::size_t vertex_c
 
 // f = n_eff / n = (1 - rho) / (1 + rho) of the residuals of `labels` to
 // their regions' surfaces (1 if rho <= 0 or nothing to measure): rho the
-// correlation of the residuals at the two ends of a mesh edge, over the
+// correlation of the residuals at the two ends of a mesh edge, each known
+// to the resolution kResidualResolution th_dis / k (see above), over the
 // edges inside a region with both ends non-sharp and within th_dis of its
 // surface (rows along creases are the model's error, not the meshing's),
 // from a fixed-stride sample of at most kMaxSample vertices.

@@ -25,6 +25,7 @@ double EvidenceShare(const SegmentContext& c, const std::vector<int>& labels,
     return d;
   };
   double products = 0.0, squares = 0.0;
+  long pairs = 0;
   for (const int v : Sample(labelled)) {
     const std::optional<double> dv = residual(v);
     if (!dv) continue;
@@ -34,10 +35,15 @@ double EvidenceShare(const SegmentContext& c, const std::vector<int>& labels,
       if (!du) continue;
       products += *dv * *du;
       squares += 0.5 * (*dv * *dv + *du * *du);
+      ++pairs;
     }
   }
-  if (!(squares > 0.0)) return 1.0;
-  const double rho = std::clamp(products / squares, 0.0, 1.0);
+  // Every residual is known to the data term only to its resolution delta
+  // (energy.h): an independent term of variance delta^2 in each.
+  const double delta = kResidualResolution * c.tolerance.distance / kToleranceSigmas;
+  const double variance = squares + static_cast<double>(pairs) * delta * delta;
+  if (!(variance > 0.0)) return 1.0;
+  const double rho = std::clamp(products / variance, 0.0, 1.0);
   return (1.0 - rho) / (1.0 + rho);
 }
 

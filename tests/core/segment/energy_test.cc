@@ -260,17 +260,24 @@ TEST(MergeTypes, EitherMembersOwnTypeButNoNewGeneralisation) {
   EXPECT_TRUE(has(with_quadric, SurfaceType::kTorus));
 }
 
-// A plane z = 0.1 u over a 31 x 31 unit grid, its heights either with
-// independent normal noise of sigma 0.1 or rounded to a unit grid (the
+// The heights of a plane z = 0.1 u over a 31 x 31 unit grid: with
+// independent normal noise of sigma 0.1; rounded to a unit grid (the
 // staircase a surface from binary voxels follows: terraces 10 vertices
-// wide), labelled one plane region fitted to it; th_dis 1 (the staircase's
-// residuals are within 0.5).
-std::vector<RegionState> TiltedPlane(bool staircase, testing::Sheet* s, std::vector<int>* labels) {
+// wide); or exact but for a smooth error of 1e-9 (a fit's rounding on
+// exact vertices, far below the data term's resolution).
+enum class Heights { kNoisy, kStaircase, kSmoothTinyError };
+
+// That sheet labelled one plane region fitted to it; th_dis 1 (the
+// staircase's residuals are within 0.5).
+std::vector<RegionState> TiltedPlane(Heights heights, testing::Sheet* s, std::vector<int>* labels) {
   std::mt19937 random(7);
   std::normal_distribution<double> noise(0.0, 0.1);
   testing::BuildSheet(
       [&](double u, double v) {
-        const double z = staircase ? std::round(0.1 * u) : 0.1 * u + noise(random);
+        const double plane = 0.1 * u;
+        const double z = heights == Heights::kStaircase ? std::round(plane)
+                         : heights == Heights::kNoisy   ? plane + noise(random)
+                                                        : plane + 1e-9 * std::sin(0.3 * u + 0.2 * v);
         return std::pair{Eigen::Vector3d(u, v, z), Eigen::Vector3d(-0.1, 0.0, 1.0).normalized()};
       },
       0.0, 30.0, 31, 0.0, 30.0, 31, /*distance=*/1.0, /*angle_deg=*/10.0, s);
@@ -291,10 +298,35 @@ std::vector<RegionState> TiltedPlane(bool staircase, testing::Sheet* s, std::vec
 TEST(EvidenceShare, NearOneForIndependentNoiseSmallOnAStaircase) {
   testing::Sheet noisy, stairs;
   std::vector<int> labels;
-  const std::vector<RegionState> noisy_regions = TiltedPlane(false, &noisy, &labels);
+  const std::vector<RegionState> noisy_regions = TiltedPlane(Heights::kNoisy, &noisy, &labels);
   EXPECT_GT(EvidenceShare(noisy.c, labels, noisy_regions), 0.85);
-  const std::vector<RegionState> stair_regions = TiltedPlane(true, &stairs, &labels);
+  const std::vector<RegionState> stair_regions = TiltedPlane(Heights::kStaircase, &stairs, &labels);
   EXPECT_LT(EvidenceShare(stairs.c, labels, stair_regions), 0.35);
+}
+
+// A smooth error of 1e-9 is correlated over the grid's edges (rho near 1,
+// f near 0 measured alone) but far below what the data term resolves
+// (th_dis / k / 10 = 0.033): it proves no correlation, f stays near 1.
+TEST(EvidenceShare, NearOneForResidualsBelowTheDataTermsResolution) {
+  testing::Sheet s;
+  std::vector<int> labels;
+  const std::vector<RegionState> regions = TiltedPlane(Heights::kSmoothTinyError, &s, &labels);
+  EXPECT_GT(EvidenceShare(s.c, labels, regions), 0.99);
+}
+
+// Exact vertices (noise 0) with the true labels and surfaces refitted to
+// them: the fits' errors are smooth and far below th_dis, f is near 1 and
+// the energy finite (measured alone, rho of those errors gave f 0 to 0.001
+// and lambda / f without bound).
+TEST(EvidenceShare, NearOneOnExactVerticesWithTheTrueSurfaces) {
+  for (const char* name : {"rounded_prism", "stepped_shaft"}) {
+    Labeled t;
+    BuildTrue(name, 0.0, &t);
+    const double f = EvidenceShare(t.c, t.labels, t.regions);
+    EXPECT_GT(f, 0.9) << name;
+    t.c.evidence_share = f;
+    EXPECT_TRUE(std::isfinite(TotalEnergy(t.c, t.labels, t.regions))) << name;
+  }
 }
 
 // With f = 1 the label cost is the BIC's (p / 2) ln n and an edge between
