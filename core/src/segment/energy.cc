@@ -12,8 +12,6 @@
 namespace meshseg::segment_internal {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
 // a_v / a_mean, a_mean the vertex area of a regular triangulation of edge
 // l_avg (six equilateral triangles share each vertex: sqrt(3)/2 l_avg^2),
 // so no pass over the mesh is needed per call.
@@ -23,16 +21,10 @@ double AreaWeight(const SegmentContext& c, int v) {
   return mean_area > 0.0 ? c.vertex_area[v] / mean_area : 1.0;
 }
 
-// D_v for vertex v with projection `pr` onto its surface: the squared
-// distance and normal deviation in units of th_dis / k and th_nm / k,
-// truncated at c_out (energy.h).
-double CostOfProjection(const SegmentContext& c, int v, const Projection& pr) {
-  const double d = pr.distance / c.tolerance.distance;
-  double scaled = kToleranceSigmas * kToleranceSigmas * d * d;
-  if (!c.curvature->sharp[v] && scaled < kOutlierMismatch) {
-    const double n = NormalDeviation(c, v, pr.normal) * kNormalSigmas / c.angle_tolerance_deg;
-    scaled += n * n;
-  }
+// D_v for vertex v at signed distance `distance` from its surface.
+double CostAtDistance(const SegmentContext& c, int v, double distance) {
+  const double d = distance / c.tolerance.distance;
+  const double scaled = kToleranceSigmas * kToleranceSigmas * d * d;
   return 0.5 * AreaWeight(c, v) * std::min(std::isfinite(scaled) ? scaled : kOutlierMismatch,
                                            kOutlierMismatch);
 }
@@ -64,9 +56,9 @@ PricedFit PriceFit(const SegmentContext& c, SurfaceType type, std::span<const in
   inliers.reserve(vertices.size());
   double cost = 0.0;
   for (const int v : vertices) {
-    const Projection pr = ProjectVertex(c, fit.surface, v);
-    cost += CostOfProjection(c, v, pr);
-    if (std::abs(pr.distance) < c.tolerance.distance) inliers.push_back(v);
+    const double distance = ProjectVertex(c, fit.surface, v).distance;
+    cost += CostAtDistance(c, v, distance);
+    if (std::abs(distance) < c.tolerance.distance) inliers.push_back(v);
   }
   out.cost = cost;
   if (inliers.size() == vertices.size() || inliers.size() < kMinRegionVertices) return out;
@@ -82,13 +74,8 @@ PricedFit PriceFit(const SegmentContext& c, SurfaceType type, std::span<const in
   return out;
 }
 
-double NormalDeviation(const SegmentContext& c, int v, const Eigen::Vector3d& normal) {
-  const double cosine = std::abs(normal.dot(c.curvature->normal[v]));
-  return std::acos(std::min(1.0, cosine)) * 180.0 / kPi;
-}
-
 double VertexCost(const SegmentContext& c, int v, const Surface& surface) {
-  return CostOfProjection(c, v, ProjectVertex(c, surface, v));
+  return CostAtDistance(c, v, ProjectVertex(c, surface, v).distance);
 }
 
 double OutlierCost(const SegmentContext& c, int v) {

@@ -12,39 +12,28 @@
 // f the share of independent samples in the residuals (1 for independent
 // noise; "Correlated residuals" below).
 //
-// Data term. With d_v(S) the distance of v to S, theta_v(S) the angle
-// between S's normal at v's closest point and v's vertex normal n_v, and
-// th_dis, th_nm the tolerances of S1 eqs. (5) and (6),
+// Data term. With d_v(S) the distance of v to S and th_dis the distance
+// tolerance of S1 eq. (5),
 //
-//   D_v(r) = (a_v / a_mean) / 2
-//            * min(k^2 (d_v / th_dis)^2 + k_n^2 (theta_v / th_nm)^2, c_out),
+//   D_v(r) = (a_v / a_mean) / 2 * min(k^2 (d_v(S_r) / th_dis)^2, c_out),
 //
-// half the squared residual in position and in normal, each in units of
-// its noise: th_dis is at least k noise sigmas (estimate_noise.h), so where
-// the noise sets th_dis the unit is sigma and D is the negative
-// log-likelihood of a normal residual; where the mesh resolution sets it,
-// the unit is coarser and D more lenient. th_nm is k_n sigma_n, sigma_n the
-// noise of each tangential component of n_v (below, kNormalSigmas).
+// half the squared residual in units of th_dis / k: th_dis is at least k
+// noise sigmas (estimate_noise.h), so where the noise sets th_dis the unit
+// is sigma and D is the negative log-likelihood of a normal residual; where
+// the mesh resolution sets it, the unit is coarser and D more lenient.
 // a_v / a_mean (vertex area over that of a regular triangulation of edge
 // l_avg) makes sum_v D independent of the meshing's density. A vertex left
 // unlabelled (-1, the outlier label of PEARL) pays c_out / 2, and so does a
-// vertex whose residuals together reach it (farther than th_dis from its
-// surface, or its normal off by three sigma_n): rows along a crease, which
-// no smooth surface meets in position or normal, cost alike under either
-// of its regions and cannot decide between them.
-// Why the normal: within a few rows of where a round runs tangent into a
-// face, the two surfaces differ in position by s^2 / (2 R) at arc length
-// s, less than the noise, but in normal by s / R; the distance alone
-// leaves the boundary there to the noise (and a round re-estimated with
-// the face's rows widens and takes more). Which normal: n_v, the area-
-// weighted normal of v's one ring, is noisy but unbiased wherever its ring
-// lies on one face; the smoothed n'_v of the W2 fit is biased over its
-// window near creases and across narrow bands (it turns toward both
-// neighbours of a chamfer as a sphere's normal would, and so prefers the
-// wrong type there). A sharp vertex (CurvatureField::sharp: on a crease,
-// where no one normal exists) has no normal term; a vertex whose ring
-// straddles a crease has a normal off both faces and costs c_out under
-// either.
+// vertex farther than th_dis from its surface: rows along a crease, which
+// no smooth surface meets, cost alike under either of its regions and
+// cannot decide between them.
+// The distance term of the MismatchScore (refine_boundaries.h) without its
+// normal term: the smoothed normals n'_i are biased over the W2 window
+// near creases and across narrow bands (they turn toward both neighbours of
+// a chamfer as a sphere's would), so that an angle term in units of th_nm
+// / k outweighs the distances several times and prefers the wrong type
+// there; the information criterion of decide_type.h, which the label cost
+// below completes, is in distances alone too.
 //
 // Smoothness term. Every mesh edge between two labels costs lambda w_uv,
 // w_uv = 1 between non-sharp vertices and kCreaseEdgeWeight where either
@@ -113,18 +102,13 @@ namespace meshseg::segment_internal {
 // k: th_dis in units of the data term's scale (estimate_noise.h puts th_dis
 // at 3 noise sigmas or more).
 inline constexpr double kToleranceSigmas = 3.0;
-// c_out: the truncation of the squared residuals, a vertex outside the
+// c_out: the truncation of k^2 (d / th_dis)^2, a vertex outside the
 // distance tolerance (d = th_dis) being an outlier: k^2.
 inline constexpr double kOutlierMismatch = kToleranceSigmas * kToleranceSigmas;
 // lambda: the cost of one mesh edge between two labels through a smooth
 // face, that of a vertex one data unit (one sigma) off its surface, twice
 // (divided by f in E, as the label cost is).
 inline constexpr double kBoundaryCost = 1.0;
-// k_n: th_nm in units of the normal's noise sigma_n. th_nm is 1.5 times
-// the median tilt of n_v off n'_v (estimate_noise.h), and the median tilt
-// of a normal whose two tangential components are independent with sigma_n
-// is sigma_n sqrt(2 ln 2): k_n = 1.5 sqrt(2 ln 2).
-inline constexpr double kNormalSigmas = 1.7661;
 // w_uv for an edge with a sharp end, relative to a smooth one.
 inline constexpr double kCreaseEdgeWeight = 0.1;
 // delta / (th_dis / k): the resolution of the data term in its unit. A
@@ -133,9 +117,6 @@ inline constexpr double kCreaseEdgeWeight = 0.1;
 // boundary edge through a smooth face (lambda = 1).
 inline constexpr double kResidualResolution = 0.1;
 
-// theta_v: the angle in degrees between `normal` (a surface's, at v's
-// closest point) and v's vertex normal n_v, orientation ignored.
-double NormalDeviation(const SegmentContext& c, int v, const Eigen::Vector3d& normal);
 // D_v(S) for vertex v on `surface`.
 double VertexCost(const SegmentContext& c, int v, const Surface& surface);
 // D_v of an unlabelled vertex.

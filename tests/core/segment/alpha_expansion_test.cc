@@ -104,9 +104,7 @@ TEST(ExpandRegionTest, PricedChangeIsTheChangeOfTheTotalEnergy) {
     const Expansion move = ExpandRegion(s.c, l, r, alpha);
     EXPECT_LE(move.smooth_data_delta, 1e-12) << "alpha " << alpha;
     if (alpha == 1) {
-      // The two rows displaced past the crease row (whose normal is the
-      // flat face's in this sheet).
-      EXPECT_EQ(move.taken.size(), 2u * 21u);
+      EXPECT_EQ(move.taken.size(), 3u * 21u);
     }
     Apply(move, alpha, &l, &r);
     EXPECT_NEAR(TotalEnergy(s.c, l, r) - before, move.delta, 1e-9 * std::abs(before))
@@ -121,7 +119,7 @@ TEST(ExpandRegionsTest, PutsADisplacedBoundaryBackOnTheCrease) {
   const double before = TotalEnergy(s.c, labels, regions);
   const absl::StatusOr<int> moved = ExpandRegions(s.c, &labels, &regions);
   ASSERT_TRUE(moved.ok());
-  EXPECT_EQ(*moved, 2 * 21);  // the crease row keeps the flat face's label and normal
+  EXPECT_EQ(*moved, 3 * 21);
   EXPECT_LT(TotalEnergy(s.c, labels, regions), before);
   // Every vertex more than one row from the crease is on its own face.
   for (std::size_t v = 0; v < labels.size(); ++v) {
@@ -180,13 +178,11 @@ TEST(ExpandRegionsTest, ARoundBentOverAFaceGivesItsRowsBack) {
   const double before = TotalEnergy(s.c, labels, regions);
   ASSERT_TRUE(ExpandRegions(s.c, &labels, &regions).ok());
   EXPECT_LT(TotalEnergy(s.c, labels, regions), before);
-  // Every row of the face is the face's again, up to the tangent line:
-  // within two rows of it the round departs from the face by less than
-  // sigma in position, but by a row's arc over R in normal (7 degrees, the
-  // normal term's work).
+  // The face's rows more than two rows from the tangent line are the face's
+  // again (nearer, the round departs from the face by less than sigma).
   int kept = 0;
   for (std::size_t v = 0; v < labels.size(); ++v) {
-    if (s.u[v] < 6.0 - 1e-9) kept += labels[v] != 0;
+    if (s.u[v] < 6.0 - 2 * kStep - 1e-9) kept += labels[v] != 0;
   }
   EXPECT_EQ(kept, 0);
   EXPECT_NEAR(std::get<Cylinder>(regions[1].surface).radius, 2.0, 0.02) << "bent " << bent;
@@ -211,7 +207,7 @@ TEST_F(RoundedPrismTest, GivesFilletsBackTheRingsThePlanesTook) {
   // The rows that lie off the plane by more than half of th_dis (a data
   // cost of 9/8 or more there, about the noise's on the fillet) go back;
   // nearer the tangent line plane and fillet differ by less than the noise
-  // in position, and in normal by less than the noise of n_v.
+  // in position and E does not decide (the refinement's normal term does).
   int off = 0;
   int returned = 0;
   for (const int v : taken) {
@@ -226,27 +222,16 @@ TEST_F(RoundedPrismTest, GivesFilletsBackTheRingsThePlanesTook) {
     ++off;
     returned += labels[v] == fillet;
   }
-  // Measured 147 of 182 (140 with the distance alone): the rows the plane
-  // does not explain within half of th_dis go back.
+  // Measured 140 of 182: a fillet re-estimated with plane rows past its
+  // tangent line widens and holds some of them (why Segment() lets the
+  // refinement's normal term settle tangent joins after the expansions).
   ASSERT_GT(off, 100);
-  EXPECT_GT(returned, 3 * off / 4) << "of " << off;
-  // With the normal term the fillets do not widen over the plane rows past
-  // their tangent lines: radii within 0.3 h (measured 0.07 h; 0.33 to 0.6 h
-  // off with the distance alone).
-  const double h = part_.voxel_size;
-  for (std::size_t r = 0; r < regions.size(); ++r) {
-    const auto* fitted = std::get_if<Cylinder>(&regions[r].surface);
-    if (fitted == nullptr) continue;
-    const auto& truth = std::get<Cylinder>(part_.primitives[r].surface);
-    EXPECT_NEAR(fitted->radius, truth.radius, 0.3 * h) << part_.primitives[r].name;
-  }
+  EXPECT_GT(returned, off / 2) << "of " << off;
 }
 
 // With the true labels, E does not rise and the only vertices that move lie
 // on the surface they go to (within th_dis of its true surface): rows along
-// the tangent lines, which both faces explain within the noise; or are
-// outliers to their own (a data cost of c_out there: a normal off by the
-// noise's three sigmas), which the smoothness term places.
+// the tangent lines, which both faces explain within the noise.
 TEST_F(RoundedPrismTest, MovesOnlyRowsTheOtherFaceExplains) {
   const SegmentContext c = MakeSegmentContext(part_.mesh.tri, field_, estimates_, 0.9, run_);
   std::vector<int> labels = part_.vertex_primitive;
@@ -261,9 +246,7 @@ TEST_F(RoundedPrismTest, MovesOnlyRowsTheOtherFaceExplains) {
     if (labels[v] == part_.vertex_primitive[v]) continue;
     ++moved;
     const double d = ProjectVertex(c, regions_[labels[v]].surface, v).distance;
-    const int own = part_.vertex_primitive[v];
-    const bool outlier = VertexCost(c, v, regions_[own].surface) >= OutlierCost(c, v) * (1 - 1e-12);
-    off += !(std::abs(d) < c.tolerance.distance) && !outlier;
+    off += !(std::abs(d) < c.tolerance.distance);
   }
   EXPECT_LT(moved, 0.05 * c.vertex_count());
   EXPECT_EQ(off, 0) << "of " << moved << " moved";
