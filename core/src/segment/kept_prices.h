@@ -56,13 +56,17 @@ class KeptPrices {
   };
   // (id, version) of the regions a price was made on.
   using Versions = std::vector<std::pair<int, int>>;
+  // Each price with the generation it was last found current in: within a
+  // generation nothing changes, so it is not compared again.
   struct DropEntry {
     DropMove move;
     Versions versions;  // the region, then those around it
+    long current = -1;
   };
   struct MergeEntry {
     std::optional<Move> move;
     Versions versions;
+    long current = -1;
   };
   int Version(const std::vector<RegionState>& regions, int id);
   // The versions a drop of `id` is priced on: the region, then those around.
