@@ -180,7 +180,9 @@ DropMove DropDelta(const SegmentContext& c, const std::vector<int>& labels,
     const double own = region.Cost(o);
     double cost = own + DataCost(c, taker.surface, taken);
     Surface surface = taker.surface;
-    const PricedFit fit = PriceFit(c, taker.type, grown);
+    // The refit is taken only if it costs less than `cost`: a cost above
+    // that need not be summed to the end.
+    const PricedFit fit = PriceFit(c, taker.type, grown, /*stop=*/cost);
     if (fit.surface && fit.cost < cost) cost = fit.cost, surface = *fit.surface;
     delta += cost - own + LabelCost(c, taker.type, grown.size()) -
              LabelCost(c, taker.type, taker.vertices.size());
