@@ -44,7 +44,9 @@ class KeptPrices {
                    const std::vector<RegionState>& regions, ReestimatedRegions& region,
                    std::span<const std::pair<int, int>> pairs);
   // The regions may have changed since the last price: each is compared
-  // again with what it was when next asked for.
+  // again with what it was when next asked for. Between two calls the
+  // regions and labels must not change (a price found current is not
+  // checked again until the next).
   void Touch() { ++generation_; }
 
  private:
