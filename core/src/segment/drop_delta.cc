@@ -27,21 +27,26 @@ DropLabeling DropLabels(const SegmentContext& c, const std::vector<int>& labels,
                         ReestimatedRegions& region, int id) {
   const RegionState& r = region(id);
   const std::size_t n = r.vertices.size();
+  // The index in r of each of its vertices, by vertex (-1 elsewhere): one
+  // array per thread (drops are priced in parallel, kept_prices.h), set for
+  // r's vertices and cleared after; a search of r's sorted list for every
+  // neighbour cost more than the rest of the labeling on large regions.
+  thread_local std::vector<int> index_in_r;
+  if (index_in_r.size() < static_cast<std::size_t>(c.vertex_count())) {
+    index_in_r.assign(c.vertex_count(), -1);
+  }
+  for (std::size_t k = 0; k < n; ++k) index_in_r[r.vertices[k]] = static_cast<int>(k);
   // The mesh neighbours of each vertex k of r (CSR from first[k]): the
   // index in r of a neighbour in r, or -2 - its label outside (-1 none).
   std::vector<std::size_t> first(n + 1, 0);
   std::vector<long> beside;
   for (std::size_t k = 0; k < n; ++k) {
     for (const int u : c.graph.Neighbors(r.vertices[k])) {
-      if (labels[u] == id) {
-        beside.push_back(std::lower_bound(r.vertices.begin(), r.vertices.end(), u) -
-                         r.vertices.begin());
-      } else {
-        beside.push_back(-2L - labels[u]);
-      }
+      beside.push_back(labels[u] == id ? long{index_in_r[u]} : -2L - labels[u]);
     }
     first[k + 1] = beside.size();
   }
+  for (const int v : r.vertices) index_in_r[v] = -1;
   std::vector<int> next(n, -1);
   auto label_at = [&](long b) { return b >= 0 ? next[b] : static_cast<int>(-2L - b); };
   // The labels placed next to vertex k, sorted, with repeats, into `seen`.
@@ -177,7 +182,9 @@ DropMove DropDelta(const SegmentContext& c, const std::vector<int>& labels,
     const double own = region.Cost(o);
     double cost = own + DataCost(c, taker.surface, taken);
     Surface surface = taker.surface;
-    const PricedFit fit = PriceFit(c, taker.type, grown);
+    // The refit is taken only if it costs less than `cost`: a cost above
+    // that need not be summed to the end.
+    const PricedFit fit = PriceFit(c, taker.type, grown, /*stop=*/cost);
     if (fit.surface && fit.cost < cost) cost = fit.cost, surface = *fit.surface;
     delta += cost - own + LabelCost(c, taker.type, grown.size()) -
              LabelCost(c, taker.type, taker.vertices.size());

@@ -22,6 +22,12 @@ absl::StatusOr<int> DropRegions(const SegmentContext& c, std::vector<int>* label
   int dropped = 0;
   for (;;) {
     MESHSEG_RETURN_IF_ERROR(c.run->CheckStop("segment"));
+    std::vector<int> unpriced;
+    for (int id = 0; id < static_cast<int>(regions->size()); ++id) {
+      const RegionState& r = (*regions)[id];
+      if (r.alive && !r.vertices.empty() && !priced[id]) unpriced.push_back(id);
+    }
+    kept.PriceDrops(c, *labels, *regions, region, unpriced);
     int best = -1;
     for (int id = 0; id < static_cast<int>(regions->size()); ++id) {
       const RegionState& r = (*regions)[id];

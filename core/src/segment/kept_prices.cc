@@ -1,8 +1,11 @@
 #include "segment/kept_prices.h"
 
+#include <cstddef>
 #include <cstring>
 #include <type_traits>
 #include <variant>
+
+#include <tbb/parallel_for.h>
 
 namespace meshseg::segment_internal {
 namespace {
@@ -37,33 +40,93 @@ int KeptPrices::Version(const std::vector<RegionState>& regions, int id) {
   return seen.version;
 }
 
-const DropMove& KeptPrices::Drop(const SegmentContext& c, const std::vector<int>& labels,
-                                 const std::vector<RegionState>& regions,
-                                 ReestimatedRegions& region, int id) {
-  if (drops_.size() < regions.size()) drops_.resize(regions.size());
+KeptPrices::Versions KeptPrices::DropVersions(const SegmentContext& c,
+                                              const std::vector<int>& labels,
+                                              const std::vector<RegionState>& regions, int id) {
   Versions versions = {{id, Version(regions, id)}};
   for (const int o : RegionsAround(c, labels, regions, id)) {
     versions.emplace_back(o, Version(regions, o));
   }
-  std::optional<DropEntry>& entry = drops_[id];
-  if (!entry || entry->versions != versions) {
-    entry = DropEntry{.move = DropDelta(c, labels, region, id), .versions = std::move(versions)};
+  return versions;
+}
+
+void KeptPrices::PriceDrops(const SegmentContext& c, const std::vector<int>& labels,
+                            const std::vector<RegionState>& regions, ReestimatedRegions& region,
+                            std::span<const int> ids) {
+  if (drops_.size() < regions.size()) drops_.resize(regions.size());
+  std::vector<int> todo;
+  std::vector<Versions> todo_versions;
+  for (const int id : ids) {
+    std::optional<DropEntry>& entry = drops_[id];
+    if (entry && entry->current == generation_) continue;
+    Versions versions = DropVersions(c, labels, regions, id);
+    if (entry && entry->versions == versions) {
+      entry->current = generation_;
+      continue;
+    }
+    todo.push_back(id);
+    todo_versions.push_back(std::move(versions));
   }
-  return entry->move;
+  // A drop's price reads the re-estimations of the region and of those
+  // around it (its versions); they are made first, so that the prices only
+  // read `region`.
+  for (const Versions& versions : todo_versions) {
+    for (const auto& [o, version] : versions) region(o);
+  }
+  std::vector<DropMove> moves(todo.size());
+  tbb::parallel_for(std::size_t{0}, todo.size(),
+                    [&](std::size_t k) { moves[k] = DropDelta(c, labels, region, todo[k]); });
+  for (std::size_t k = 0; k < todo.size(); ++k) {
+    drops_[todo[k]] = DropEntry{.move = std::move(moves[k]),
+                                .versions = std::move(todo_versions[k]),
+                                .current = generation_};
+  }
+}
+
+void KeptPrices::PriceMerges(const SegmentContext& c, const std::vector<int>& labels,
+                             const std::vector<RegionState>& regions, ReestimatedRegions& region,
+                             std::span<const std::pair<int, int>> pairs) {
+  std::vector<std::pair<int, int>> todo;
+  std::vector<Versions> todo_versions;
+  for (const auto& [a, b] : pairs) {
+    const auto it = merges_.find({a, b});
+    if (it != merges_.end() && it->second.current == generation_) continue;
+    Versions versions = {{a, Version(regions, a)}, {b, Version(regions, b)}};
+    if (it != merges_.end() && it->second.versions == versions) {
+      it->second.current = generation_;
+      continue;
+    }
+    todo.emplace_back(a, b);
+    todo_versions.push_back(std::move(versions));
+  }
+  for (const auto& [a, b] : todo) region(a), region(b);
+  std::vector<std::optional<Move>> moves(todo.size());
+  tbb::parallel_for(std::size_t{0}, todo.size(), [&](std::size_t k) {
+    const auto [a, b] = todo[k];
+    moves[k] = MergeDelta(c, labels, region, a, b, MergeTypes(regions[a].type, regions[b].type),
+                          /*below=*/0.0);
+  });
+  for (std::size_t k = 0; k < todo.size(); ++k) {
+    merges_[todo[k]] = MergeEntry{.move = std::move(moves[k]),
+                                  .versions = std::move(todo_versions[k]),
+                                  .current = generation_};
+  }
+}
+
+const DropMove& KeptPrices::Drop(const SegmentContext& c, const std::vector<int>& labels,
+                                 const std::vector<RegionState>& regions,
+                                 ReestimatedRegions& region, int id) {
+  PriceDrops(c, labels, regions, region, std::span<const int>(&id, 1));
+  return drops_[id]->move;
 }
 
 const std::optional<Move>& KeptPrices::Merge(const SegmentContext& c,
                                              const std::vector<int>& labels,
                                              const std::vector<RegionState>& regions,
                                              ReestimatedRegions& region, int a, int b) {
-  Versions versions = {{a, Version(regions, a)}, {b, Version(regions, b)}};
-  MergeEntry& entry = merges_[{a, b}];
-  if (entry.versions != versions) {
-    entry.move = MergeDelta(c, labels, region, a, b,
-                            MergeTypes(regions[a].type, regions[b].type), /*below=*/0.0);
-    entry.versions = std::move(versions);
-  }
-  return entry.move;
+  const std::pair<int, int> pair{a, b};
+  PriceMerges(c, labels, regions, region, std::span<const std::pair<int, int>>(&pair, 1));
+  return merges_.at(pair).move;
 }
 
 }  // namespace meshseg::segment_internal

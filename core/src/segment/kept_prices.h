@@ -5,11 +5,16 @@
 // on its two regions. The steps between two pricings change few regions, so
 // a price is reused while those regions are as they were when it was made,
 // bit for bit, and made again otherwise: the same prices, computed once.
+// Prices are independent of one another (each reads the regions and labels
+// as they stand), so those a step needs are made together, over the cores:
+// each price is the same computation as alone, so the prices, and every
+// decision made on them, do not depend on the number of threads.
 #ifndef MESHSEG_SRC_SEGMENT_KEPT_PRICES_H_
 #define MESHSEG_SRC_SEGMENT_KEPT_PRICES_H_
 
 #include <map>
 #include <optional>
+#include <span>
 #include <utility>
 #include <vector>
 
@@ -29,8 +34,19 @@ class KeptPrices {
   const std::optional<Move>& Merge(const SegmentContext& c, const std::vector<int>& labels,
                                    const std::vector<RegionState>& regions,
                                    ReestimatedRegions& region, int a, int b);
+  // Makes, in parallel, the prices of the drops of `ids` (and of the
+  // merges of `pairs`, a < b) that are not kept: Drop (Merge) then gives
+  // them without pricing, as long as nothing changes in between.
+  void PriceDrops(const SegmentContext& c, const std::vector<int>& labels,
+                  const std::vector<RegionState>& regions, ReestimatedRegions& region,
+                  std::span<const int> ids);
+  void PriceMerges(const SegmentContext& c, const std::vector<int>& labels,
+                   const std::vector<RegionState>& regions, ReestimatedRegions& region,
+                   std::span<const std::pair<int, int>> pairs);
   // The regions may have changed since the last price: each is compared
-  // again with what it was when next asked for.
+  // again with what it was when next asked for. Between two calls the
+  // regions and labels must not change (a price found current is not
+  // checked again until the next).
   void Touch() { ++generation_; }
 
  private:
@@ -42,15 +58,22 @@ class KeptPrices {
   };
   // (id, version) of the regions a price was made on.
   using Versions = std::vector<std::pair<int, int>>;
+  // Each price with the generation it was last found current in: within a
+  // generation nothing changes, so it is not compared again.
   struct DropEntry {
     DropMove move;
     Versions versions;  // the region, then those around it
+    long current = -1;
   };
   struct MergeEntry {
     std::optional<Move> move;
     Versions versions;
+    long current = -1;
   };
   int Version(const std::vector<RegionState>& regions, int id);
+  // The versions a drop of `id` is priced on: the region, then those around.
+  Versions DropVersions(const SegmentContext& c, const std::vector<int>& labels,
+                        const std::vector<RegionState>& regions, int id);
   long generation_ = 0;
   std::vector<Seen> seen_;
   std::vector<std::optional<DropEntry>> drops_;

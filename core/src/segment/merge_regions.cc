@@ -4,6 +4,7 @@
 #include <cstddef>
 #include <map>
 #include <optional>
+#include <span>
 #include <utility>
 #include <vector>
 
@@ -32,7 +33,6 @@ absl::StatusOr<int> MergeRegions(const SegmentContext& c, std::vector<int>* labe
   return MergeBestPairs(
       c, labels, regions, [](const RegionArc& arc) { return arc.smooth; },
       [&](int a, int b) -> std::optional<PairMerge> {
-        kept.Touch();  // merges since the last price
         const std::optional<Move>& move = kept.Merge(c, *labels, *regions, region, a, b);
         if (!move || !(move->delta < 0.0)) return std::nullopt;
         // A region whose vertices lower E more by going each to the
@@ -43,6 +43,26 @@ absl::StatusOr<int> MergeRegions(const SegmentContext& c, std::vector<int>* labe
         // is priced again.
         if (std::min(drop(a), drop(b)) < move->delta) return std::nullopt;
         return PairMerge{.score = -move->delta, .type = move->type, .surface = move->surface};
+      },
+      [&](std::span<const std::pair<int, int>> pairs) {
+        // The tests about to be made, priced together: the merges, then
+        // the drops of the members of a merge that lowers E that are not
+        // priced yet in this step (the ones the tests will ask for). Every
+        // test of a round comes after this, and no region changes within a
+        // round: the regions are compared with the kept ones once a round.
+        kept.Touch();
+        kept.PriceMerges(c, *labels, *regions, region, pairs);
+        std::vector<int> members;
+        for (const auto& [a, b] : pairs) {
+          const std::optional<Move>& move = kept.Merge(c, *labels, *regions, region, a, b);
+          if (!move || !(move->delta < 0.0)) continue;
+          for (const int id : {a, b}) {
+            if (!drops.contains({id, (*regions)[id].vertices.size()})) members.push_back(id);
+          }
+        }
+        std::sort(members.begin(), members.end());
+        members.erase(std::unique(members.begin(), members.end()), members.end());
+        kept.PriceDrops(c, *labels, *regions, region, members);
       });
 }
 

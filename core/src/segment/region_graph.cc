@@ -54,12 +54,21 @@ std::vector<RegionArc> BuildRegionGraph(const SegmentContext& c, const std::vect
 absl::StatusOr<int> MergeBestPairs(
     const SegmentContext& c, std::vector<int>* labels, std::vector<RegionState>* regions,
     const std::function<bool(const RegionArc&)>& eligible,
-    const std::function<std::optional<PairMerge>(int a, int b)>& test) {
+    const std::function<std::optional<PairMerge>(int a, int b)>& test,
+    const std::function<void(std::span<const std::pair<int, int>>)>& prepare) {
   std::map<std::pair<int, int>, std::optional<PairMerge>> cache;
   int merges = 0;
+  std::vector<std::pair<int, int>> untested;
   while (true) {
     MESHSEG_RETURN_IF_ERROR(c.run->CheckStop("segment"));
     const std::vector<RegionArc> arcs = BuildRegionGraph(c, *labels, *regions);
+    if (prepare) {
+      untested.clear();
+      for (const RegionArc& arc : arcs) {
+        if (eligible(arc) && !cache.contains({arc.a, arc.b})) untested.emplace_back(arc.a, arc.b);
+      }
+      if (!untested.empty()) prepare(untested);
+    }
     const RegionArc* best_arc = nullptr;
     const PairMerge* best = nullptr;
     for (const RegionArc& arc : arcs) {

@@ -8,6 +8,8 @@
 
 #include <functional>
 #include <optional>
+#include <span>
+#include <utility>
 #include <vector>
 
 #include "absl/status/statusor.h"
@@ -40,12 +42,15 @@ struct PairMerge {
 // the smaller region into the larger, the pair across an arc that
 // `eligible` admits with the highest score `test(a, b)` gives (nullopt: not
 // to be merged), until none is left. Tests are cached per arc and redone
-// only for pairs a merge changed. Returns the number of
+// only for pairs a merge changed; before each round of tests, `prepare`
+// (may be empty) is given the pairs about to be tested, (a, b) in arc
+// order, so that their prices can be made together. Returns the number of
 // merges. Errors: CANCELLED on stop.
 absl::StatusOr<int> MergeBestPairs(
     const SegmentContext& c, std::vector<int>* labels, std::vector<RegionState>* regions,
     const std::function<bool(const RegionArc&)>& eligible,
-    const std::function<std::optional<PairMerge>(int a, int b)>& test);
+    const std::function<std::optional<PairMerge>(int a, int b)>& test,
+    const std::function<void(std::span<const std::pair<int, int>>)>& prepare = {});
 
 }  // namespace meshseg::segment_internal
 

@@ -37,7 +37,9 @@ TEST(KeptPricesTest, ReusesAPriceWhileItsRegionsAreUnchangedAndRemakesItAfter) {
   ASSERT_TRUE(direct.has_value());
   const bool pays = direct->delta < 0.0;
   EXPECT_EQ(merge.has_value() && merge->delta < 0.0, pays);
-  if (pays) EXPECT_EQ(merge->delta, direct->delta);
+  if (pays) {
+    EXPECT_EQ(merge->delta, direct->delta);
+  }
   // A later step with the same regions gets the same prices.
   kept.Touch();
   ReestimatedRegions again(s.c, regions, /*reestimate=*/false);
@@ -51,6 +53,38 @@ TEST(KeptPricesTest, ReusesAPriceWhileItsRegionsAreUnchangedAndRemakesItAfter) {
   const double redone = kept.Drop(s.c, labels, regions, tilted, 2).delta;
   EXPECT_EQ(redone, DropDelta(s.c, labels, tilted, 2).delta);
   EXPECT_NE(redone, drop);
+}
+
+TEST(KeptPricesTest, PricesMadeTogetherAreThePricesMadeOneByOne) {
+  Sheet s;
+  std::vector<int> labels;
+  std::vector<RegionState> regions = RippledFoldWithStrip(0.01, &s, &labels);
+  // Re-estimated regions: the prices made together read re-estimations
+  // made before them.
+  ReestimatedRegions region(s.c, regions);
+  KeptPrices together;
+  const std::vector<int> ids = {0, 1, 2};
+  const std::vector<std::pair<int, int>> pairs = {{0, 1}, {0, 2}, {1, 2}};
+  together.PriceDrops(s.c, labels, regions, region, ids);
+  together.PriceMerges(s.c, labels, regions, region, pairs);
+  ReestimatedRegions alone(s.c, regions);
+  for (const int id : ids) {
+    const DropMove& kept = together.Drop(s.c, labels, regions, region, id);
+    const DropMove direct = DropDelta(s.c, labels, alone, id);
+    EXPECT_EQ(kept.delta, direct.delta) << "drop of " << id;
+    EXPECT_EQ(kept.next, direct.next) << "drop of " << id;
+    EXPECT_EQ(kept.takers, direct.takers) << "drop of " << id;
+  }
+  for (const auto& [a, b] : pairs) {
+    const std::optional<Move>& kept = together.Merge(s.c, labels, regions, region, a, b);
+    const std::optional<Move> direct =
+        MergeDelta(s.c, labels, alone, a, b, MergeTypes(regions[a].type, regions[b].type),
+                   /*below=*/0.0);
+    ASSERT_EQ(kept.has_value(), direct.has_value()) << "merge of " << a << ", " << b;
+    if (kept) {
+      EXPECT_EQ(kept->delta, direct->delta) << "merge of " << a << ", " << b;
+    }
+  }
 }
 
 }  // namespace
