@@ -282,7 +282,8 @@ absl::StatusOr<Reconstruction> Reconstruct(const PointCloud& cloud, const Recons
     MESHSEG_ASSIGN_OR_RETURN(ClosedSurface closed,
                              CloseUnsupported(out.mesh, supported, params.min_component_fraction,
                                               params.leave_unsupported_open, {},
-                                              /*bend_onto_seen_planes=*/true));
+                                              /*bend_onto_seen_planes=*/true,
+                                              /*min_tube_rim=*/M_PI * params.handle_spacings * h));
     stats.unsupported_face_count = closed.removed_face_count;
     stats.hole_count = closed.hole_count;
     stats.filled_area = closed.filled_area;

@@ -1,0 +1,119 @@
+#include "reconstruct/close_tube.h"
+
+#include <cmath>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "clouds.h"
+#include "reconstruct/close_unsupported.h"
+#include "reconstruct/surface_mesh.h"
+#include "tube_meshes.h"
+
+namespace meshseg::reconstruct_internal {
+namespace {
+
+constexpr double kR = 15.0, kr = 5.0;  // torus radii (a ring lying on its side)
+constexpr int kNu = 96, kNv = 32;      // grid round the axis and round the tube
+// A tube vertex lies this near the torus: the cubic's error against a
+// semicircle (1.8 % of r), the mesh's chord sag (r (1 − cos(π / kNv)), 0.5 %)
+// and the rims' normals, extrapolated from rings of facets (2-3 %).
+constexpr double kTolerance = 0.05 * kr;
+
+Mesh Torus() {
+  const TubeMesh m = TorusTubeMesh(kR, kr, kNu, kNv);
+  return *SurfaceMesh(m.vertices, m.triangles, "torus");
+}
+
+// Distance of `p` from the exact torus.
+double TorusDistance(const Eigen::Vector3d& p) {
+  return std::abs(std::hypot(std::hypot(p.x(), p.y()) - kR, p.z()) - kr);
+}
+
+// The largest distance of a patch vertex from the exact torus.
+double WorstPatchDistance(const ClosedSurface& closed) {
+  double worst = 0.0;
+  for (const auto f : closed.mesh.tri.faces()) {
+    if (!closed.filled[f.idx()]) continue;
+    for (const auto v : closed.mesh.tri.fv_range(f)) {
+      const Eigen::Vector3d p = ToEigen(closed.mesh.tri.point(v));
+  
+      worst = std::max(worst, TorusDistance(p));
+    }
+  }
+  return worst;
+}
+
+// Face 2 (i kNv + j) + k of the torus lies in grid cell (i, j); j counts
+// round the tube from the outer equator (v = 2π j / kNv).
+std::vector<uint8_t> SupportedWhere(const Mesh& torus, bool (*seen)(int i, int j)) {
+  std::vector<uint8_t> supported(torus.tri.n_faces());
+  for (size_t f = 0; f < supported.size(); ++f) {
+    const int cell = static_cast<int>(f) / 2;
+    supported[f] = seen(cell / kNv, cell % kNv);
+  }
+  return supported;
+}
+
+// A ring seen from above only: the whole underside (v in [π, 2π)) is
+// unsupported, an annulus between the inner and the outer equator. Its two
+// rims leave their plane straight down, so the tube between them is the
+// semicircle of the ring's own section: genus 1, every patch vertex on the
+// torus to within the cubic's error (under 1 % of r) and the mesh's own
+// chord sag (r (1 − cos(π / kNv)) ≈ 0.5 % of r). Two discs instead span the
+// equators' planes, up to r (the full depth of the underside) away.
+TEST(CloseTube, TheUnseenUndersideOfARingIsClosedByATubeOnTheRingsSection) {
+  const Mesh torus = Torus();
+  const auto supported = SupportedWhere(torus, [](int, int j) { return j < kNv / 2; });
+  const auto tubes = CloseUnsupported(torus, supported, 0.01, false, {}, true, 0.0);
+  ASSERT_TRUE(tubes.ok()) << tubes.status();
+  EXPECT_EQ(tubes->hole_count, 2);
+  EXPECT_EQ(test::BoundaryEdgeCount(tubes->mesh.tri), 0);
+  EXPECT_EQ(test::NonManifoldVertexCount(tubes->mesh.tri), 0);
+  EXPECT_EQ(test::ComponentCount(tubes->mesh.tri), 1);
+  EXPECT_EQ(Genus(tubes->mesh.tri), 1);
+  EXPECT_LT(WorstPatchDistance(*tubes), kTolerance);
+  const double half_area = 2 * M_PI * M_PI * kR * kr;
+  EXPECT_NEAR(tubes->filled_area, half_area, 0.02 * half_area);
+
+  // Without tubes (a negative rim bound): two discs, far from the ring.
+  const auto discs = CloseUnsupported(torus, supported, 0.01, false, {}, true, -1.0);
+  ASSERT_TRUE(discs.ok()) << discs.status();
+  EXPECT_EQ(Genus(discs->mesh.tri), 0);
+  EXPECT_GT(WorstPatchDistance(*discs), 0.5 * kr);
+}
+
+// The unseen band is v in [9π/8, 15π/8]: the rims lie 22.5° below the
+// equators, their directions turn by 135°, and the tube is the arc of the
+// section between them.
+TEST(CloseTube, ATubeFollowsTheArcBetweenRimsThatTurnByLessThanHalfATurn) {
+  const Mesh torus = Torus();
+  const auto supported = SupportedWhere(
+      torus, [](int, int j) { return j < 9 * kNv / 16 || j >= 15 * kNv / 16; });
+  const auto tubes = CloseUnsupported(torus, supported, 0.01, false, {}, true, 0.0);
+  ASSERT_TRUE(tubes.ok()) << tubes.status();
+  EXPECT_EQ(test::BoundaryEdgeCount(tubes->mesh.tri), 0);
+  EXPECT_EQ(Genus(tubes->mesh.tri), 1);
+  EXPECT_LT(WorstPatchDistance(*tubes), kTolerance);
+}
+
+// A band across the tube (cells i in [0, 4)) leaves two meridians whose
+// seen surface leaves them along their axis: the rims of one tube when the
+// points resolve loops that long, but a handle to cut (two discs) when the
+// rims are shorter than min_rim (handles.h).
+TEST(CloseTube, RimsShorterThanTheResolvedHoleAreClosedByDiscs) {
+  const Mesh torus = Torus();
+  const auto supported = SupportedWhere(torus, [](int i, int) { return i >= 4; });
+  const double meridian = 2 * M_PI * kr;
+  const auto tube = CloseUnsupported(torus, supported, 0.01, false, {}, true, 0.9 * meridian);
+  ASSERT_TRUE(tube.ok()) << tube.status();
+  EXPECT_EQ(Genus(tube->mesh.tri), 1);
+  EXPECT_LT(WorstPatchDistance(*tube), kTolerance);
+  const auto discs = CloseUnsupported(torus, supported, 0.01, false, {}, true, 1.1 * meridian);
+  ASSERT_TRUE(discs.ok()) << discs.status();
+  EXPECT_EQ(Genus(discs->mesh.tri), 0);
+  EXPECT_EQ(test::BoundaryEdgeCount(discs->mesh.tri), 0);
+}
+
+}  // namespace
+}  // namespace meshseg::reconstruct_internal
