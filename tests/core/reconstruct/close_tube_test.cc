@@ -115,5 +115,62 @@ TEST(CloseTube, RimsShorterThanTheResolvedHoleAreClosedByDiscs) {
   EXPECT_EQ(test::BoundaryEdgeCount(discs->mesh.tri), 0);
 }
 
+// A washer: the ring of rectangular section ρ in [kInner, kOuter], z in
+// [0, kHeight] round the z axis, kNu cells round it and cells kStep square
+// on the section, which runs anticlockwise in (ρ, z) from the outer wall's
+// foot (so the faces face outwards). Face 2 (i cells + j) + k lies in cell
+// (i, j); `section` gets the section's vertices. The walls are tall enough
+// that the rings the rims' normals come from (close_tube.cc, up to 9 edges
+// in) stay on them.
+constexpr double kInner = 10.0, kOuter = 15.0, kHeight = 10.0, kStep = 0.5;
+
+Mesh Washer(std::vector<Eigen::Vector2d>* section) {
+  const int across = static_cast<int>(std::lround((kOuter - kInner) / kStep));
+  const int up = static_cast<int>(std::lround(kHeight / kStep));
+  for (int k = 0; k < up; ++k) section->emplace_back(kOuter, k * kStep);
+  for (int k = 0; k < across; ++k) section->emplace_back(kOuter - k * kStep, kHeight);
+  for (int k = 0; k < up; ++k) section->emplace_back(kInner, kHeight - k * kStep);
+  for (int k = 0; k < across; ++k) section->emplace_back(kInner + k * kStep, 0.0);
+  const int nv = static_cast<int>(section->size());
+  std::vector<Eigen::Vector3d> vertices;
+  std::vector<std::array<int, 3>> triangles;
+  for (int i = 0; i < kNu; ++i) {
+    const double u = 2 * M_PI * i / kNu;
+    for (const Eigen::Vector2d& q : *section) {
+      vertices.emplace_back(q.x() * std::cos(u), q.x() * std::sin(u), q.y());
+    }
+  }
+  const auto id = [&](int i, int j) { return (i % kNu) * nv + j % nv; };
+  for (int i = 0; i < kNu; ++i) {
+    for (int j = 0; j < nv; ++j) {
+      triangles.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
+      triangles.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+    }
+  }
+  return *SurfaceMesh(vertices, triangles, "washer");
+}
+
+// The washer's underside and both its walls below z = 2 unseen: an annulus
+// whose rims leave their plane straight down, like the mouth of a bore and
+// the walls round the face it opens onto. The seen walls do not curve, so
+// the unseen surface meets them at edges: arcs from rim to rim, 5 apart,
+// would reach 2.5 down, 0.5 below the unseen face. Criterion (d) keeps the
+// two discs (genus 0); without it the tube is made (genus 1).
+TEST(CloseTube, StraightWallsRoundAnUnseenFaceKeepTheirDiscs) {
+  std::vector<Eigen::Vector2d> section;
+  const Mesh washer = Washer(&section);
+  const int nv = static_cast<int>(section.size());
+  std::vector<uint8_t> supported(washer.tri.n_faces());
+  for (size_t f = 0; f < supported.size(); ++f) {
+    const int j = static_cast<int>(f) / 2 % nv;
+    supported[f] = section[j].y() + section[(j + 1) % nv].y() > 2 * 2.0;
+  }
+  const auto closed = CloseUnsupported(washer, supported, 0.01, false, {}, true, 0.0);
+  ASSERT_TRUE(closed.ok()) << closed.status();
+  EXPECT_EQ(closed->hole_count, 2);
+  EXPECT_EQ(test::BoundaryEdgeCount(closed->mesh.tri), 0);
+  EXPECT_EQ(Genus(closed->mesh.tri), 0);
+}
+
 }  // namespace
 }  // namespace meshseg::reconstruct_internal
