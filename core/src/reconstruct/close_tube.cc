@@ -46,10 +46,11 @@ constexpr size_t kMaxStripCells = 4'000'000;
 // along the longest rung's arc, within these bounds.
 constexpr int kMinRows = 2;
 constexpr int kMaxRows = 256;
-// The tube's arcs reach as deep below their chords as arcs of the seen
-// surfaces' own curvature across the rims, to within this fraction (and the
-// loops' mean edge length, the resolution of that curvature).
-constexpr double kDepthTolerance = 0.5;
+// Arcs that bend (deeper below their chords than the loops' mean edge
+// length, the resolution of a curvature across the rims) must bend as the
+// seen surface does at each rim: its curvature within this fraction of the
+// arcs' mean curvature.
+constexpr double kCurvatureTolerance = 0.5;
 // Below this turning angle (radians) a rung's arc is taken as straight.
 constexpr double kStraightAngle = 1e-3;
 
@@ -225,7 +226,8 @@ double Perimeter(const Sm& sm, Sm::Halfedge_index h) {
 // distance of an arc), c when straight. Also gives the arc's length.
 struct Rung {
   Eigen::Vector3d a, b, da, db;
-  double chord = 0.0, tangent = 0.0, arc = 0.0, depth = 0.0;  // depth: below the chord
+  // depth: below the chord; curvature: 1 / the arc's radius
+  double chord = 0.0, tangent = 0.0, arc = 0.0, depth = 0.0, curvature = 0.0;
 
   Rung(const Eigen::Vector3d& a_in, const Eigen::Vector3d& b_in, const Eigen::Vector3d& da_in,
        const Eigen::Vector3d& db_in)
@@ -239,6 +241,7 @@ struct Rung {
       tangent = 4.0 * std::tan(0.25 * theta) * radius;
       arc = theta * radius;
       depth = radius * (1.0 - std::cos(0.5 * theta));
+      curvature = 1.0 / radius;
     }
   }
 
@@ -283,21 +286,27 @@ std::vector<std::pair<size_t, size_t>> ShortestStrip(const std::vector<Eigen::Ve
 
 }  // namespace
 
-std::vector<std::pair<size_t, size_t>> TubeRims(const TriMesh& tri,
-                                                const std::vector<uint8_t>& removed,
-                                                const HoleMesh& sm,
-                                                const std::vector<int>& tri_vertex,
-                                                const std::vector<HoleMesh::Halfedge_index>& loops,
-                                                double min_rim) {
-  // Removed components (edge-connected) and their Euler characteristics.
+std::vector<int> FacePieces(const TriMesh& tri, const std::vector<uint8_t>& removed,
+                            uint8_t side) {
   std::vector<int> parent(tri.n_faces());
   std::iota(parent.begin(), parent.end(), 0);
   for (const auto e : tri.edges()) {
     if (tri.is_boundary(e)) continue;
     const int f = tri.face_handle(tri.halfedge_handle(e, 0)).idx();
     const int g = tri.face_handle(tri.halfedge_handle(e, 1)).idx();
-    if (removed[f] && removed[g]) parent[FindRoot(parent, f)] = FindRoot(parent, g);
+    if (removed[f] == side && removed[g] == side) parent[FindRoot(parent, f)] = FindRoot(parent, g);
   }
+  return parent;
+}
+
+std::vector<std::pair<size_t, size_t>> TubeRims(const TriMesh& tri,
+                                                const std::vector<uint8_t>& removed,
+                                                const HoleMesh& sm,
+                                                const std::vector<int>& tri_vertex,
+                                                const std::vector<HoleMesh::Halfedge_index>& loops,
+                                                double min_rim) {
+  // Removed components and their Euler characteristics.
+  std::vector<int> parent = FacePieces(tri, removed, 1);
   std::vector<int64_t> chi(tri.n_faces(), 0);
   for (const auto f : tri.faces()) chi[FindRoot(parent, f.idx())] += removed[f.idx()];
   for (const auto e : tri.edges()) {
@@ -381,19 +390,19 @@ bool CloseTube(HoleMesh::Halfedge_index a, HoleMesh::Halfedge_index b, HoleMesh*
     rung.emplace_back(pa[i % m], pb[j % n], out_a[i % m], out_b[j % n]);
     longest = std::max(longest, rung.back().arc);
   }
-  // The arcs must bend as the seen surfaces do at the rims: the depth an
-  // arc of the rims' own curvature reaches below the same chord.
-  const double curvature = std::max(0.0, 0.5 * (rim_a.curvature + rim_b.curvature));
-  double arc_depth = 0.0, seen_depth = 0.0;
+  // The arcs must bend as the seen surface does at each rim, unless they
+  // are straight within the resolution of that curvature.
+  double arc_depth = 0.0, arc_curvature = 0.0;
   for (const Rung& r : rung) {
     arc_depth += r.depth;
-    const double half = std::min(1.0, 0.5 * curvature * r.chord);
-    seen_depth += curvature > 0 ? (1.0 - std::sqrt(1.0 - half * half)) / curvature : 0.0;
+    arc_curvature += r.curvature;
   }
   arc_depth /= static_cast<double>(rungs);
-  seen_depth /= static_cast<double>(rungs);
-  if (std::abs(arc_depth - seen_depth) > kDepthTolerance * std::max(arc_depth, seen_depth) + edge) {
-    return false;
+  arc_curvature /= static_cast<double>(rungs);
+  if (arc_depth > edge) {
+    for (const double seen : {rim_a.curvature, rim_b.curvature}) {
+      if (std::abs(seen - arc_curvature) > kCurvatureTolerance * arc_curvature) return false;
+    }
   }
   const int rows = std::clamp(static_cast<int>(std::ceil(longest / edge)), kMinRows, kMaxRows);
   // Vertex k of rung r: the rims at k = 0 and rows, new vertices between.

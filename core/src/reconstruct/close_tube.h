@@ -53,6 +53,11 @@ namespace meshseg::reconstruct_internal {
 // between the outgoing direction and the loop's axis is at least this (45°).
 inline constexpr double kMinLeavingCosine = 0.7071;
 
+// Union-find parents (mesh_internal::FindRoot) of the edge-connected pieces
+// of the faces of `tri` whose `removed` flag is `side`.
+std::vector<int> FacePieces(const TriMesh& tri, const std::vector<uint8_t>& removed,
+                            uint8_t side);
+
 // The pairs (indices into `loops`, border halfedges of `sm`) that are the
 // rims of one unseen tube, as above. `sm` holds the faces of `tri` not
 // `removed`; `tri_vertex` maps each vertex of `sm` to its vertex of `tri`.

@@ -47,15 +47,7 @@ bool RemovePinches(const TriMesh& tri, std::vector<uint8_t>* removed) {
 // Marks the kept edge-connected pieces with fewer faces than min_fraction of
 // the largest; returns whether it marked any.
 bool RemoveSmallPieces(const TriMesh& tri, double min_fraction, std::vector<uint8_t>* removed) {
-  std::vector<int> parent(tri.n_faces());
-  std::iota(parent.begin(), parent.end(), 0);
-  for (const auto e : tri.edges()) {
-    if (tri.is_boundary(e)) continue;
-    const int a = tri.face_handle(tri.halfedge_handle(e, 0)).idx();
-    const int b = tri.face_handle(tri.halfedge_handle(e, 1)).idx();
-    if ((*removed)[a] || (*removed)[b]) continue;
-    parent[FindRoot(parent, a)] = FindRoot(parent, b);
-  }
+  std::vector<int> parent = FacePieces(tri, *removed, 0);
   std::vector<int64_t> size(tri.n_faces(), 0);
   for (size_t f = 0; f < parent.size(); ++f) {
     if (!(*removed)[f]) ++size[FindRoot(parent, static_cast<int>(f))];

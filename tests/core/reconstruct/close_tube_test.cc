@@ -44,6 +44,14 @@ double WorstPatchDistance(const ClosedSurface& closed) {
   return worst;
 }
 
+// `tri` is one closed manifold of genus `genus`.
+void ExpectOneClosedManifoldOfGenus(const TriMesh& tri, int genus) {
+  EXPECT_EQ(test::BoundaryEdgeCount(tri), 0);
+  EXPECT_EQ(test::NonManifoldVertexCount(tri), 0);
+  EXPECT_EQ(test::ComponentCount(tri), 1);
+  EXPECT_EQ(Genus(tri), genus);
+}
+
 // Face 2 (i kNv + j) + k of the torus lies in grid cell (i, j); j counts
 // round the tube from the outer equator (v = 2π j / kNv).
 std::vector<uint8_t> SupportedWhere(const Mesh& torus, bool (*seen)(int i, int j)) {
@@ -68,10 +76,7 @@ TEST(CloseTube, TheUnseenUndersideOfARingIsClosedByATubeOnTheRingsSection) {
   const auto tubes = CloseUnsupported(torus, supported, 0.01, false, {}, true, 0.0);
   ASSERT_TRUE(tubes.ok()) << tubes.status();
   EXPECT_EQ(tubes->hole_count, 2);
-  EXPECT_EQ(test::BoundaryEdgeCount(tubes->mesh.tri), 0);
-  EXPECT_EQ(test::NonManifoldVertexCount(tubes->mesh.tri), 0);
-  EXPECT_EQ(test::ComponentCount(tubes->mesh.tri), 1);
-  EXPECT_EQ(Genus(tubes->mesh.tri), 1);
+  ExpectOneClosedManifoldOfGenus(tubes->mesh.tri, 1);
   EXPECT_LT(WorstPatchDistance(*tubes), kTolerance);
   const double half_area = 2 * M_PI * M_PI * kR * kr;
   EXPECT_NEAR(tubes->filled_area, half_area, 0.02 * half_area);
@@ -79,7 +84,7 @@ TEST(CloseTube, TheUnseenUndersideOfARingIsClosedByATubeOnTheRingsSection) {
   // Without tubes (a negative rim bound): two discs, far from the ring.
   const auto discs = CloseUnsupported(torus, supported, 0.01, false, {}, true, -1.0);
   ASSERT_TRUE(discs.ok()) << discs.status();
-  EXPECT_EQ(Genus(discs->mesh.tri), 0);
+  ExpectOneClosedManifoldOfGenus(discs->mesh.tri, 0);
   EXPECT_GT(WorstPatchDistance(*discs), 0.5 * kr);
 }
 
@@ -92,8 +97,7 @@ TEST(CloseTube, ATubeFollowsTheArcBetweenRimsThatTurnByLessThanHalfATurn) {
       torus, [](int, int j) { return j < 9 * kNv / 16 || j >= 15 * kNv / 16; });
   const auto tubes = CloseUnsupported(torus, supported, 0.01, false, {}, true, 0.0);
   ASSERT_TRUE(tubes.ok()) << tubes.status();
-  EXPECT_EQ(test::BoundaryEdgeCount(tubes->mesh.tri), 0);
-  EXPECT_EQ(Genus(tubes->mesh.tri), 1);
+  ExpectOneClosedManifoldOfGenus(tubes->mesh.tri, 1);
   EXPECT_LT(WorstPatchDistance(*tubes), kTolerance);
 }
 
@@ -107,12 +111,11 @@ TEST(CloseTube, RimsShorterThanTheResolvedHoleAreClosedByDiscs) {
   const double meridian = 2 * M_PI * kr;
   const auto tube = CloseUnsupported(torus, supported, 0.01, false, {}, true, 0.9 * meridian);
   ASSERT_TRUE(tube.ok()) << tube.status();
-  EXPECT_EQ(Genus(tube->mesh.tri), 1);
+  ExpectOneClosedManifoldOfGenus(tube->mesh.tri, 1);
   EXPECT_LT(WorstPatchDistance(*tube), kTolerance);
   const auto discs = CloseUnsupported(torus, supported, 0.01, false, {}, true, 1.1 * meridian);
   ASSERT_TRUE(discs.ok()) << discs.status();
-  EXPECT_EQ(Genus(discs->mesh.tri), 0);
-  EXPECT_EQ(test::BoundaryEdgeCount(discs->mesh.tri), 0);
+  ExpectOneClosedManifoldOfGenus(discs->mesh.tri, 0);
 }
 
 // A washer: the ring of rectangular section ρ in [kInner, kOuter], z in
@@ -168,8 +171,7 @@ TEST(CloseTube, StraightWallsRoundAnUnseenFaceKeepTheirDiscs) {
   const auto closed = CloseUnsupported(washer, supported, 0.01, false, {}, true, 0.0);
   ASSERT_TRUE(closed.ok()) << closed.status();
   EXPECT_EQ(closed->hole_count, 2);
-  EXPECT_EQ(test::BoundaryEdgeCount(closed->mesh.tri), 0);
-  EXPECT_EQ(Genus(closed->mesh.tri), 0);
+  ExpectOneClosedManifoldOfGenus(closed->mesh.tri, 0);
 }
 
 }  // namespace
