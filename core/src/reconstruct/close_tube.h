@@ -20,13 +20,15 @@
 // sheet, extended, closes its own loop as a disc.
 //
 // The tube is then built (below) and kept only if (d) its arcs bend as the
-// seen surfaces do: their mean depth below their chords is within half (and
-// the loops' mean edge length) of the depth arcs of the seen surfaces' own
-// curvature across the rims reach below the same chords. A torus's section
-// curves on into the unseen side at the curvature it had where it was seen.
-// Walls that run straight to the rims (a bore and the walls around the face
-// it opens onto) meet the unseen face at edges, not in an arc; that hole
-// keeps its discs, bent onto the seen planes (seen_planes.h).
+// seen surface does at each rim: unless the arcs are straight within the
+// resolution of a curvature (their mean depth below their chords at most the
+// loops' mean edge length), each rim's curvature across the border (read
+// from the normals 3 and 9 edges inside) is within half of the arcs' mean
+// curvature. A torus's section curves on into the unseen side at the
+// curvature it had where it was seen. Walls that run straight to the rims (a
+// bore and the walls around the face it opens onto) meet the unseen face at
+// edges, not in an arc; that hole keeps its discs, bent onto the seen planes
+// (seen_planes.h).
 //
 // The tube: the loops are joined by a strip of rungs, the sequence of
 // loop-vertex pairs of least total rung length (the optimal strip between
@@ -71,8 +73,8 @@ std::vector<std::pair<size_t, size_t>> TubeRims(const TriMesh& tri,
 
 // Closes the annulus between the border loops of `a` and `b` of `sm` by the
 // tube above; new faces get the "f:filled" property's default. Returns false
-// and leaves `sm` as it was when the arcs do not bend as the seen surfaces do
-// (d), or the strip cannot be added (too long loops).
+// and leaves `sm` as it was when the arcs do not bend as the seen surface
+// does at each rim (d), or the strip cannot be added (too long loops).
 bool CloseTube(HoleMesh::Halfedge_index a, HoleMesh::Halfedge_index b, HoleMesh* sm);
 
 }  // namespace meshseg::reconstruct_internal
