@@ -48,34 +48,17 @@
 
 #include "meshseg/mesh.h"
 #include "reconstruct/close_hole.h"
+#include "reconstruct/tube_rims.h"
 
 namespace meshseg::reconstruct_internal {
 
-// A loop's seen surface leaves it out of its plane when the mean |cosine|
-// between the outgoing direction and the loop's axis is at least this (45°).
-inline constexpr double kMinLeavingCosine = 0.7071;
-
-// Union-find parents (mesh_internal::FindRoot) of the edge-connected pieces
-// of the faces of `tri` whose `removed` flag is `side`.
-std::vector<int> FacePieces(const TriMesh& tri, const std::vector<uint8_t>& removed,
-                            uint8_t side);
-
-// The pairs (indices into `loops`, border halfedges of `sm`) that are the
-// rims of one unseen tube, as above. `sm` holds the faces of `tri` not
-// `removed`; `tri_vertex` maps each vertex of `sm` to its vertex of `tri`.
-// Only loops longer than `min_rim` (model units) are paired.
-std::vector<std::pair<size_t, size_t>> TubeRims(const TriMesh& tri,
-                                                const std::vector<uint8_t>& removed,
-                                                const HoleMesh& sm,
-                                                const std::vector<int>& tri_vertex,
-                                                const std::vector<HoleMesh::Halfedge_index>& loops,
-                                                double min_rim);
-
 // Closes the annulus between the border loops of `a` and `b` of `sm` by the
-// tube above; new faces get the "f:filled" property's default. Returns false
+// tube above (`sign` as for RimOf); new faces get the "f:filled" property's
+// default. Returns false
 // and leaves `sm` as it was when the arcs do not bend as the seen surface
 // does at each rim (d), or the strip cannot be added (too long loops).
-bool CloseTube(HoleMesh::Halfedge_index a, HoleMesh::Halfedge_index b, HoleMesh* sm);
+bool CloseTube(HoleMesh::Halfedge_index a, HoleMesh::Halfedge_index b, double sign,
+               HoleMesh* sm);
 
 }  // namespace meshseg::reconstruct_internal
 
