@@ -30,7 +30,7 @@ constexpr int kFarRing = 9;
 // vertices on either side: as far along the rim as the rings it comes from
 // reach inwards (a scan's border zigzags from one edge to the next, and
 // detail along the rim finer than the band the normals are read from is
-// their noise). With ±2 the tube's p95 off a scanned ring was 2.6-5.5 sp.
+// their noise).
 constexpr int kDirectionWindow = kFarRing;
 // A rim vertex's ring sums are pooled with this many neighbours on either
 // side (one may own no vertex of a ring); a wider pool would draw the mean
