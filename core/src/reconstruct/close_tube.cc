@@ -3,10 +3,14 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
+#include <vector>
 
 #include <Eigen/Core>
 
 #include <CGAL/boost/graph/Euler_operations.h>
+
+#include "reconstruct/tube_rims.h"
 
 namespace meshseg::reconstruct_internal {
 namespace {

@@ -42,21 +42,15 @@
 #ifndef MESHSEG_RECONSTRUCT_CLOSE_TUBE_H_
 #define MESHSEG_RECONSTRUCT_CLOSE_TUBE_H_
 
-#include <cstdint>
-#include <utility>
-#include <vector>
-
-#include "meshseg/mesh.h"
 #include "reconstruct/close_hole.h"
-#include "reconstruct/tube_rims.h"
 
 namespace meshseg::reconstruct_internal {
 
 // Closes the annulus between the border loops of `a` and `b` of `sm` by the
-// tube above (`sign` as for RimOf); new faces get the "f:filled" property's
-// default. Returns false
-// and leaves `sm` as it was when the arcs do not bend as the seen surface
-// does at each rim (d), or the strip cannot be added (too long loops).
+// tube above (`sign` as for RimOf, tube_rims.h); new faces get the
+// "f:filled" property's default. Returns false and leaves `sm` as it was
+// when the arcs do not bend as the seen surface does at each rim (d), or the
+// strip cannot be added (too long loops).
 bool CloseTube(HoleMesh::Halfedge_index a, HoleMesh::Halfedge_index b, double sign,
                HoleMesh* sm);
 

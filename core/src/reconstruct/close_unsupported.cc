@@ -13,6 +13,7 @@
 #include "reconstruct/close_hole.h"
 #include "reconstruct/close_tube.h"
 #include "reconstruct/surface_mesh.h"
+#include "reconstruct/tube_rims.h"
 
 namespace meshseg::reconstruct_internal {
 
