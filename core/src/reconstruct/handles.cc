@@ -38,8 +38,16 @@ absl::Status CutUnsupportedHandles(const std::vector<Eigen::Vector3d>& points,
   for (int round = 0; round < kHandleRounds; ++round) {
     const int genus = Genus(mesh->tri);
     if (genus <= 0) break;
-    const HandleStrips strips = ShortHandleStrips(
-        mesh->tri, MaxHandleLoops(mesh->tri, points, index, params.handle_spacings), genus, near);
+    // Round holes up to handle_spacings × s across have loops up to π times
+    // that; loops up to twice as long are looked at for slits as narrow.
+    std::vector<double> max_loop =
+        MaxHandleLoops(mesh->tri, points, index, params.handle_spacings);
+    std::vector<double> max_width(max_loop.size());
+    for (size_t v = 0; v < max_loop.size(); ++v) {
+      max_width[v] = max_loop[v] / M_PI;
+      max_loop[v] *= 2.0;
+    }
+    const HandleStrips strips = ShortHandleStrips(mesh->tri, max_loop, genus, near, max_width);
     if (strips.cut_count == 0) break;
     std::vector<uint8_t> supported(strips.cut.size());
     for (size_t f = 0; f < supported.size(); ++f) supported[f] = !strips.cut[f];
