@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <utility>
 
+#include <Eigen/Geometry>
+
 #include "absl/container/flat_hash_map.h"
 #include "absl/container/flat_hash_set.h"
 #include "mesh/union_find.h"
