@@ -128,9 +128,16 @@ TEST(ResolvedInside, LeavesSparseAndNearSurfaceVerticesToTheCut) {
   sparse[centre] = 1;  // f = 1 there
   const std::vector<uint8_t> resolved = ResolvedInside(field.tets, field.f, sparse, 0.1);
   EXPECT_EQ(resolved[centre], 0);
+  int inside = 0;
   for (size_t v = 0; v < field.f.size(); ++v) {
-    if (field.f[v] < 0.1 || field.tets.on_hull[v]) EXPECT_EQ(resolved[v], 0) << v;
+    if (field.f[v] < 0.1 || field.tets.on_hull[v]) {
+      EXPECT_EQ(resolved[v], 0) << v;
+    } else if (static_cast<int>(v) != centre) {
+      EXPECT_EQ(resolved[v], 1) << v;  // the 26 nodes round the centre, joined
+      ++inside;
+    }
   }
+  EXPECT_EQ(inside, 26);
 }
 
 }  // namespace
