@@ -1,6 +1,7 @@
 #include "segment/grow_region.h"
 
 #include <algorithm>
+#include <cstdint>
 
 #include <tbb/blocked_range.h>
 #include <tbb/combinable.h>
@@ -12,25 +13,50 @@ namespace {
 // Rounds of "grow, then refit" before giving up on convergence.
 constexpr int kMaxRounds = 40;
 
-// Below this many queued (or region) vertices the tests (or reads) run on the calling thread (a
-// parallel loop costs more than it saves).
-constexpr std::size_t kParallelTests = 256;
+// Below this many queued (or region) vertices the tests (or reads) run on
+// the calling thread (a parallel loop costs more than it saves).
+constexpr std::size_t kParallelTests = 64;
 
-// fits[k] = whether queue[k] meets (5) and (6) for `model`, for k in
-// [begin, queue.size()). Each test reads only the fixed model and its vertex.
+// A queued vertex as tested: whether it meets (5) and (6), and if so its
+// neighbours that were free (labels -1) when tested, in row order (at most
+// kMaxFree; kReadRow: more, read the row again).
+constexpr int kMaxFree = 8;
+constexpr uint8_t kReadRow = 255;
+struct Tested {
+  bool fits = false;
+  uint8_t free_count = 0;
+  int free[kMaxFree];
+};
+
+// Tests queue[k] for k in [begin, queue.size()) against the fixed `model`,
+// and lists each fitting one's free neighbours, side by side: each entry
+// reads only the model, its vertex, its row and the labels, which nothing
+// writes meanwhile.
 void TestQueued(const SegmentContext& c, const GrowModel& model, const Tolerance& tol,
-                const std::vector<int>& queue, std::size_t begin, std::vector<char>* fits) {
-  fits->resize(queue.size());
+                const std::vector<int>& labels, const std::vector<int>& queue, std::size_t begin,
+                std::vector<Tested>* tests) {
+  tests->resize(queue.size());
   const auto test = [&](std::size_t from, std::size_t to) {
     for (std::size_t k = from; k < to; ++k) {
-      (*fits)[k] = Fits(c, queue[k], model.ProjectOne(c, queue[k]), tol);
+      Tested& t = (*tests)[k];
+      t.fits = Fits(c, queue[k], model.ProjectOne(c, queue[k]), tol);
+      t.free_count = 0;
+      if (!t.fits) continue;
+      for (const int j : c.graph.Neighbors(queue[k])) {
+        if (labels[j] != -1) continue;
+        if (t.free_count == kMaxFree) {
+          t.free_count = kReadRow;
+          break;
+        }
+        t.free[t.free_count++] = j;
+      }
     }
   };
   if (queue.size() - begin < kParallelTests) {
     test(begin, queue.size());
     return;
   }
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(begin, queue.size(), 64),
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(begin, queue.size(), 16),
                     [&](const tbb::blocked_range<std::size_t>& r) { test(r.begin(), r.end()); });
 }
 
@@ -104,9 +130,14 @@ bool GrowRegion(const SegmentContext& c, GrowModel* model, const Tolerance& tol,
   bool fitted = false;
   std::vector<int> queue;
   std::vector<int> rejected;
-  std::vector<char> fits;  // per queue entry, as tested
+  std::vector<Tested> tests;  // per queue entry
   // Marks frontier/rejected vertices of this round: -2 - id is never a label.
   const int kQueued = -2 - id;
+  const auto claim = [&](int j, std::vector<int>* queue) {
+    if ((*labels)[j] != -1) return;
+    (*labels)[j] = kQueued;
+    queue->push_back(j);
+  };
   for (int round = 0; round < kMaxRounds; ++round) {
     if (!model->Refit(c, *region)) break;
     fitted = true;
@@ -114,26 +145,29 @@ bool GrowRegion(const SegmentContext& c, GrowModel* model, const Tolerance& tol,
     queue = frontier;
     for (const int v : queue) (*labels)[v] = kQueued;
     rejected.clear();
-    // The queue is walked in order as one breadth-first search; the model
-    // is fixed within the round, so the tests of everything queued so far
-    // are made first (side by side), level by level of the search.
+    // The queue is walked in order as one breadth-first search. The model
+    // is fixed within the round, so everything queued so far (a level of
+    // the search) is tested first, side by side. A neighbour not free then
+    // stays taken through the level, so the walk need only look again at
+    // those that were free, in the same order.
     for (std::size_t head = 0, tested = 0; head < queue.size(); ++head) {
       if (head == tested) {
-        TestQueued(c, *model, tol, queue, head, &fits);
+        TestQueued(c, *model, tol, *labels, queue, head, &tests);
         tested = queue.size();
       }
       const int v = queue[head];
-      if (!fits[head]) {
+      const Tested& t = tests[head];
+      if (!t.fits) {
         rejected.push_back(v);
         continue;
       }
       (*labels)[v] = id;
       region->push_back(v);
       ++added;
-      for (const int j : c.graph.Neighbors(v)) {
-        if ((*labels)[j] != -1) continue;
-        (*labels)[j] = kQueued;
-        queue.push_back(j);
+      if (t.free_count == kReadRow) {
+        for (const int j : c.graph.Neighbors(v)) claim(j, &queue);
+      } else {
+        for (int i = 0; i < t.free_count; ++i) claim(t.free[i], &queue);
       }
     }
     for (const int v : rejected) (*labels)[v] = -1;
