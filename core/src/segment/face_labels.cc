@@ -93,16 +93,16 @@ Pieces FindPieces(const FaceNeighbors& adjacent, const std::vector<int>& labels)
       if (labels[f] >= 0) p.of_face[f] = Root(parent, f);
     }
   });
-  // Roots numbered in face order; then each face takes its root's number.
-  std::vector<int> id_of_root(nf, -1);
+  // Roots numbered in face order (the number kept in the root's parent
+  // entry, no longer needed); then each face takes its root's number.
   for (int f = 0; f < nf; ++f) {
     if (p.of_face[f] != f) continue;
-    id_of_root[f] = static_cast<int>(p.label.size());
+    parent[f].store(static_cast<int>(p.label.size()), std::memory_order_relaxed);
     p.label.push_back(labels[f]);
   }
   tbb::parallel_for(tbb::blocked_range<int>(0, nf, 8192), [&](const tbb::blocked_range<int>& r) {
     for (int f = r.begin(); f < r.end(); ++f) {
-      if (p.of_face[f] >= 0) p.of_face[f] = id_of_root[p.of_face[f]];
+      if (p.of_face[f] >= 0) p.of_face[f] = parent[p.of_face[f]].load(std::memory_order_relaxed);
     }
   });
   p.size.assign(p.label.size(), 0);
