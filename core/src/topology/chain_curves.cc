@@ -58,6 +58,15 @@ HalfedgeHandle ContinueFrom(const TriMesh& mesh, std::span<const int> labels,
   return HalfedgeHandle();
 }
 
+// True for an item that mesh.vertices() / mesh.halfedges() pass over (deleted
+// or hidden, where the mesh keeps that status).
+bool Skipped(const TriMesh& mesh, VertexHandle v) {
+  return mesh.has_vertex_status() && (mesh.status(v).deleted() || mesh.status(v).hidden());
+}
+bool Skipped(const TriMesh& mesh, HalfedgeHandle h) {
+  return mesh.has_halfedge_status() && (mesh.status(h).deleted() || mesh.status(h).hidden());
+}
+
 }  // namespace
 
 int LeftLabel(const TriMesh& mesh, std::span<const int> face_labels, HalfedgeHandle h) {
@@ -82,7 +91,9 @@ CurveChains ChainCurves(const TriMesh& mesh, std::span<const int> face_labels) {
   tbb::parallel_for(tbb::blocked_range<int>(0, vertex_count, 4096),
                     [&](const tbb::blocked_range<int>& r) {
                       for (int v = r.begin(); v < r.end(); ++v) {
-                        corner_of_vertex[v] = IsCorner(mesh, face_labels, VertexHandle(v)) ? 0 : -1;
+                        const VertexHandle vh(v);
+                        corner_of_vertex[v] =
+                            !Skipped(mesh, vh) && IsCorner(mesh, face_labels, vh) ? 0 : -1;
                       }
                     });
   tbb::parallel_for(tbb::blocked_range<int>(0, halfedge_count, 8192),
@@ -128,7 +139,8 @@ CurveChains ChainCurves(const TriMesh& mesh, std::span<const int> face_labels) {
   }
   // What is left are closed curves without corners.
   for (int h = 0; h < halfedge_count; ++h) {
-    if (out.halfedge_curve[h] < 0 && forward[h]) trace(HalfedgeHandle(h));
+    const HalfedgeHandle hh(h);
+    if (out.halfedge_curve[h] < 0 && forward[h] && !Skipped(mesh, hh)) trace(hh);
   }
   return out;
 }
