@@ -11,6 +11,7 @@
 #include <Eigen/Geometry>
 
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
+#include <CGAL/Polygon_mesh_processing/fair.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_hole.h>
 #include <CGAL/boost/graph/Euler_operations.h>
 
@@ -33,6 +34,9 @@ constexpr size_t kMaxCubicLoop = 500;
 // A triangle is flat when twice its area is at most this fraction of its
 // longest edge squared (a hundred times the mesh readers' limit).
 constexpr double kFlatRatio = 1e-10;
+// A faired patch vertex may lie this many mean loop edges outside the loop's
+// bounding box (the cotangent weights' excess over the maximum principle).
+constexpr double kMembraneSlackEdges = 1.0;
 // Rounds of flipping flat patch triangles at most.
 constexpr int kFlatFlipPasses = 3;
 
@@ -68,6 +72,37 @@ void LoopWithNormals(const Sm& sm, Sm::Halfedge_index h, double sign,
     if (g == h) break;
   }
 }
+
+// The weights of the umbrella operator (every neighbour 1): positive, so the
+// harmonic patch they give obeys the maximum principle.
+struct UniformWeights {
+  double w_ij(Sm::Halfedge_index) const { return 1.0; }
+  double w_i(Sm::Vertex_index) const { return 1.0; }
+};
+
+}  // namespace
+
+void KeepMembraneInsideItsLoop(const std::vector<Eigen::Vector3d>& loop,
+                               const std::vector<HoleMesh::Vertex_index>& vertices, HoleMesh* sm) {
+  if (loop.empty() || vertices.empty()) return;
+  Eigen::Vector3d lo = loop[0], hi = loop[0];
+  double edge = 0.0;
+  for (size_t k = 0; k < loop.size(); ++k) {
+    lo = lo.cwiseMin(loop[k]);
+    hi = hi.cwiseMax(loop[k]);
+    edge += (loop[(k + 1) % loop.size()] - loop[k]).norm();
+  }
+  const double slack = kMembraneSlackEdges * edge / static_cast<double>(loop.size());
+  const bool outside = std::any_of(vertices.begin(), vertices.end(), [&](Sm::Vertex_index v) {
+    const Eigen::Vector3d x = ToEigen3(sm->point(v));
+    return (x - x.cwiseMax(lo).cwiseMin(hi)).norm() > slack;
+  });
+  if (!outside) return;
+  PMP::fair(*sm, vertices,
+            PMP::parameters::weight_calculator(UniformWeights{}).fairing_continuity(0));
+}
+
+namespace {
 
 // Bends the patch `faces` (free vertices `vertices`) of a hole whose loop was
 // `loop` onto the seen planes (seen_planes.h).
@@ -151,9 +186,10 @@ void CloseLoop(Sm::Halfedge_index h, size_t n, const std::vector<Eigen::Vector3d
       PMP::parameters::fairing_continuity(0).do_not_use_cubic_algorithm(n > kMaxCubicLoop));
   if (faces.empty() && sm->is_border(h)) {
     FanClose(h, sm);
-  } else if (bend) {
-    BendPatch(loop, normals, sign, faces, vertices, sm);
+    return;
   }
+  KeepMembraneInsideItsLoop(loop, vertices, sm);
+  if (bend) BendPatch(loop, normals, sign, faces, vertices, sm);
 }
 
 }  // namespace
