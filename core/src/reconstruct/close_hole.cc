@@ -202,6 +202,7 @@ void CloseHole(HoleMesh::Halfedge_index h, size_t n, double sign, bool bend, Hol
 
 void FlipFlatPatchFaces(Sm* sm) {
   const auto filled = sm->property_map<Sm::Face_index, uint8_t>("f:filled").first;
+  bool removed = false;
   for (int pass = 0; pass < kFlatFlipPasses; ++pass) {
     bool changed = false;
     for (const auto f : sm->faces()) {
@@ -219,15 +220,40 @@ void FlipFlatPatchFaces(Sm* sm) {
       const Eigen::Vector3d b = ToEigen3(sm->point(sm->target(longest)));
       const Eigen::Vector3d c = ToEigen3(sm->point(sm->target(sm->next(longest))));
       if ((b - a).cross(c - a).norm() > kFlatRatio * longest2) continue;
+      // The apex lies on the longest edge, so the flip splits the face
+      // across at the apex into two triangles that cover it exactly: the
+      // surface is unchanged whether that face is a patch face or a kept one
+      // (a loop edge, when the apex is a loop vertex on a straight crease).
+      // The two faces carry the flag of the face across, whose area they
+      // cover.
       const auto across = sm->opposite(longest);
-      if (sm->is_border(across) || !filled[sm->face(across)]) continue;
+      if (sm->is_border(across)) continue;
       const auto u = sm->target(sm->next(longest)), w = sm->target(sm->next(across));
-      if (u == w || CGAL::halfedge(u, w, *sm).second) continue;
+      if (u == w) continue;
+      const uint8_t flag = filled[sm->face(across)];
+      if (CGAL::halfedge(u, w, *sm).second) {
+        // The flip's edge is there already: an end x of the longest edge has
+        // valence 3, its third face x w u. That face lies in the plane of
+        // the face across (u is on the line of the longest edge) and folds
+        // back over it; removing x leaves the one triangle (u, other end, w)
+        // the three faces amount to, the same surface.
+        for (const auto into : {longest, across}) {
+          const auto x = sm->target(into);
+          if (CGAL::degree(x, *sm) != 3 || sm->is_border(x)) continue;
+          filled[sm->face(CGAL::Euler::remove_center_vertex(into, *sm))] = flag;
+          removed = changed = true;
+          break;
+        }
+        continue;
+      }
       CGAL::Euler::flip_edge(longest, *sm);
+      filled[sm->face(longest)] = flag;
+      filled[sm->face(sm->opposite(longest))] = flag;
       changed = true;
     }
     if (!changed) break;
   }
+  if (removed) sm->collect_garbage();
 }
 
 }  // namespace meshseg::reconstruct_internal
