@@ -36,6 +36,24 @@ double KeptArea(const HoleMesh& sm) {
   return kept;
 }
 
+// The mesh of `points` with faces `kept` and `patch` (corner indices), the
+// patch faces flagged in "f:filled".
+HoleMesh MeshOf(const std::vector<Point>& points, const std::vector<std::array<int, 3>>& kept,
+                const std::vector<std::array<int, 3>>& patch) {
+  HoleMesh sm;
+  std::vector<HoleMesh::Vertex_index> v;
+  for (const Point& p : points) v.push_back(sm.add_vertex(p));
+  auto filled = sm.add_property_map<HoleMesh::Face_index, uint8_t>("f:filled", 0).first;
+  for (const uint8_t in_patch : {0, 1}) {
+    for (const auto& [i, j, k] : in_patch ? patch : kept) {
+      const auto f = sm.add_face(v[i], v[j], v[k]);
+      EXPECT_TRUE(f.is_valid());
+      if (f.is_valid()) filled[f] = in_patch;
+    }
+  }
+  return sm;
+}
+
 // A tetrahedron a c d e whose face a e c was closed by a patch through the
 // midpoint b of its edge a c: the patch faces a b e and b c e and the flat
 // a c b (three collinear corners, the apex b on the longest edge a c). The
@@ -43,19 +61,10 @@ double KeptArea(const HoleMesh& sm) {
 // splits the kept face at b, so the closed surface, its area and its
 // enclosed volume stay the same and no flat face is left.
 TEST(FlipFlatPatchFaces, AFlatPatchFaceOnALoopEdgeSplitsTheKeptFaceAcross) {
-  HoleMesh sm;
-  const auto a = sm.add_vertex(Point(0, 0, 0)), c = sm.add_vertex(Point(2, 0, 0));
-  const auto d = sm.add_vertex(Point(1, 1.5, 0)), e = sm.add_vertex(Point(1, 0.5, 1));
-  const auto b = sm.add_vertex(Point(1, 0, 0));
-  auto filled = sm.add_property_map<HoleMesh::Face_index, uint8_t>("f:filled", 0).first;
-  for (const auto& [u, v, w] : {std::array{c, a, d}, std::array{d, a, e}, std::array{c, d, e}}) {
-    ASSERT_TRUE(sm.add_face(u, v, w).is_valid());
-  }
-  for (const auto& [u, v, w] : {std::array{a, b, e}, std::array{b, c, e}, std::array{a, c, b}}) {
-    const auto f = sm.add_face(u, v, w);
-    ASSERT_TRUE(f.is_valid());
-    filled[f] = 1;
-  }
+  enum { a, c, d, e, b };
+  HoleMesh sm = MeshOf({Point(0, 0, 0), Point(2, 0, 0), Point(1, 1.5, 0), Point(1, 0.5, 1),
+                        Point(1, 0, 0)},
+                       {{c, a, d}, {d, a, e}, {c, d, e}}, {{a, b, e}, {b, c, e}, {a, c, b}});
   ASSERT_TRUE(CGAL::is_closed(sm));
   const double area = PMP::area(sm), volume = PMP::volume(sm), kept = KeptArea(sm);
   size_t flat = 0;
@@ -82,20 +91,10 @@ TEST(FlipFlatPatchFaces, AFlatPatchFaceOnALoopEdgeSplitsTheKeptFaceAcross) {
 // already, so x is removed: the one triangle u a w is left, the same
 // enclosed volume, and no flat face.
 TEST(FlipFlatPatchFaces, AFlatFaceRoundAVertexOfValenceThreeLeavesTheTriangleItsFanAmountsTo) {
-  HoleMesh sm;
-  const auto a = sm.add_vertex(Point(0, 0, 0)), x = sm.add_vertex(Point(2, 0, 0));
-  const auto u = sm.add_vertex(Point(1, 0, 0)), w = sm.add_vertex(Point(1, 1.5, 0));
-  const auto t = sm.add_vertex(Point(1, 0.5, 1));
-  auto filled = sm.add_property_map<HoleMesh::Face_index, uint8_t>("f:filled", 0).first;
-  for (const auto& [p, q, r] : {std::array{a, u, t}, std::array{w, a, t}, std::array{u, w, t},
-                                std::array{a, w, x}}) {
-    ASSERT_TRUE(sm.add_face(p, q, r).is_valid());
-  }
-  for (const auto& [p, q, r] : {std::array{u, a, x}, std::array{w, u, x}}) {
-    const auto f = sm.add_face(p, q, r);
-    ASSERT_TRUE(f.is_valid());
-    filled[f] = 1;
-  }
+  enum { a, x, u, w, t };
+  HoleMesh sm = MeshOf({Point(0, 0, 0), Point(2, 0, 0), Point(1, 0, 0), Point(1, 1.5, 0),
+                        Point(1, 0.5, 1)},
+                       {{a, u, t}, {w, a, t}, {u, w, t}, {a, w, x}}, {{u, a, x}, {w, u, x}});
   ASSERT_TRUE(CGAL::is_closed(sm));
   const double volume = PMP::volume(sm);
 
