@@ -11,7 +11,9 @@
 #include "mesh/union_find.h"
 #include "meshseg/status_macros.h"
 #include "reconstruct/close_hole.h"
+#include "reconstruct/close_tube.h"
 #include "reconstruct/surface_mesh.h"
+#include "reconstruct/tube_rims.h"
 
 namespace meshseg::reconstruct_internal {
 
@@ -46,15 +48,7 @@ bool RemovePinches(const TriMesh& tri, std::vector<uint8_t>* removed) {
 // Marks the kept edge-connected pieces with fewer faces than min_fraction of
 // the largest; returns whether it marked any.
 bool RemoveSmallPieces(const TriMesh& tri, double min_fraction, std::vector<uint8_t>* removed) {
-  std::vector<int> parent(tri.n_faces());
-  std::iota(parent.begin(), parent.end(), 0);
-  for (const auto e : tri.edges()) {
-    if (tri.is_boundary(e)) continue;
-    const int a = tri.face_handle(tri.halfedge_handle(e, 0)).idx();
-    const int b = tri.face_handle(tri.halfedge_handle(e, 1)).idx();
-    if ((*removed)[a] || (*removed)[b]) continue;
-    parent[FindRoot(parent, a)] = FindRoot(parent, b);
-  }
+  std::vector<int> parent = FacePieces(tri, *removed, 0);
   std::vector<int64_t> size(tri.n_faces(), 0);
   for (size_t f = 0; f < parent.size(); ++f) {
     if (!(*removed)[f]) ++size[FindRoot(parent, static_cast<int>(f))];
@@ -71,9 +65,10 @@ bool RemoveSmallPieces(const TriMesh& tri, double min_fraction, std::vector<uint
 }
 
 // The kept faces as a Surface_mesh; `filled` is 1 on every face added later
-// and on kept faces flagged in `prior_filled` (if not empty).
+// and on kept faces flagged in `prior_filled` (if not empty). `tri_vertex`
+// gets the vertex of `tri` of each of its vertices.
 Sm KeptFaces(const TriMesh& tri, const std::vector<uint8_t>& removed,
-             const std::vector<uint8_t>& prior_filled) {
+             const std::vector<uint8_t>& prior_filled, std::vector<int>* tri_vertex) {
   Sm sm;
   std::vector<Sm::Vertex_index> vertex(tri.n_vertices());
   std::vector<uint8_t> used(tri.n_vertices(), 0);
@@ -85,6 +80,7 @@ Sm KeptFaces(const TriMesh& tri, const std::vector<uint8_t>& removed,
     if (!used[v.idx()]) continue;
     const auto& p = tri.point(v);
     vertex[v.idx()] = sm.add_vertex(Kernel::Point_3(p[0], p[1], p[2]));
+    tri_vertex->push_back(v.idx());
   }
   auto filled = sm.add_property_map<Sm::Face_index, uint8_t>("f:filled", 1).first;
   for (const auto f : tri.faces()) {
@@ -162,7 +158,7 @@ absl::StatusOr<ClosedSurface> CloseUnsupported(const Mesh& mesh,
                                                const std::vector<uint8_t>& supported,
                                                double min_component_fraction, bool leave_open,
                                                const std::vector<uint8_t>& prior_filled,
-                                               bool bend_onto_seen_planes) {
+                                               bool bend_onto_seen_planes, double min_tube_rim) {
   const TriMesh& tri = mesh.tri;
   ClosedSurface out;
   std::vector<uint8_t> removed(tri.n_faces());
@@ -189,16 +185,24 @@ absl::StatusOr<ClosedSurface> CloseUnsupported(const Mesh& mesh,
     }
     return out;
   }
-  Sm sm = KeptFaces(tri, removed, prior_filled);
+  std::vector<int> tri_vertex;
+  Sm sm = KeptFaces(tri, removed, prior_filled, &tri_vertex);
   std::vector<size_t> lengths;
   const std::vector<Sm::Halfedge_index> loops = BorderLoops(sm, &lengths);
   out.hole_count = static_cast<int64_t>(loops.size());
   if (!leave_open) {
     const double sign = Outwards(tri);
+    std::vector<uint8_t> closed(loops.size(), 0);
+    if (min_tube_rim >= 0) {
+      for (const auto& [i, j] : TubeRims(tri, removed, sm, tri_vertex, loops, min_tube_rim)) {
+        if (CloseTube(loops[i], loops[j], sign, &sm)) closed[i] = closed[j] = 1;
+      }
+    }
     for (size_t i = 0; i < loops.size(); ++i) {
-      CloseHole(loops[i], lengths[i], sign, bend_onto_seen_planes, &sm);
+      if (!closed[i]) CloseHole(loops[i], lengths[i], sign, bend_onto_seen_planes, &sm);
     }
   }
+  if (sm.has_garbage()) sm.collect_garbage();  // a tube given up
   FlipFlatPatchFaces(&sm);
   const auto filled = sm.property_map<Sm::Face_index, uint8_t>("f:filled").first;
   std::vector<Eigen::Vector3d> points;

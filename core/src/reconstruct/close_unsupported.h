@@ -18,7 +18,9 @@
 // hole, the membrane cuts their corners with the unseen face; the support
 // step then bends it onto the seen surfaces extended (seen_planes.h). A
 // removed tube of a handle leaves two loops, each closed by a disk: the
-// handle the points did not support is cut.
+// handle the points did not support is cut; but where the two loops are the
+// rims of an unseen ring-shaped surface, the support step joins them by a
+// tube (close_tube.h).
 #ifndef MESHSEG_RECONSTRUCT_CLOSE_UNSUPPORTED_H_
 #define MESHSEG_RECONSTRUCT_CLOSE_UNSUPPORTED_H_
 
@@ -48,13 +50,16 @@ struct ClosedSurface {
 // previous closing made; kept ones stay flagged in `filled` and count in
 // `filled_area`. With `bend_onto_seen_planes` each patch over a convex hole
 // is bent onto the seen surfaces extended past it (seen_planes.h); a cut
-// handle's two discs stay membranes. Errors: INTERNAL if the result breaks
-// these invariants.
+// handle's two discs stay membranes. With `min_tube_rim` >= 0, the two
+// loops of a removed annulus that are the rims of one unseen tube, both
+// longer than min_tube_rim (model units), are joined by a tube instead
+// (close_tube.h). Errors: INTERNAL if the result breaks these invariants.
 absl::StatusOr<ClosedSurface> CloseUnsupported(const Mesh& mesh,
                                                const std::vector<uint8_t>& supported,
                                                double min_component_fraction, bool leave_open,
                                                const std::vector<uint8_t>& prior_filled = {},
-                                               bool bend_onto_seen_planes = false);
+                                               bool bend_onto_seen_planes = false,
+                                               double min_tube_rim = -1.0);
 
 // Total genus of `tri`: (2 C − χ − B) / 2 with C components, χ = V − E + F
 // and B border loops (a closed mesh has B = 0).

@@ -239,7 +239,10 @@ absl::StatusOr<Reconstruction> Reconstruct(const PointCloud& cloud, const Recons
   const std::vector<uint8_t> by_sign = SignLabels(tets, f_at);
   std::vector<uint8_t> inside = by_sign;
   if (params.use_graph_cut) {
-    MESHSEG_ASSIGN_OR_RETURN(inside, GraphCutLabels(tets, position, f_at, params.graph_cut_k, ctx));
+    // The cut decides only where the points leave the side open (graph_cut.h).
+    const std::vector<uint8_t> resolved = ResolvedInside(tets, f_at, sparse, fit_input.epsilon);
+    MESHSEG_ASSIGN_OR_RETURN(
+        inside, GraphCutLabels(tets, position, f_at, params.graph_cut_k, resolved, ctx));
   }
   for (size_t v = 0; v < inside.size(); ++v) stats.relabelled_count += inside[v] != by_sign[v];
   ctx.Progress(kStage, 0.75);
@@ -282,7 +285,8 @@ absl::StatusOr<Reconstruction> Reconstruct(const PointCloud& cloud, const Recons
     MESHSEG_ASSIGN_OR_RETURN(ClosedSurface closed,
                              CloseUnsupported(out.mesh, supported, params.min_component_fraction,
                                               params.leave_unsupported_open, {},
-                                              /*bend_onto_seen_planes=*/true));
+                                              /*bend_onto_seen_planes=*/true,
+                                              /*min_tube_rim=*/M_PI * params.handle_spacings * h));
     stats.unsupported_face_count = closed.removed_face_count;
     stats.hole_count = closed.hole_count;
     stats.filled_area = closed.filled_area;

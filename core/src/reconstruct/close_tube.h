@@ -1,0 +1,59 @@
+// An unseen annulus closed by a tube between its two rims (issue 38 item 1;
+// a step of close_unsupported.h).
+//
+// Where the unseen part of a scanned solid is ring-shaped (the underside of
+// a torus between its outer and inner rim; the inside of a bore together
+// with the face it opens onto), the support step removes an annulus and
+// leaves two border loops. Closing each by its own disc spans the ring's
+// hole (the outer disc) and the bore's mouth, far from the surface the scan
+// did not see; the surface there is a tube joining the two rims.
+//
+// Two loops are taken as the rims of one unseen tube when (a) they bound
+// one removed component that is an annulus (the implicit function joined
+// them through the unseen region), (b) both are longer than the loops the
+// points resolve as holes (handles.h: a shorter one is a handle the points
+// do not show, which the handle step cuts), and (c) at both, the seen
+// surface leaves the loop out of its plane: its outgoing direction (in the
+// tangent plane, across the border, away from the seen faces) runs along the
+// loop's axis, so the seen surface extended is a wall leaving the loop, not
+// a sheet closing it. A spurious bridge between two sheets fails (c): each
+// sheet, extended, closes its own loop as a disc.
+//
+// The tube is then built (below) and kept only if (d) its arcs bend as the
+// seen surface does at each rim: unless the arcs are straight within the
+// resolution of a curvature (their mean depth below their chords at most the
+// loops' mean edge length), each rim's curvature across the border (read
+// from the normals 3 and 9 edges inside) is within half of the arcs' mean
+// curvature. A torus's section curves on into the unseen side at the
+// curvature it had where it was seen. Walls that run straight to the rims (a
+// bore and the walls around the face it opens onto) meet the unseen face at
+// edges, not in an arc; that hole keeps its discs, bent onto the seen planes
+// (seen_planes.h).
+//
+// The tube: the loops are joined by a strip of rungs, the sequence of
+// loop-vertex pairs of least total rung length (the optimal strip between
+// two contours, Fuchs, Kedem & Uselton 1977, with rung length as the cost,
+// Christiansen & Sederberg 1978). Along each rung the tube follows the cubic
+// Hermite curve that leaves each rim along the seen surface's outgoing
+// direction, with the tangent length of the circular arc through both ends
+// that turns by the angle between the two directions (a semicircle across a
+// torus's tube; a straight line between aligned walls): the seen surfaces
+// extended, joined with the continuity of their tangent planes.
+#ifndef MESHSEG_RECONSTRUCT_CLOSE_TUBE_H_
+#define MESHSEG_RECONSTRUCT_CLOSE_TUBE_H_
+
+#include "reconstruct/close_hole.h"
+
+namespace meshseg::reconstruct_internal {
+
+// Closes the annulus between the border loops of `a` and `b` of `sm` by the
+// tube above (`sign` as for RimOf, tube_rims.h); new faces get the
+// "f:filled" property's default. Returns false and leaves `sm` as it was
+// when the arcs do not bend as the seen surface does at each rim (d), or the
+// strip cannot be added (too long loops).
+bool CloseTube(HoleMesh::Halfedge_index a, HoleMesh::Halfedge_index b, double sign,
+               HoleMesh* sm);
+
+}  // namespace meshseg::reconstruct_internal
+
+#endif  // MESHSEG_RECONSTRUCT_CLOSE_TUBE_H_

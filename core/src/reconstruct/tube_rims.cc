@@ -1,0 +1,262 @@
+#include "reconstruct/tube_rims.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <numeric>
+
+#include <Eigen/Eigenvalues>
+#include <Eigen/Geometry>
+
+#include <CGAL/Polygon_mesh_processing/compute_normal.h>
+
+#include "mesh/union_find.h"
+
+namespace meshseg::reconstruct_internal {
+
+using mesh_internal::FindRoot;
+
+namespace {
+
+using Sm = HoleMesh;
+namespace PMP = CGAL::Polygon_mesh_processing;
+
+// The rings inside a rim (in edges) whose normals give its curvature and
+// its normal: past the extrapolated faces next to the border, within the
+// seen surface's run.
+constexpr int kNearRing = 3;
+constexpr int kFarRing = 9;
+// The outgoing direction at a loop vertex is averaged over this many loop
+// vertices on either side: as far along the rim as the rings it comes from
+// reach inwards (a scan's border zigzags from one edge to the next, and
+// detail along the rim finer than the band the normals are read from is
+// their noise).
+constexpr int kDirectionWindow = kFarRing;
+// A rim vertex's ring sums are pooled with this many neighbours on either
+// side (one may own no vertex of a ring); a wider pool would draw the mean
+// point of a ring towards the axis of a tight loop.
+constexpr int kRingWindow = 2;
+
+// The index `w` places from `k` round a loop of `n`.
+size_t Around(size_t k, int w, size_t n) {
+  const auto m = static_cast<long>(n);
+  return static_cast<size_t>(((static_cast<long>(k) + w) % m + m) % m);
+}
+
+Eigen::Vector3d At(const Sm& sm, Sm::Vertex_index v) {
+  const auto& p = sm.point(v);
+  return {p.x(), p.y(), p.z()};
+}
+
+// The vertices of the border loop of `h`, in the order of the border.
+std::vector<Sm::Vertex_index> LoopOf(const Sm& sm, Sm::Halfedge_index h) {
+  std::vector<Sm::Vertex_index> loop;
+  for (auto g = h;;) {
+    loop.push_back(sm.target(g));
+    g = sm.next(g);
+    if (g == h) return loop;
+  }
+}
+
+Eigen::Vector3d NormalAt(const Sm& sm, Sm::Vertex_index v) {
+  const auto n = PMP::compute_vertex_normal(v, sm);
+  return {n.x(), n.y(), n.z()};
+}
+
+}  // namespace
+
+
+Rim RimOf(const HoleMesh& sm, HoleMesh::Halfedge_index h, double sign) {
+  Rim rim;
+  rim.loop = LoopOf(sm, h);
+  const size_t n = rim.loop.size();
+  // Rings inwards from the loop, each vertex owned by its nearest rim vertex.
+  const size_t count = sm.num_vertices() + sm.number_of_removed_vertices();
+  std::vector<int> ring(count, -1), owner(count, -1);
+  std::vector<Sm::Vertex_index> front;
+  for (size_t k = 0; k < n; ++k) {
+    ring[rim.loop[k]] = 0;
+    owner[rim.loop[k]] = static_cast<int>(k);
+    front.push_back(rim.loop[k]);
+  }
+  // Per rim vertex and ring (near, far): sums of the owned vertices'
+  // normals and points, and their count.
+  std::vector<std::array<Eigen::Vector3d, 2>> normal_sum(n, {Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()});
+  std::vector<std::array<Eigen::Vector3d, 2>> point_sum = normal_sum;
+  std::vector<std::array<int, 2>> owned(n, {0, 0});
+  for (int r = 1; r <= kFarRing && !front.empty(); ++r) {
+    std::vector<Sm::Vertex_index> next;
+    for (const auto v : front) {
+      for (const auto w : CGAL::vertices_around_target(sm.halfedge(v), sm)) {
+        if (ring[w] >= 0) continue;
+        ring[w] = r;
+        owner[w] = owner[v];
+        next.push_back(w);
+        if (r != kNearRing && r != kFarRing) continue;
+        const int which = r == kFarRing;
+        normal_sum[owner[w]][which] += NormalAt(sm, w);
+        point_sum[owner[w]][which] += At(sm, w);
+        ++owned[owner[w]][which];
+      }
+    }
+    front = std::move(next);
+  }
+  std::vector<Eigen::Vector3d> raw(n, Eigen::Vector3d::Zero());
+  double turn = 0.0, run = 0.0;
+  for (size_t k = 0; k < n; ++k) {
+    const Eigen::Vector3d p = At(sm, rim.loop[k]);
+    const Eigen::Vector3d along = At(sm, rim.loop[(k + 1) % n]) - At(sm, rim.loop[(k + n - 1) % n]);
+    // Windowed sums: a rim vertex may own no vertex of a ring.
+    Eigen::Vector3d n1 = Eigen::Vector3d::Zero(), n2 = n1, p1 = n1, p2 = n1;
+    int c1 = 0, c2 = 0;
+    for (int w = -kRingWindow; w <= kRingWindow; ++w) {
+      const size_t j = Around(k, w, n);
+      n1 += normal_sum[j][0];
+      p1 += point_sum[j][0];
+      c1 += owned[j][0];
+      n2 += normal_sum[j][1];
+      p2 += point_sum[j][1];
+      c2 += owned[j][1];
+    }
+    if (c1 == 0 || c2 == 0 || !(n1.norm() > 0) || !(n2.norm() > 0)) continue;
+    p1 /= c1;
+    p2 /= c2;
+    n1.normalize();
+    n2.normalize();
+    const double span = (p1 - p2).norm(), rest = (p - p1).norm();
+    if (!(span > 0)) continue;
+    const Eigen::Vector3d axis = n2.cross(n1);
+    const double angle = std::atan2(axis.norm(), n2.dot(n1));
+    Eigen::Vector3d normal = n1;
+    if (axis.norm() > 0) {
+      normal = Eigen::AngleAxisd(angle * rest / span, axis.normalized()) * n1;
+    }
+    raw[k] = normal.cross(along).normalized();
+    if (!raw[k].allFinite()) {
+      raw[k].setZero();
+      continue;
+    }
+    // Going out, the normal of a convex section turns towards the way out.
+    turn += axis.dot(normal.cross(raw[k])) >= 0 ? angle : -angle;
+    run += span;
+  }
+  rim.curvature = run > 0 ? sign * turn / run : 0.0;
+  // A rim vertex whose window owns no vertex of a ring (its neighbours
+  // reached them first) takes the direction of the nearest one that does.
+  std::vector<Eigen::Vector3d> filled = raw;
+  for (size_t k = 0; k < n; ++k) {
+    for (size_t step = 1; step <= n / 2 && filled[k].squaredNorm() == 0; ++step) {
+      if (raw[(k + step) % n].squaredNorm() > 0) {
+        filled[k] = raw[(k + step) % n];
+      } else if (raw[(k + n - step) % n].squaredNorm() > 0) {
+        filled[k] = raw[(k + n - step) % n];
+      }
+    }
+  }
+  raw = std::move(filled);
+  rim.out.resize(n);
+  for (size_t k = 0; k < n; ++k) {
+    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+    for (int w = -kDirectionWindow; w <= kDirectionWindow; ++w) sum += raw[Around(k, w, n)];
+    rim.out[k] = sum.norm() > 0 ? Eigen::Vector3d(sum.normalized()) : sum;
+  }
+  return rim;
+}
+
+namespace {
+
+// The mean |cosine| between the outgoing directions and the axis of the
+// loop (the normal of its least-squares plane).
+double LeavingCosine(const Sm& sm, Sm::Halfedge_index h) {
+  const Rim rim = RimOf(sm, h, 1.0);
+  const std::vector<Sm::Vertex_index>& loop = rim.loop;
+  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+  for (const auto v : loop) mean += At(sm, v);
+  mean /= static_cast<double>(loop.size());
+  Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
+  for (const auto v : loop) cov += (At(sm, v) - mean) * (At(sm, v) - mean).transpose();
+  const Eigen::Vector3d axis =
+      Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(cov).eigenvectors().col(0);
+  double sum = 0.0;
+  for (const Eigen::Vector3d& d : rim.out) sum += std::abs(d.dot(axis));
+  return sum / static_cast<double>(loop.size());
+}
+
+double Perimeter(const Sm& sm, Sm::Halfedge_index h) {
+  const std::vector<Sm::Vertex_index> loop = LoopOf(sm, h);
+  double length = 0.0;
+  for (size_t k = 0; k < loop.size(); ++k) {
+    length += (At(sm, loop[(k + 1) % loop.size()]) - At(sm, loop[k])).norm();
+  }
+  return length;
+}
+
+}  // namespace
+
+std::vector<int> FacePieces(const TriMesh& tri, const std::vector<uint8_t>& removed,
+                            uint8_t side) {
+  std::vector<int> parent(tri.n_faces());
+  std::iota(parent.begin(), parent.end(), 0);
+  for (const auto e : tri.edges()) {
+    if (tri.is_boundary(e)) continue;
+    const int f = tri.face_handle(tri.halfedge_handle(e, 0)).idx();
+    const int g = tri.face_handle(tri.halfedge_handle(e, 1)).idx();
+    if (removed[f] == side && removed[g] == side) parent[FindRoot(parent, f)] = FindRoot(parent, g);
+  }
+  return parent;
+}
+
+std::vector<std::pair<size_t, size_t>> TubeRims(const TriMesh& tri,
+                                                const std::vector<uint8_t>& removed,
+                                                const HoleMesh& sm,
+                                                const std::vector<int>& tri_vertex,
+                                                const std::vector<HoleMesh::Halfedge_index>& loops,
+                                                double min_rim) {
+  // Removed components and their Euler characteristics.
+  std::vector<int> parent = FacePieces(tri, removed, 1);
+  std::vector<int64_t> chi(tri.n_faces(), 0);
+  for (const auto f : tri.faces()) chi[FindRoot(parent, f.idx())] += removed[f.idx()];
+  for (const auto e : tri.edges()) {
+    for (int side = 0; side < 2; ++side) {
+      const auto f = tri.face_handle(tri.halfedge_handle(e, side));
+      if (f.is_valid() && removed[f.idx()]) {
+        --chi[FindRoot(parent, f.idx())];
+        break;
+      }
+    }
+  }
+  for (const auto v : tri.vertices()) {
+    for (const auto f : tri.vf_range(v)) {
+      if (!removed[f.idx()]) continue;
+      ++chi[FindRoot(parent, f.idx())];  // one removed fan per vertex (no pinches)
+      break;
+    }
+  }
+  // The component across each loop, and the loops of each component.
+  std::vector<int> component(loops.size(), -1);
+  std::vector<int> loop_count(tri.n_faces(), 0);
+  for (size_t i = 0; i < loops.size(); ++i) {
+    const auto from = tri.vertex_handle(tri_vertex[sm.source(loops[i])]);
+    const auto to = tri.vertex_handle(tri_vertex[sm.target(loops[i])]);
+    const auto across = tri.find_halfedge(from, to);
+    if (!across.is_valid() || tri.is_boundary(across)) continue;
+    component[i] = FindRoot(parent, tri.face_handle(across).idx());
+    ++loop_count[component[i]];
+  }
+  std::vector<std::pair<size_t, size_t>> rims;
+  for (size_t i = 0; i < loops.size(); ++i) {
+    const int c = component[i];
+    if (c < 0 || loop_count[c] != 2 || chi[c] != 0) continue;
+    for (size_t j = i + 1; j < loops.size(); ++j) {
+      if (component[j] != c) continue;
+      if (Perimeter(sm, loops[i]) > min_rim && Perimeter(sm, loops[j]) > min_rim &&
+          LeavingCosine(sm, loops[i]) >= kMinLeavingCosine &&
+          LeavingCosine(sm, loops[j]) >= kMinLeavingCosine) {
+        rims.emplace_back(i, j);
+      }
+    }
+  }
+  return rims;
+}
+
+}  // namespace meshseg::reconstruct_internal
