@@ -2,11 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <utility>
 #include <vector>
 
 #include <Eigen/Core>
+#include <Eigen/Eigenvalues>
 
 #include <CGAL/boost/graph/Euler_operations.h>
 
@@ -32,6 +34,18 @@ constexpr int kMaxRows = 256;
 constexpr double kCurvatureTolerance = 0.5;
 // Below this turning angle (radians) a rung's arc is taken as straight.
 constexpr double kStraightAngle = 1e-3;
+// The cap plane lies where the seen surfaces round the face a bore opens
+// onto end farthest along the bore's axis: at most this fraction of the
+// outer rim beyond it (the noise of where the seen surface ends).
+constexpr double kCapQuantile = 0.9;
+// Feet of the bore's rim on the cap plane nearer than this fraction of the
+// loops' mean edge to the last kept one are one foot.
+constexpr double kMinFootSpacing = 0.5;
+// The outer rim's vertices within this many mean edges of the cap plane lie
+// on it (the seen surfaces end within about a spacing of the unseen face);
+// the plane is refitted to them this many times.
+constexpr double kCapBandEdges = 2.0;
+constexpr int kCapRefits = 2;
 
 Eigen::Vector3d At(const Sm& sm, Sm::Vertex_index v) {
   const auto& p = sm.point(v);
@@ -103,6 +117,191 @@ std::vector<std::pair<size_t, size_t>> ShortestStrip(const std::vector<Eigen::Ve
   return path;
 }
 
+// The faces and vertices a strip added, to take them back.
+struct Added {
+  std::vector<Sm::Face_index> faces;
+  std::vector<Sm::Vertex_index> vertices;
+};
+
+void TakeBack(const Added& added, Sm* sm) {
+  for (auto f = added.faces.rbegin(); f != added.faces.rend(); ++f) {
+    CGAL::Euler::remove_face(sm->halfedge(*f), *sm);
+  }
+  for (const auto v : added.vertices) {
+    if (!sm->is_removed(v)) sm->remove_vertex(v);
+  }
+}
+
+// Adds the strip whose rung r joins side_a[strip[r].first] to
+// side_b[strip[r].second] (indices modulo the sides' sizes; the last pair is
+// the first again) through rows − 1 new vertices at(r, k / rows). side_a runs
+// along its border, side_b against its own. False when CGAL refuses a face.
+bool AddStrip(const std::vector<Sm::Vertex_index>& side_a,
+              const std::vector<Sm::Vertex_index>& side_b,
+              const std::vector<std::pair<size_t, size_t>>& strip,
+              const std::function<Eigen::Vector3d(size_t, double)>& at, int rows, Sm* sm,
+              Added* added) {
+  const size_t m = side_a.size(), n = side_b.size(), rungs = strip.size() - 1;
+  const size_t first = added->vertices.size();
+  for (size_t r = 0; r < rungs; ++r) {
+    for (int k = 1; k < rows; ++k) {
+      const Eigen::Vector3d p = at(r, static_cast<double>(k) / rows);
+      added->vertices.push_back(sm->add_vertex(Kernel::Point_3(p.x(), p.y(), p.z())));
+    }
+  }
+  const auto vertex = [&](size_t r, int k) {
+    r %= rungs;
+    if (k == 0) return side_a[strip[r].first % m];
+    if (k == rows) return side_b[strip[r].second % n];
+    return added->vertices[first + r * (rows - 1) + k - 1];
+  };
+  bool ok = true;
+  const auto add = [&](Sm::Vertex_index u, Sm::Vertex_index v, Sm::Vertex_index w) {
+    if (!ok || u == v || v == w || w == u) return;
+    const auto f = sm->add_face(u, v, w);
+    if (f == Sm::null_face()) {
+      ok = false;
+    } else {
+      added->faces.push_back(f);
+    }
+  };
+  for (size_t r = 0; r < rungs && ok; ++r) {
+    for (int k = 0; k < rows; ++k) {
+      add(vertex(r, k), vertex(r + 1, k), vertex(r + 1, k + 1));
+      add(vertex(r, k), vertex(r + 1, k + 1), vertex(r, k + 1));
+    }
+  }
+  return ok;
+}
+
+std::vector<Eigen::Vector3d> Points(const Sm& sm, const std::vector<Sm::Vertex_index>& loop) {
+  std::vector<Eigen::Vector3d> p;
+  for (const auto v : loop) p.push_back(At(sm, v));
+  return p;
+}
+
+double Perimeter(const std::vector<Eigen::Vector3d>& p) {
+  double sum = 0.0;
+  for (size_t k = 0; k < p.size(); ++k) sum += (p[(k + 1) % p.size()] - p[k]).norm();
+  return sum;
+}
+
+double MeanEdge(const std::vector<Eigen::Vector3d>& pa, const std::vector<Eigen::Vector3d>& pb) {
+  return (Perimeter(pa) + Perimeter(pb)) / static_cast<double>(pa.size() + pb.size());
+}
+
+int Rows(double longest, double edge) {
+  return std::clamp(static_cast<int>(std::ceil(longest / edge)), kMinRows, kMaxRows);
+}
+
+// The annulus between a bore's rim and the rim round the face it opens onto,
+// both seen as straight walls (close_tube.h, the split at the cap): the
+// bore's wall run on along its axis to the cap plane, and the strip of
+// straight rungs between the outer rim and the bore's circle on that plane.
+bool SplitAtCap(const Rim& rim_a, const Rim& rim_b, Sm* sm) {
+  const std::vector<Eigen::Vector3d> pa = Points(*sm, rim_a.loop), pb = Points(*sm, rim_b.loop);
+  const double edge = MeanEdge(pa, pb);
+  const bool a_is_bore = Perimeter(pa) < Perimeter(pb);
+  const Rim& bore = a_is_bore ? rim_a : rim_b;
+  const Rim& outer = a_is_bore ? rim_b : rim_a;
+  const std::vector<Eigen::Vector3d>& pbore = a_is_bore ? pa : pb;
+  const std::vector<Eigen::Vector3d>& pouter = a_is_bore ? pb : pa;
+  // The bore's axis: the direction its wall's normals are all square to (a
+  // cylinder's or prism's normals lie on a great circle of the Gauss map:
+  // the least eigenvector of their scatter), facing the way the wall leaves
+  // the rim. A normal is the border's tangent across the outgoing direction.
+  const size_t n = pbore.size();
+  Eigen::Matrix3d scatter = Eigen::Matrix3d::Zero();
+  Eigen::Vector3d way = Eigen::Vector3d::Zero();
+  for (size_t k = 0; k < n; ++k) {
+    const Eigen::Vector3d normal =
+        (pbore[(k + 1) % n] - pbore[(k + n - 1) % n]).cross(bore.out[k]).normalized();
+    if (normal.allFinite()) scatter += normal * normal.transpose();
+    way += bore.out[k];
+  }
+  Eigen::Vector3d axis = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(scatter).eigenvectors().col(0);
+  if (axis.dot(way) < 0) axis = -axis;
+  // The cap plane: where the seen surfaces round the face end farthest
+  // along the axis (kCapQuantile), refitted by least squares to the outer
+  // rim's vertices within a band of it; the bore runs square to it.
+  double cap = 0.0;
+  for (int fit = 0; fit < kCapRefits; ++fit) {
+    std::vector<double> height;
+    for (const Eigen::Vector3d& p : pouter) height.push_back(axis.dot(p));
+    const size_t at = static_cast<size_t>(kCapQuantile * static_cast<double>(height.size() - 1));
+    std::nth_element(height.begin(), height.begin() + at, height.end());
+    cap = height[at];
+    Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+    std::vector<Eigen::Vector3d> near;
+    for (const Eigen::Vector3d& p : pouter) {
+      if (std::abs(axis.dot(p) - cap) > kCapBandEdges * edge) continue;
+      near.push_back(p);
+      mean += p;
+    }
+    if (near.size() < 3) return false;
+    mean /= static_cast<double>(near.size());
+    Eigen::Matrix3d spread = Eigen::Matrix3d::Zero();
+    for (const Eigen::Vector3d& p : near) spread += (p - mean) * (p - mean).transpose();
+    Eigen::Vector3d normal = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(spread).eigenvectors().col(0);
+    if (normal.dot(axis) < 0) normal = -normal;
+    if (normal.dot(axis) < kMinLeavingCosine) return false;  // no cap square to the bore
+    axis = normal;
+    cap = axis.dot(mean);
+  }
+  // The bore's circle on the cap plane; the cap must lie beyond its rim.
+  // Rim vertices stacked along the axis (where the rim climbs the bore's
+  // wall) have one foot: the first of them keeps it, the others join the
+  // strip to their neighbours' feet.
+  std::vector<Eigen::Vector3d> foot;
+  for (size_t k = 0; k < n; ++k) {
+    const double run = cap - axis.dot(pbore[k]);
+    if (run < edge) return false;
+    const Eigen::Vector3d p = pbore[k] + run * axis;
+    if (foot.empty() || (p - foot.back()).norm() >= kMinFootSpacing * edge) foot.push_back(p);
+  }
+  while (foot.size() > 1 && (foot.back() - foot.front()).norm() < kMinFootSpacing * edge) {
+    foot.pop_back();
+  }
+  if (foot.size() < 3) return false;
+  Added added;
+  std::vector<Sm::Vertex_index> feet;
+  for (const Eigen::Vector3d& p : foot) {
+    feet.push_back(sm->add_vertex(Kernel::Point_3(p.x(), p.y(), p.z())));
+    added.vertices.push_back(feet.back());
+  }
+  const std::vector<std::pair<size_t, size_t>> down = ShortestStrip(pbore, foot);
+  double run = 0.0;
+  for (const auto& [i, j] : down) run = std::max(run, (foot[j % foot.size()] - pbore[i % n]).norm());
+  const auto on_wall = [&](size_t r, double t) {
+    const auto [i, j] = down[r];
+    return Eigen::Vector3d(pbore[i % n] + t * (foot[j % foot.size()] - pbore[i % n]));
+  };
+  bool ok = AddStrip(bore.loop, feet, down, on_wall, Rows(run, edge), sm, &added);
+  // The face the bore opens onto: the outer rim along its border, the
+  // bore's circle against the tube's new border (which runs as the bore's).
+  std::vector<Sm::Vertex_index> inner(feet.rbegin(), feet.rend());
+  std::vector<Eigen::Vector3d> pinner(foot.rbegin(), foot.rend());
+  size_t first = 0;
+  for (size_t j = 1; j < pinner.size(); ++j) {
+    if ((pinner[j] - pouter[0]).squaredNorm() < (pinner[first] - pouter[0]).squaredNorm()) first = j;
+  }
+  std::rotate(inner.begin(), inner.begin() + first, inner.end());
+  std::rotate(pinner.begin(), pinner.begin() + first, pinner.end());
+  const std::vector<std::pair<size_t, size_t>> strip = ShortestStrip(pouter, pinner);
+  double longest = 0.0;
+  for (const auto& [i, j] : strip) {
+    longest = std::max(longest, (pinner[j % pinner.size()] - pouter[i % pouter.size()]).norm());
+  }
+  const auto on_face = [&](size_t r, double t) {
+    const auto [i, j] = strip[r];
+    const Eigen::Vector3d& p = pouter[i % pouter.size()];
+    return Eigen::Vector3d(p + t * (pinner[j % pinner.size()] - p));
+  };
+  ok = ok && AddStrip(outer.loop, inner, strip, on_face, Rows(longest, edge), sm, &added);
+  if (!ok) TakeBack(added, sm);
+  return ok;
+}
+
 }  // namespace
 
 bool CloseTube(HoleMesh::Halfedge_index a, HoleMesh::Halfedge_index b, double sign,
@@ -118,6 +317,7 @@ bool CloseTube(HoleMesh::Halfedge_index a, HoleMesh::Halfedge_index b, double si
   }
   const std::vector<Eigen::Vector3d>& out_a = rim_a.out;
   std::vector<Eigen::Vector3d>& out_b = rim_b.out;
+  const Rim rim_b_border = rim_b;
   // An oriented strip runs along one rim's border and against the other's,
   // starting at the vertex of b nearest a's first.
   std::reverse(loop_b.begin(), loop_b.end());
@@ -135,10 +335,8 @@ bool CloseTube(HoleMesh::Halfedge_index a, HoleMesh::Halfedge_index b, double si
   const std::vector<std::pair<size_t, size_t>> strip = ShortestStrip(pa, pb);
   const size_t rungs = strip.size() - 1;  // the last is the first again
   std::vector<Rung> rung;
-  double edge = 0.0, longest = 0.0;
-  for (size_t k = 0; k < m; ++k) edge += (pa[(k + 1) % m] - pa[k]).norm();
-  for (size_t k = 0; k < n; ++k) edge += (pb[(k + 1) % n] - pb[k]).norm();
-  edge /= static_cast<double>(m + n);
+  const double edge = MeanEdge(pa, pb);
+  double longest = 0.0;
   for (size_t r = 0; r < rungs; ++r) {
     const auto [i, j] = strip[r];
     rung.emplace_back(pa[i % m], pb[j % n], out_a[i % m], out_b[j % n]);
@@ -155,49 +353,23 @@ bool CloseTube(HoleMesh::Halfedge_index a, HoleMesh::Halfedge_index b, double si
   arc_curvature /= static_cast<double>(rungs);
   if (arc_depth > edge) {
     for (const double seen : {rim_a.curvature, rim_b.curvature}) {
-      if (std::abs(seen - arc_curvature) > kCurvatureTolerance * arc_curvature) return false;
+      if (std::abs(seen - arc_curvature) > kCurvatureTolerance * arc_curvature) {
+        // Straight walls at both rims (flatter than the arcs by the same
+        // tolerance) run on to the face between them.
+        if (std::abs(rim_a.curvature) > kCurvatureTolerance * arc_curvature ||
+            std::abs(rim_b.curvature) > kCurvatureTolerance * arc_curvature) {
+          return false;
+        }
+        return SplitAtCap(rim_a, rim_b_border, sm);
+      }
     }
   }
-  const int rows = std::clamp(static_cast<int>(std::ceil(longest / edge)), kMinRows, kMaxRows);
-  // Vertex k of rung r: the rims at k = 0 and rows, new vertices between.
-  std::vector<Sm::Vertex_index> added;
-  for (size_t r = 0; r < rungs; ++r) {
-    for (int k = 1; k < rows; ++k) {
-      const Eigen::Vector3d p = rung[r].At(static_cast<double>(k) / rows);
-      added.push_back(sm->add_vertex(Kernel::Point_3(p.x(), p.y(), p.z())));
-    }
-  }
-  const auto vertex = [&](size_t r, int k) {
-    r %= rungs;
-    if (k == 0) return loop_a[strip[r].first % m];
-    if (k == rows) return loop_b[strip[r].second % n];
-    return added[r * (rows - 1) + k - 1];
-  };
-  std::vector<Sm::Face_index> faces;
-  bool ok = true;
-  const auto add = [&](Sm::Vertex_index u, Sm::Vertex_index v, Sm::Vertex_index w) {
-    if (!ok || u == v || v == w || w == u) return;
-    const auto f = sm->add_face(u, v, w);
-    if (f == Sm::null_face()) {
-      ok = false;
-    } else {
-      faces.push_back(f);
-    }
-  };
-  for (size_t r = 0; r < rungs && ok; ++r) {
-    for (int k = 0; k < rows; ++k) {
-      add(vertex(r, k), vertex(r + 1, k), vertex(r + 1, k + 1));
-      add(vertex(r, k), vertex(r + 1, k + 1), vertex(r, k + 1));
-    }
-  }
-  if (ok) return true;
-  for (auto f = faces.rbegin(); f != faces.rend(); ++f) {
-    CGAL::Euler::remove_face(sm->halfedge(*f), *sm);
-  }
-  for (const auto v : added) {
-    if (!sm->is_removed(v)) sm->remove_vertex(v);
-  }
-  return false;
+  Added added;
+  const bool ok = AddStrip(
+      loop_a, loop_b, strip, [&](size_t r, double t) { return rung[r].At(t); },
+      Rows(longest, edge), sm, &added);
+  if (!ok) TakeBack(added, sm);
+  return ok;
 }
 
 }  // namespace meshseg::reconstruct_internal

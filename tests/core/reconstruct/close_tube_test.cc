@@ -1,6 +1,8 @@
 #include "reconstruct/close_tube.h"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -119,7 +121,7 @@ TEST(CloseTube, RimsShorterThanTheResolvedHoleAreClosedByDiscs) {
 }
 
 // A washer: the ring of rectangular section ρ in [kInner, kOuter], z in
-// [0, kHeight] round the z axis, kNu cells round it and cells kStep square
+// [0, height] round the z axis, kNu cells round it and cells kStep square
 // on the section, which runs anticlockwise in (ρ, z) from the outer wall's
 // foot (so the faces face outwards). Face 2 (i cells + j) + k lies in cell
 // (i, j); `section` gets the section's vertices. The walls are tall enough
@@ -127,12 +129,12 @@ TEST(CloseTube, RimsShorterThanTheResolvedHoleAreClosedByDiscs) {
 // in) stay on them.
 constexpr double kInner = 10.0, kOuter = 15.0, kHeight = 10.0, kStep = 0.5;
 
-Mesh Washer(std::vector<Eigen::Vector2d>* section) {
+Mesh Washer(double height, std::vector<Eigen::Vector2d>* section) {
   const int across = static_cast<int>(std::lround((kOuter - kInner) / kStep));
-  const int up = static_cast<int>(std::lround(kHeight / kStep));
+  const int up = static_cast<int>(std::lround(height / kStep));
   for (int k = 0; k < up; ++k) section->emplace_back(kOuter, k * kStep);
-  for (int k = 0; k < across; ++k) section->emplace_back(kOuter - k * kStep, kHeight);
-  for (int k = 0; k < up; ++k) section->emplace_back(kInner, kHeight - k * kStep);
+  for (int k = 0; k < across; ++k) section->emplace_back(kOuter - k * kStep, height);
+  for (int k = 0; k < up; ++k) section->emplace_back(kInner, height - k * kStep);
   for (int k = 0; k < across; ++k) section->emplace_back(kInner + k * kStep, 0.0);
   const int nv = static_cast<int>(section->size());
   std::vector<Eigen::Vector3d> vertices;
@@ -157,11 +159,13 @@ Mesh Washer(std::vector<Eigen::Vector2d>* section) {
 // whose rims leave their plane straight down, like the mouth of a bore and
 // the walls round the face it opens onto. The seen walls do not curve, so
 // the unseen surface meets them at edges: arcs from rim to rim, 5 apart,
-// would reach 2.5 down, 0.5 below the unseen face. Criterion (d) keeps the
-// two discs (genus 0); without it the tube is made (genus 1).
+// would reach 2.5 down, 0.5 below the unseen face. Criterion (d) refuses
+// the tube (without it the tube is made, genus 1), and no seen surface ends
+// beyond the bore's rim to mark a cap plane for the bore's wall to run on
+// to: the two discs are kept (genus 0).
 TEST(CloseTube, StraightWallsRoundAnUnseenFaceKeepTheirDiscs) {
   std::vector<Eigen::Vector2d> section;
-  const Mesh washer = Washer(&section);
+  const Mesh washer = Washer(kHeight, &section);
   const int nv = static_cast<int>(section.size());
   std::vector<uint8_t> supported(washer.tri.n_faces());
   for (size_t f = 0; f < supported.size(); ++f) {
@@ -172,6 +176,57 @@ TEST(CloseTube, StraightWallsRoundAnUnseenFaceKeepTheirDiscs) {
   ASSERT_TRUE(closed.ok()) << closed.status();
   EXPECT_EQ(closed->hole_count, 2);
   ExpectOneClosedManifoldOfGenus(closed->mesh.tri, 0);
+}
+
+// Distance of `p` from the exact washer of `height`: from its section, the
+// rectangle [kInner, kOuter] × [0, height] in (ρ, z).
+double WasherDistance(const Eigen::Vector3d& p, double height) {
+  const double rho = std::hypot(p.x(), p.y());
+  const double inside = std::min({rho - kInner, kOuter - rho, p.z(), height - p.z()});
+  if (inside >= 0) return inside;
+  const double dr = std::max({kInner - rho, rho - kOuter, 0.0});
+  const double dz = std::max({-p.z(), p.z() - height, 0.0});
+  return std::hypot(dr, dz);
+}
+
+// A bore (the washer's inner wall) seen only above z = 6, the face it opens
+// onto (the underside) unseen, the outer wall seen all the way down to it.
+// Both rims leave straight down, so (d) refuses the arc tube; the outer
+// rim's seen wall ends on the cap plane z = 0, 6 below the bore's rim. The
+// bore's wall runs on straight down to it and the underside is the strip
+// between the outer rim and the bore's circle on it: genus 1 like the
+// solid, every patch vertex on the washer to within a tenth of the mesh's
+// spacing (the bore's polygon is the washer's own; its chord sag, 0.005,
+// is the only error), and no face without area. Discs (genus 0) span the
+// bore's mouth 6 above the unseen face.
+TEST(CloseTube, ABoreSeenToAboveTheFaceItOpensOntoRunsStraightOnToThatFace) {
+  constexpr double kTall = 20.0, kBoreSeenAbove = 6.0;
+  std::vector<Eigen::Vector2d> section;
+  const Mesh washer = Washer(kTall, &section);
+  const int nv = static_cast<int>(section.size());
+  std::vector<uint8_t> supported(washer.tri.n_faces());
+  for (size_t f = 0; f < supported.size(); ++f) {
+    const int j = static_cast<int>(f) / 2 % nv;
+    const Eigen::Vector2d& p = section[j];
+    const Eigen::Vector2d& q = section[(j + 1) % nv];
+    const bool underside = p.y() == 0.0 && q.y() == 0.0;
+    const bool low_bore = p.x() == kInner && q.x() == kInner && p.y() + q.y() < 2 * kBoreSeenAbove;
+    supported[f] = !underside && !low_bore;
+  }
+  const auto closed = CloseUnsupported(washer, supported, 0.01, false, {}, true, 0.0);
+  ASSERT_TRUE(closed.ok()) << closed.status();
+  EXPECT_EQ(closed->hole_count, 2);
+  ExpectOneClosedManifoldOfGenus(closed->mesh.tri, 1);
+  double worst = 0.0, smallest = std::numeric_limits<double>::infinity();
+  for (const auto f : closed->mesh.tri.faces()) {
+    if (!closed->filled[f.idx()]) continue;
+    smallest = std::min(smallest, static_cast<double>(closed->mesh.tri.calc_face_area(f)));
+    for (const auto v : closed->mesh.tri.fv_range(f)) {
+      worst = std::max(worst, WasherDistance(ToEigen(closed->mesh.tri.point(v)), kTall));
+    }
+  }
+  EXPECT_LT(worst, 0.1 * kStep);
+  EXPECT_GT(smallest, 1e-3 * kStep * kStep);
 }
 
 }  // namespace
