@@ -155,6 +155,18 @@ Mesh Washer(double height, std::vector<Eigen::Vector2d>* section) {
   return *SurfaceMesh(vertices, triangles, "washer");
 }
 
+// The washer's faces whose section edge (p, q) is `seen`.
+std::vector<uint8_t> SeenWhere(const Mesh& washer, const std::vector<Eigen::Vector2d>& section,
+                               bool (*seen)(const Eigen::Vector2d& p, const Eigen::Vector2d& q)) {
+  const int nv = static_cast<int>(section.size());
+  std::vector<uint8_t> supported(washer.tri.n_faces());
+  for (size_t f = 0; f < supported.size(); ++f) {
+    const int j = static_cast<int>(f) / 2 % nv;
+    supported[f] = seen(section[j], section[(j + 1) % nv]);
+  }
+  return supported;
+}
+
 // The washer's underside and both its walls below z = 2 unseen: an annulus
 // whose rims leave their plane straight down, like the mouth of a bore and
 // the walls round the face it opens onto. The seen walls do not curve, so
@@ -166,12 +178,10 @@ Mesh Washer(double height, std::vector<Eigen::Vector2d>* section) {
 TEST(CloseTube, StraightWallsRoundAnUnseenFaceKeepTheirDiscs) {
   std::vector<Eigen::Vector2d> section;
   const Mesh washer = Washer(kHeight, &section);
-  const int nv = static_cast<int>(section.size());
-  std::vector<uint8_t> supported(washer.tri.n_faces());
-  for (size_t f = 0; f < supported.size(); ++f) {
-    const int j = static_cast<int>(f) / 2 % nv;
-    supported[f] = section[j].y() + section[(j + 1) % nv].y() > 2 * 2.0;
-  }
+  const std::vector<uint8_t> supported = SeenWhere(
+      washer, section, [](const Eigen::Vector2d& p, const Eigen::Vector2d& q) {
+        return p.y() + q.y() > 2 * 2.0;
+      });
   const auto closed = CloseUnsupported(washer, supported, 0.01, false, {}, true, 0.0);
   ASSERT_TRUE(closed.ok()) << closed.status();
   EXPECT_EQ(closed->hole_count, 2);
@@ -203,16 +213,13 @@ TEST(CloseTube, ABoreSeenToAboveTheFaceItOpensOntoRunsStraightOnToThatFace) {
   constexpr double kTall = 20.0, kBoreSeenAbove = 6.0;
   std::vector<Eigen::Vector2d> section;
   const Mesh washer = Washer(kTall, &section);
-  const int nv = static_cast<int>(section.size());
-  std::vector<uint8_t> supported(washer.tri.n_faces());
-  for (size_t f = 0; f < supported.size(); ++f) {
-    const int j = static_cast<int>(f) / 2 % nv;
-    const Eigen::Vector2d& p = section[j];
-    const Eigen::Vector2d& q = section[(j + 1) % nv];
-    const bool underside = p.y() == 0.0 && q.y() == 0.0;
-    const bool low_bore = p.x() == kInner && q.x() == kInner && p.y() + q.y() < 2 * kBoreSeenAbove;
-    supported[f] = !underside && !low_bore;
-  }
+  const std::vector<uint8_t> supported = SeenWhere(
+      washer, section, [](const Eigen::Vector2d& p, const Eigen::Vector2d& q) {
+        const bool underside = p.y() == 0.0 && q.y() == 0.0;
+        const bool low_bore =
+            p.x() == kInner && q.x() == kInner && p.y() + q.y() < 2 * kBoreSeenAbove;
+        return !underside && !low_bore;
+      });
   const auto closed = CloseUnsupported(washer, supported, 0.01, false, {}, true, 0.0);
   ASSERT_TRUE(closed.ok()) << closed.status();
   EXPECT_EQ(closed->hole_count, 2);
