@@ -102,7 +102,12 @@ struct ReconstructParams {
   // that loop and both holes closed by minimal patches, flagged in
   // Reconstruction::is_filled. 2: every point of a surface sampled at
   // spacing s lies within about s of a sample, so a hole no wider than 2 s
-  // looks like the gaps between samples and the points do not show it. (On a
+  // looks like the gaps between samples and the points do not show it. A
+  // flat tunnel (a slit between two sheets) is cut when its loop's width
+  // 4 A / L is within handle_spacings × s, for loops up to twice the bound
+  // (reconstruct/handle_strips.h). Where the face budget makes the refined
+  // mesh coarser than the points, s is at least the spacing the mesh follows
+  // (its edge / refine_edge_length). (On a
   // simulated scan of uneven density, 126 of 137 spurious handles are cut at
   // 2; at 3 the truth's narrowest hole, in a sparse area, would be cut too.)
   // 0 keeps every handle.

@@ -106,21 +106,27 @@ absl::StatusOr<CurvatureField> EstimateCurvature(const Mesh& mesh, const Curvatu
   curvature_internal::OrderedGraph walk;
   tbb::parallel_invoke([&] { frames = curvature_internal::ComputeVertexFrames(mesh.tri); },
                        [&] { walk = curvature_internal::MortonOrderedGraph(mesh.tri); });
-  const std::vector<double> area = walk.Permuted<double>(frames.area);
+  // The field's arrays are first written (and their pages faulted in) on
+  // both cores.
+  std::vector<double> area;
   CurvatureField field;
-  field.kappa_max.assign(n, 0.0);
-  field.kappa_min.assign(n, 0.0);
-  field.dir_max.assign(n, Eigen::Vector3d::UnitX());
-  field.dir_min.assign(n, Eigen::Vector3d::UnitY());
-  field.normal = frames.normal;
-  field.smooth_normal = frames.normal;
-  field.mean_edge_length = frames.mean_edge_length;
-  field.sharp.assign(n, 0);
-  field.fit_residual.assign(n, 0.0);
+  std::vector<double> residual1;
+  tbb::parallel_invoke(
+      [&] { area = walk.Permuted<double>(frames.area); },
+      [&] {
+        field.kappa_max.assign(n, 0.0);
+        field.kappa_min.assign(n, 0.0);
+        field.fit_residual.assign(n, 0.0);
+        residual1.assign(n, 0.0);
+        field.sharp.assign(n, 0);
+      },
+      [&] { field.dir_max.assign(n, Eigen::Vector3d::UnitX()); },
+      [&] { field.dir_min.assign(n, Eigen::Vector3d::UnitY()); },
+      [&] { field.normal = frames.normal; }, [&] { field.smooth_normal = frames.normal; },
+      [&] { field.mean_edge_length = frames.mean_edge_length; });
   tbb::enumerable_thread_specific<Scratch> scratch;
 
   // Pass 1 (W1): kappa_max for the sharp test; seed 000 §2 step 3.
-  std::vector<double> residual1(n, 0.0);
   MESHSEG_RETURN_IF_ERROR(ForEachVertex(n, ctx, 0.0, 0.3, scratch, [&](int k, Scratch& s) {
     const int v = walk.order[k];
     if (frames.normal[v].squaredNorm() == 0.0) return;
@@ -134,13 +140,15 @@ absl::StatusOr<CurvatureField> EstimateCurvature(const Mesh& mesh, const Curvatu
   }));
   field.sharp_threshold = params.sharp_threshold.value_or(
       curvature_internal::DeriveSharpThreshold(residual1, frames.mean_edge_length));
-  for (int v = 0; v < n; ++v) {
-    // 1/|kappa_max| < th_sv * l_i,avg; isolated vertices count as sharp.
-    field.sharp[v] = frames.normal[v].squaredNorm() == 0.0 ||
-                     std::abs(field.kappa_max[v]) * field.sharp_threshold *
-                             frames.mean_edge_length[v] > 1.0;
-    field.fit_residual[v] = residual1[v];
-  }
+  tbb::parallel_for(tbb::blocked_range<int>(0, n, 8192), [&](const tbb::blocked_range<int>& r) {
+    for (int v = r.begin(); v < r.end(); ++v) {
+      // 1/|kappa_max| < th_sv * l_i,avg; isolated vertices count as sharp.
+      field.sharp[v] = frames.normal[v].squaredNorm() == 0.0 ||
+                       std::abs(field.kappa_max[v]) * field.sharp_threshold *
+                               frames.mean_edge_length[v] > 1.0;
+      field.fit_residual[v] = residual1[v];
+    }
+  });
 
   // Pass 2 (W2) on N'(i, W2) for non-sharp vertices; seed 000 §2 steps 4-5.
   const std::vector<uint8_t> sharp = walk.Permuted<uint8_t>(field.sharp);

@@ -7,6 +7,7 @@
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_invoke.h>
 
 namespace meshseg::curvature_internal {
 namespace {
@@ -47,21 +48,28 @@ std::vector<double> FilterPass(const VertexGraph& graph, const std::vector<uint8
 void FilterCurvature(const OrderedGraph& walk, CurvatureField* field) {
   // In the walk's numbering (each ring the same values in the same order,
   // so the same medians and means), then back under each vertex's index.
+  // kappa_max and kappa_min are filtered side by side (independent values).
   const std::vector<uint8_t> sharp = walk.Permuted<uint8_t>(field->sharp);
-  for (std::vector<double>* values : {&field->kappa_max, &field->kappa_min}) {
+  const int n = static_cast<int>(field->kappa_max.size());
+  const auto filter = [&](std::vector<double>* values) {
     std::vector<double> walked = walk.Permuted<double>(*values);
     walked = FilterPass(walk.graph, sharp, walked, /*use_median=*/true);
     for (int k = 0; k < kMeanPasses; ++k) {
       walked = FilterPass(walk.graph, sharp, walked, /*use_median=*/false);
     }
-    for (std::size_t k = 0; k < walked.size(); ++k) (*values)[walk.order[k]] = walked[k];
-  }
-  for (std::size_t v = 0; v < field->kappa_max.size(); ++v) {
-    if (std::abs(field->kappa_min[v]) > std::abs(field->kappa_max[v])) {
-      std::swap(field->kappa_min[v], field->kappa_max[v]);
-      std::swap(field->dir_min[v], field->dir_max[v]);
+    tbb::parallel_for(tbb::blocked_range<int>(0, n, 8192), [&](const tbb::blocked_range<int>& r) {
+      for (int k = r.begin(); k < r.end(); ++k) (*values)[walk.order[k]] = walked[k];
+    });
+  };
+  tbb::parallel_invoke([&] { filter(&field->kappa_max); }, [&] { filter(&field->kappa_min); });
+  tbb::parallel_for(tbb::blocked_range<int>(0, n, 8192), [&](const tbb::blocked_range<int>& r) {
+    for (int v = r.begin(); v < r.end(); ++v) {
+      if (std::abs(field->kappa_min[v]) > std::abs(field->kappa_max[v])) {
+        std::swap(field->kappa_min[v], field->kappa_max[v]);
+        std::swap(field->dir_min[v], field->dir_max[v]);
+      }
     }
-  }
+  });
 }
 
 }  // namespace meshseg::curvature_internal

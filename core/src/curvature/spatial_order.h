@@ -21,6 +21,8 @@
 #include <vector>
 
 #include <Eigen/Core>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
 
 #include "meshseg/curvature.h"
 #include "meshseg/mesh.h"
@@ -34,11 +36,15 @@ struct OrderedGraph {
   std::vector<int> order;
   std::vector<int> rank;
 
-  // values[order[k]] at k: a per-vertex array in the new numbering.
+  // values[order[k]] at k: a per-vertex array in the new numbering
+  // (gathered side by side; each entry is a copy).
   template <typename T>
   std::vector<T> Permuted(std::span<const T> values) const {
     std::vector<T> out(order.size());
-    for (std::size_t k = 0; k < order.size(); ++k) out[k] = values[order[k]];
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, order.size(), 16384),
+                      [&](const tbb::blocked_range<std::size_t>& r) {
+                        for (std::size_t k = r.begin(); k < r.end(); ++k) out[k] = values[order[k]];
+                      });
     return out;
   }
 };

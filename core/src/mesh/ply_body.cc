@@ -4,6 +4,7 @@
 #include <cstring>
 #include <optional>
 #include <string>
+#include <utility>
 
 #include "absl/strings/str_cat.h"
 #include "meshseg/status_macros.h"
@@ -12,6 +13,38 @@
 
 namespace meshseg::mesh_internal {
 namespace {
+
+template <typename T>
+double Read(const unsigned char* raw) {
+  T value;
+  std::memcpy(&value, raw, sizeof(T));
+  return static_cast<double>(value);
+}
+
+// The value of `type` whose bytes (in the host's order) start at raw.
+double Decode(PlyType type, const unsigned char* raw) {
+  switch (type) {
+    case PlyType::kInt8: return Read<int8_t>(raw);
+    case PlyType::kUint8: return Read<uint8_t>(raw);
+    case PlyType::kInt16: return Read<int16_t>(raw);
+    case PlyType::kUint16: return Read<uint16_t>(raw);
+    case PlyType::kInt32: return Read<int32_t>(raw);
+    case PlyType::kUint32: return Read<uint32_t>(raw);
+    case PlyType::kFloat32: return Read<float>(raw);
+    case PlyType::kFloat64: return Read<double>(raw);
+  }
+  return 0.0;
+}
+
+// The binary value of `type` (`size` bytes) at `at`, in the file's order.
+double DecodeAt(PlyType type, int size, const char* at, bool big_endian) {
+  unsigned char raw[8];
+  std::memcpy(raw, at, size);
+  if (big_endian) {
+    for (int i = 0; i < size / 2; ++i) std::swap(raw[i], raw[size - 1 - i]);
+  }
+  return Decode(type, raw);
+}
 
 // Reads the values of the body one at a time, ascii or binary, and names the
 // place of an error.
@@ -31,13 +64,10 @@ class ValueReader {
       return BadInput(src_, absl::StrCat("truncated at byte offset ", pos_, " reading ", what,
                                          " (file is ", bytes_.size(), " bytes)"));
     }
-    unsigned char raw[8];
-    std::memcpy(raw, bytes_.data() + pos_, size);
-    if (encoding_ == PlyEncoding::kBinaryBigEndian) {
-      for (int i = 0; i < size / 2; ++i) std::swap(raw[i], raw[size - 1 - i]);
-    }
+    const double value = DecodeAt(type, size, bytes_.data() + pos_,
+                                  encoding_ == PlyEncoding::kBinaryBigEndian);
     pos_ += size;
-    return Decode(type, raw);
+    return value;
   }
 
   // Ends one element instance (one line in ascii).
@@ -63,6 +93,12 @@ class ValueReader {
   }
 
   bool ascii() const { return encoding_ == PlyEncoding::kAscii; }
+  bool big_endian() const { return encoding_ == PlyEncoding::kBinaryBigEndian; }
+
+  // The whole file and the binary read position (for ReadBinaryElement).
+  std::string_view bytes() const { return bytes_; }
+  size_t position() const { return pos_; }
+  void set_position(size_t pos) { pos_ = pos; }
 
   // Bytes of the file not read yet.
   int64_t BytesLeft() const {
@@ -80,27 +116,6 @@ class ValueReader {
                                 "\""));
     }
     return *value;
-  }
-
-  static double Decode(PlyType type, const unsigned char* raw) {
-    switch (type) {
-      case PlyType::kInt8: return Read<int8_t>(raw);
-      case PlyType::kUint8: return Read<uint8_t>(raw);
-      case PlyType::kInt16: return Read<int16_t>(raw);
-      case PlyType::kUint16: return Read<uint16_t>(raw);
-      case PlyType::kInt32: return Read<int32_t>(raw);
-      case PlyType::kUint32: return Read<uint32_t>(raw);
-      case PlyType::kFloat32: return Read<float>(raw);
-      case PlyType::kFloat64: return Read<double>(raw);
-    }
-    return 0.0;
-  }
-
-  template <typename T>
-  static double Read(const unsigned char* raw) {
-    T value;
-    std::memcpy(&value, raw, sizeof(T));
-    return static_cast<double>(value);
   }
 
   std::string_view bytes_;
@@ -123,6 +138,68 @@ int64_t MinElementBytes(const PlyElement& element, bool ascii) {
     }
   }
   return bytes;
+}
+
+// What a property of the vertex or face element is read into.
+struct PropertyRoles {
+  int xyz[3] = {-1, -1, -1};   // property index of each coordinate
+  int nxyz[3] = {-1, -1, -1};  // of each normal component, if `normals`
+  bool normals = false;
+  int corners = -1;  // the face element's list of vertex indices
+};
+
+// Reads the binary `element` in one pass, with the checks ReadElement makes
+// value by value. True if every value passed; false where one did not (or
+// the file ends), with the reader not moved, so that ReadElement reads the
+// element again value by value and names the error as before. On false,
+// `data`'s corners / face_start may hold a partial element: the caller cuts
+// them back.
+bool ReadBinaryElement(const PlyElement& element, const PropertyRoles& roles,
+                       ValueReader& reader, PlyData* data) {
+  const std::string_view bytes = reader.bytes();
+  const bool big_endian = reader.big_endian();
+  const int64_t nv = static_cast<int64_t>(data->vertices.size());
+  const bool is_vertex = roles.xyz[0] >= 0;
+  size_t pos = reader.position();
+  for (int64_t i = 0; i < element.count; ++i) {
+    for (int k = 0; k < static_cast<int>(element.properties.size()); ++k) {
+      const PlyProperty& p = element.properties[k];
+      const int size = PlyTypeSize(p.type);
+      if (p.is_list) {
+        const int count_size = PlyTypeSize(p.count_type);
+        if (pos + count_size > bytes.size()) return false;
+        const double n = DecodeAt(p.count_type, count_size, bytes.data() + pos, big_endian);
+        pos += count_size;
+        const bool corners = k == roles.corners;
+        if (corners && (n < 3 || n > 1'000'000)) return false;
+        if (!(n >= 0) || n != std::floor(n) || n > static_cast<double>(bytes.size() - pos)) {
+          return false;
+        }
+        const int64_t count = static_cast<int64_t>(n);
+        if (pos + count * size > bytes.size()) return false;
+        for (int64_t c = 0; c < count; ++c, pos += size) {
+          if (!corners) continue;
+          const double v = DecodeAt(p.type, size, bytes.data() + pos, big_endian);
+          if (!(v >= 0 && v < static_cast<double>(nv)) || v != std::floor(v)) return false;
+          data->corners.push_back(static_cast<int>(v));
+        }
+        if (corners) data->face_start.push_back(static_cast<int64_t>(data->corners.size()));
+        continue;
+      }
+      if (pos + size > bytes.size()) return false;
+      const double v = DecodeAt(p.type, size, bytes.data() + pos, big_endian);
+      pos += size;
+      for (int c = 0; c < 3 && is_vertex; ++c) {
+        if (k == roles.xyz[c]) {
+          if (!std::isfinite(v)) return false;
+          data->vertices[i][c] = v;
+        }
+        if (k == roles.nxyz[c] && roles.normals) data->normals[i][c] = v;
+      }
+    }
+  }
+  reader.set_position(pos);
+  return true;
 }
 
 absl::Status ReadElement(const PlyElement& element, ValueReader& reader, PlyData* data) {
@@ -156,6 +233,21 @@ absl::Status ReadElement(const PlyElement& element, ValueReader& reader, PlyData
     data->face_start.assign(1, 0);
     data->face_start.reserve(element.count + 1);
     data->corners.reserve(3 * element.count);
+  }
+  // Binary: the element in one pass; value by value only to name an error.
+  if (!reader.ascii()) {
+    PropertyRoles roles;
+    for (int c = 0; c < 3 && is_vertex; ++c) {
+      roles.xyz[c] = xyz[c];
+      roles.nxyz[c] = nxyz[c];
+    }
+    roles.normals = normals;
+    roles.corners = indices;
+    const size_t corner_count = data->corners.size();
+    const size_t face_start_count = data->face_start.size();
+    if (ReadBinaryElement(element, roles, reader, data)) return absl::OkStatus();
+    data->corners.resize(corner_count);
+    data->face_start.resize(face_start_count);
   }
   const int64_t nv = static_cast<int64_t>(data->vertices.size());
   for (int64_t i = 0; i < element.count; ++i) {

@@ -11,6 +11,7 @@
 #include <Eigen/Geometry>
 
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
+#include <CGAL/Polygon_mesh_processing/fair.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_hole.h>
 #include <CGAL/boost/graph/Euler_operations.h>
 
@@ -33,6 +34,9 @@ constexpr size_t kMaxCubicLoop = 500;
 // A triangle is flat when twice its area is at most this fraction of its
 // longest edge squared (a hundred times the mesh readers' limit).
 constexpr double kFlatRatio = 1e-10;
+// A faired patch vertex may lie this many mean loop edges outside the loop's
+// bounding box (the cotangent weights' excess over the maximum principle).
+constexpr double kMembraneSlackEdges = 1.0;
 // Rounds of flipping flat patch triangles at most.
 constexpr int kFlatFlipPasses = 3;
 
@@ -68,6 +72,37 @@ void LoopWithNormals(const Sm& sm, Sm::Halfedge_index h, double sign,
     if (g == h) break;
   }
 }
+
+// The weights of the umbrella operator (every neighbour 1): positive, so the
+// harmonic patch they give obeys the maximum principle.
+struct UniformWeights {
+  double w_ij(Sm::Halfedge_index) const { return 1.0; }
+  double w_i(Sm::Vertex_index) const { return 1.0; }
+};
+
+}  // namespace
+
+void KeepMembraneInsideItsLoop(const std::vector<Eigen::Vector3d>& loop,
+                               const std::vector<HoleMesh::Vertex_index>& vertices, HoleMesh* sm) {
+  if (loop.empty() || vertices.empty()) return;
+  Eigen::Vector3d lo = loop[0], hi = loop[0];
+  double edge = 0.0;
+  for (size_t k = 0; k < loop.size(); ++k) {
+    lo = lo.cwiseMin(loop[k]);
+    hi = hi.cwiseMax(loop[k]);
+    edge += (loop[(k + 1) % loop.size()] - loop[k]).norm();
+  }
+  const double slack = kMembraneSlackEdges * edge / static_cast<double>(loop.size());
+  const bool outside = std::any_of(vertices.begin(), vertices.end(), [&](Sm::Vertex_index v) {
+    const Eigen::Vector3d x = ToEigen3(sm->point(v));
+    return (x - x.cwiseMax(lo).cwiseMin(hi)).norm() > slack;
+  });
+  if (!outside) return;
+  PMP::fair(*sm, vertices,
+            PMP::parameters::weight_calculator(UniformWeights{}).fairing_continuity(0));
+}
+
+namespace {
 
 // Bends the patch `faces` (free vertices `vertices`) of a hole whose loop was
 // `loop` onto the seen planes (seen_planes.h).
@@ -151,9 +186,10 @@ void CloseLoop(Sm::Halfedge_index h, size_t n, const std::vector<Eigen::Vector3d
       PMP::parameters::fairing_continuity(0).do_not_use_cubic_algorithm(n > kMaxCubicLoop));
   if (faces.empty() && sm->is_border(h)) {
     FanClose(h, sm);
-  } else if (bend) {
-    BendPatch(loop, normals, sign, faces, vertices, sm);
+    return;
   }
+  KeepMembraneInsideItsLoop(loop, vertices, sm);
+  if (bend) BendPatch(loop, normals, sign, faces, vertices, sm);
 }
 
 }  // namespace
@@ -166,6 +202,7 @@ void CloseHole(HoleMesh::Halfedge_index h, size_t n, double sign, bool bend, Hol
 
 void FlipFlatPatchFaces(Sm* sm) {
   const auto filled = sm->property_map<Sm::Face_index, uint8_t>("f:filled").first;
+  bool removed = false;
   for (int pass = 0; pass < kFlatFlipPasses; ++pass) {
     bool changed = false;
     for (const auto f : sm->faces()) {
@@ -183,15 +220,40 @@ void FlipFlatPatchFaces(Sm* sm) {
       const Eigen::Vector3d b = ToEigen3(sm->point(sm->target(longest)));
       const Eigen::Vector3d c = ToEigen3(sm->point(sm->target(sm->next(longest))));
       if ((b - a).cross(c - a).norm() > kFlatRatio * longest2) continue;
+      // The apex lies on the longest edge, so the flip splits the face
+      // across at the apex into two triangles that cover it exactly: the
+      // surface is unchanged whether that face is a patch face or a kept one
+      // (a loop edge, when the apex is a loop vertex on a straight crease).
+      // The two faces carry the flag of the face across, whose area they
+      // cover.
       const auto across = sm->opposite(longest);
-      if (sm->is_border(across) || !filled[sm->face(across)]) continue;
+      if (sm->is_border(across)) continue;
       const auto u = sm->target(sm->next(longest)), w = sm->target(sm->next(across));
-      if (u == w || CGAL::halfedge(u, w, *sm).second) continue;
+      if (u == w) continue;
+      const uint8_t flag = filled[sm->face(across)];
+      if (CGAL::halfedge(u, w, *sm).second) {
+        // The flip's edge is there already: an end x of the longest edge has
+        // valence 3, its third face x w u. That face lies in the plane of
+        // the face across (u is on the line of the longest edge) and folds
+        // back over it; removing x leaves the one triangle (u, other end, w)
+        // the three faces amount to, the same surface.
+        for (const auto into : {longest, across}) {
+          const auto x = sm->target(into);
+          if (CGAL::degree(x, *sm) != 3 || sm->is_border(x)) continue;
+          filled[sm->face(CGAL::Euler::remove_center_vertex(into, *sm))] = flag;
+          removed = changed = true;
+          break;
+        }
+        continue;
+      }
       CGAL::Euler::flip_edge(longest, *sm);
+      filled[sm->face(longest)] = flag;
+      filled[sm->face(sm->opposite(longest))] = flag;
       changed = true;
     }
     if (!changed) break;
   }
+  if (removed) sm->collect_garbage();
 }
 
 }  // namespace meshseg::reconstruct_internal

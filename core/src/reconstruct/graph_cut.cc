@@ -1,10 +1,13 @@
 #include "reconstruct/graph_cut.h"
 
+#include <algorithm>
 #include <cmath>
+#include <numeric>
 
 #include <boost/graph/adjacency_list.hpp>
 #include <boost/graph/boykov_kolmogorov_max_flow.hpp>
 
+#include "mesh/union_find.h"
 #include "meshseg/status_macros.h"
 
 namespace meshseg::reconstruct_internal {
@@ -38,6 +41,7 @@ void AddEdgePair(int u, int v, double forward, double backward, Graph* g) {
 absl::StatusOr<std::vector<uint8_t>> GraphCutLabels(const TetMesh& tets,
                                                     const std::vector<Eigen::Vector3d>& position,
                                                     const std::vector<double>& f, double k,
+                                                    const std::vector<uint8_t>& resolved,
                                                     const RunContext& ctx) {
   const int n = static_cast<int>(position.size());
   std::vector<double> length_sum(n, 0.0);
@@ -64,12 +68,15 @@ absl::StatusOr<std::vector<uint8_t>> GraphCutLabels(const TetMesh& tets,
   }
   const double unbreakable = 1e6 * (max_weight + 1.0) * (tets.edges.size() + 1);
   for (int v = 0; v < n; ++v) {
+    // A vertex whose side the points resolve is tied to it as firmly as the
+    // hull is to the outside: the cut decides only the others.
+    const bool fixed = !resolved.empty() && resolved[v];
     if (tets.on_hull[v]) {
       AddEdgePair(v, sink, unbreakable, 0.0, &g);
     } else if (f[v] >= 0) {
-      AddEdgePair(source, v, terminal[v], 0.0, &g);
+      AddEdgePair(source, v, fixed ? unbreakable : terminal[v], 0.0, &g);
     } else {
-      AddEdgePair(v, sink, terminal[v], 0.0, &g);
+      AddEdgePair(v, sink, fixed ? unbreakable : terminal[v], 0.0, &g);
     }
   }
   MESHSEG_RETURN_IF_ERROR(ctx.CheckStop(kStage));
@@ -89,6 +96,32 @@ absl::StatusOr<std::vector<uint8_t>> GraphCutLabels(const TetMesh& tets,
     inside[v] = color[v] == boost::color_traits<boost::default_color_type>::black() ? 1 : 0;
   }
   return inside;
+}
+
+std::vector<uint8_t> ResolvedInside(const TetMesh& tets, const std::vector<double>& f,
+                                    const std::vector<uint8_t>& sparse, double epsilon) {
+  const int n = static_cast<int>(f.size());
+  std::vector<uint8_t> resolved(n);
+  for (int v = 0; v < n; ++v) resolved[v] = !tets.on_hull[v] && !sparse[v] && f[v] >= epsilon;
+  std::vector<int> parent(n);
+  std::iota(parent.begin(), parent.end(), 0);
+  for (const auto& [a, b] : tets.edges) {
+    if (!resolved[a] || !resolved[b]) continue;
+    const int ra = mesh_internal::FindRoot(parent, a), rb = mesh_internal::FindRoot(parent, b);
+    if (ra != rb) parent[std::max(ra, rb)] = std::min(ra, rb);
+  }
+  std::vector<int> size(n, 0);
+  int largest = -1;
+  for (int v = 0; v < n; ++v) {
+    if (!resolved[v]) continue;
+    const int r = mesh_internal::FindRoot(parent, v);
+    ++size[r];
+    if (largest < 0 || size[r] > size[largest]) largest = r;
+  }
+  for (int v = 0; v < n; ++v) {
+    resolved[v] = resolved[v] && mesh_internal::FindRoot(parent, v) == largest;
+  }
+  return resolved;
 }
 
 std::vector<uint8_t> SignLabels(const TetMesh& tets, const std::vector<double>& f) {

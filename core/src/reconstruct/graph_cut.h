@@ -19,12 +19,32 @@ namespace meshseg::reconstruct_internal {
 // (eqs. 8-9); an edge weighs |f(v_i) + f(v_j)| / |v_i v_j| (eq. 10). Hull
 // vertices are tied to the sink with a weight no cut can pay, so the inside
 // is enclosed by the tetrahedralization and the surface is closed.
+// Vertices flagged in `resolved` (empty: none) are tied to the source as
+// firmly (our addition, issue 38): the cut repairs f where the points leave
+// its sign open (sparse supports, |f| within the fit's error, isolated
+// clumps), not where they decide it. Eqs. (8)-(10) price an inside region
+// by its boundary against the |f| of its vertices, so without the tie a
+// region a few vertices thick whose |f| is small (a plate near its sampled
+// face, where f is the distance below it) costs more to keep than to drop,
+// and a cut that must close an unseen region reaching the hull (a scan's
+// underside, where f continues the seen planes) goes through it.
 // `position` and `f` have one entry per tet vertex.
 // Errors: CANCELLED when ctx requests a stop.
 absl::StatusOr<std::vector<uint8_t>> GraphCutLabels(const TetMesh& tets,
                                                     const std::vector<Eigen::Vector3d>& position,
                                                     const std::vector<double>& f, double k,
+                                                    const std::vector<uint8_t>& resolved,
                                                     const RunContext& ctx);
+
+// Returns 1 at the vertices whose inside the points resolve: not on the hull,
+// a support holding at least the sparse count of points (`sparse` 0), and
+// f ≥ ε: the points in the ball lie within ε of its fitted plane (eq. 6), so
+// a centre farther inside than that is inside whatever the noise. Only the
+// largest set of such vertices joined by tet edges counts: a small clump of
+// stray points with consistent normals (a ghost sheet) resolves a few
+// vertices of its own, and the cut must stay free to drop that bubble.
+std::vector<uint8_t> ResolvedInside(const TetMesh& tets, const std::vector<double>& f,
+                                    const std::vector<uint8_t>& sparse, double epsilon);
 
 // Returns 1 where f ≥ 0 and 0 elsewhere, with hull vertices outside: the
 // labels of the partition of unity alone.

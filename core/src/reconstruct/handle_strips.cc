@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <utility>
 
+#include <Eigen/Geometry>
+
 #include "absl/container/flat_hash_map.h"
 #include "absl/container/flat_hash_set.h"
 #include "mesh/union_find.h"
@@ -140,8 +142,24 @@ bool StripKeepsSurfaceConnected(const MeshGraph& g, const std::vector<uint8_t>& 
 
 }  // namespace
 
+double LoopWidth(const TriMesh& tri, const std::vector<int>& loop) {
+  const auto at = [&](int v) { return ToEigen(tri.point(TriMesh::VertexHandle(v))); };
+  if (loop.empty()) return 0.0;
+  const Eigen::Vector3d origin = at(loop[0]);
+  Eigen::Vector3d area = Eigen::Vector3d::Zero();
+  double length = 0.0;
+  for (size_t i = 0; i < loop.size(); ++i) {
+    const Eigen::Vector3d a = at(loop[i]) - origin;
+    const Eigen::Vector3d b = at(loop[(i + 1) % loop.size()]) - origin;
+    area += 0.5 * a.cross(b);
+    length += (b - a).norm();
+  }
+  return length > 0 ? 4.0 * area.norm() / length : 0.0;
+}
+
 HandleStrips ShortHandleStrips(const TriMesh& tri, const std::vector<double>& max_loop, int genus,
-                               const std::vector<uint8_t>& near) {
+                               const std::vector<uint8_t>& near,
+                               const std::vector<double>& max_width) {
   HandleStrips out;
   out.cut.assign(tri.n_faces(), 0);
   if (genus <= 0 || tri.n_faces() == 0) return out;
@@ -171,6 +189,17 @@ HandleStrips ShortHandleStrips(const TriMesh& tri, const std::vector<double>& ma
     // A loop through a cut is left for the next round; one lying mostly on a
     // loop that separates is that loop slid along the surface.
     if (on_cut > 0 || 2 * on_separating >= static_cast<int>(loop.vertices.size())) continue;
+    if (!max_width.empty()) {
+      double mean_loop = 0.0, mean_width = 0.0;
+      for (const int v : loop.vertices) {
+        mean_loop += max_loop[v];
+        mean_width += max_width[v];
+      }
+      const double n = static_cast<double>(loop.vertices.size());
+      if (loop.length > 0.5 * mean_loop / n && LoopWidth(tri, loop.vertices) > mean_width / n) {
+        continue;
+      }
+    }
     // The loop's star, grown by a ring while it is not an annulus (a loop
     // of a few edges through a tunnel as short as itself).
     strip = StarOf(g, loop.vertices);

@@ -39,8 +39,23 @@ struct HandleStrips {
 // Strips do not share a vertex. With `near` (one per vertex) not empty, only
 // loops within max_loop of a flagged vertex are looked for (the faces a
 // previous round changed).
+//
+// With `max_width` (one per vertex, model units) not empty, a loop found is
+// a candidate only when it is no longer than half its vertices' mean
+// max_loop or its width (LoopWidth) is at most their mean max_width: a flat
+// tunnel between two sheets a noise band apart (a slit) has a loop long for
+// its width, and the points no more show a hole that narrow than a round
+// one.
 HandleStrips ShortHandleStrips(const TriMesh& tri, const std::vector<double>& max_loop, int genus,
-                               const std::vector<uint8_t>& near = {});
+                               const std::vector<uint8_t>& near = {},
+                               const std::vector<double>& max_width = {});
+
+// 4 A / L of the closed polygon `loop` of `tri`'s vertices: A the norm of
+// its vector area, L its length; 0 if L is 0. For a flat loop round a
+// circle, or any polygon with an inscribed circle touching every side, it is
+// that circle's diameter; for a slit (two long sides a gap apart) about
+// twice the gap. So it never reads a hole narrower than it is.
+double LoopWidth(const TriMesh& tri, const std::vector<int>& loop);
 
 }  // namespace meshseg::reconstruct_internal
 

@@ -15,7 +15,8 @@
 namespace meshseg::reconstruct_internal {
 
 std::vector<double> MaxHandleLoops(const TriMesh& tri, const std::vector<Eigen::Vector3d>& points,
-                                   const mesh_internal::PointIndex& index, double handle_spacings) {
+                                   const mesh_internal::PointIndex& index, double handle_spacings,
+                                   double min_spacing) {
   std::vector<double> max_loop(tri.n_vertices(), 0.0);
   tbb::parallel_for(tbb::blocked_range<size_t>(0, tri.n_vertices()), [&](const auto& range) {
     std::vector<uint32_t> near;
@@ -23,7 +24,8 @@ std::vector<double> MaxHandleLoops(const TriMesh& tri, const std::vector<Eigen::
     for (size_t i = range.begin(); i != range.end(); ++i) {
       const Eigen::Vector3d& p =
           points[index.Closest(ToEigen(tri.point(TriMesh::VertexHandle(static_cast<int>(i)))))];
-      max_loop[i] = M_PI * handle_spacings * SpacingAtPoint(p, index, &near, &dist2);
+      max_loop[i] =
+          M_PI * handle_spacings * std::max(min_spacing, SpacingAtPoint(p, index, &near, &dist2));
     }
   });
   return max_loop;
@@ -35,11 +37,23 @@ absl::Status CutUnsupportedHandles(const std::vector<Eigen::Vector3d>& points,
                                    std::vector<uint8_t>* filled, ReconstructStats* stats) {
   // After the first round, only loops near the patches of the last one.
   std::vector<uint8_t> near;
+  // The spacing the refined mesh follows (refine.h); 0 without refinement.
+  const double mesh_spacing = params.refine_edge_length > 0
+                                  ? stats->refine_edge_length / params.refine_edge_length
+                                  : 0.0;
   for (int round = 0; round < kHandleRounds; ++round) {
     const int genus = Genus(mesh->tri);
     if (genus <= 0) break;
-    const HandleStrips strips = ShortHandleStrips(
-        mesh->tri, MaxHandleLoops(mesh->tri, points, index, params.handle_spacings), genus, near);
+    // Round holes up to handle_spacings × s across have loops up to π times
+    // that; loops up to twice as long are looked at for slits as narrow.
+    std::vector<double> max_loop =
+        MaxHandleLoops(mesh->tri, points, index, params.handle_spacings, mesh_spacing);
+    std::vector<double> max_width(max_loop.size());
+    for (size_t v = 0; v < max_loop.size(); ++v) {
+      max_width[v] = max_loop[v] / M_PI;
+      max_loop[v] *= 2.0;
+    }
+    const HandleStrips strips = ShortHandleStrips(mesh->tri, max_loop, genus, near, max_width);
     if (strips.cut_count == 0) break;
     std::vector<uint8_t> supported(strips.cut.size());
     for (size_t f = 0; f < supported.size(); ++f) supported[f] = !strips.cut[f];

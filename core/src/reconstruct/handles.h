@@ -6,7 +6,12 @@
 // lies within about s of a sample, so a hole or a tube's waist no wider than
 // 2 s looks like the gaps between samples; the points do not show it, and it
 // is not a feature of the sampled surface (Guskov & Wood 2001;
-// handle_loops.h). The
+// handle_loops.h). A slit between two sheets has a loop long for the hole it
+// bounds; loops up to twice that length are cut when their width (4 A / L,
+// handle_strips.h) is within handle_spacings × s. Where the refined mesh is
+// coarser than the points (its edge raised by the face budget, refine.h), s
+// is at least the spacing the mesh follows (its edge over
+// refine_edge_length): the output resolves no finer hole than that. The
 // strip of faces around each such loop is removed and the two holes it
 // leaves closed by minimal patches (close_unsupported.h), flagged as filled.
 #ifndef MESHSEG_RECONSTRUCT_HANDLES_H_
@@ -29,9 +34,11 @@ namespace meshseg::reconstruct_internal {
 inline constexpr int kHandleRounds = 8;
 
 // The longest loop cut at each vertex of `tri`, model units: π ×
-// `handle_spacings` × the local spacing of the input point nearest to it.
+// `handle_spacings` × the local spacing of the input point nearest to it,
+// or × `min_spacing` where that is larger.
 std::vector<double> MaxHandleLoops(const TriMesh& tri, const std::vector<Eigen::Vector3d>& points,
-                                   const mesh_internal::PointIndex& index, double handle_spacings);
+                                   const mesh_internal::PointIndex& index, double handle_spacings,
+                                   double min_spacing = 0.0);
 
 // Cuts the unsupported handles of `*mesh` (closed, or open with
 // params.leave_unsupported_open) as above and closes (or, with

@@ -239,7 +239,10 @@ absl::StatusOr<Reconstruction> Reconstruct(const PointCloud& cloud, const Recons
   const std::vector<uint8_t> by_sign = SignLabels(tets, f_at);
   std::vector<uint8_t> inside = by_sign;
   if (params.use_graph_cut) {
-    MESHSEG_ASSIGN_OR_RETURN(inside, GraphCutLabels(tets, position, f_at, params.graph_cut_k, ctx));
+    // The cut decides only where the points leave the side open (graph_cut.h).
+    const std::vector<uint8_t> resolved = ResolvedInside(tets, f_at, sparse, fit_input.epsilon);
+    MESHSEG_ASSIGN_OR_RETURN(
+        inside, GraphCutLabels(tets, position, f_at, params.graph_cut_k, resolved, ctx));
   }
   for (size_t v = 0; v < inside.size(); ++v) stats.relabelled_count += inside[v] != by_sign[v];
   ctx.Progress(kStage, 0.75);

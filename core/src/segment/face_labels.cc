@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <map>
+#include <utility>
 
 #include <Eigen/Geometry>
 #include <tbb/blocked_range.h>
@@ -38,29 +40,74 @@ struct Pieces {
   std::vector<std::size_t> size;  // faces per piece
 };
 
+// Root of f's tree. Trees only hang a root under a smaller root, so a
+// tree's root is its smallest face; the walk halves the path it takes (each
+// face it passes then points at an ancestor, still in the same tree).
+int Root(std::vector<std::atomic<int>>& parent, int f) {
+  while (true) {
+    const int p = parent[f].load(std::memory_order_relaxed);
+    if (p == f) return f;
+    const int up = parent[p].load(std::memory_order_relaxed);
+    if (up != p) parent[f].store(up, std::memory_order_relaxed);
+    f = up;
+  }
+}
+
+// Joins the trees of faces a and b: the larger root goes under the smaller
+// (retried if another join moved it first).
+void Join(std::vector<std::atomic<int>>& parent, int a, int b) {
+  while (true) {
+    a = Root(parent, a);
+    b = Root(parent, b);
+    if (a == b) return;
+    if (a > b) std::swap(a, b);
+    int expected = b;
+    if (parent[b].compare_exchange_strong(expected, a)) return;
+  }
+}
+
+// The pieces are the components of the graph of equally labelled
+// neighbours, found with a concurrent union-find (each edge joined once, side
+// by side). Every component's root is its smallest face, whatever order the
+// joins ran in, so numbering the roots in face order gives each piece the id
+// a search seeded in face order gives it.
 Pieces FindPieces(const FaceNeighbors& adjacent, const std::vector<int>& labels) {
-  Pieces p;
-  p.of_face.assign(labels.size(), -1);
-  std::vector<int> stack;
-  for (std::size_t seed = 0; seed < labels.size(); ++seed) {
-    if (labels[seed] < 0 || p.of_face[seed] >= 0) continue;
-    const int id = static_cast<int>(p.label.size());
-    p.label.push_back(labels[seed]);
-    p.size.push_back(0);
-    p.of_face[seed] = id;
-    stack.assign(1, static_cast<int>(seed));
-    while (!stack.empty()) {
-      const int f = stack.back();
-      stack.pop_back();
-      ++p.size[id];
+  const int nf = static_cast<int>(labels.size());
+  std::vector<std::atomic<int>> parent(nf);
+  tbb::parallel_for(tbb::blocked_range<int>(0, nf, 8192), [&](const tbb::blocked_range<int>& r) {
+    for (int f = r.begin(); f < r.end(); ++f) parent[f].store(f, std::memory_order_relaxed);
+  });
+  tbb::parallel_for(tbb::blocked_range<int>(0, nf, 4096), [&](const tbb::blocked_range<int>& r) {
+    for (int f = r.begin(); f < r.end(); ++f) {
+      if (labels[f] < 0) continue;
       for (const int g : adjacent[f]) {
         if (g < 0) break;
-        if (p.of_face[g] < 0 && labels[g] == labels[seed]) {
-          p.of_face[g] = id;
-          stack.push_back(g);
-        }
+        if (g > f && labels[g] == labels[f]) Join(parent, f, g);
       }
     }
+  });
+  Pieces p;
+  p.of_face.assign(nf, -1);
+  tbb::parallel_for(tbb::blocked_range<int>(0, nf, 8192), [&](const tbb::blocked_range<int>& r) {
+    for (int f = r.begin(); f < r.end(); ++f) {
+      if (labels[f] >= 0) p.of_face[f] = Root(parent, f);
+    }
+  });
+  // Roots numbered in face order (the number kept in the root's parent
+  // entry, no longer needed); then each face takes its root's number.
+  for (int f = 0; f < nf; ++f) {
+    if (p.of_face[f] != f) continue;
+    parent[f].store(static_cast<int>(p.label.size()), std::memory_order_relaxed);
+    p.label.push_back(labels[f]);
+  }
+  tbb::parallel_for(tbb::blocked_range<int>(0, nf, 8192), [&](const tbb::blocked_range<int>& r) {
+    for (int f = r.begin(); f < r.end(); ++f) {
+      if (p.of_face[f] >= 0) p.of_face[f] = parent[p.of_face[f]].load(std::memory_order_relaxed);
+    }
+  });
+  p.size.assign(p.label.size(), 0);
+  for (int f = 0; f < nf; ++f) {
+    if (p.of_face[f] >= 0) ++p.size[p.of_face[f]];
   }
   return p;
 }

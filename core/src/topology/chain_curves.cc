@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cassert>
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 namespace meshseg::topology_internal {
 namespace {
 
@@ -27,13 +30,17 @@ bool IsForward(const TriMesh& mesh, std::span<const int> labels, HalfedgeHandle 
 // a boundary edge count other than 0 and 2.
 bool IsCorner(const TriMesh& mesh, std::span<const int> labels, VertexHandle v) {
   int boundary_edges = 0;
-  std::vector<int> seen;
+  int seen[3];  // the first three distinct labels; a third one decides
+  int seen_count = 0;
   for (HalfedgeHandle h : mesh.voh_range(v)) {
     const int l = LeftLabel(mesh, labels, h);
-    if (std::find(seen.begin(), seen.end(), l) == seen.end()) seen.push_back(l);
+    if (std::find(seen, seen + seen_count, l) == seen + seen_count) {
+      if (seen_count == 2) return true;
+      seen[seen_count++] = l;
+    }
     if (IsBoundaryHalfedge(mesh, labels, h)) ++boundary_edges;
   }
-  return seen.size() >= 3 || (boundary_edges != 0 && boundary_edges != 2);
+  return boundary_edges != 0 && boundary_edges != 2;
 }
 
 // The unassigned forward halfedge leaving v with the labels of `in`.
@@ -51,6 +58,15 @@ HalfedgeHandle ContinueFrom(const TriMesh& mesh, std::span<const int> labels,
   return HalfedgeHandle();
 }
 
+// True for an item that mesh.vertices() / mesh.halfedges() pass over (deleted
+// or hidden, where the mesh keeps that status).
+bool Skipped(const TriMesh& mesh, VertexHandle v) {
+  return mesh.has_vertex_status() && (mesh.status(v).deleted() || mesh.status(v).hidden());
+}
+bool Skipped(const TriMesh& mesh, HalfedgeHandle h) {
+  return mesh.has_halfedge_status() && (mesh.status(h).deleted() || mesh.status(h).hidden());
+}
+
 }  // namespace
 
 int LeftLabel(const TriMesh& mesh, std::span<const int> face_labels, HalfedgeHandle h) {
@@ -66,12 +82,30 @@ bool IsBoundaryHalfedge(const TriMesh& mesh, std::span<const int> face_labels, H
 CurveChains ChainCurves(const TriMesh& mesh, std::span<const int> face_labels) {
   CurveChains out;
   out.halfedge_curve.assign(mesh.n_halfedges(), -1);
-  std::vector<int> corner_of_vertex(mesh.n_vertices(), -1);
-  for (VertexHandle v : mesh.vertices()) {
-    if (IsCorner(mesh, face_labels, v)) {
-      corner_of_vertex[v.idx()] = static_cast<int>(out.corner_vertices.size());
-      out.corner_vertices.push_back(v.idx());
-    }
+  // Corners and forward halfedges depend only on the labels: found side by
+  // side, then numbered and walked in index order.
+  const int vertex_count = static_cast<int>(mesh.n_vertices());
+  const int halfedge_count = static_cast<int>(mesh.n_halfedges());
+  std::vector<int> corner_of_vertex(vertex_count, -1);
+  std::vector<char> forward(halfedge_count, 0);
+  tbb::parallel_for(tbb::blocked_range<int>(0, vertex_count, 4096),
+                    [&](const tbb::blocked_range<int>& r) {
+                      for (int v = r.begin(); v < r.end(); ++v) {
+                        const VertexHandle vh(v);
+                        corner_of_vertex[v] =
+                            !Skipped(mesh, vh) && IsCorner(mesh, face_labels, vh) ? 0 : -1;
+                      }
+                    });
+  tbb::parallel_for(tbb::blocked_range<int>(0, halfedge_count, 8192),
+                    [&](const tbb::blocked_range<int>& r) {
+                      for (int h = r.begin(); h < r.end(); ++h) {
+                        forward[h] = IsForward(mesh, face_labels, HalfedgeHandle(h));
+                      }
+                    });
+  for (int v = 0; v < vertex_count; ++v) {
+    if (corner_of_vertex[v] < 0) continue;
+    corner_of_vertex[v] = static_cast<int>(out.corner_vertices.size());
+    out.corner_vertices.push_back(v);
   }
   // Walks from `start` until a corner or back to `start`.
   auto trace = [&](HalfedgeHandle start) {
@@ -100,12 +134,13 @@ CurveChains ChainCurves(const TriMesh& mesh, std::span<const int> face_labels) {
   // Open curves (and closed ones through a corner) start at corners.
   for (const int v : out.corner_vertices) {
     for (HalfedgeHandle h : mesh.voh_range(VertexHandle(v))) {
-      if (out.halfedge_curve[h.idx()] < 0 && IsForward(mesh, face_labels, h)) trace(h);
+      if (out.halfedge_curve[h.idx()] < 0 && forward[h.idx()]) trace(h);
     }
   }
   // What is left are closed curves without corners.
-  for (HalfedgeHandle h : mesh.halfedges()) {
-    if (out.halfedge_curve[h.idx()] < 0 && IsForward(mesh, face_labels, h)) trace(h);
+  for (int h = 0; h < halfedge_count; ++h) {
+    const HalfedgeHandle hh(h);
+    if (out.halfedge_curve[h] < 0 && forward[h] && !Skipped(mesh, hh)) trace(hh);
   }
   return out;
 }

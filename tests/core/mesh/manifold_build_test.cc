@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <map>
+#include <utility>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -94,6 +96,42 @@ void ExpectSameMesh(const Soup& s) {
     EXPECT_EQ(fast.prev_halfedge_handle(fast.next_halfedge_handle(h)), h);
     EXPECT_EQ(fast.from_vertex_handle(fast.next_halfedge_handle(h)), fast.to_vertex_handle(h));
     EXPECT_EQ(fast.from_vertex_handle(h), fast.to_vertex_handle(fast.opposite_halfedge_handle(h)));
+  }
+}
+
+// The halfedge index each halfedge 3t+k (corner k -> k+1 of triangle t) must
+// get: edges numbered in order of the halfedge that reaches them first, that
+// halfedge 2e, its twin 2e+1 (what add_face() in triangle order gives).
+std::vector<int> ExpectedHalfedgeIndices(const Soup& s) {
+  std::map<std::pair<int, int>, int> edge_of;  // undirected edge -> number
+  std::vector<int> out;
+  for (const auto& t : s.triangles) {
+    for (int k = 0; k < 3; ++k) {
+      const int a = t[k], b = t[(k + 1) % 3];
+      const auto [it, inserted] =
+          edge_of.try_emplace({std::min(a, b), std::max(a, b)}, static_cast<int>(edge_of.size()));
+      out.push_back(2 * it->second + (inserted ? 0 : 1));
+    }
+  }
+  return out;
+}
+
+TEST(BuildManifold, NumbersEdgesAsAddFaceOnALargeGridWithHoles) {
+  // Large enough that the edge numbering and linking run in several blocks.
+  const Soup s = Grid(130, {5, 400, 401, 531, 9000, 16000});
+  ExpectSameMesh(s);
+  TriMesh m;
+  AddVertices(s, &m);
+  ASSERT_TRUE(BuildManifold(s.triangles, &m));
+  const std::vector<int> expected = ExpectedHalfedgeIndices(s);
+  for (int t = 0; t < static_cast<int>(s.triangles.size()); ++t) {
+    for (const auto h : m.fh_range(TriMesh::FaceHandle(t))) {
+      const int from = m.from_vertex_handle(h).idx();
+      const int k = static_cast<int>(std::find(s.triangles[t].begin(), s.triangles[t].end(), from) -
+                                     s.triangles[t].begin());
+      ASSERT_LT(k, 3);
+      EXPECT_EQ(h.idx(), expected[3 * t + k]) << "triangle " << t << " corner " << k;
+    }
   }
 }
 

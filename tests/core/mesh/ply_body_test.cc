@@ -3,6 +3,14 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "absl/strings/str_cat.h"
+
 #include "temp_file.h"
 
 namespace meshseg::mesh_internal {
@@ -88,6 +96,44 @@ TEST(ReadPlyData, RejectsListLengthsThatAreNotCountsTheFileCanHold) {
   EXPECT_THAT(testing_files::Message(data.status()),
               ::testing::HasSubstr("list length 4000000000 of values is not a whole number of "
                                    "values the 0 bytes left can hold"));
+}
+
+// A binary body is read in one pass per element; a value that fails a check
+// is still reported at its own byte offset, and earlier elements stay read.
+TEST(ReadPlyData, NamesTheByteOffsetOfABadBinaryValue) {
+  const auto file = [](int32_t third_corner, double z) {
+    std::string bytes =
+        "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty double x\n"
+        "property double y\nproperty double z\nelement face 2\n"
+        "property list uchar int vertex_indices\nend_header\n";
+    const std::size_t body = bytes.size();
+    for (int v = 0; v < 3; ++v) {
+      for (int c = 0; c < 3; ++c) testing_files::AppendRaw<double>(bytes, v == 2 && c == 2 ? z : v);
+    }
+    for (const int32_t last : {2, third_corner}) {
+      testing_files::AppendRaw<uint8_t>(bytes, 3);
+      for (const int32_t corner : {0, 1, last}) testing_files::AppendRaw<int32_t>(bytes, corner);
+    }
+    return std::make_pair(bytes, body);
+  };
+  const auto [good, body] = file(2, 1.0);
+  const absl::StatusOr<PlyData> data = ReadPlyData(good, kSrc, 100);
+  ASSERT_TRUE(data.ok()) << data.status();
+  EXPECT_EQ(data->vertices[2], Eigen::Vector3d(2, 2, 1));
+  EXPECT_EQ(std::vector<int>(data->corners.begin(), data->corners.end()),
+            std::vector<int>({0, 1, 2, 0, 1, 2}));
+
+  // The last corner of face 1 (13 bytes per face after 72 of vertices), and
+  // the z of vertex 2 (read up to its end).
+  const absl::StatusOr<PlyData> bad_index = ReadPlyData(file(3, 1.0).first, kSrc, 100);
+  EXPECT_THAT(testing_files::Message(bad_index.status()),
+              ::testing::HasSubstr(absl::StrCat("byte offset ", body + 72 + 13 + 13,
+                                                ": face 1: vertex index 3 out of range [0, 3)")));
+  const absl::StatusOr<PlyData> bad_z =
+      ReadPlyData(file(2, std::numeric_limits<double>::infinity()).first, kSrc, 100);
+  EXPECT_THAT(testing_files::Message(bad_z.status()),
+              ::testing::HasSubstr(absl::StrCat("byte offset ", body + 72,
+                                                ": vertex 2: non-finite coordinate inf")));
 }
 
 // Found by fuzz_ply_binary (fuzz/regressions/ply_binary/): a second vertex

@@ -30,7 +30,7 @@ Field SphereField() {
 TEST(GraphCutLabels, AgreeWithTheSignOfACleanFieldAwayFromTheSurface) {
   constexpr double kGridStep = 0.5;
   const Field field = SphereField();
-  const auto cut = GraphCutLabels(field.tets, field.position, field.f, 10.0, {});
+  const auto cut = GraphCutLabels(field.tets, field.position, field.f, 10.0, {}, {});
   ASSERT_TRUE(cut.ok()) << cut.status();
   const auto sign = SignLabels(field.tets, field.f);
   int inside = 0;
@@ -54,7 +54,7 @@ TEST(GraphCutLabels, RelabelAFalseInsideVertexFarFromTheSurface) {
   field.f[bad] = 0.1;
   const auto sign = SignLabels(field.tets, field.f);
   EXPECT_EQ(sign[bad], 1);
-  const auto cut = GraphCutLabels(field.tets, field.position, field.f, 10.0, {});
+  const auto cut = GraphCutLabels(field.tets, field.position, field.f, 10.0, {}, {});
   ASSERT_TRUE(cut.ok()) << cut.status();
   EXPECT_EQ((*cut)[bad], 0);
 }
@@ -62,13 +62,82 @@ TEST(GraphCutLabels, RelabelAFalseInsideVertexFarFromTheSurface) {
 TEST(GraphCutLabels, HullVerticesAreOutside) {
   Field field = SphereField();
   for (double& f : field.f) f = 1.0;  // everything claims to be inside
-  const auto cut = GraphCutLabels(field.tets, field.position, field.f, 10.0, {});
+  const auto cut = GraphCutLabels(field.tets, field.position, field.f, 10.0, {}, {});
   ASSERT_TRUE(cut.ok()) << cut.status();
   for (size_t v = 0; v < cut->size(); ++v) {
     if (field.tets.on_hull[v]) {
       EXPECT_EQ((*cut)[v], 0);
     }
   }
+}
+
+// A plate one grid layer thick (z = 0, f = 0.2 > ε: each vertex lies on the
+// inside of a well-sampled fit, farther than the fit's error) with
+// everything else outside (f = −1), and one lone inside vertex away from it.
+// The cut alone prices a thin inside region by its area against the small
+// |f| of its vertices and drops it: the seen plate would vanish. Tied by
+// ResolvedInside, the plate stays; the lone vertex, not joined to the
+// largest resolved region (a bubble of stray points), is still dropped.
+TEST(GraphCutLabels, AThinPlateThePointsResolveStaysInside) {
+  constexpr double kEpsilon = 0.1;
+  Field field = SphereField();
+  std::vector<int> plate;
+  int lone = -1;
+  for (size_t v = 0; v < field.position.size(); ++v) {
+    const Eigen::Vector3d& p = field.position[v];
+    field.f[v] = -1.0;
+    if (field.tets.on_hull[v]) continue;
+    if (std::abs(p.z()) < 1e-9) {
+      field.f[v] = 0.2;
+      plate.push_back(static_cast<int>(v));
+    } else if ((p - Eigen::Vector3d(1.0, 1.0, 1.0)).norm() < 1e-9) {
+      field.f[v] = 0.2;
+      lone = static_cast<int>(v);
+    }
+  }
+  ASSERT_EQ(plate.size(), 49u);  // the 7 × 7 interior nodes of the layer
+  ASSERT_GE(lone, 0);
+  const std::vector<uint8_t> no_points(field.f.size(), 0);  // no support is sparse
+  const std::vector<uint8_t> resolved =
+      ResolvedInside(field.tets, field.f, no_points, kEpsilon);
+  for (const int v : plate) EXPECT_EQ(resolved[v], 1) << v;
+  EXPECT_EQ(resolved[lone], 0);
+
+  const auto plain = GraphCutLabels(field.tets, field.position, field.f, 10.0, {}, {});
+  ASSERT_TRUE(plain.ok()) << plain.status();
+  int kept_plain = 0;
+  for (const int v : plate) kept_plain += (*plain)[v];
+  EXPECT_LT(kept_plain, 49) << "the plain cut keeps the thin plate: the test shows nothing";
+
+  const auto cut = GraphCutLabels(field.tets, field.position, field.f, 10.0, resolved, {});
+  ASSERT_TRUE(cut.ok()) << cut.status();
+  for (const int v : plate) EXPECT_EQ((*cut)[v], 1) << v;
+  EXPECT_EQ((*cut)[lone], 0);
+}
+
+// A sparse support's vertex (few points) or one within ε of its fit's plane
+// is left to the cut.
+TEST(ResolvedInside, LeavesSparseAndNearSurfaceVerticesToTheCut) {
+  Field field = SphereField();
+  std::vector<uint8_t> sparse(field.f.size(), 0);
+  int centre = -1;
+  for (size_t v = 0; v < field.position.size(); ++v) {
+    if (field.position[v].norm() < 1e-9) centre = static_cast<int>(v);
+  }
+  ASSERT_GE(centre, 0);
+  sparse[centre] = 1;  // f = 1 there
+  const std::vector<uint8_t> resolved = ResolvedInside(field.tets, field.f, sparse, 0.1);
+  EXPECT_EQ(resolved[centre], 0);
+  int inside = 0;
+  for (size_t v = 0; v < field.f.size(); ++v) {
+    if (field.f[v] < 0.1 || field.tets.on_hull[v]) {
+      EXPECT_EQ(resolved[v], 0) << v;
+    } else if (static_cast<int>(v) != centre) {
+      EXPECT_EQ(resolved[v], 1) << v;  // the 26 nodes round the centre, joined
+      ++inside;
+    }
+  }
+  EXPECT_EQ(inside, 26);
 }
 
 }  // namespace

@@ -49,6 +49,56 @@ TEST(ShortHandleStrips, CutsTheShortNonSeparatingLoopOfAThinTorus) {
   EXPECT_EQ(Genus(closed->mesh.tri), 0);
 }
 
+// A ring whose tube is flattened into a slit (ellipse, semi-axes 0.2 and
+// 0.01): its meridian, about 0.8 long, is longer than the round-hole bound
+// (0.47 for holes 0.15 across) but only about π × 0.01 wide. Looked for up
+// to twice the bound, it is cut for its width; a round tube with a meridian
+// as long is kept.
+TEST(ShortHandleStrips, CutsASlitTunnelWhoseLoopIsLongButNarrow) {
+  constexpr double kWidth = 0.15;
+  const double round_bound = M_PI * kWidth;
+  TubeMesh slit = TorusTubeMesh(1.0, 0.2, 96, 16);
+  for (Eigen::Vector3d& v : slit.vertices) v.z() *= 0.05;
+  const Mesh flat = ToMesh(slit);
+  const int n = static_cast<int>(flat.tri.n_vertices());
+  EXPECT_EQ(ShortHandleStrips(flat.tri, std::vector<double>(n, round_bound), 1).cut_count, 0)
+      << "the round-hole bound alone already finds the slit: the test shows nothing";
+  const std::vector<double> search(n, 2 * round_bound), width(n, kWidth);
+  EXPECT_EQ(ShortHandleStrips(flat.tri, search, 1, {}, width).cut_count, 1);
+
+  // r = 0.127: a 16-gon meridian of about 0.8, like the slit's, 0.25 across.
+  const Mesh tube = ToMesh(TorusTubeMesh(1.0, 0.127, 96, 16));
+  const HandleStrips kept = ShortHandleStrips(
+      tube.tri, std::vector<double>(tube.tri.n_vertices(), 2 * round_bound), 1, {},
+      std::vector<double>(tube.tri.n_vertices(), kWidth));
+  EXPECT_GT(kept.loop_count, 0);
+  EXPECT_EQ(kept.cut_count, 0);
+}
+
+TEST(LoopWidth, IsTheDiameterOfACircleAndAboutTwiceTheGapOfASlit) {
+  TubeMesh polygons;
+  constexpr int kSides = 64;
+  for (int i = 0; i < kSides; ++i) {
+    const double t = 2 * M_PI * i / kSides;
+    polygons.vertices.push_back(Eigen::Vector3d(std::cos(t), std::sin(t), 0.0));
+  }
+  for (const Eigen::Vector3d& c : {Eigen::Vector3d(5, 0, 0), Eigen::Vector3d(5, 0.02, 0),
+                                   Eigen::Vector3d(7, 0.02, 0), Eigen::Vector3d(7, 0, 0)}) {
+    polygons.vertices.push_back(c);
+  }
+  polygons.vertices.push_back(Eigen::Vector3d::Zero());  // the circle's fan centre
+  for (int i = 0; i < kSides; ++i) polygons.triangles.push_back({i, (i + 1) % kSides, kSides + 4});
+  polygons.triangles.push_back({kSides, kSides + 1, kSides + 2});
+  polygons.triangles.push_back({kSides, kSides + 2, kSides + 3});
+  const Mesh m = ToMesh(polygons);
+  std::vector<int> circle(kSides);
+  for (int i = 0; i < kSides; ++i) circle[i] = i;
+  EXPECT_NEAR(LoopWidth(m.tri, circle), 2.0, 0.003);  // the 64-gon's: 2 cos(π/64)
+  const double slit = LoopWidth(m.tri, {kSides, kSides + 1, kSides + 2, kSides + 3});
+  EXPECT_NEAR(slit, 4 * 2 * 0.02 / (2 * 2 + 2 * 0.02), 1e-12);
+  EXPECT_LT(slit, 2.0 * 0.02);
+}
+
 TEST(ShortHandleStrips, KeepsALoopLongerThanTheBound) {
   const Mesh torus = ToMesh(ThinTorus());
   const HandleStrips s =

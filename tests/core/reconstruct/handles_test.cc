@@ -32,6 +32,10 @@ TEST(MaxHandleLoops, IsPiTimesTheDiameterInLocalSpacings) {
   std::nth_element(bound.begin(), bound.begin() + bound.size() / 2, bound.end());
   const double a = std::sqrt(4 * M_PI * M_PI * R * r / kCount);
   EXPECT_NEAR(bound[bound.size() / 2] / (M_PI * 4.0 * a), 1.0, 0.15);
+  // A mesh coarser than the points (spacing 3 a followed): that spacing counts.
+  for (const double b : MaxHandleLoops(torus.tri, points, index, 4.0, 3.0 * a)) {
+    EXPECT_GE(b, M_PI * 4.0 * 3.0 * a * (1 - 1e-12));
+  }
 }
 
 struct Cut {

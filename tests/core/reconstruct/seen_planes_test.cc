@@ -1,5 +1,6 @@
 #include "reconstruct/seen_planes.h"
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -70,6 +71,43 @@ TEST(BendOntoSeenPlanes, ThePatchOfAConcaveHoleIsLeftAsItIs) {
   const std::vector<Eigen::Vector3d> before = free;
   EXPECT_FALSE(BendOntoSeenPlanes(loop, normals, Eigen::Vector3d(0, 0, 1), &free));
   EXPECT_EQ(free, before);
+}
+
+// A loop round a long, narrow strip (x in [-5, 5], y = ±0.1) that climbs
+// one end up to z = 1: its tangent planes are the two parallel long walls
+// (the ends give none), so the hull is open along x. A free vertex of the
+// membrane lies in the loop's convex hull, so its clearance to the cap plane
+// (z = 0) is at most the loop's depth below it, 1, and no vertex moves
+// farther than that, whatever the hull's extent along x.
+TEST(BendOntoSeenPlanes, OverParallelWallsAVertexMovesNoFartherThanTheLoopsDepth) {
+  std::vector<Eigen::Vector3d> loop, normals;
+  const auto height = [](double x) { return std::max(0.0, (x - 3.0) / 2.0); };
+  for (int k = 0; k <= 40; ++k) {
+    const double x = -5.0 + 0.25 * k;
+    loop.emplace_back(x, -0.1, height(x));
+    normals.emplace_back(0, -1, 0);
+  }
+  loop.emplace_back(5.0, 0.0, 1.0);
+  normals.emplace_back(0, 0, 0);  // no tangent plane at the ends
+  for (int k = 40; k >= 0; --k) {
+    const double x = -5.0 + 0.25 * k;
+    loop.emplace_back(x, 0.1, height(x));
+    normals.emplace_back(0, 1, 0);
+  }
+  loop.emplace_back(-5.0, 0.0, 0.0);
+  normals.emplace_back(0, 0, 0);
+  std::vector<Eigen::Vector3d> free;
+  for (int k = 0; k < 19; ++k) {
+    const double x = -4.5 + 0.5 * k;
+    free.emplace_back(x, 0.05 * ((k % 3) - 1), 0.5 * height(x));
+  }
+  const std::vector<Eigen::Vector3d> before = free;
+  ASSERT_TRUE(BendOntoSeenPlanes(loop, normals, Eigen::Vector3d(0, 0, -1), &free));
+  for (size_t i = 0; i < free.size(); ++i) {
+    EXPECT_LE((free[i] - before[i]).norm(), 1.0 + 1e-9) << i;
+    EXPECT_GE(free[i].z(), -1e-9) << i;  // never out past the cap plane
+    EXPECT_LE(std::abs(free[i].y()), 0.1 + 1e-9) << i;  // nor past a wall
+  }
 }
 
 }  // namespace
