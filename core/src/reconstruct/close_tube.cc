@@ -10,8 +10,10 @@
 #include <Eigen/Core>
 #include <Eigen/Eigenvalues>
 
+#include <CGAL/Polygon_mesh_processing/compute_normal.h>
 #include <CGAL/boost/graph/Euler_operations.h>
 
+#include "reconstruct/seen_planes.h"
 #include "reconstruct/tube_rims.h"
 
 namespace meshseg::reconstruct_internal {
@@ -134,26 +136,30 @@ void TakeBack(const Added& added, Sm* sm) {
 
 // Adds the strip whose rung r joins side_a[strip[r].first] to
 // side_b[strip[r].second] (indices modulo the sides' sizes; the last pair is
-// the first again) through rows − 1 new vertices at(r, k / rows). side_a runs
-// along its border, side_b against its own. False when CGAL refuses a face.
+// the first again) through rows[r] − 1 new vertices at(r, k / rows[r]).
+// Neighbouring rungs with different rows are zipped by their parameters
+// (each step advances the rung whose next vertex lies nearer its start).
+// side_a runs along its border, side_b against its own. False when CGAL
+// refuses a face.
 bool AddStrip(const std::vector<Sm::Vertex_index>& side_a,
               const std::vector<Sm::Vertex_index>& side_b,
               const std::vector<std::pair<size_t, size_t>>& strip,
-              const std::function<Eigen::Vector3d(size_t, double)>& at, int rows, Sm* sm,
-              Added* added) {
+              const std::function<Eigen::Vector3d(size_t, double)>& at,
+              const std::vector<int>& rows, Sm* sm, Added* added) {
   const size_t m = side_a.size(), n = side_b.size(), rungs = strip.size() - 1;
-  const size_t first = added->vertices.size();
+  std::vector<size_t> first(rungs);
   for (size_t r = 0; r < rungs; ++r) {
-    for (int k = 1; k < rows; ++k) {
-      const Eigen::Vector3d p = at(r, static_cast<double>(k) / rows);
+    first[r] = added->vertices.size();
+    for (int k = 1; k < rows[r]; ++k) {
+      const Eigen::Vector3d p = at(r, static_cast<double>(k) / rows[r]);
       added->vertices.push_back(sm->add_vertex(Kernel::Point_3(p.x(), p.y(), p.z())));
     }
   }
   const auto vertex = [&](size_t r, int k) {
     r %= rungs;
     if (k == 0) return side_a[strip[r].first % m];
-    if (k == rows) return side_b[strip[r].second % n];
-    return added->vertices[first + r * (rows - 1) + k - 1];
+    if (k == rows[r]) return side_b[strip[r].second % n];
+    return added->vertices[first[r] + k - 1];
   };
   bool ok = true;
   const auto add = [&](Sm::Vertex_index u, Sm::Vertex_index v, Sm::Vertex_index w) {
@@ -166,9 +172,15 @@ bool AddStrip(const std::vector<Sm::Vertex_index>& side_a,
     }
   };
   for (size_t r = 0; r < rungs && ok; ++r) {
-    for (int k = 0; k < rows; ++k) {
-      add(vertex(r, k), vertex(r + 1, k), vertex(r + 1, k + 1));
-      add(vertex(r, k), vertex(r + 1, k + 1), vertex(r, k + 1));
+    const int here = rows[r], next = rows[(r + 1) % rungs];
+    for (int i = 0, j = 0; i < here || j < next;) {
+      if (j == next || (i < here && (i + 1) * next < (j + 1) * here)) {
+        add(vertex(r, i), vertex(r + 1, j), vertex(r, i + 1));
+        ++i;
+      } else {
+        add(vertex(r, i), vertex(r + 1, j), vertex(r + 1, j + 1));
+        ++j;
+      }
     }
   }
   return ok;
@@ -194,11 +206,60 @@ int Rows(double longest, double edge) {
   return std::clamp(static_cast<int>(std::ceil(longest / edge)), kMinRows, kMaxRows);
 }
 
+// Rows for each rung of a straight strip: its own length over the loops'
+// mean edge, so the vertices along every rung lie about one edge apart.
+std::vector<int> RowsPerRung(const std::vector<std::pair<size_t, size_t>>& strip,
+                             const std::vector<Eigen::Vector3d>& a,
+                             const std::vector<Eigen::Vector3d>& b, double edge) {
+  std::vector<int> rows;
+  for (size_t r = 0; r + 1 < strip.size(); ++r) {
+    const double length = (b[strip[r].second % b.size()] - a[strip[r].first % a.size()]).norm();
+    rows.push_back(std::clamp(static_cast<int>(std::ceil(length / edge)), 1, kMaxRows));
+  }
+  return rows;
+}
+
+// The outward normals (`sign` × the area-weighted normal of their faces) of
+// the seen surface at the vertices of `loop`, taken before a strip borders it.
+std::vector<Eigen::Vector3d> SeenNormals(const Sm& sm, const std::vector<Sm::Vertex_index>& loop,
+                                         double sign) {
+  std::vector<Eigen::Vector3d> normals;
+  for (const auto v : loop) {
+    const auto n = CGAL::Polygon_mesh_processing::compute_vertex_normal(v, sm);
+    normals.push_back(sign * Eigen::Vector3d(n.x(), n.y(), n.z()));
+  }
+  return normals;
+}
+
+// Bends the strip `faces` (free vertices `vertices`) across the face a bore
+// opens onto onto the seen planes round it (seen_planes.h), as a disc over
+// that face would be: where the outer rim climbs a wall, straight rungs from
+// it to the bore's circle cut the corner between the wall and the face. The
+// hull is that of the outer rim `loop` (seen normals `normals`) alone: its
+// loop is the convex one; the bore's wall is concave and no face of it.
+void BendFace(const std::vector<Eigen::Vector3d>& loop, const std::vector<Eigen::Vector3d>& normals,
+              double sign, const std::vector<Sm::Face_index>& faces,
+              const std::vector<Sm::Vertex_index>& vertices, Sm* sm) {
+  Eigen::Vector3d patch_normal = Eigen::Vector3d::Zero();
+  for (const auto f : faces) {
+    const auto h = sm->halfedge(f);
+    const Eigen::Vector3d a = At(*sm, sm->source(h)), b = At(*sm, sm->target(h));
+    patch_normal += sign * (b - a).cross(At(*sm, sm->target(sm->next(h))) - a);
+  }
+  std::vector<Eigen::Vector3d> free_vertices;
+  for (const auto v : vertices) free_vertices.push_back(At(*sm, v));
+  if (!BendOntoSeenPlanes(loop, normals, patch_normal, &free_vertices)) return;
+  for (size_t i = 0; i < vertices.size(); ++i) {
+    sm->point(vertices[i]) =
+        Kernel::Point_3(free_vertices[i].x(), free_vertices[i].y(), free_vertices[i].z());
+  }
+}
+
 // The annulus between a bore's rim and the rim round the face it opens onto,
 // both seen as straight walls (close_tube.h, the split at the cap): the
 // bore's wall run on along its axis to the cap plane, and the strip of
 // straight rungs between the outer rim and the bore's circle on that plane.
-bool SplitAtCap(const Rim& rim_a, const Rim& rim_b, Sm* sm) {
+bool SplitAtCap(const Rim& rim_a, const Rim& rim_b, double sign, bool bend, Sm* sm) {
   const std::vector<Eigen::Vector3d> pa = Points(*sm, rim_a.loop), pb = Points(*sm, rim_b.loop);
   const double edge = MeanEdge(pa, pb);
   const bool a_is_bore = Perimeter(pa) < Perimeter(pb);
@@ -263,6 +324,7 @@ bool SplitAtCap(const Rim& rim_a, const Rim& rim_b, Sm* sm) {
     foot.pop_back();
   }
   if (foot.size() < 3) return false;
+  const std::vector<Eigen::Vector3d> outer_normals = SeenNormals(*sm, outer.loop, sign);
   Added added;
   std::vector<Sm::Vertex_index> feet;
   for (const Eigen::Vector3d& p : foot) {
@@ -270,13 +332,12 @@ bool SplitAtCap(const Rim& rim_a, const Rim& rim_b, Sm* sm) {
     added.vertices.push_back(feet.back());
   }
   const std::vector<std::pair<size_t, size_t>> down = ShortestStrip(pbore, foot);
-  double run = 0.0;
-  for (const auto& [i, j] : down) run = std::max(run, (foot[j % foot.size()] - pbore[i % n]).norm());
   const auto on_wall = [&](size_t r, double t) {
     const auto [i, j] = down[r];
     return Eigen::Vector3d(pbore[i % n] + t * (foot[j % foot.size()] - pbore[i % n]));
   };
-  bool ok = AddStrip(bore.loop, feet, down, on_wall, Rows(run, edge), sm, &added);
+  bool ok = AddStrip(bore.loop, feet, down, on_wall, RowsPerRung(down, pbore, foot, edge), sm,
+                     &added);
   // The face the bore opens onto: the outer rim along its border, the
   // bore's circle against the tube's new border (which runs as the bore's).
   std::vector<Sm::Vertex_index> inner(feet.rbegin(), feet.rend());
@@ -288,23 +349,31 @@ bool SplitAtCap(const Rim& rim_a, const Rim& rim_b, Sm* sm) {
   std::rotate(inner.begin(), inner.begin() + first, inner.end());
   std::rotate(pinner.begin(), pinner.begin() + first, pinner.end());
   const std::vector<std::pair<size_t, size_t>> strip = ShortestStrip(pouter, pinner);
-  double longest = 0.0;
-  for (const auto& [i, j] : strip) {
-    longest = std::max(longest, (pinner[j % pinner.size()] - pouter[i % pouter.size()]).norm());
-  }
   const auto on_face = [&](size_t r, double t) {
     const auto [i, j] = strip[r];
     const Eigen::Vector3d& p = pouter[i % pouter.size()];
     return Eigen::Vector3d(p + t * (pinner[j % pinner.size()] - p));
   };
-  ok = ok && AddStrip(outer.loop, inner, strip, on_face, Rows(longest, edge), sm, &added);
-  if (!ok) TakeBack(added, sm);
-  return ok;
+  const size_t face_faces = added.faces.size(), face_vertices = added.vertices.size();
+  ok = ok && AddStrip(outer.loop, inner, strip, on_face, RowsPerRung(strip, pouter, pinner, edge),
+                      sm, &added);
+  if (!ok) {
+    TakeBack(added, sm);
+    return false;
+  }
+  if (bend) {
+    BendFace(pouter, outer_normals, sign,
+             std::vector<Sm::Face_index>(added.faces.begin() + face_faces, added.faces.end()),
+             std::vector<Sm::Vertex_index>(added.vertices.begin() + face_vertices,
+                                           added.vertices.end()),
+             sm);
+  }
+  return true;
 }
 
 }  // namespace
 
-bool CloseTube(HoleMesh::Halfedge_index a, HoleMesh::Halfedge_index b, double sign,
+bool CloseTube(HoleMesh::Halfedge_index a, HoleMesh::Halfedge_index b, double sign, bool bend,
                HoleMesh* sm) {
   const Rim rim_a = RimOf(*sm, a, sign);
   Rim rim_b = RimOf(*sm, b, sign);
@@ -360,14 +429,14 @@ bool CloseTube(HoleMesh::Halfedge_index a, HoleMesh::Halfedge_index b, double si
             std::abs(rim_b.curvature) > kCurvatureTolerance * arc_curvature) {
           return false;
         }
-        return SplitAtCap(rim_a, rim_b_border, sm);
+        return SplitAtCap(rim_a, rim_b_border, sign, bend, sm);
       }
     }
   }
   Added added;
   const bool ok = AddStrip(
       loop_a, loop_b, strip, [&](size_t r, double t) { return rung[r].At(t); },
-      Rows(longest, edge), sm, &added);
+      std::vector<int>(rungs, Rows(longest, edge)), sm, &added);
   if (!ok) TakeBack(added, sm);
   return ok;
 }

@@ -40,7 +40,11 @@
 // vertices near it (its normal then gives the axis: the bore runs square to
 // the face). The bore's wall runs on straight along the axis to the plane (a
 // short tube), and the face is the strip of straight rungs between the
-// outer rim and the bore's circle on the plane (a disc with a hole). Rim
+// outer rim and the bore's circle on the plane (a disc with a hole), with
+// rows about a mean edge apart along each rung. Where the outer rim climbs
+// the walls round the face, those rungs cut the corner between wall and
+// face as a disc's membrane would, so the strip is bent onto the seen planes
+// of the outer rim as a disc is (seen_planes.h). Rim
 // vertices stacked along the axis share one foot, so no rung runs along
 // the wall onto another's foot (no face without area). When no seen surface
 // ends beyond the bore's rim by a mesh edge, there is no cap to reach, and
@@ -65,10 +69,11 @@ namespace meshseg::reconstruct_internal {
 // Closes the annulus between the border loops of `a` and `b` of `sm` by the
 // tube above (`sign` as for RimOf, tube_rims.h); new faces get the
 // "f:filled" property's default; straight walls are split at the cap as
-// above. Returns false and leaves `sm` as it was when the arcs do not bend
+// above, and with `bend` the strip across the cap is bent onto the seen
+// planes round it (seen_planes.h), as a hole's patch is. Returns false and leaves `sm` as it was when the arcs do not bend
 // as the seen surface does at each rim (d) and there is no cap to split at,
 // or the strip cannot be added (too long loops).
-bool CloseTube(HoleMesh::Halfedge_index a, HoleMesh::Halfedge_index b, double sign,
+bool CloseTube(HoleMesh::Halfedge_index a, HoleMesh::Halfedge_index b, double sign, bool bend,
                HoleMesh* sm);
 
 }  // namespace meshseg::reconstruct_internal
