@@ -36,19 +36,9 @@ constexpr int kMaxRows = 256;
 constexpr double kCurvatureTolerance = 0.5;
 // Below this turning angle (radians) a rung's arc is taken as straight.
 constexpr double kStraightAngle = 1e-3;
-// The cap plane lies where the seen surfaces round the face a bore opens
-// onto end farthest along the bore's axis: at most this fraction of the
-// outer rim beyond it (the noise of where the seen surface ends).
-constexpr double kCapQuantile = 0.9;
 // Feet of the bore's rim on the cap plane nearer than this fraction of the
 // loops' mean edge to the last kept one are one foot.
 constexpr double kMinFootSpacing = 0.5;
-// The outer rim's vertices within this many mean edges of the cap plane lie
-// on it (the seen surfaces end within about a spacing of the unseen face);
-// the plane is refitted to them this many times.
-constexpr double kCapBandEdges = 2.0;
-constexpr int kCapRefits = 2;
-
 Eigen::Vector3d At(const Sm& sm, Sm::Vertex_index v) {
   const auto& p = sm.point(v);
   return {p.x(), p.y(), p.z()};
@@ -282,33 +272,14 @@ bool SplitAtCap(const Rim& rim_a, const Rim& rim_b, double sign, bool bend, Sm* 
   }
   Eigen::Vector3d axis = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(scatter).eigenvectors().col(0);
   if (axis.dot(way) < 0) axis = -axis;
-  // The cap plane: where the seen surfaces round the face end farthest
-  // along the axis (kCapQuantile), refitted by least squares to the outer
-  // rim's vertices within a band of it; the bore runs square to it.
+  // The cap plane: the plane the most of the outer rim lies on, as the
+  // seen planes find it for a disc over the face (seen_planes.h); the bore
+  // runs square to it.
+  Eigen::Vector3d normal;
   double cap = 0.0;
-  for (int fit = 0; fit < kCapRefits; ++fit) {
-    std::vector<double> height;
-    for (const Eigen::Vector3d& p : pouter) height.push_back(axis.dot(p));
-    const size_t at = static_cast<size_t>(kCapQuantile * static_cast<double>(height.size() - 1));
-    std::nth_element(height.begin(), height.begin() + at, height.end());
-    cap = height[at];
-    Eigen::Vector3d mean = Eigen::Vector3d::Zero();
-    std::vector<Eigen::Vector3d> near;
-    for (const Eigen::Vector3d& p : pouter) {
-      if (std::abs(axis.dot(p) - cap) > kCapBandEdges * edge) continue;
-      near.push_back(p);
-      mean += p;
-    }
-    if (near.size() < 3) return false;
-    mean /= static_cast<double>(near.size());
-    Eigen::Matrix3d spread = Eigen::Matrix3d::Zero();
-    for (const Eigen::Vector3d& p : near) spread += (p - mean) * (p - mean).transpose();
-    Eigen::Vector3d normal = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(spread).eigenvectors().col(0);
-    if (normal.dot(axis) < 0) normal = -normal;
-    if (normal.dot(axis) < kMinLeavingCosine) return false;  // no cap square to the bore
-    axis = normal;
-    cap = axis.dot(mean);
-  }
+  if (!SeenCapPlane(pouter, axis, &normal, &cap)) return false;
+  if (normal.dot(axis) < kMinLeavingCosine) return false;  // no cap square to the bore
+  axis = normal;
   // The bore's circle on the cap plane; the cap must lie beyond its rim.
   // Rim vertices stacked along the axis (where the rim climbs the bore's
   // wall) have one foot: the first of them keeps it, the others join the

@@ -98,6 +98,15 @@ bool CapPlane(const std::vector<Eigen::Vector3d>& loop, const Eigen::Vector3d& m
 
 }  // namespace
 
+bool SeenCapPlane(const std::vector<Eigen::Vector3d>& loop, const Eigen::Vector3d& mean_normal,
+                  Eigen::Vector3d* normal, double* offset) {
+  if (loop.size() < 3 || !(mean_normal.norm() > 0)) return false;
+  double edge = 0.0;
+  for (size_t k = 0; k < loop.size(); ++k) edge += (loop[(k + 1) % loop.size()] - loop[k]).norm();
+  edge /= static_cast<double>(loop.size());
+  return CapPlane(loop, mean_normal.normalized(), kCapBandEdges * edge, normal, offset);
+}
+
 bool BendOntoSeenPlanes(const std::vector<Eigen::Vector3d>& loop,
                         const std::vector<Eigen::Vector3d>& normals,
                         const Eigen::Vector3d& patch_normal,
