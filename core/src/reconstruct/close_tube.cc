@@ -39,6 +39,7 @@ constexpr double kStraightAngle = 1e-3;
 // Feet of the bore's rim on the cap plane nearer than this fraction of the
 // loops' mean edge to the last kept one are one foot.
 constexpr double kMinFootSpacing = 0.5;
+
 Eigen::Vector3d At(const Sm& sm, Sm::Vertex_index v) {
   const auto& p = sm.point(v);
   return {p.x(), p.y(), p.z()};

@@ -34,11 +34,11 @@
 // at the face between them (ALGORITHMS.md S3): a ruled wall (cylinder,
 // prism) seen down to its rim continues straight until it meets the plane
 // of the unseen face. The shorter rim is the bore's; its axis is the
-// direction its wall's normals are square to. The cap plane is where the
-// seen surfaces round the face end farthest along that axis (a tenth of the
-// outer rim may lie beyond it), refitted by least squares to the outer rim's
-// vertices near it (its normal then gives the axis: the bore runs square to
-// the face). The bore's wall runs on straight along the axis to the plane (a
+// direction its wall's normals are square to. The cap plane is the plane the
+// most of the outer rim lies on, the one a disc over the face is bent onto
+// (seen_planes.h SeenCapPlane: consensus, then least squares; robust to the
+// rim climbing the walls), within 45° of that axis; its normal then gives
+// the axis (the bore runs square to the face). The bore's wall runs on straight along the axis to the plane (a
 // short tube), and the face is the strip of straight rungs between the
 // outer rim and the bore's circle on the plane (a disc with a hole), with
 // rows about a mean edge apart along each rung. Where the outer rim climbs
@@ -70,9 +70,10 @@ namespace meshseg::reconstruct_internal {
 // tube above (`sign` as for RimOf, tube_rims.h); new faces get the
 // "f:filled" property's default; straight walls are split at the cap as
 // above, and with `bend` the strip across the cap is bent onto the seen
-// planes round it (seen_planes.h), as a hole's patch is. Returns false and leaves `sm` as it was when the arcs do not bend
-// as the seen surface does at each rim (d) and there is no cap to split at,
-// or the strip cannot be added (too long loops).
+// planes round it (seen_planes.h), as a hole's patch is. Returns false and
+// leaves `sm` as it was when the arcs do not bend as the seen surface does
+// at each rim (d) and there is no cap to split at, or the strip cannot be
+// added (too long loops).
 bool CloseTube(HoleMesh::Halfedge_index a, HoleMesh::Halfedge_index b, double sign, bool bend,
                HoleMesh* sm);
 
