@@ -183,14 +183,17 @@ std::vector<Eigen::Vector3d> Points(const Sm& sm, const std::vector<Sm::Vertex_i
   return p;
 }
 
-double Perimeter(const std::vector<Eigen::Vector3d>& p) {
-  double sum = 0.0;
-  for (size_t k = 0; k < p.size(); ++k) sum += (p[(k + 1) % p.size()] - p[k]).norm();
-  return sum;
+double MeanEdge(const std::vector<Eigen::Vector3d>& pa, const std::vector<Eigen::Vector3d>& pb) {
+  return (LoopPerimeter(pa) + LoopPerimeter(pb)) / static_cast<double>(pa.size() + pb.size());
 }
 
-double MeanEdge(const std::vector<Eigen::Vector3d>& pa, const std::vector<Eigen::Vector3d>& pb) {
-  return (Perimeter(pa) + Perimeter(pb)) / static_cast<double>(pa.size() + pb.size());
+// The index of the point of `p` nearest `q` (the first of equals).
+size_t Nearest(const std::vector<Eigen::Vector3d>& p, const Eigen::Vector3d& q) {
+  size_t nearest = 0;
+  for (size_t j = 1; j < p.size(); ++j) {
+    if ((p[j] - q).squaredNorm() < (p[nearest] - q).squaredNorm()) nearest = j;
+  }
+  return nearest;
 }
 
 int Rows(double longest, double edge) {
@@ -253,7 +256,7 @@ void BendFace(const std::vector<Eigen::Vector3d>& loop, const std::vector<Eigen:
 bool SplitAtCap(const Rim& rim_a, const Rim& rim_b, double sign, bool bend, Sm* sm) {
   const std::vector<Eigen::Vector3d> pa = Points(*sm, rim_a.loop), pb = Points(*sm, rim_b.loop);
   const double edge = MeanEdge(pa, pb);
-  const bool a_is_bore = Perimeter(pa) < Perimeter(pb);
+  const bool a_is_bore = LoopPerimeter(pa) < LoopPerimeter(pb);
   const Rim& bore = a_is_bore ? rim_a : rim_b;
   const Rim& outer = a_is_bore ? rim_b : rim_a;
   const std::vector<Eigen::Vector3d>& pbore = a_is_bore ? pa : pb;
@@ -271,7 +274,8 @@ bool SplitAtCap(const Rim& rim_a, const Rim& rim_b, double sign, bool bend, Sm* 
     if (normal.allFinite()) scatter += normal * normal.transpose();
     way += bore.out[k];
   }
-  Eigen::Vector3d axis = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(scatter).eigenvectors().col(0);
+  Eigen::Vector3d axis =
+      Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(scatter).eigenvectors().col(0);
   if (axis.dot(way) < 0) axis = -axis;
   // The cap plane: the plane the most of the outer rim lies on, as the
   // seen planes find it for a disc over the face (seen_planes.h); the bore
@@ -314,10 +318,7 @@ bool SplitAtCap(const Rim& rim_a, const Rim& rim_b, double sign, bool bend, Sm* 
   // bore's circle against the tube's new border (which runs as the bore's).
   std::vector<Sm::Vertex_index> inner(feet.rbegin(), feet.rend());
   std::vector<Eigen::Vector3d> pinner(foot.rbegin(), foot.rend());
-  size_t first = 0;
-  for (size_t j = 1; j < pinner.size(); ++j) {
-    if ((pinner[j] - pouter[0]).squaredNorm() < (pinner[first] - pouter[0]).squaredNorm()) first = j;
-  }
+  const size_t first = Nearest(pinner, pouter[0]);
   std::rotate(inner.begin(), inner.begin() + first, inner.end());
   std::rotate(pinner.begin(), pinner.begin() + first, pinner.end());
   const std::vector<std::pair<size_t, size_t>> strip = ShortestStrip(pouter, pinner);
@@ -363,13 +364,9 @@ bool CloseTube(HoleMesh::Halfedge_index a, HoleMesh::Halfedge_index b, double si
   // starting at the vertex of b nearest a's first.
   std::reverse(loop_b.begin(), loop_b.end());
   std::reverse(out_b.begin(), out_b.end());
-  std::vector<Eigen::Vector3d> pa, pb;
-  for (const auto v : loop_a) pa.push_back(At(*sm, v));
-  for (const auto v : loop_b) pb.push_back(At(*sm, v));
-  size_t first = 0;
-  for (size_t j = 1; j < n; ++j) {
-    if ((pb[j] - pa[0]).squaredNorm() < (pb[first] - pa[0]).squaredNorm()) first = j;
-  }
+  const std::vector<Eigen::Vector3d> pa = Points(*sm, loop_a);
+  std::vector<Eigen::Vector3d> pb = Points(*sm, loop_b);
+  const size_t first = Nearest(pb, pa[0]);
   std::rotate(loop_b.begin(), loop_b.begin() + first, loop_b.end());
   std::rotate(out_b.begin(), out_b.begin() + first, out_b.end());
   std::rotate(pb.begin(), pb.begin() + first, pb.end());
@@ -392,18 +389,14 @@ bool CloseTube(HoleMesh::Halfedge_index a, HoleMesh::Halfedge_index b, double si
   }
   arc_depth /= static_cast<double>(rungs);
   arc_curvature /= static_cast<double>(rungs);
-  if (arc_depth > edge) {
-    for (const double seen : {rim_a.curvature, rim_b.curvature}) {
-      if (std::abs(seen - arc_curvature) > kCurvatureTolerance * arc_curvature) {
-        // Straight walls at both rims (flatter than the arcs by the same
-        // tolerance) run on to the face between them.
-        if (std::abs(rim_a.curvature) > kCurvatureTolerance * arc_curvature ||
-            std::abs(rim_b.curvature) > kCurvatureTolerance * arc_curvature) {
-          return false;
-        }
-        return SplitAtCap(rim_a, rim_b_border, sign, bend, sm);
-      }
-    }
+  const double tolerance = kCurvatureTolerance * arc_curvature;
+  const auto off_arcs = [&](double seen) { return std::abs(seen - arc_curvature) > tolerance; };
+  const auto curved = [&](double seen) { return std::abs(seen) > tolerance; };
+  if (arc_depth > edge && (off_arcs(rim_a.curvature) || off_arcs(rim_b.curvature))) {
+    // Straight walls at both rims (flatter than the arcs by the same
+    // tolerance) run on to the face between them.
+    if (curved(rim_a.curvature) || curved(rim_b.curvature)) return false;
+    return SplitAtCap(rim_a, rim_b_border, sign, bend, sm);
   }
   Added added;
   const bool ok = AddStrip(
