@@ -14,6 +14,10 @@
 namespace meshseg::mesh_internal {
 namespace {
 
+// Corners a face may have: a polygon with more is taken as a corrupt list
+// length, not a face.
+constexpr double kMaxFaceCorners = 1'000'000;
+
 template <typename T>
 double Read(const unsigned char* raw) {
   T value;
@@ -171,7 +175,7 @@ bool ReadBinaryElement(const PlyElement& element, const PropertyRoles& roles,
         const double n = DecodeAt(p.count_type, count_size, bytes.data() + pos, big_endian);
         pos += count_size;
         const bool corners = k == roles.corners;
-        if (corners && (n < 3 || n > 1'000'000)) return false;
+        if (corners && (n < 3 || n > kMaxFaceCorners)) return false;
         if (!(n >= 0) || n != std::floor(n) || n > static_cast<double>(bytes.size() - pos)) {
           return false;
         }
@@ -257,9 +261,10 @@ absl::Status ReadElement(const PlyElement& element, ValueReader& reader, PlyData
       if (p.is_list) {
         MESHSEG_ASSIGN_OR_RETURN(const double n, reader.Next(p.count_type, "a list length"));
         const bool corners = is_face && static_cast<int>(k) == indices;
-        if (corners && (n < 3 || n > 1'000'000)) {
+        if (corners && (n < 3 || n > kMaxFaceCorners)) {
           return reader.Error(
-              absl::StrCat("face ", i, " has ", n, " corners, expected 3 to 1000000"));
+              absl::StrCat("face ", i, " has ", n, " corners, expected 3 to ",
+                                         static_cast<int64_t>(kMaxFaceCorners)));
         }
         if (n < 0) return reader.Error(absl::StrCat("negative list length ", n));
         // A length counts the values that follow, each at least one byte

@@ -86,13 +86,11 @@ void KeepMembraneInsideItsLoop(const std::vector<Eigen::Vector3d>& loop,
                                const std::vector<HoleMesh::Vertex_index>& vertices, HoleMesh* sm) {
   if (loop.empty() || vertices.empty()) return;
   Eigen::Vector3d lo = loop[0], hi = loop[0];
-  double edge = 0.0;
-  for (size_t k = 0; k < loop.size(); ++k) {
-    lo = lo.cwiseMin(loop[k]);
-    hi = hi.cwiseMax(loop[k]);
-    edge += (loop[(k + 1) % loop.size()] - loop[k]).norm();
+  for (const Eigen::Vector3d& p : loop) {
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
   }
-  const double slack = kMembraneSlackEdges * edge / static_cast<double>(loop.size());
+  const double slack = kMembraneSlackEdges * LoopPerimeter(loop) / static_cast<double>(loop.size());
   const bool outside = std::any_of(vertices.begin(), vertices.end(), [&](Sm::Vertex_index v) {
     const Eigen::Vector3d x = ToEigen3(sm->point(v));
     return (x - x.cwiseMax(lo).cwiseMin(hi)).norm() > slack;

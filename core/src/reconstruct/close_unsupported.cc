@@ -195,7 +195,9 @@ absl::StatusOr<ClosedSurface> CloseUnsupported(const Mesh& mesh,
     std::vector<uint8_t> closed(loops.size(), 0);
     if (min_tube_rim >= 0) {
       for (const auto& [i, j] : TubeRims(tri, removed, sm, tri_vertex, loops, min_tube_rim)) {
-        if (CloseTube(loops[i], loops[j], sign, &sm)) closed[i] = closed[j] = 1;
+        if (CloseTube(loops[i], loops[j], sign, bend_onto_seen_planes, &sm)) {
+          closed[i] = closed[j] = 1;
+        }
       }
     }
     for (size_t i = 0; i < loops.size(); ++i) {

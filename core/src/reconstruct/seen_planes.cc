@@ -98,14 +98,25 @@ bool CapPlane(const std::vector<Eigen::Vector3d>& loop, const Eigen::Vector3d& m
 
 }  // namespace
 
+double LoopPerimeter(const std::vector<Eigen::Vector3d>& loop) {
+  double sum = 0.0;
+  for (size_t k = 0; k < loop.size(); ++k) sum += (loop[(k + 1) % loop.size()] - loop[k]).norm();
+  return sum;
+}
+
+bool SeenCapPlane(const std::vector<Eigen::Vector3d>& loop, const Eigen::Vector3d& mean_normal,
+                  Eigen::Vector3d* normal, double* offset) {
+  if (loop.size() < 3 || !(mean_normal.norm() > 0)) return false;
+  const double edge = LoopPerimeter(loop) / static_cast<double>(loop.size());
+  return CapPlane(loop, mean_normal.normalized(), kCapBandEdges * edge, normal, offset);
+}
+
 bool BendOntoSeenPlanes(const std::vector<Eigen::Vector3d>& loop,
                         const std::vector<Eigen::Vector3d>& normals,
                         const Eigen::Vector3d& patch_normal,
                         std::vector<Eigen::Vector3d>* free_vertices) {
   if (loop.size() < 3 || free_vertices->empty() || !(patch_normal.norm() > 0)) return false;
-  double edge = 0.0;
-  for (size_t k = 0; k < loop.size(); ++k) edge += (loop[(k + 1) % loop.size()] - loop[k]).norm();
-  edge /= static_cast<double>(loop.size());
+  const double edge = LoopPerimeter(loop) / static_cast<double>(loop.size());
   Eigen::Vector3d cap;
   double offset = 0.0;
   if (!CapPlane(loop, patch_normal.normalized(), kCapBandEdges * edge, &cap, &offset)) return false;

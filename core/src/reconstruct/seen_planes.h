@@ -54,6 +54,17 @@ bool BendOntoSeenPlanes(const std::vector<Eigen::Vector3d>& loop,
                         const Eigen::Vector3d& patch_normal,
                         std::vector<Eigen::Vector3d>* free_vertices);
 
+// The length of the closed polygon `loop` (its last vertex joined to its
+// first); over loop.size(), the loop's mean edge, the unit the hole steps
+// measure their bands and slack in.
+double LoopPerimeter(const std::vector<Eigen::Vector3d>& loop);
+
+// The cap plane of `loop` as BendOntoSeenPlanes finds it (the consensus
+// plane above, its unit normal within 45° of `mean_normal` and facing the
+// same way, and its offset along it). False when there is none.
+bool SeenCapPlane(const std::vector<Eigen::Vector3d>& loop, const Eigen::Vector3d& mean_normal,
+                  Eigen::Vector3d* normal, double* offset);
+
 }  // namespace meshseg::reconstruct_internal
 
 #endif  // MESHSEG_RECONSTRUCT_SEEN_PLANES_H_

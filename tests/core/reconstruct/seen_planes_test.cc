@@ -110,5 +110,25 @@ TEST(BendOntoSeenPlanes, OverParallelWallsAVertexMovesNoFartherThanTheLoopsDepth
   }
 }
 
+// The same loop with one side climbing its wall to z = 0.5 (a quarter of the
+// loop above the unseen bottom, tilted 5° from the axis given): the cap
+// plane is still the bottom's, z = 0 facing down, as the consensus of the
+// other three sides, not a plane tilted towards the climbing side.
+TEST(SeenCapPlane, IsThePlaneMostOfTheLoopLiesOnWhenOneSideClimbsAWall) {
+  std::vector<Eigen::Vector3d> loop, normals;
+  SquareLoop(&loop, &normals);
+  for (Eigen::Vector3d& p : loop) {
+    if (p.x() == 1.0) p.z() = 0.5;
+  }
+  Eigen::Vector3d normal;
+  double offset = 1.0;
+  const Eigen::Vector3d tilted(std::sin(5 * M_PI / 180), 0.0, -std::cos(5 * M_PI / 180));
+  ASSERT_TRUE(SeenCapPlane(loop, tilted, &normal, &offset));
+  EXPECT_NEAR(normal.z(), -1.0, 1e-9);
+  EXPECT_NEAR(offset, 0.0, 1e-9);
+  // No plane through the loop within 45° of a sideways axis.
+  EXPECT_FALSE(SeenCapPlane(loop, Eigen::Vector3d(0, 1, 0), &normal, &offset));
+}
+
 }  // namespace
 }  // namespace meshseg::reconstruct_internal
