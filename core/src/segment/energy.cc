@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <numbers>
 #include <utility>
 #include <vector>
 
@@ -22,17 +21,10 @@ double AreaWeight(const SegmentContext& c, int v) {
   return mean_area > 0.0 ? c.vertex_area[v] / mean_area : 1.0;
 }
 
-// D_v for vertex v with projection `pr` onto its surface: the squared
-// distance in units of th_dis / k and, off creases, the squared normal
-// deviation in units of th_nm / k_n weighed by its evidence share relative
-// to the distance's, truncated together at c_out (energy.h).
-double CostOfProjection(const SegmentContext& c, int v, const Projection& pr) {
-  const double d = pr.distance / c.tolerance.distance;
-  double scaled = kToleranceSigmas * kToleranceSigmas * d * d;
-  if (c.normal_share > 0.0 && scaled < kOutlierMismatch && !c.curvature->sharp[v]) {
-    const double n = NormalDeviation(c, v, pr.normal) * kNormalSigmas / c.angle_tolerance_deg;
-    scaled += c.normal_share / c.evidence_share * n * n;
-  }
+// D_v for vertex v at signed distance `distance` from its surface.
+double CostAtDistance(const SegmentContext& c, int v, double distance) {
+  const double d = distance / c.tolerance.distance;
+  const double scaled = kToleranceSigmas * kToleranceSigmas * d * d;
   return 0.5 * AreaWeight(c, v) * std::min(std::isfinite(scaled) ? scaled : kOutlierMismatch,
                                            kOutlierMismatch);
 }
@@ -64,9 +56,9 @@ PricedFit PriceFit(const SegmentContext& c, SurfaceType type, std::span<const in
   inliers.reserve(vertices.size());
   double cost = 0.0;
   for (const int v : vertices) {
-    const Projection pr = ProjectVertex(c, fit.surface, v);
-    cost += CostOfProjection(c, v, pr);
-    if (std::abs(pr.distance) < c.tolerance.distance) inliers.push_back(v);
+    const double distance = ProjectVertex(c, fit.surface, v).distance;
+    cost += CostAtDistance(c, v, distance);
+    if (std::abs(distance) < c.tolerance.distance) inliers.push_back(v);
   }
   out.cost = cost;
   if (inliers.size() == vertices.size() || inliers.size() < kMinRegionVertices) return out;
@@ -82,13 +74,8 @@ PricedFit PriceFit(const SegmentContext& c, SurfaceType type, std::span<const in
   return out;
 }
 
-double NormalDeviation(const SegmentContext& c, int v, const Eigen::Vector3d& normal) {
-  const double cosine = std::abs(normal.dot(c.curvature->normal[v]));
-  return std::acos(std::min(1.0, cosine)) * 180.0 / std::numbers::pi;
-}
-
 double VertexCost(const SegmentContext& c, int v, const Surface& surface) {
-  return CostOfProjection(c, v, ProjectVertex(c, surface, v));
+  return CostAtDistance(c, v, ProjectVertex(c, surface, v).distance);
 }
 
 double OutlierCost(const SegmentContext& c, int v) {

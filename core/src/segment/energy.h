@@ -12,38 +12,29 @@
 // f the share of independent samples in the residuals (1 for independent
 // noise; "Correlated residuals" below).
 //
-// Data term. With d_v(S) the distance of v to S, theta_v(S) the angle
-// between S's normal at v's closest point and v's vertex normal n_v, and
-// th_dis, th_nm the tolerances of S1 eqs. (5) and (6),
+// Data term. With d_v(S) the distance of v to S and th_dis the distance
+// tolerance of S1 eq. (5),
 //
-//   D_v(r) = (a_v / a_mean) / 2
-//            * min(k^2 (d_v / th_dis)^2 + (g / f) k_n^2 (theta_v / th_nm)^2, c_out),
+//   D_v(r) = (a_v / a_mean) / 2 * min(k^2 (d_v(S_r) / th_dis)^2, c_out),
 //
-// half the squared residual in position and in normal, each in units of
-// its noise: th_dis is at least k noise sigmas (estimate_noise.h), so where
-// the noise sets th_dis the unit is sigma and D is the negative
-// log-likelihood of a normal residual; where the mesh resolution sets it,
-// the unit is coarser and D more lenient. th_nm is k_n sigma_n, sigma_n the
-// noise of each tangential component of n_v (kNormalSigmas). g / f weighs
-// the normal evidence against the distance's ("Correlated residuals").
+// half the squared residual in units of th_dis / k: th_dis is at least k
+// noise sigmas (estimate_noise.h), so where the noise sets th_dis the unit
+// is sigma and D is the negative log-likelihood of a normal residual; where
+// the mesh resolution sets it, the unit is coarser and D more lenient.
 // a_v / a_mean (vertex area over that of a regular triangulation of edge
 // l_avg) makes sum_v D independent of the meshing's density. A vertex left
 // unlabelled (-1, the outlier label of PEARL) pays c_out / 2, and so does a
-// vertex whose residuals together reach it (farther than th_dis from its
-// surface, or its normal off by k sigma_n): rows along a crease, which no
-// smooth surface meets in position or normal, cost alike under either of
-// its regions and cannot decide between them.
-// Why the normal: within a few rows of where a round runs tangent into a
-// face, the two surfaces differ in position by s^2 / (2 R) at arc length
-// s, less than the noise, but in normal by s / R; the distance alone
-// leaves the boundary there, and a narrow round beside its tangent faces,
-// to the noise. Which normal: n_v, the area-weighted normal of v's one
-// ring, is noisy but unbiased wherever its ring lies on one face; the
-// smoothed n'_v of the W2 fit is biased over its window near creases and
-// across narrow bands (it turns toward both neighbours of a chamfer as a
-// sphere's normal would, and so prefers the wrong type there). A sharp
-// vertex (CurvatureField::sharp: on a crease, where no one normal exists)
-// has no normal term.
+// vertex farther than th_dis from its surface: rows along a crease, which
+// no smooth surface meets, cost alike under either of its regions and
+// cannot decide between them.
+// The distance term of the MismatchScore (refine_boundaries.h) without its
+// normal term: the smoothed normals n'_i are biased over the W2 window
+// near creases and across narrow bands (they turn toward both neighbours of
+// a chamfer as a sphere's would), so that an angle term in units of th_nm
+// / k outweighs the distances several times and prefers the wrong type
+// there; the information criterion of decide_type.h, which the label cost
+// below completes, is in distances alone too.
+//
 // Smoothness term. Every mesh edge between two labels costs lambda w_uv,
 // w_uv = 1 between non-sharp vertices and kCreaseEdgeWeight where either
 // end is sharp (CurvatureField::sharp): a boundary along a crease is where
@@ -88,24 +79,7 @@
 // so that lambda / f and the label cost grow without bound) give rho near
 // 0 and f near 1: residuals D cannot see prove no correlation. As residuals
 // within th_dis are kept, f >= delta^2 / (2 th_dis^2 + delta^2) > 0.
-// The normal residual has its own share g, measured the same way on the
-// tangential part of n_v (n_v minus its component along S's normal; the
-// tilt of n_v off S, a 2-vector) over the same edges, each known to
-// kResidualResolution th_nm / k_n, those whose normal term alone stays
-// under c_out kept. On a surface from binary voxels n_v is the normal of
-// the staircase's terrace, biased toward the grid's axes (an axis-aligned
-// plane explains a narrow round's terrace normals, a cylinder a
-// chamfer's); where that bias is the same along a terrace, rho is near 1
-// and g small. (Measured on the generated binary volumes: rho 0.26 to
-// 0.47, g 0.36 to 0.59, above f: the bias is not what correlates.) On
-// independent noise n_u and n_v share only the
-// two faces on their edge: rho near 1/6 on a regular triangulation (each
-// of the six ring neighbours tilts n_v along its own spoke; the two shared
-// ones tilt n_u and n_v along spokes 60 degrees apart), g near 0.7, and the
-// normal carries most of its evidence. The evidence of E is then
-// f sum_v D_dist + g sum_v D_normal, so D_v above, in E's units (divided
-// by f), weighs the normal term by g / f. Until g is measured (g = 0) D
-// has no normal term.
+//
 // A local move (merge two regions, retype one, drop one) is accepted iff it
 // lowers E; MergeDelta, RetypeDelta and DropDelta below price one without
 // touching the rest.
@@ -135,11 +109,6 @@ inline constexpr double kOutlierMismatch = kToleranceSigmas * kToleranceSigmas;
 // face, that of a vertex one data unit (one sigma) off its surface, twice
 // (divided by f in E, as the label cost is).
 inline constexpr double kBoundaryCost = 1.0;
-// k_n: th_nm in units of the normal's noise sigma_n. th_nm is 1.5 times
-// the median tilt of n_v off n'_v (estimate_noise.h), and the median tilt
-// of a normal whose two tangential components are independent with sigma_n
-// is sigma_n sqrt(2 ln 2): k_n = 1.5 sqrt(2 ln 2).
-inline constexpr double kNormalSigmas = 1.7661;
 // w_uv for an edge with a sharp end, relative to a smooth one.
 inline constexpr double kCreaseEdgeWeight = 0.1;
 // delta / (th_dis / k): the resolution of the data term in its unit. A
@@ -148,9 +117,6 @@ inline constexpr double kCreaseEdgeWeight = 0.1;
 // boundary edge through a smooth face (lambda = 1).
 inline constexpr double kResidualResolution = 0.1;
 
-// theta_v: the angle in degrees between `normal` (a surface's, at v's
-// closest point) and v's vertex normal n_v, orientation ignored.
-double NormalDeviation(const SegmentContext& c, int v, const Eigen::Vector3d& normal);
 // D_v(S) for vertex v on `surface`.
 double VertexCost(const SegmentContext& c, int v, const Surface& surface);
 // D_v of an unlabelled vertex.
@@ -169,12 +135,6 @@ double LabelCost(const SegmentContext& c, SurfaceType type, std::size_t vertex_c
 // from a fixed-stride sample of at most kMaxSample vertices.
 double EvidenceShare(const SegmentContext& c, const std::vector<int>& labels,
                      const std::vector<RegionState>& regions);
-// g: the same for the tangential part of n_v off its region's surface
-// normal (a vector; products are dot products), each known to
-// kResidualResolution th_nm / k_n, over the same edges, with the vertices
-// whose normal term alone stays under c_out.
-double NormalShare(const SegmentContext& c, const std::vector<int>& labels,
-                   const std::vector<RegionState>& regions);
 // (lambda / f) w_uv of the edge (u, v).
 double EdgeCost(const SegmentContext& c, int u, int v);
 // The smoothness cost of the edges between regions `a` and `b`, from the

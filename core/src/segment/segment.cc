@@ -150,7 +150,6 @@ absl::StatusOr<Segmentation> Segment(const Mesh& mesh, const CurvatureField& cur
   // How many independent samples the residuals are worth, measured once on
   // the regions grown, for the label cost of every move after (energy.h).
   c.evidence_share = EvidenceShare(c, labels, regions);
-  c.normal_share = NormalShare(c, labels, regions);
   // Merge and drop prices, kept from each step for the next.
   KeptPrices kept_prices;
   MESHSEG_RETURN_IF_ERROR(Merge(c, &labels, &regions, &kept_prices));

@@ -56,7 +56,6 @@ struct SegmentContext {
   double alpha = 0.9;                         // ALGORITHMS.md S1 step 2.3
   bool on_facets = false;                     // SegmentParams::on_facets
   double evidence_share = 1.0;                // n_eff / n of the residuals (energy.h)
-  double normal_share = 0.0;                  // n_eff / n of the normal residuals (energy.h)
   const RunContext* run = nullptr;
 
   int vertex_count() const { return graph.vertex_count(); }
