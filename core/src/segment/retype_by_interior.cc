@@ -10,6 +10,7 @@
 #include <tbb/parallel_for.h>
 
 #include "segment/decide_type.h"
+#include "segment/retype_coaxial_bands.h"
 
 namespace meshseg::segment_internal {
 namespace {
@@ -43,7 +44,9 @@ const ScoredFit* SimplestLimit(const SegmentContext& c, std::span<const ScoredFi
 // a torus came 0.011 sigma closer than the cone, 0.997 against 1.008, and
 // scored 0.9 lower); else the best type if it scores kScoreMargin below
 // `own`, or the simplest limit of that type chosen the same way; else `own`.
-SurfaceType BestInteriorType(const SegmentContext& c, SurfaceType own,
+// `own` scores at most `own_on_axis` (its score with its axis shared,
+// infinite if it has no such fit).
+SurfaceType BestInteriorType(const SegmentContext& c, SurfaceType own, double own_on_axis,
                              const std::vector<int>& interior, FitResult* interior_fit) {
   const auto scored = ScoreCurvedTypes(c, interior);
   // Some type must fit at the noise, or near it and either far closer than
@@ -63,6 +66,9 @@ SurfaceType BestInteriorType(const SegmentContext& c, SurfaceType own,
                                      kNearNoiseError * c.noise_sigma));
     own_score = s.score;
   }
+  // A cone on the axis of the turned face beside it is its own type with 4
+  // parameters fewer: the type it must lose to.
+  own_score = std::min(own_score, own_on_axis);
   if (std::none_of(scored.begin(), scored.end(), [&](const ScoredFit& s) {
         if (!s.fit.ok()) return false;
         const double e = ModelError(c, s.fit);
@@ -160,6 +166,21 @@ std::vector<int> RetypeByInterior(const SegmentContext& c, const std::vector<int
   if (!(c.noise_sigma > 0.0) && !c.on_facets) return {};
   const int n_regions = static_cast<int>(regions->size());
   std::vector<uint8_t> retyped(n_regions, 0);
+  // The score of each cone region's interior on a turned neighbour's axis
+  // (BestCoaxialCone) where that cone meets it within kScoredNearError
+  // sigmas, read before any region changes.
+  std::vector<double> on_axis(n_regions, std::numeric_limits<double>::infinity());
+  tbb::parallel_for(0, n_regions, [&](int id) {
+    const RegionState& r = (*regions)[id];
+    if (c.on_facets || !r.alive || r.type != SurfaceType::kCone) return;
+    const int ids[] = {id};
+    const std::vector<int> interior = InteriorVertices(c, labels, ids, r.vertices);
+    if (interior.size() < kMinInteriorVertices) return;
+    const auto cone = BestCoaxialCone(c, labels, *regions, id, interior);
+    if (cone && ModelErrorOfMeanSquare(c, cone->mean_square) <= kScoredNearError * c.noise_sigma) {
+      on_axis[id] = cone->score;
+    }
+  });
   tbb::parallel_for(0, n_regions, [&](int id) {
     RegionState& r = (*regions)[id];
     if (!r.alive || !IsCurved(r.type)) return;
@@ -169,7 +190,7 @@ std::vector<int> RetypeByInterior(const SegmentContext& c, const std::vector<int
     FitResult interior_fit;
     const SurfaceType type = c.on_facets
                                  ? BestTypeOnFacets(c, r.type, r.vertices, &interior_fit)
-                                 : BestInteriorType(c, r.type, interior, &interior_fit);
+                                 : BestInteriorType(c, r.type, on_axis[id], interior, &interior_fit);
     if (type == r.type) return;
     // On facets the fit was already made to all of the region's vertices.
     const FitResult whole = c.on_facets ? interior_fit : FitType(c, type, r.vertices);

@@ -50,6 +50,15 @@ bool TypeMissesInterior(const SegmentContext& c, const std::vector<int>& labels,
 // meshing's, which a type with more parameters follows better (the
 // countersinks of a remeshed CAD part would become tori), and on a mixed
 // region the scores of misfits say nothing.
+// A cone region's own score is that of the better of its free cone and
+// the cone on the axis of a cylinder or cone beside it (BestCoaxialCone,
+// retype_coaxial_bands.h; a countersink or chamfer shares its bore's or
+// shaft's axis by design): on a narrow band at the noise a sphere, with 2
+// parameters fewer than a free cone, scores below it by chance (on a
+// countersink band a quarter coarser than the part's voxels at 0.15 h:
+// sphere 15 below the free cone, and 3.7 above the cone on the bore's
+// axis), and the evidence for a change of type must beat the cone the
+// region can be.
 // On a mesh whose vertices lie on facets (SegmentParams::on_facets) no type
 // fits at the noise; there the type of lowest score over all of the
 // region's vertices takes over if it scores kScoreMargin below its own, or

@@ -12,11 +12,16 @@ namespace {
 
 // True if the axis of `face` (a cylinder or cone) is the axis of `band`:
 // NearlyCoaxial with a torus at its centre for its tube radius; through a
-// sphere's centre within kCoaxialMaxOffset of its radius.
+// sphere's centre within kCoaxialMaxOffset of its radius; any axis for a
+// cone.
 bool OnItsAxis(const Surface& band, const Surface& face) {
   if (const auto* t = std::get_if<Torus>(&band)) {
     return NearlyCoaxial(band, face, t->center, t->minor_radius);
   }
+  // A cone band's own axis is what a narrow band leaves uncertain: the fit
+  // on the face's axis tests it (BestCoaxialCone's caller asks it to meet
+  // the band near the noise).
+  if (std::holds_alternative<Cone>(band)) return true;
   const auto* s = std::get_if<Sphere>(&band);
   const std::optional<AxisLine> axis = AxisOf(face);
   if (s == nullptr || !axis) return false;
@@ -42,6 +47,27 @@ FitResult CoaxialCone(const SegmentContext& c, const RegionState& face,
 
 }  // namespace
 
+std::optional<CoaxialFit> BestCoaxialCone(const SegmentContext& c, const std::vector<int>& labels,
+                                          const std::vector<RegionState>& regions, int id,
+                                          const std::vector<int>& interior) {
+  std::optional<CoaxialFit> best;
+  for (const int n : RegionsAround(c, labels, regions, id)) {
+    const RegionState& face = regions[n];
+    if ((face.type != SurfaceType::kCylinder && face.type != SurfaceType::kCone) ||
+        !OnItsAxis(regions[id].surface, face.surface)) {
+      continue;
+    }
+    const FitResult cone = CoaxialCone(c, face, interior);
+    if (!cone.ok()) continue;
+    const double mean_square = SquaredDistances(c, cone.surface, interior) / interior.size();
+    const double score = InformationScore(c, mean_square, interior.size(), kCoaxialConeParameters);
+    if (!best || score < best->score) {
+      best = CoaxialFit{.fit = cone, .mean_square = mean_square, .score = score};
+    }
+  }
+  return best;
+}
+
 std::vector<int> RetypeCoaxialBands(const SegmentContext& c, const std::vector<int>& labels,
                                     std::vector<RegionState>* regions) {
   std::vector<int> retyped;
@@ -54,29 +80,17 @@ std::vector<int> RetypeCoaxialBands(const SegmentContext& c, const std::vector<i
     if (interior.size() < kMinInteriorVertices) continue;
     // Infinite if the region's own type has no valid fit there.
     const double own = ScoreType(c, r.type, interior).score;
-    std::optional<FitResult> best;
-    double best_score = 0.0;
-    for (const int n : RegionsAround(c, labels, *regions, id)) {
-      const RegionState& face = (*regions)[n];
-      if ((face.type != SurfaceType::kCylinder && face.type != SurfaceType::kCone) ||
-          !OnItsAxis(r.surface, face.surface)) {
-        continue;
-      }
-      const FitResult cone = CoaxialCone(c, face, interior);
-      if (!cone.ok()) continue;
-      const double mean_square = SquaredDistances(c, cone.surface, interior) / interior.size();
-      const double score =
-          InformationScore(c, mean_square, interior.size(), kCoaxialConeParameters);
-      // As RetypeByInterior weighs a type against the region's: within
-      // kScoreMargin of the torus it is a limit of, or kScoreMargin below
-      // the sphere it is not.
-      const bool takes = TakesOverNearTheNoise(
-          c, SurfaceType::kCone, ModelErrorOfMeanSquare(c, mean_square), score, r.type, own);
-      if (takes && (!best || score < best_score)) best = cone, best_score = score;
+    const std::optional<CoaxialFit> best = BestCoaxialCone(c, labels, *regions, id, interior);
+    // As RetypeByInterior weighs a type against the region's: within
+    // kScoreMargin of the torus it is a limit of, or kScoreMargin below
+    // the sphere it is not.
+    if (!best || !TakesOverNearTheNoise(c, SurfaceType::kCone,
+                                        ModelErrorOfMeanSquare(c, best->mean_square),
+                                        best->score, r.type, own)) {
+      continue;
     }
-    if (!best) continue;
     r.type = SurfaceType::kCone;
-    r.surface = best->surface;
+    r.surface = best->fit.surface;
     retyped.push_back(id);
   }
   return retyped;

@@ -8,6 +8,7 @@
 #ifndef MESHSEG_SRC_SEGMENT_RETYPE_COAXIAL_BANDS_H_
 #define MESHSEG_SRC_SEGMENT_RETYPE_COAXIAL_BANDS_H_
 
+#include <optional>
 #include <vector>
 
 #include "segment/segment_internal.h"
@@ -27,6 +28,23 @@ namespace meshseg::segment_internal {
 // cone, if the region's own type has no valid fit there). Nothing happens
 // when the estimated noise is zero. Returns the ids of the regions retyped.
 inline constexpr int kCoaxialConeParameters = 2;  // apex along the axis, half angle
+
+// The cone fitted to `interior` (of region `id`) on the axis of a cylinder
+// or cone region beside it whose axis is region `id`'s (as above; for a
+// cone band any such neighbour: a narrow band leaves its own axis
+// uncertain, and the caller asks the fit to meet it near the noise), with
+// its mean squared distance there
+// and InformationScore on kCoaxialConeParameters: the lowest scoring over
+// such neighbours, nullopt if none.
+struct CoaxialFit {
+  FitResult fit;
+  double mean_square = 0.0;
+  double score = 0.0;
+};
+std::optional<CoaxialFit> BestCoaxialCone(const SegmentContext& c, const std::vector<int>& labels,
+                                          const std::vector<RegionState>& regions, int id,
+                                          const std::vector<int>& interior);
+
 
 std::vector<int> RetypeCoaxialBands(const SegmentContext& c, const std::vector<int>& labels,
                                     std::vector<RegionState>* regions);

@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <random>
 #include <vector>
 
@@ -121,6 +122,34 @@ TEST(RetypeCoaxialBandsTest, BandWithoutAnAxialNeighbourStays) {
       NoisyChamfer(7, SurfaceType::kTorus, SurfaceType::kPlane, &s, &labels);
   EXPECT_TRUE(RetypeCoaxialBands(s.c, labels, &regions).empty());
   EXPECT_EQ(regions[0].type, SurfaceType::kTorus);
+}
+
+TEST(BestCoaxialConeTest, ConeBandOnItsShaftsAxisScoresBelowItsFreeCone) {
+  // The chamfer's band typed cone: the cone on the cylinder's axis meets it
+  // at the noise with 4 parameters fewer than a free cone, so it scores
+  // below the free cone's fit (the score RetypeByInterior holds a cone
+  // region to); the plane above has no axis.
+  Sheet s;
+  std::vector<int> labels;
+  const std::vector<RegionState> regions =
+      NoisyChamfer(7, SurfaceType::kCone, SurfaceType::kCylinder, &s, &labels);
+  const std::vector<int> interior = InteriorVertices(s.c, labels, kBand, regions[0].vertices);
+  ASSERT_GE(interior.size(), kMinInteriorVertices);
+  const std::optional<CoaxialFit> best = BestCoaxialCone(s.c, labels, regions, 0, interior);
+  ASSERT_TRUE(best.has_value());
+  EXPECT_LE(std::sqrt(best->mean_square), 1.5 * kSigma);
+  const Cone& cone = std::get<Cone>(best->fit.surface);
+  EXPECT_NEAR(cone.half_angle, std::numbers::pi / 4, 0.2 * std::numbers::pi / 180);
+  EXPECT_NEAR(cone.apex.x(), 0.0, 0.01);
+  EXPECT_NEAR(cone.apex.y(), 0.0, 0.01);
+  EXPECT_LT(best->score, ScoreType(s.c, SurfaceType::kCone, interior).score);
+  // With a plane below in place of the cylinder there is no axis to share.
+  Sheet flat;
+  const std::vector<RegionState> beside_planes =
+      NoisyChamfer(7, SurfaceType::kCone, SurfaceType::kPlane, &flat, &labels);
+  EXPECT_FALSE(BestCoaxialCone(flat.c, labels, beside_planes, 0,
+                               InteriorVertices(flat.c, labels, kBand, beside_planes[0].vertices))
+                   .has_value());
 }
 
 }  // namespace
