@@ -88,10 +88,10 @@ absl::Status Merge(const segment_internal::SegmentContext& c, std::vector<int>* 
 // a round differ in position by less than the noise within rows of the
 // tangent line but in normal by the arc's angle, which E's distance-only
 // data term does not see. Made once the surfaces and their types are
-// final (after the last merges and drops): the expansion moves rows by the
-// surfaces as they stand, and before the retype steps a region's surface can
-// be of the wrong type (a plane over part of an arc, a band of a cone read
-// as a sphere) and about to be replaced.
+// final (after the last merges and drops): before the retype steps a
+// region's surface can be of the wrong type (a plane over part of an arc, a
+// band of a cone read as a sphere) and about to be replaced, and the
+// refinement would settle rows by it.
 absl::Status PlaceBoundaries(const segment_internal::SegmentContext& c, std::vector<int>* labels,
                              std::vector<segment_internal::RegionState>* regions) {
   MESHSEG_RETURN_IF_ERROR(segment_internal::ExpandRegions(c, labels, regions).status());
@@ -153,7 +153,18 @@ absl::StatusOr<Segmentation> Segment(const Mesh& mesh, const CurvatureField& cur
   // Merge and drop prices, kept from each step for the next.
   KeptPrices kept_prices;
   MESHSEG_RETURN_IF_ERROR(Merge(c, &labels, &regions, &kept_prices));
-  MESHSEG_RETURN_IF_ERROR(RefineBoundaries(c, &labels, &regions));
+  // The first boundaries are E's own: expansions with each surface re-
+  // estimated between sweeps (PEARL). A round grown on a narrow band has a
+  // tube radius the band does not fix within the noise (a fatter tube
+  // through the band's middle fits it as well); moved by the surfaces as
+  // they stand, rows of the faces it runs tangent into join it within the
+  // tolerance of that fatter tube, and refitted to them it misses its own
+  // arc until dropping it costs less than keeping it. The expansion moves
+  // a boundary by at most a band per sweep and refits between sweeps, so
+  // the round's surface follows the rows it keeps; a surface grown bent
+  // over rows of a neighbour's face (a sphere over a flat top and a ring of
+  // the cone below) gives them back the same way.
+  MESHSEG_RETURN_IF_ERROR(ExpandRegions(c, &labels, &regions).status());
   // A plane retyped here held only part of its arc; the type is decided
   // again once the refinement has given it the rest.
   const std::vector<int> bent = RetypeBentPlanes(c, &regions);
