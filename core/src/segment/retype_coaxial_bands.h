@@ -29,13 +29,16 @@ namespace meshseg::segment_internal {
 // when the estimated noise is zero. Returns the ids of the regions retyped.
 inline constexpr int kCoaxialConeParameters = 2;  // apex along the axis, half angle
 
+std::vector<int> RetypeCoaxialBands(const SegmentContext& c, const std::vector<int>& labels,
+                                    std::vector<RegionState>* regions);
+
 // The cone fitted to `interior` (of region `id`) on the axis of a cylinder
 // or cone region beside it whose axis is region `id`'s (as above; for a
 // cone band any such neighbour: a narrow band leaves its own axis
 // uncertain, and the caller asks the fit to meet it near the noise), with
-// its mean squared distance there
-// and InformationScore on kCoaxialConeParameters: the lowest scoring over
-// such neighbours, nullopt if none.
+// its mean squared distance there and InformationScore on
+// kCoaxialConeParameters: the lowest scoring over such neighbours, nullopt
+// if none.
 struct CoaxialFit {
   FitResult fit;
   double mean_square = 0.0;
@@ -44,10 +47,6 @@ struct CoaxialFit {
 std::optional<CoaxialFit> BestCoaxialCone(const SegmentContext& c, const std::vector<int>& labels,
                                           const std::vector<RegionState>& regions, int id,
                                           const std::vector<int>& interior);
-
-
-std::vector<int> RetypeCoaxialBands(const SegmentContext& c, const std::vector<int>& labels,
-                                    std::vector<RegionState>* regions);
 
 }  // namespace meshseg::segment_internal
 
