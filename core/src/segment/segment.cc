@@ -166,37 +166,37 @@ absl::StatusOr<Segmentation> Segment(const Mesh& mesh, const CurvatureField& cur
   // the cone below) gives them back the same way.
   MESHSEG_RETURN_IF_ERROR(ExpandRegions(c, &labels, &regions).status());
   // A plane retyped here held only part of its arc; the type is decided
-  // again once the refinement has given it the rest.
+  // again once the expansion has given it the rest.
   const std::vector<int> bent = RetypeBentPlanes(c, &regions);
   if (!bent.empty()) {
-    MESHSEG_RETURN_IF_ERROR(RefineBoundaries(c, &labels, &regions));
+    MESHSEG_RETURN_IF_ERROR(ExpandRegions(c, &labels, &regions).status());
     for (const int id : bent) RetypeCurved(c, &regions[id]);
-    MESHSEG_RETURN_IF_ERROR(RefineBoundaries(c, &labels, &regions));
+    MESHSEG_RETURN_IF_ERROR(ExpandRegions(c, &labels, &regions).status());
   }
-  // The refinement can shrink a region it started with to a sliver whose
+  // The expansion can shrink a region it started with to a sliver whose
   // vertices cost less on their neighbours' surfaces (between a countersink
   // and its plane); it is dropped, and the pieces it kept apart may merge.
   MESHSEG_ASSIGN_OR_RETURN(const int dropped, DropRegions(c, &labels, &regions, &kept_prices));
   if (dropped > 0) {
     MESHSEG_RETURN_IF_ERROR(Merge(c, &labels, &regions, &kept_prices));
-    MESHSEG_RETURN_IF_ERROR(RefineBoundaries(c, &labels, &regions));
+    MESHSEG_RETURN_IF_ERROR(ExpandRegions(c, &labels, &regions).status());
   }
   // A region whose type misses it by more than the noise gets the type that
   // fits; it may then merge with the pieces of its surface around it.
   if (!RetypeInaccurateCurved(c, &regions).empty()) {
     MESHSEG_RETURN_IF_ERROR(Merge(c, &labels, &regions, &kept_prices));
-    MESHSEG_RETURN_IF_ERROR(RefineBoundaries(c, &labels, &regions));
+    MESHSEG_RETURN_IF_ERROR(ExpandRegions(c, &labels, &regions).status());
   }
   if (DissolveCreaseBands(c, &labels, &regions) > 0) {
-    MESHSEG_RETURN_IF_ERROR(RefineBoundaries(c, &labels, &regions));
+    MESHSEG_RETURN_IF_ERROR(ExpandRegions(c, &labels, &regions).status());
   }
   // A round bent into the faces it joins takes the fillet between them.
   if (!SnapFillets(c, &labels, &regions).empty()) {
-    MESHSEG_RETURN_IF_ERROR(RefineBoundaries(c, &labels, &regions));
+    MESHSEG_RETURN_IF_ERROR(ExpandRegions(c, &labels, &regions).status());
   }
   // Rows of a neighbour's face a curved region bent over go back to it.
   if (!GiveBackRows(c, &labels, &regions).empty()) {
-    MESHSEG_RETURN_IF_ERROR(RefineBoundaries(c, &labels, &regions));
+    MESHSEG_RETURN_IF_ERROR(ExpandRegions(c, &labels, &regions).status());
   }
   // A small face across a crease that a curved region absorbed (a small
   // plane disc on top of a conical frustum, in a piece of the cone) becomes
@@ -209,13 +209,13 @@ absl::StatusOr<Segmentation> Segment(const Mesh& mesh, const CurvatureField& cur
   // A band beside a turned face may be a cone on that face's axis (a
   // countersink on its bore's) with 4 parameters fewer.
   if (!RetypeCoaxialBands(c, labels, &regions).empty()) {
-    MESHSEG_RETURN_IF_ERROR(RefineBoundaries(c, &labels, &regions));
+    MESHSEG_RETURN_IF_ERROR(ExpandRegions(c, &labels, &regions).status());
   }
   // Pieces of one surface typed apart are joined, and fragments dropped, by
   // the same energy.
   MESHSEG_ASSIGN_OR_RETURN(const int moves, MergeAndDrop(c, &labels, &regions, &kept_prices));
   if (moves > 0) MESHSEG_RETURN_IF_ERROR(PlaceBoundaries(c, &labels, &regions));
-  // The refinement can narrow a region to a strip that lies on its
+  // The boundary placement can narrow a region to a strip that lies on its
   // neighbours' surfaces (a plane strip along a groove): dropped.
   MESHSEG_ASSIGN_OR_RETURN(const int late, DropRegions(c, &labels, &regions, &kept_prices));
   if (late > 0) MESHSEG_RETURN_IF_ERROR(PlaceBoundaries(c, &labels, &regions));
