@@ -80,8 +80,11 @@ struct Projection {
 Projection Project(const Surface& surface, const Eigen::Vector3d& p,
                    const Eigen::Vector3d& hint_direction = Eigen::Vector3d::Zero());
 
-// Signed distance from p to the surface: Project(surface, p).distance.
-double SignedDistance(const Surface& surface, const Eigen::Vector3d& p);
+// Signed distance from p to the surface: Project(surface, p,
+// hint_direction).distance, the same to the bit, without the foot point and
+// normal (only the torus needs the radial direction, and so the hint).
+double SignedDistance(const Surface& surface, const Eigen::Vector3d& p,
+                      const Eigen::Vector3d& hint_direction = Eigen::Vector3d::Zero());
 
 // Plane: >= 3 non-collinear points; normal oriented like the mean normal.
 FitResult FitPlane(const FitInput& input, const FitParams& params = {});

@@ -114,8 +114,49 @@ Projection Project(const Surface& surface, const Eigen::Vector3d& p,
       surface);
 }
 
-double SignedDistance(const Surface& surface, const Eigen::Vector3d& p) {
-  return Project(surface, p).distance;
+// Each distance below is computed by the same expressions, in the same
+// order, as the Project* function above of its type, so it is the same
+// double; only what the distance does not depend on is left out.
+double SignedDistance(const Surface& surface, const Eigen::Vector3d& p,
+                      const Eigen::Vector3d& hint_direction) {
+  return std::visit(
+      [&](const auto& s) -> double {
+        using T = std::decay_t<decltype(s)>;
+        if constexpr (std::is_same_v<T, Plane>) return (p - s.point).dot(Unit(s.normal));
+        if constexpr (std::is_same_v<T, Sphere>) return (p - s.center).norm() - s.radius;
+        if constexpr (std::is_same_v<T, Cylinder>) {
+          const Eigen::Vector3d a = Unit(s.axis_direction);
+          const Eigen::Vector3d v = p - s.axis_origin;
+          const double t = v.dot(a);
+          const Eigen::Vector3d radial = v - t * a;
+          return radial.norm() - s.radius;
+        }
+        if constexpr (std::is_same_v<T, Cone>) {
+          const Eigen::Vector3d a = Unit(s.axis_direction);
+          const Eigen::Vector3d v = p - s.apex;
+          const double h = v.dot(a);
+          const Eigen::Vector3d radial = v - h * a;
+          const double rho = radial.norm();
+          const double sin_a = std::sin(s.half_angle);
+          const double cos_a = std::cos(s.half_angle);
+          const double line_distance = rho * cos_a - h * sin_a;
+          if (rho * sin_a + h * cos_a >= 0.0) return line_distance;
+          const double dist = v.norm();
+          return line_distance >= 0.0 ? dist : -dist;
+        }
+        if constexpr (std::is_same_v<T, Torus>) {
+          const Eigen::Vector3d a = Unit(s.axis_direction);
+          const Eigen::Vector3d v = p - s.center;
+          const double h = v.dot(a);
+          const Eigen::Vector3d e = RadialDirection(v - h * a, a, hint_direction);
+          const Eigen::Vector3d tube_center = s.center + s.major_radius * e;
+          return (p - tube_center).norm() - s.minor_radius;
+        }
+        if constexpr (std::is_same_v<T, Quadric>) {
+          return fit_internal::ProjectQuadric(s, p, hint_direction).distance;
+        }
+      },
+      surface);
 }
 
 }  // namespace meshseg
