@@ -52,13 +52,14 @@ PricedFit PriceFit(const SegmentContext& c, SurfaceType type, std::span<const in
   // Re-estimation on the inliers: rows along creases pull a least-squares
   // fit off the face; the fit to the vertices within th_dis of it does not.
   // (One distance per vertex gives both its cost and whether it is in:
-  // SignedDistance is ProjectVertex's distance to the bit, without the foot
+  // SurfaceDistance is ProjectVertex's distance to the bit, without the foot
   // point and normal.)
   std::vector<int> inliers;
   inliers.reserve(vertices.size());
   double cost = 0.0;
+  const SurfaceDistance distance_to(fit.surface);
   for (const int v : vertices) {
-    const double distance = SignedDistance(fit.surface, c.position(v), c.normal(v));
+    const double distance = distance_to(c.position(v), c.normal(v));
     cost += CostAtDistance(c, v, distance);
     if (std::abs(distance) < c.tolerance.distance) inliers.push_back(v);
   }

@@ -113,7 +113,8 @@ TEST(Project, TorusAxisPointIsFinite) {
   EXPECT_NEAR(SignedDistance(t, pr.point), 0.0, kTol);
 }
 
-// SignedDistance leaves out the foot point and normal but must give
+// SignedDistance (and SurfaceDistance, made once per surface) leaves out
+// the foot point and normal but must give
 // Project's distance to the bit (the segmentation's energy sums it, and a
 // rounding would move its decisions): random points with random hints, and
 // the special points (on an axis, at a centre, behind an apex), for every
@@ -138,13 +139,17 @@ TEST(Project, SignedDistanceIsProjectsDistanceBitForBit) {
   std::mt19937 rng(11);
   std::normal_distribution<double> g;
   for (const Surface& s : surfaces) {
+    const SurfaceDistance distance_to(s);  // made once, used for every point
     for (const Eigen::Vector3d& p : points) {
       for (const Eigen::Vector3d& hint :
            {Eigen::Vector3d::Zero().eval(), Eigen::Vector3d(g(rng), g(rng), g(rng))}) {
         const double fast = SignedDistance(s, p, hint);
+        const double kept = distance_to(p, hint);
         const double full = Project(s, p, hint).distance;
         EXPECT_EQ(std::memcmp(&fast, &full, sizeof fast), 0)
             << "type " << s.index() << " at " << p.transpose() << ": " << fast << " vs " << full;
+        EXPECT_EQ(std::memcmp(&kept, &full, sizeof kept), 0)
+            << "type " << s.index() << " at " << p.transpose() << ": " << kept << " vs " << full;
       }
     }
   }
