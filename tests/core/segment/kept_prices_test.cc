@@ -117,26 +117,24 @@ TEST(KeptPricesTest, AReestimationKeptFromAnEarlierStepIsAFreshOneBitForBit) {
     kept.PriceDrops(s.c, labels, regions, first, std::vector<int>{0, 1, 2});
   }
   EXPECT_EQ(kept.kept_reestimations(), 0);
-  // The next step, on the same regions, prices a merge: both members'
-  // re-estimations are taken from the first step, and are what a fresh
-  // re-estimation gives.
-  kept.Touch();
-  ReestimatedRegions second(s.c, regions);
-  kept.PriceMerges(s.c, labels, regions, second, std::vector<std::pair<int, int>>{{0, 2}});
-  EXPECT_EQ(kept.kept_reestimations(), 2);
-  ReestimatedRegions fresh(s.c, regions);
-  ExpectSameBits(second, fresh, 0);
-  ExpectSameBits(second, fresh, 2);
+  // A later step prices the merge of `a` and `b`: `kept_after` re-estimations
+  // taken from earlier steps so far, and both members' re-estimations are
+  // what a fresh re-estimation gives.
+  auto later_step = [&](int a, int b, long kept_after) {
+    kept.Touch();
+    ReestimatedRegions step(s.c, regions);
+    kept.PriceMerges(s.c, labels, regions, step, std::vector<std::pair<int, int>>{{a, b}});
+    EXPECT_EQ(kept.kept_reestimations(), kept_after) << "merge of " << a << ", " << b;
+    ReestimatedRegions fresh(s.c, regions);
+    ExpectSameBits(step, fresh, a);
+    ExpectSameBits(step, fresh, b);
+  };
+  // The same regions: both members' re-estimations are kept ones.
+  later_step(0, 2, 2);
   // Region 1 tilted: its re-estimation is made again, region 0's is kept.
   std::get<Plane>(regions[1].surface).normal =
       (std::get<Plane>(regions[1].surface).normal + Eigen::Vector3d(0.0, 0.2, 0.0)).normalized();
-  kept.Touch();
-  ReestimatedRegions third(s.c, regions);
-  kept.PriceMerges(s.c, labels, regions, third, std::vector<std::pair<int, int>>{{0, 1}});
-  EXPECT_EQ(kept.kept_reestimations(), 3);
-  ReestimatedRegions fresh_tilted(s.c, regions);
-  ExpectSameBits(third, fresh_tilted, 0);
-  ExpectSameBits(third, fresh_tilted, 1);
+  later_step(0, 1, 3);
 }
 
 }  // namespace
