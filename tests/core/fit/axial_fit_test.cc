@@ -101,7 +101,9 @@ TEST(AxialResidual, CylinderIsTheGeneralFormulaAtAngleZero) {
     const double r5 = AxialResidual<5>(frame, p, &row5);
     const double r6 = AxialResidual<6>(frame, p, &row6);
     EXPECT_EQ(r5, r6) << p.transpose();
-    for (int k = 0; k < 5; ++k) EXPECT_EQ(row5(k), row6(k)) << "step " << k << " at " << p.transpose();
+    for (int k = 0; k < 5; ++k) {
+      EXPECT_EQ(row5(k), row6(k)) << "step " << k << " at " << p.transpose();
+    }
   }
 }
 
