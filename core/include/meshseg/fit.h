@@ -80,8 +80,28 @@ struct Projection {
 Projection Project(const Surface& surface, const Eigen::Vector3d& p,
                    const Eigen::Vector3d& hint_direction = Eigen::Vector3d::Zero());
 
-// Signed distance from p to the surface: Project(surface, p).distance.
-double SignedDistance(const Surface& surface, const Eigen::Vector3d& p);
+// Signed distance from p to the surface: Project(surface, p,
+// hint_direction).distance, the same to the bit, without the foot point and
+// normal (only the torus needs the radial direction, and so the hint).
+double SignedDistance(const Surface& surface, const Eigen::Vector3d& p,
+                      const Eigen::Vector3d& hint_direction = Eigen::Vector3d::Zero());
+
+// SignedDistance to one surface for many points: what depends on the
+// surface alone (its unit normal or axis, a cone's sine and cosine) is
+// computed once, the same values each call would compute, so every
+// distance is SignedDistance's to the bit.
+class SurfaceDistance {
+ public:
+  explicit SurfaceDistance(const Surface& surface);
+  double operator()(const Eigen::Vector3d& p,
+                    const Eigen::Vector3d& hint_direction = Eigen::Vector3d::Zero()) const;
+
+ private:
+  Surface surface_;
+  Eigen::Vector3d unit_ = Eigen::Vector3d::UnitZ();  // the plane's normal or the axis
+  double sin_angle_ = 0.0;  // a cone's half angle
+  double cos_angle_ = 1.0;
+};
 
 // Plane: >= 3 non-collinear points; normal oriented like the mean normal.
 FitResult FitPlane(const FitInput& input, const FitParams& params = {});

@@ -45,6 +45,20 @@ double AxialResidual(const AxialFrame& f, const Eigen::Vector3d& p,
   const double rho = q.norm();
   const Eigen::Vector3d e = rho > 0.0 ? Eigen::Vector3d(q / rho) : Eigen::Vector3d::Zero();
   const double eb1 = e.dot(f.b1), eb2 = e.dot(f.b2);
+  if (P == 5 && f.sin_angle == 0.0 && f.cos_angle == 1.0) {
+    // A cylinder (angle 0): the general formulas below with their products
+    // by cos = 1 (exact) and their terms times sin = 0 left out. A term
+    // 0 * x changes no value but, at most, the sign of a zero; in the
+    // normal equations a zero adds nothing to a sum, and no sum is ever -0
+    // (they start at +0, and x + (-x) rounds to +0), so J^T W J and J^T W r
+    // are the same to the bit.
+    (*row)(0) = -eb1;
+    (*row)(1) = -eb2;
+    (*row)(2) = -h * eb1;
+    (*row)(3) = -h * eb2;
+    (*row)(4) = -1.0;
+    return rho - f.radius;
+  }
   (*row)(0) = -f.cos_angle * eb1;
   (*row)(1) = -f.cos_angle * eb2;
   (*row)(2) = -h * f.cos_angle * eb1 - f.sin_angle * v.dot(f.b1);

@@ -114,8 +114,67 @@ Projection Project(const Surface& surface, const Eigen::Vector3d& p,
       surface);
 }
 
-double SignedDistance(const Surface& surface, const Eigen::Vector3d& p) {
-  return Project(surface, p).distance;
+double SignedDistance(const Surface& surface, const Eigen::Vector3d& p,
+                      const Eigen::Vector3d& hint_direction) {
+  return SurfaceDistance(surface)(p, hint_direction);
+}
+
+SurfaceDistance::SurfaceDistance(const Surface& surface) : surface_(surface) {
+  std::visit(
+      [&](const auto& s) {
+        using T = std::decay_t<decltype(s)>;
+        if constexpr (std::is_same_v<T, Plane>) unit_ = Unit(s.normal);
+        if constexpr (std::is_same_v<T, Cylinder> || std::is_same_v<T, Cone> ||
+                      std::is_same_v<T, Torus>) {
+          unit_ = Unit(s.axis_direction);
+        }
+        if constexpr (std::is_same_v<T, Cone>) {
+          sin_angle_ = std::sin(s.half_angle);
+          cos_angle_ = std::cos(s.half_angle);
+        }
+      },
+      surface_);
+}
+
+// Each distance below is computed by the same expressions, in the same
+// order, as the Project* function above of its type (with unit_ their
+// a = Unit(axis) or n = Unit(normal)), so it is the same double; only what
+// the distance does not depend on is left out.
+double SurfaceDistance::operator()(const Eigen::Vector3d& p,
+                                   const Eigen::Vector3d& hint_direction) const {
+  return std::visit(
+      [&](const auto& s) -> double {
+        using T = std::decay_t<decltype(s)>;
+        if constexpr (std::is_same_v<T, Plane>) return (p - s.point).dot(unit_);
+        if constexpr (std::is_same_v<T, Sphere>) return (p - s.center).norm() - s.radius;
+        if constexpr (std::is_same_v<T, Cylinder>) {
+          const Eigen::Vector3d v = p - s.axis_origin;
+          const double t = v.dot(unit_);
+          const Eigen::Vector3d radial = v - t * unit_;
+          return radial.norm() - s.radius;
+        }
+        if constexpr (std::is_same_v<T, Cone>) {
+          const Eigen::Vector3d v = p - s.apex;
+          const double h = v.dot(unit_);
+          const Eigen::Vector3d radial = v - h * unit_;
+          const double rho = radial.norm();
+          const double line_distance = rho * cos_angle_ - h * sin_angle_;
+          if (rho * sin_angle_ + h * cos_angle_ >= 0.0) return line_distance;
+          const double dist = v.norm();
+          return line_distance >= 0.0 ? dist : -dist;
+        }
+        if constexpr (std::is_same_v<T, Torus>) {
+          const Eigen::Vector3d v = p - s.center;
+          const double h = v.dot(unit_);
+          const Eigen::Vector3d e = RadialDirection(v - h * unit_, unit_, hint_direction);
+          const Eigen::Vector3d tube_center = s.center + s.major_radius * e;
+          return (p - tube_center).norm() - s.minor_radius;
+        }
+        if constexpr (std::is_same_v<T, Quadric>) {
+          return fit_internal::ProjectQuadric(s, p, hint_direction).distance;
+        }
+      },
+      surface_);
 }
 
 }  // namespace meshseg

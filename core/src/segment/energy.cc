@@ -51,12 +51,15 @@ PricedFit PriceFit(const SegmentContext& c, SurfaceType type, std::span<const in
   out.surface = fit.surface;
   // Re-estimation on the inliers: rows along creases pull a least-squares
   // fit off the face; the fit to the vertices within th_dis of it does not.
-  // (One projection per vertex gives both its cost and whether it is in.)
+  // (One distance per vertex gives both its cost and whether it is in:
+  // SurfaceDistance is ProjectVertex's distance to the bit, without the foot
+  // point and normal.)
   std::vector<int> inliers;
   inliers.reserve(vertices.size());
   double cost = 0.0;
+  const SurfaceDistance distance_to(fit.surface);
   for (const int v : vertices) {
-    const double distance = ProjectVertex(c, fit.surface, v).distance;
+    const double distance = distance_to(c.position(v), c.normal(v));
     cost += CostAtDistance(c, v, distance);
     if (std::abs(distance) < c.tolerance.distance) inliers.push_back(v);
   }
@@ -197,9 +200,18 @@ std::optional<Move> PriceMerge(const SegmentContext& c, const std::vector<int>& 
                                const RegionState& x, int a, double x_cost, const RegionState& y,
                                int b, double y_cost, std::span<const SurfaceType> types,
                                double below) {
-  std::vector<int> both = x.vertices;
-  both.insert(both.end(), y.vertices.begin(), y.vertices.end());
-  std::sort(both.begin(), both.end());
+  // The union, sorted: a merge of the two sorted lists (a region's list is
+  // kept sorted), which is what sorting them together gives.
+  std::vector<int> both(x.vertices.size() + y.vertices.size());
+  if (std::is_sorted(x.vertices.begin(), x.vertices.end()) &&
+      std::is_sorted(y.vertices.begin(), y.vertices.end())) {
+    std::merge(x.vertices.begin(), x.vertices.end(), y.vertices.begin(), y.vertices.end(),
+               both.begin());
+  } else {
+    std::copy(y.vertices.begin(), y.vertices.end(),
+              std::copy(x.vertices.begin(), x.vertices.end(), both.begin()));
+    std::sort(both.begin(), both.end());
+  }
   const bool x_smaller = x.vertices.size() <= y.vertices.size();
   const double before = x_cost + y_cost +
                         BoundaryCost(c, labels, x_smaller ? x.vertices : y.vertices,

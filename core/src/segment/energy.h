@@ -191,6 +191,17 @@ class ReestimatedRegions {
   const RegionState& operator()(int id) { return Get(id).region; }
   // DataCost of region `id`'s vertices on its surface, as operator() gives it.
   double Cost(int id) { return Get(id).cost; }
+  // (energyspeed2: re-estimations kept across steps, kept_prices.h.)
+  // Whether regions are re-estimated (the constructor's `reestimate`), and
+  // whether region `id` at its vertex count is made already.
+  bool reestimates() const { return reestimate_; }
+  bool Has(int id) const { return cache_.contains({id, regions_[id].vertices.size()}); }
+  // Gives `region` with data cost `cost` for region `id` at its vertex
+  // count, without refitting: what operator() and Cost made for the same
+  // region, bit for bit, in an earlier step.
+  void Keep(int id, const RegionState& region, double cost) {
+    cache_.try_emplace({id, regions_[id].vertices.size()}, Priced{.region = region, .cost = cost});
+  }
 
  private:
   struct Priced {

@@ -40,6 +40,23 @@ int KeptPrices::Version(const std::vector<RegionState>& regions, int id) {
   return seen.version;
 }
 
+void KeptPrices::Reestimate(const std::vector<RegionState>& regions, ReestimatedRegions& region,
+                            int id) {
+  // Only re-estimations are kept (regions as given need no fit).
+  if (!region.reestimates()) return;
+  if (reestimations_.size() < regions.size()) reestimations_.resize(regions.size());
+  const int version = Version(regions, id);
+  std::optional<KeptReestimation>& kept = reestimations_[id];
+  if (kept && kept->version == version) {
+    if (!region.Has(id)) {
+      region.Keep(id, kept->region, kept->cost);
+      ++kept_reestimations_;
+    }
+    return;
+  }
+  kept = KeptReestimation{.version = version, .region = region(id), .cost = region.Cost(id)};
+}
+
 KeptPrices::Versions KeptPrices::DropVersions(const SegmentContext& c,
                                               const std::vector<int>& labels,
                                               const std::vector<RegionState>& regions, int id) {
@@ -71,7 +88,7 @@ void KeptPrices::PriceDrops(const SegmentContext& c, const std::vector<int>& lab
   // around it (its versions); they are made first, so that the prices only
   // read `region`.
   for (const Versions& versions : todo_versions) {
-    for (const auto& [o, version] : versions) region(o);
+    for (const auto& [o, version] : versions) Reestimate(regions, region, o);
   }
   std::vector<DropMove> moves(todo.size());
   tbb::parallel_for(std::size_t{0}, todo.size(),
@@ -99,7 +116,7 @@ void KeptPrices::PriceMerges(const SegmentContext& c, const std::vector<int>& la
     todo.emplace_back(a, b);
     todo_versions.push_back(std::move(versions));
   }
-  for (const auto& [a, b] : todo) region(a), region(b);
+  for (const auto& [a, b] : todo) Reestimate(regions, region, a), Reestimate(regions, region, b);
   std::vector<std::optional<Move>> moves(todo.size());
   tbb::parallel_for(std::size_t{0}, todo.size(), [&](std::size_t k) {
     const auto [a, b] = todo[k];

@@ -43,6 +43,8 @@ class KeptPrices {
   void PriceMerges(const SegmentContext& c, const std::vector<int>& labels,
                    const std::vector<RegionState>& regions, ReestimatedRegions& region,
                    std::span<const std::pair<int, int>> pairs);
+  // How many re-estimations a step took from an earlier one (Reestimate).
+  long kept_reestimations() const { return kept_reestimations_; }
   // The regions may have changed since the last price: each is compared
   // again with what it was when next asked for. Between two calls the
   // regions and labels must not change (a price found current is not
@@ -70,7 +72,18 @@ class KeptPrices {
     Versions versions;
     long current = -1;
   };
+  // A region's re-estimation (ReestimatedRegions) with the version of the
+  // region it was made on: the same region, bit for bit, is re-estimated
+  // the same, so a later step takes it instead of fitting again.
+  struct KeptReestimation {
+    int version = -1;
+    RegionState region;
+    double cost = 0.0;
+  };
   int Version(const std::vector<RegionState>& regions, int id);
+  // Makes region `id`'s re-estimation in `region`, or gives it the one kept
+  // from an earlier step on the same region; keeps it for the next.
+  void Reestimate(const std::vector<RegionState>& regions, ReestimatedRegions& region, int id);
   // The versions a drop of `id` is priced on: the region, then those around.
   Versions DropVersions(const SegmentContext& c, const std::vector<int>& labels,
                         const std::vector<RegionState>& regions, int id);
@@ -78,6 +91,8 @@ class KeptPrices {
   std::vector<Seen> seen_;
   std::vector<std::optional<DropEntry>> drops_;
   std::map<std::pair<int, int>, MergeEntry> merges_;
+  std::vector<std::optional<KeptReestimation>> reestimations_;
+  long kept_reestimations_ = 0;
 };
 
 }  // namespace meshseg::segment_internal

@@ -1,6 +1,7 @@
 #include "fit/axial_fit.h"
 
 #include <cmath>
+#include <random>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -78,6 +79,32 @@ TEST(BestAxialFit, KeepsTheLowerCostStart) {
   EXPECT_GT(best.axis.z(), 0.99);
   EXPECT_TRUE(std::isinf(BestAxialFit(s.Input(), Centroid(s), {}, true, FitParams{}, &best,
                                       &iterations)));
+}
+
+// The cylinder's residual (P = 5, angle 0) takes a shortcut past the
+// products by cos = 1 and sin = 0: it must give the general formulas'
+// values, those of the cone's residual (P = 6) at angle 0 in its first
+// five steps (equal as numbers: a zero's sign may differ, which the normal
+// equations cannot see). Random points around a tilted axis, some on it.
+TEST(AxialResidual, CylinderIsTheGeneralFormulaAtAngleZero) {
+  const AxialFrame frame(Eigen::Vector3d(0.3, -1.2, 0.7),
+                         Eigen::Vector3d(0.2, -0.5, 1.0).normalized(), 1.7, 0.0);
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(-4.0, 4.0);
+  std::vector<Eigen::Vector3d> points;
+  for (int i = 0; i < 500; ++i) points.emplace_back(u(rng), u(rng), u(rng));
+  points.push_back(frame.origin);
+  points.push_back(frame.origin + 2.5 * frame.axis);
+  for (const Eigen::Vector3d& p : points) {
+    Eigen::Matrix<double, 1, 5> row5;
+    Eigen::Matrix<double, 1, 6> row6;
+    const double r5 = AxialResidual<5>(frame, p, &row5);
+    const double r6 = AxialResidual<6>(frame, p, &row6);
+    EXPECT_EQ(r5, r6) << p.transpose();
+    for (int k = 0; k < 5; ++k) {
+      EXPECT_EQ(row5(k), row6(k)) << "step " << k << " at " << p.transpose();
+    }
+  }
 }
 
 }  // namespace

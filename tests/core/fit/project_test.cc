@@ -1,4 +1,5 @@
 #include <cmath>
+#include <cstring>
 #include <random>
 #include <vector>
 
@@ -110,6 +111,48 @@ TEST(Project, TorusAxisPointIsFinite) {
   const Projection pr = Project(t, Eigen::Vector3d(0, 0, 1));
   EXPECT_NEAR(pr.distance, std::sqrt(5.0) - 0.5, kTol);
   EXPECT_NEAR(SignedDistance(t, pr.point), 0.0, kTol);
+}
+
+// SignedDistance (and SurfaceDistance, made once per surface) leaves out
+// the foot point and normal but must give
+// Project's distance to the bit (the segmentation's energy sums it, and a
+// rounding would move its decisions): random points with random hints, and
+// the special points (on an axis, at a centre, behind an apex), for every
+// type, the quadric included.
+TEST(Project, SignedDistanceIsProjectsDistanceBitForBit) {
+  const Eigen::Vector3d axis = test::Tilt() * Eigen::Vector3d::UnitZ();
+  Quadric quadric;  // x^2 + y^2 / 4 - z - 1
+  quadric.c = {1.0, 0.25, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0, -1.0};
+  const std::vector<Surface> surfaces = {
+      Plane{Eigen::Vector3d(1, 2, 3), Eigen::Vector3d(0.3, -0.2, 2)},
+      Sphere{Eigen::Vector3d(1, -1, 0.5), 2.0},
+      Cylinder{Eigen::Vector3d(0.5, 0, 0), axis, 1.5},
+      Cone{Eigen::Vector3d(0, 0, -2), axis, 0.4},
+      Torus{Eigen::Vector3d(0.2, 0.1, 0), axis, 2.0, 0.5},
+      quadric};
+  std::vector<Eigen::Vector3d> points = QueryPoints();
+  points.push_back(Eigen::Vector3d(0.5, 0, 0) + 2.0 * axis);   // the cylinder's axis
+  points.push_back(Eigen::Vector3d(0, 0, -2) - 1.0 * axis);    // behind the apex
+  points.push_back(Eigen::Vector3d(0, 0, -2));                 // the apex
+  points.push_back(Eigen::Vector3d(0.2, 0.1, 0) + 0.7 * axis);  // the torus' axis
+  points.push_back(Eigen::Vector3d(1, -1, 0.5));                // the sphere's centre
+  std::mt19937 rng(11);
+  std::normal_distribution<double> g;
+  for (const Surface& s : surfaces) {
+    const SurfaceDistance distance_to(s);  // made once, used for every point
+    for (const Eigen::Vector3d& p : points) {
+      for (const Eigen::Vector3d& hint :
+           {Eigen::Vector3d::Zero().eval(), Eigen::Vector3d(g(rng), g(rng), g(rng))}) {
+        const double fast = SignedDistance(s, p, hint);
+        const double kept = distance_to(p, hint);
+        const double full = Project(s, p, hint).distance;
+        EXPECT_EQ(std::memcmp(&fast, &full, sizeof fast), 0)
+            << "type " << s.index() << " at " << p.transpose() << ": " << fast << " vs " << full;
+        EXPECT_EQ(std::memcmp(&kept, &full, sizeof kept), 0)
+            << "type " << s.index() << " at " << p.transpose() << ": " << kept << " vs " << full;
+      }
+    }
+  }
 }
 
 }  // namespace

@@ -6,8 +6,11 @@
 
 #include <gtest/gtest.h>
 
+#include <cstring>
 #include <optional>
+#include <type_traits>
 #include <utility>
+#include <variant>
 #include <vector>
 
 #include "sheet_context.h"
@@ -85,6 +88,53 @@ TEST(KeptPricesTest, PricesMadeTogetherAreThePricesMadeOneByOne) {
       EXPECT_EQ(kept->delta, direct->delta) << "merge of " << a << ", " << b;
     }
   }
+}
+
+// Whether two re-estimations are the same, bit for bit.
+void ExpectSameBits(ReestimatedRegions& kept, ReestimatedRegions& fresh, int id) {
+  EXPECT_EQ(kept(id).type, fresh(id).type) << "region " << id;
+  EXPECT_EQ(kept(id).vertices, fresh(id).vertices) << "region " << id;
+  ASSERT_EQ(kept(id).surface.index(), fresh(id).surface.index()) << "region " << id;
+  std::visit(
+      [&](const auto& x) {
+        using T = std::decay_t<decltype(x)>;
+        EXPECT_EQ(std::memcmp(&x, &std::get<T>(fresh(id).surface), sizeof(T)), 0)
+            << "region " << id;
+      },
+      kept(id).surface);
+  const double a = kept.Cost(id), b = fresh.Cost(id);
+  EXPECT_EQ(std::memcmp(&a, &b, sizeof a), 0) << "region " << id << ": " << a << " vs " << b;
+}
+
+TEST(KeptPricesTest, AReestimationKeptFromAnEarlierStepIsAFreshOneBitForBit) {
+  Sheet s;
+  std::vector<int> labels;
+  std::vector<RegionState> regions = RippledFoldWithStrip(0.01, &s, &labels);
+  KeptPrices kept;
+  {
+    // A first step re-estimates every region (to price their drops).
+    ReestimatedRegions first(s.c, regions);
+    kept.PriceDrops(s.c, labels, regions, first, std::vector<int>{0, 1, 2});
+  }
+  EXPECT_EQ(kept.kept_reestimations(), 0);
+  // A later step prices the merge of `a` and `b`: `kept_after` re-estimations
+  // taken from earlier steps so far, and both members' re-estimations are
+  // what a fresh re-estimation gives.
+  auto later_step = [&](int a, int b, long kept_after) {
+    kept.Touch();
+    ReestimatedRegions step(s.c, regions);
+    kept.PriceMerges(s.c, labels, regions, step, std::vector<std::pair<int, int>>{{a, b}});
+    EXPECT_EQ(kept.kept_reestimations(), kept_after) << "merge of " << a << ", " << b;
+    ReestimatedRegions fresh(s.c, regions);
+    ExpectSameBits(step, fresh, a);
+    ExpectSameBits(step, fresh, b);
+  };
+  // The same regions: both members' re-estimations are kept ones.
+  later_step(0, 2, 2);
+  // Region 1 tilted: its re-estimation is made again, region 0's is kept.
+  std::get<Plane>(regions[1].surface).normal =
+      (std::get<Plane>(regions[1].surface).normal + Eigen::Vector3d(0.0, 0.2, 0.0)).normalized();
+  later_step(0, 1, 3);
 }
 
 }  // namespace
