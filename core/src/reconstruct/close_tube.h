@@ -29,26 +29,8 @@
 // bore and the walls around the face it opens onto) meet the unseen face at
 // edges, not in an arc.
 //
-// The split at the cap. Where both rims are seen as straight walls (their
-// curvature across the border under half the arcs'), the annulus is split
-// at the face between them (ALGORITHMS.md S3): a ruled wall (cylinder,
-// prism) seen down to its rim continues straight until it meets the plane
-// of the unseen face. The shorter rim is the bore's; its axis is the
-// direction its wall's normals are square to. The cap plane is the plane the
-// most of the outer rim lies on, the one a disc over the face is bent onto
-// (seen_planes.h SeenCapPlane: consensus, then least squares; robust to the
-// rim climbing the walls), within 45° of that axis; its normal then gives
-// the axis (the bore runs square to the face). The bore's wall runs on
-// straight along the axis to the plane (a short tube), and the face is the
-// strip of straight rungs between the outer rim and the bore's circle on
-// the plane (a disc with a hole), with rows about a mean edge apart along
-// each rung. Where the outer rim climbs the walls round the face, those
-// rungs cut the corner between wall and face as a disc's membrane would, so
-// the strip is bent onto the seen planes of the outer rim as a disc is
-// (seen_planes.h). Rim vertices stacked along the axis share one foot, so
-// no rung runs along the wall onto another's foot (no face without area). When no seen surface
-// ends beyond the bore's rim by a mesh edge, there is no cap to reach, and
-// the loops keep their discs, bent onto the seen planes (seen_planes.h).
+// Where both rims are seen as straight walls, the annulus is split at the
+// face between them instead (split_at_cap.h).
 //
 // The tube: the loops are joined by a strip of rungs, the sequence of
 // loop-vertex pairs of least total rung length (the optimal strip between
