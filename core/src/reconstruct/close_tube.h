@@ -8,23 +8,24 @@
 // hole (the outer disc) and the bore's mouth, far from the surface the scan
 // did not see; the surface there is a tube joining the two rims.
 //
-// Two loops are taken as the rims of one unseen tube when (a) they bound
-// one removed component that is an annulus (the implicit function joined
-// them through the unseen region), (b) both are longer than the loops the
-// points resolve as holes (handles.h: a shorter one is a handle the points
-// do not show, which the handle step cuts), and (c) at both, the seen
-// surface leaves the loop out of its plane: its outgoing direction (in the
-// tangent plane, across the border, away from the seen faces) runs along the
-// loop's axis, so the seen surface extended is a wall leaving the loop, not
-// a sheet closing it. A spurious bridge between two sheets fails (c): each
-// sheet, extended, closes its own loop as a disc.
+// Two loops are taken as the rims of one unseen tube when (a) they are the
+// only border loops of one removed component (the implicit function joined
+// them through the unseen region; a handle inside it is as unsupported as the
+// rest of it and goes with it), (b) both are longer than the loops the points
+// resolve as holes (handles.h: a shorter one is a handle the points do not
+// show, which the handle step cuts), and (c) at both, the seen surface leaves
+// the loop out of its plane: its outgoing direction (in the tangent plane,
+// across the border, away from the seen faces) runs along the loop's axis, so
+// the seen surface extended is a wall leaving the loop, not a sheet closing
+// it. A spurious bridge between two sheets fails (c): each sheet, extended,
+// closes its own loop as a disc.
 //
 // The tube is then built (below) and kept only if (d) its arcs bend as the
 // seen surface does at each rim: unless the arcs are straight within the
 // resolution of a curvature (their mean depth below their chords at most the
 // loops' mean edge length), each rim's curvature across the border (read
-// from the normals 3 and 9 edges inside) is within half of the arcs' mean
-// curvature. A torus's section curves on into the unseen side at the
+// from the normals 3, 6 and 9 edges inside, tube_rims.h) is within half of
+// the arcs' mean curvature. A torus's section curves on into the unseen side at the
 // curvature it had where it was seen. Walls that run straight to the rims (a
 // bore and the walls around the face it opens onto) meet the unseen face at
 // edges, not in an arc.

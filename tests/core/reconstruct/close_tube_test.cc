@@ -1,6 +1,7 @@
 #include "reconstruct/close_tube.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <vector>
@@ -97,6 +98,58 @@ TEST(CloseTube, ATubeFollowsTheArcBetweenRimsThatTurnByLessThanHalfATurn) {
       torus, [](int, int j) { return j < 9 * kNv / 16 || j >= 15 * kNv / 16; });
   const auto tubes = CloseUnsupported(torus, supported, 0.01, false, {}, true, 0.0);
   ASSERT_TRUE(tubes.ok()) << tubes.status();
+  ExpectOneClosedManifoldOfGenus(tubes->mesh.tri, 1);
+  EXPECT_LT(WorstPatchDistance(*tubes), kTolerance);
+}
+
+// As above, with a handle inside the unseen underside: a straight tube
+// through the ring's hole joins the cell just below the inner equator at
+// u = 0 to the one facing it at u = π. The removed component is still
+// bounded by the two equators alone (its genus is 1: the handle has no
+// point on it either and goes with it), so the rims are joined by the
+// ring's tube as before: genus 1, every patch vertex on the torus. Counted
+// as an annulus only, the component was left to two discs (genus 0).
+TEST(CloseTube, AHandleInsideTheUnseenPartGoesWithIt) {
+  const TubeMesh m = TorusTubeMesh(kR, kr, kNu, kNv);
+  const int j = kNv / 2 + 1, half = kNu / 2;
+  const auto id = [&](int i, int jj) { return (i % kNu) * kNv + jj % kNv; };
+  std::vector<Eigen::Vector3d> vertices = m.vertices;
+  std::vector<std::array<int, 3>> triangles;
+  std::vector<uint8_t> supported;
+  for (size_t t = 0; t < m.triangles.size(); ++t) {
+    const int cell = static_cast<int>(t) / 2;
+    if (cell == id(0, j) || cell == id(half, j)) continue;  // the handle's mouths
+    triangles.push_back(m.triangles[t]);
+    supported.push_back(cell % kNv < kNv / 2);
+  }
+  // The mouth at u = 0 along its cell's border; the one at u = π against
+  // its own, from the corner facing the first one's first.
+  std::vector<int> ring = {id(0, j), id(1, j), id(1, j + 1), id(0, j + 1)};
+  const std::vector<int> end = {id(half, j), id(half, j + 1), id(half + 1, j + 1),
+                                id(half + 1, j)};
+  constexpr int kSegments = 8;
+  for (int s = 1; s <= kSegments; ++s) {
+    std::vector<int> next = end;
+    if (s < kSegments) {
+      for (int k = 0; k < 4; ++k) {
+        const double t = static_cast<double>(s) / kSegments;
+        next[k] = static_cast<int>(vertices.size());
+        vertices.push_back((1 - t) * m.vertices[ring[k]] + t * m.vertices[end[k]]);
+      }
+    }
+    for (int k = 0; k < 4; ++k) {
+      triangles.push_back({ring[k], ring[(k + 1) % 4], next[(k + 1) % 4]});
+      triangles.push_back({ring[k], next[(k + 1) % 4], next[k]});
+      supported.push_back(0);
+      supported.push_back(0);
+    }
+    ring = next;
+  }
+  const Mesh torus = *SurfaceMesh(vertices, triangles, "torus with a handle");
+  ASSERT_EQ(Genus(torus.tri), 2);
+  const auto tubes = CloseUnsupported(torus, supported, 0.01, false, {}, true, 0.0);
+  ASSERT_TRUE(tubes.ok()) << tubes.status();
+  EXPECT_EQ(tubes->hole_count, 2);
   ExpectOneClosedManifoldOfGenus(tubes->mesh.tri, 1);
   EXPECT_LT(WorstPatchDistance(*tubes), kTolerance);
 }
