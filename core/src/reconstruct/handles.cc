@@ -7,12 +7,59 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include "mesh/union_find.h"
 #include "meshseg/status_macros.h"
 #include "reconstruct/close_unsupported.h"
 #include "reconstruct/handle_strips.h"
 #include "reconstruct/support.h"
 
 namespace meshseg::reconstruct_internal {
+
+using mesh_internal::FindRoot;
+
+int SeenGenus(const TriMesh& tri, const std::vector<uint8_t>& filled) {
+  const auto seen = [&](TriMesh::FaceHandle f) { return f.is_valid() && !filled[f.idx()]; };
+  // χ = V − E + F and the components of the seen faces.
+  int64_t chi = 0;
+  std::vector<int> parent(tri.n_faces());
+  for (const auto f : tri.faces()) {
+    parent[f.idx()] = f.idx();
+    chi += seen(f);
+  }
+  for (const auto v : tri.vertices()) {
+    for (const auto f : tri.vf_range(v)) {
+      if (!seen(f)) continue;
+      ++chi;
+      break;
+    }
+  }
+  for (const auto e : tri.edges()) {
+    const auto f = tri.face_handle(tri.halfedge_handle(e, 0));
+    const auto g = tri.face_handle(tri.halfedge_handle(e, 1));
+    if (!seen(f) && !seen(g)) continue;
+    --chi;
+    if (seen(f) && seen(g)) parent[FindRoot(parent, f.idx())] = FindRoot(parent, g.idx());
+  }
+  int64_t components = 0, loops = 0;
+  for (const auto f : tri.faces()) components += seen(f) && FindRoot(parent, f.idx()) == f.idx();
+  // Border loops: each border halfedge of the seen faces (its face seen, the
+  // other side not) leads to the next round its loop's start.
+  std::vector<uint8_t> walked(tri.n_halfedges(), 0);
+  const auto on_border = [&](TriMesh::HalfedgeHandle h) {
+    return seen(tri.face_handle(h)) && !seen(tri.opposite_face_handle(h));
+  };
+  for (const auto start : tri.halfedges()) {
+    if (walked[start.idx()] || !on_border(start)) continue;
+    ++loops;
+    for (auto h = start; !walked[h.idx()];) {
+      walked[h.idx()] = 1;
+      auto next = tri.next_halfedge_handle(h);
+      while (!on_border(next)) next = tri.next_halfedge_handle(tri.opposite_halfedge_handle(next));
+      h = next;
+    }
+  }
+  return static_cast<int>((2 * components - chi - loops) / 2);
+}
 
 std::vector<double> MaxHandleLoops(const TriMesh& tri, const std::vector<Eigen::Vector3d>& points,
                                    const mesh_internal::PointIndex& index, double handle_spacings,
@@ -42,7 +89,13 @@ absl::Status CutUnsupportedHandles(const std::vector<Eigen::Vector3d>& points,
                                   ? stats->refine_edge_length / params.refine_edge_length
                                   : 0.0;
   for (int round = 0; round < kHandleRounds; ++round) {
-    const int genus = Genus(mesh->tri);
+    // The patches add genus only by construction: a disc none, a tube
+    // (close_tube.h) one, a handle its rims show the points resolve. By
+    // Euler's formula the closed surface's genus is the seen surface's (the
+    // faces not filled) plus one per tube, so the handles the points may not
+    // support are at most the seen surface's genus, and there is nothing
+    // to search for when it is 0.
+    const int genus = std::min(Genus(mesh->tri), SeenGenus(mesh->tri, *filled));
     if (genus <= 0) break;
     // Round holes up to handle_spacings × s across have loops up to π times
     // that; loops up to twice as long are looked at for slits as narrow.
