@@ -146,15 +146,11 @@ bool SplitAtCap(const Rim& rim_a, const Rim& rim_b, double sign, bool bend, Sm* 
   const size_t first = Nearest(pinner, pouter[0]);
   std::rotate(inner.begin(), inner.begin() + first, inner.end());
   std::rotate(pinner.begin(), pinner.begin() + first, pinner.end());
-  const std::vector<std::pair<size_t, size_t>> strip = ShortestStrip(pouter, pinner);
-  const auto on_face = [&](size_t r, double t) {
-    const auto [i, j] = strip[r];
-    const Eigen::Vector3d& p = pouter[i % pouter.size()];
-    return Eigen::Vector3d(p + t * (pinner[j % pinner.size()] - p));
-  };
+  // The outer rim is the longer loop, so straight rungs from it fan in
+  // onto the bore's circle; the face is laid as contours no denser than a
+  // mesh of the loops' mean edge (tube_strip.h).
   const size_t face_faces = added.faces.size(), face_vertices = added.vertices.size();
-  ok = ok && AddStrip(outer.loop, inner, strip, on_face, RowsPerRung(strip, pouter, pinner, edge),
-                      sm, &added);
+  ok = ok && AddContourStrip(outer.loop, pouter, inner, pinner, edge, sm, &added);
   if (!ok) {
     TakeBack(added, sm);
     return false;

@@ -1,6 +1,7 @@
 #include "reconstruct/tube_strip.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 #include <CGAL/boost/graph/Euler_operations.h>
@@ -116,6 +117,76 @@ bool AddStrip(const std::vector<Sm::Vertex_index>& side_a,
     }
   }
   return ok;
+}
+
+namespace {
+
+// `count` points evenly spaced by arc length round the closed polygon `q`,
+// the first at q[0].
+std::vector<Eigen::Vector3d> Resampled(const std::vector<Eigen::Vector3d>& q, size_t count) {
+  const double perimeter = LoopPerimeter(q);
+  std::vector<Eigen::Vector3d> out;
+  double walked = 0.0;  // length of q before segment k
+  size_t k = 0;
+  for (size_t i = 0; i < count; ++i) {
+    const double at = perimeter * static_cast<double>(i) / static_cast<double>(count);
+    double length = (q[(k + 1) % q.size()] - q[k]).norm();
+    while (k + 1 < q.size() && walked + length < at) {
+      walked += length;
+      ++k;
+      length = (q[(k + 1) % q.size()] - q[k]).norm();
+    }
+    const double t = length > 0 ? std::clamp((at - walked) / length, 0.0, 1.0) : 0.0;
+    out.push_back(q[k] + t * (q[(k + 1) % q.size()] - q[k]));
+  }
+  return out;
+}
+
+}  // namespace
+
+bool AddContourStrip(const std::vector<Sm::Vertex_index>& side_a,
+                     const std::vector<Eigen::Vector3d>& pa,
+                     const std::vector<Sm::Vertex_index>& side_b,
+                     const std::vector<Eigen::Vector3d>& pb, double edge, Sm* sm, Added* added) {
+  const std::vector<std::pair<size_t, size_t>> strip = ShortestStrip(pa, pb);
+  const size_t rungs = strip.size() - 1;  // the last is the first again
+  double mean = 0.0;
+  for (size_t r = 0; r < rungs; ++r) {
+    mean += (pb[strip[r].second % pb.size()] - pa[strip[r].first % pa.size()]).norm();
+  }
+  mean /= static_cast<double>(rungs);
+  const int steps = std::clamp(static_cast<int>(std::ceil(mean / edge)), 1, kMaxRows);
+  std::vector<Sm::Vertex_index> side = side_a;
+  std::vector<Eigen::Vector3d> points = pa;
+  for (int k = 1; k <= steps; ++k) {
+    std::vector<Sm::Vertex_index> ring = side_b;
+    std::vector<Eigen::Vector3d> at = pb;
+    if (k < steps) {
+      const double t = static_cast<double>(k) / steps;
+      std::vector<Eigen::Vector3d> along;
+      for (size_t r = 0; r < rungs; ++r) {
+        const Eigen::Vector3d& p = pa[strip[r].first % pa.size()];
+        along.push_back(p + t * (pb[strip[r].second % pb.size()] - p));
+      }
+      const auto count = static_cast<size_t>(
+          std::max(3.0, std::round(LoopPerimeter(along) / edge)));
+      at = Resampled(along, count);
+      ring.clear();
+      for (const Eigen::Vector3d& p : at) {
+        ring.push_back(sm->add_vertex(Kernel::Point_3(p.x(), p.y(), p.z())));
+        added->vertices.push_back(ring.back());
+      }
+    }
+    const std::vector<std::pair<size_t, size_t>> between = ShortestStrip(points, at);
+    const auto unused = [](size_t, double) { return Eigen::Vector3d(Eigen::Vector3d::Zero()); };
+    if (!AddStrip(side, ring, between, unused, std::vector<int>(between.size() - 1, 1), sm,
+                  added)) {
+      return false;
+    }
+    side = std::move(ring);
+    points = std::move(at);
+  }
+  return true;
 }
 
 }  // namespace meshseg::reconstruct_internal

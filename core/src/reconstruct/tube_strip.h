@@ -64,6 +64,21 @@ bool AddStrip(const std::vector<HoleMesh::Vertex_index>& side_a,
               const std::function<Eigen::Vector3d(size_t, double)>& at,
               const std::vector<int>& rows, HoleMesh* sm, Added* added);
 
+// Adds the straight strip between side_a (points pa, along its border) and
+// side_b (points pb, against its own; both starting at their first vertex)
+// as contours: rings at even steps of the rungs of the shortest strip
+// between them (about `edge` apart along a rung of mean length), each
+// resampled by its own length to `edge` spacing, consecutive rings joined by
+// their own shortest strip (Fuchs, Kedem & Uselton 1977, between each pair).
+// Where the rungs fan in onto the shorter side, rows taken along the rungs
+// would crowd there; the rings keep the strip as dense as a mesh of that
+// edge. False when CGAL refuses a face.
+bool AddContourStrip(const std::vector<HoleMesh::Vertex_index>& side_a,
+                     const std::vector<Eigen::Vector3d>& pa,
+                     const std::vector<HoleMesh::Vertex_index>& side_b,
+                     const std::vector<Eigen::Vector3d>& pb, double edge, HoleMesh* sm,
+                     Added* added);
+
 }  // namespace meshseg::reconstruct_internal
 
 #endif  // MESHSEG_RECONSTRUCT_TUBE_STRIP_H_
