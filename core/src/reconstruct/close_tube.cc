@@ -121,10 +121,13 @@ bool CloseTube(HoleMesh::Halfedge_index a, HoleMesh::Halfedge_index b, double si
     if (curved(rim_a.curvature) || curved(rim_b.curvature)) return false;
     return SplitAtCap(rim_a, rim_b_border, sign, bend, sm);
   }
+  // Rings across the arcs a mean edge apart along the longest, each as
+  // dense as the loops (tube_strip.h): the longer rim's rungs fan in onto
+  // the shorter one.
   Added added;
-  const bool ok = AddStrip(
-      loop_a, loop_b, strip, [&](size_t r, double t) { return rung[r].At(t); },
-      std::vector<int>(rungs, Rows(longest, edge)), sm, &added);
+  const bool ok = AddContourStrip(
+      loop_a, pa, loop_b, pb, strip, [&](size_t r, double t) { return rung[r].At(t); },
+      Rows(longest, edge), edge, sm, &added);
   if (!ok) TakeBack(added, sm);
   return ok;
 }

@@ -155,36 +155,47 @@ bool AddContourStrip(const std::vector<Sm::Vertex_index>& side_a,
     mean += (pb[strip[r].second % pb.size()] - pa[strip[r].first % pa.size()]).norm();
   }
   mean /= static_cast<double>(rungs);
+  const auto straight = [&](size_t r, double t) {
+    const Eigen::Vector3d& p = pa[strip[r].first % pa.size()];
+    return Eigen::Vector3d(p + t * (pb[strip[r].second % pb.size()] - p));
+  };
   const int steps = std::clamp(static_cast<int>(std::ceil(mean / edge)), 1, kMaxRows);
+  return AddContourStrip(side_a, pa, side_b, pb, strip, straight, steps, edge, sm, added);
+}
+
+bool AddContourStrip(const std::vector<Sm::Vertex_index>& side_a,
+                     const std::vector<Eigen::Vector3d>& pa,
+                     const std::vector<Sm::Vertex_index>& side_b,
+                     const std::vector<Eigen::Vector3d>& pb,
+                     const std::vector<std::pair<size_t, size_t>>& strip,
+                     const std::function<Eigen::Vector3d(size_t, double)>& at, int steps,
+                     double edge, Sm* sm, Added* added) {
+  const size_t rungs = strip.size() - 1;
   std::vector<Sm::Vertex_index> side = side_a;
   std::vector<Eigen::Vector3d> points = pa;
   for (int k = 1; k <= steps; ++k) {
     std::vector<Sm::Vertex_index> ring = side_b;
-    std::vector<Eigen::Vector3d> at = pb;
+    std::vector<Eigen::Vector3d> on_ring = pb;
     if (k < steps) {
-      const double t = static_cast<double>(k) / steps;
       std::vector<Eigen::Vector3d> along;
-      for (size_t r = 0; r < rungs; ++r) {
-        const Eigen::Vector3d& p = pa[strip[r].first % pa.size()];
-        along.push_back(p + t * (pb[strip[r].second % pb.size()] - p));
-      }
+      for (size_t r = 0; r < rungs; ++r) along.push_back(at(r, static_cast<double>(k) / steps));
       const auto count = static_cast<size_t>(
           std::max(3.0, std::round(LoopPerimeter(along) / edge)));
-      at = Resampled(along, count);
+      on_ring = Resampled(along, count);
       ring.clear();
-      for (const Eigen::Vector3d& p : at) {
+      for (const Eigen::Vector3d& p : on_ring) {
         ring.push_back(sm->add_vertex(Kernel::Point_3(p.x(), p.y(), p.z())));
         added->vertices.push_back(ring.back());
       }
     }
-    const std::vector<std::pair<size_t, size_t>> between = ShortestStrip(points, at);
+    const std::vector<std::pair<size_t, size_t>> between = ShortestStrip(points, on_ring);
     const auto unused = [](size_t, double) { return Eigen::Vector3d(Eigen::Vector3d::Zero()); };
     if (!AddStrip(side, ring, between, unused, std::vector<int>(between.size() - 1, 1), sm,
                   added)) {
       return false;
     }
     side = std::move(ring);
-    points = std::move(at);
+    points = std::move(on_ring);
   }
   return true;
 }

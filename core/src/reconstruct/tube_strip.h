@@ -79,6 +79,16 @@ bool AddContourStrip(const std::vector<HoleMesh::Vertex_index>& side_a,
                      const std::vector<Eigen::Vector3d>& pb, double edge, HoleMesh* sm,
                      Added* added);
 
+// As above along the rungs of `strip` (between pa and pb, as ShortestStrip
+// gives it): ring k of `steps` through at(r, k / steps) on each rung r.
+bool AddContourStrip(const std::vector<HoleMesh::Vertex_index>& side_a,
+                     const std::vector<Eigen::Vector3d>& pa,
+                     const std::vector<HoleMesh::Vertex_index>& side_b,
+                     const std::vector<Eigen::Vector3d>& pb,
+                     const std::vector<std::pair<size_t, size_t>>& strip,
+                     const std::function<Eigen::Vector3d(size_t, double)>& at, int steps,
+                     double edge, HoleMesh* sm, Added* added);
+
 }  // namespace meshseg::reconstruct_internal
 
 #endif  // MESHSEG_RECONSTRUCT_TUBE_STRIP_H_
