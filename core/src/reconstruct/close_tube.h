@@ -23,25 +23,28 @@
 // The tube is then built (below) and kept only if (d) its arcs bend as the
 // seen surface does at each rim: unless the arcs are straight within the
 // resolution of a curvature (their mean depth below their chords at most the
-// loops' mean edge length), each rim's curvature across the border (read
-// from the normals 3, 6 and 9 edges inside, tube_rims.h) is within half of
-// the arcs' mean curvature. A torus's section curves on into the unseen side at the
-// curvature it had where it was seen. Walls that run straight to the rims (a
-// bore and the walls around the face it opens onto) meet the unseen face at
-// edges, not in an arc.
+// loops' mean edge length), each rim's curvature across the border (read from
+// the normals 3, 6 and 9 edges inside, tube_rims.h) is within half of the
+// arcs' mean curvature. A torus's section curves on into the unseen side at
+// the curvature it had where it was seen. Walls that run straight to the rims
+// (a bore and the walls around the face it opens onto) meet the unseen face
+// at edges, not in an arc.
 //
 // Where both rims are seen as straight walls, the annulus is split at the
 // face between them instead (split_at_cap.h).
 //
 // The tube: the loops are joined by a strip of rungs, the sequence of
-// loop-vertex pairs of least total rung length (the optimal strip between
-// two contours, Fuchs, Kedem & Uselton 1977, with rung length as the cost,
+// loop-vertex pairs of least total rung length (the optimal strip between two
+// contours, Fuchs, Kedem & Uselton 1977, with rung length as the cost,
 // Christiansen & Sederberg 1978). Along each rung the tube follows the cubic
 // Hermite curve that leaves each rim along the seen surface's outgoing
 // direction, with the tangent length of the circular arc through both ends
 // that turns by the angle between the two directions (a semicircle across a
 // torus's tube; a straight line between aligned walls): the seen surfaces
-// extended, joined with the continuity of their tangent planes.
+// extended, joined with the continuity of their tangent planes. The tube is
+// laid as rings across the rungs a mean loop edge apart along the longest
+// arc, each as dense as the loops (tube_strip.h): rows along the rungs would
+// crowd where the longer rim's rungs fan in onto the shorter one.
 #ifndef MESHSEG_RECONSTRUCT_CLOSE_TUBE_H_
 #define MESHSEG_RECONSTRUCT_CLOSE_TUBE_H_
 

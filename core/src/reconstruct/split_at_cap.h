@@ -13,15 +13,16 @@
 // that axis; its normal then gives the axis (the bore runs square to the
 // face). The bore's wall runs on straight along the axis to the plane (a
 // short tube), and the face is the strip of straight rungs between the outer
-// rim and the bore's circle on the plane (a disc with a hole), with rows
-// about a mean edge apart along each rung. Where the outer rim climbs the
-// walls round the face, those rungs cut the corner between wall and face as a
-// disc's membrane would, so the strip is bent onto the seen planes of the
-// outer rim as a disc is (seen_planes.h). Rim vertices stacked along the axis
-// share one foot, so no rung runs along the wall onto another's foot (no face
-// without area). When no seen surface ends beyond the bore's rim by a mesh
-// edge, there is no cap to reach, and the loops keep their discs, bent onto
-// the seen planes (seen_planes.h).
+// rim and the bore's circle on the plane (a disc with a hole), laid as rings
+// a mean edge apart, each as dense as the loops (tube_strip.h), since the
+// outer rim's rungs fan in onto the bore's shorter circle. Where the outer
+// rim climbs the walls round the face, those rungs cut the corner between
+// wall and face as a disc's membrane would, so the strip is bent onto the
+// seen planes of the outer rim as a disc is (seen_planes.h). Rim vertices
+// stacked along the axis share one foot, so no rung runs along the wall onto
+// another's foot (no face without area). When no seen surface ends beyond the
+// bore's rim by a mesh edge, there is no cap to reach, and the loops keep
+// their discs, bent onto the seen planes (seen_planes.h).
 #ifndef MESHSEG_RECONSTRUCT_SPLIT_AT_CAP_H_
 #define MESHSEG_RECONSTRUCT_SPLIT_AT_CAP_H_
 
