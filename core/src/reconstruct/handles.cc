@@ -18,6 +18,7 @@ namespace meshseg::reconstruct_internal {
 using mesh_internal::FindRoot;
 
 int SeenGenus(const TriMesh& tri, const std::vector<uint8_t>& filled) {
+  if (filled.size() != tri.n_faces()) return Genus(tri);  // no flags: all seen
   const auto seen = [&](TriMesh::FaceHandle f) { return f.is_valid() && !filled[f.idx()]; };
   // χ = V − E + F and the components of the seen faces.
   int64_t chi = 0;
