@@ -47,9 +47,8 @@ void RefitToPoints(std::span<const std::vector<Eigen::Vector3d>> points_of_regio
 // - a simpler type that is a limit of the region's (a plane of any curved
 //   type; a cylinder or cone of a torus; a cylinder of a cone) takes over
 //   when its information score is less than kScoreMargin above the region's;
-// - any other analytic type when it scores kScoreMargin below the region's,
-//   and fits the points better by that margin counted at the region's own
-//   parameter count (a type is not taken for having fewer parameters).
+// - a sphere may become a cylinder or cone (no limit of it, nor it of
+//   them) when that scores kScoreMargin below it, never the other way.
 // On a reconstructed mesh the type was decided on vertices that round every
 // crease over a spacing and run on over the smooth patches that close
 // unscanned areas, which bends a narrow chamfer into a torus band or a flat

@@ -240,5 +240,37 @@ TEST(RetypeToPoints, ACylinderBandStaysACylinder) {
   EXPECT_EQ(regions[0].type, SurfaceType::kCylinder);
 }
 
+TEST(RetypeToPoints, AChamferWithItsCreaseBandsStaysACone) {
+  // A 45-degree chamfer from radius 5 at z = 0 to 3.5 at z = 1.5, and the
+  // points a reconstruction's rounded creases give it from beyond its
+  // edges: the cylinder below (z from -0.4 to 0) and the flat top (radius
+  // 3.1 to 3.5). Both flanks turn the same way, so a sphere bends to them
+  // and fits these points better than the cone; it is not taken.
+  constexpr double kSigma = 0.03;
+  std::mt19937 random(11);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::normal_distribution<double> noise(0.0, kSigma);
+  std::vector<std::vector<Eigen::Vector3d>> points(1);
+  for (int k = 0; k < 1500; ++k) {
+    const double t = 2.0 * std::numbers::pi * unit(random);
+    const Eigen::Vector3d radial(std::cos(t), std::sin(t), 0.0);
+    const double e = noise(random);
+    const double u = unit(random);
+    if (k % 5 == 0) {  // the cylinder's crease band
+      points[0].push_back((5.0 + e) * radial + Eigen::Vector3d(0, 0, -0.4 * u));
+    } else if (k % 5 == 1) {  // the top's
+      points[0].push_back((3.1 + 0.4 * u) * radial + Eigen::Vector3d(0, 0, 1.5 + e));
+    } else {
+      const Eigen::Vector3d n(std::sqrt(0.5) * std::cos(t), std::sqrt(0.5) * std::sin(t),
+                              std::sqrt(0.5));
+      points[0].push_back((5.0 - 1.5 * u) * radial + Eigen::Vector3d(0, 0, 1.5 * u) + e * n);
+    }
+  }
+  std::vector<Region> regions = RegionFittedAs(SurfaceType::kCone, points[0]);
+  std::vector<SharedSurface> surfaces;
+  EXPECT_EQ(RetypeToPoints(points, kSigma, &regions, &surfaces), 0);
+  EXPECT_EQ(regions[0].type, SurfaceType::kCone);
+}
+
 }  // namespace
 }  // namespace meshseg::pipeline_internal
