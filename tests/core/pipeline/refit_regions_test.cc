@@ -231,7 +231,8 @@ TEST(RetypeToPoints, ABandTooShortToTellKeepsItsType) {
 }
 
 TEST(RetypeToPoints, ACylinderBandStaysACylinder) {
-  // No type with more parameters (cone, torus) takes over by fitting noise.
+  // No more general type of its family (cone, torus) takes over by fitting
+  // the noise.
   constexpr double kSigma = 0.03;
   const std::vector<std::vector<Eigen::Vector3d>> points = {BoreBand(3.0, kSigma)};
   std::vector<Region> regions = RegionFittedAs(SurfaceType::kCylinder, points[0]);
