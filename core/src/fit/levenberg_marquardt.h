@@ -47,22 +47,38 @@ LmOutcome MinimizeLevenbergMarquardt(const LeastSquaresProblem& problem,
 // Accumulates Σ w r², J^T W J and J^T W r over the input points for a
 // problem with P step values; `residual(i, &row)` returns r_i and sets its
 // Jacobian row. Fixed-size rows: no allocation per point.
+// J^T W J is symmetric: only its lower triangle is summed, entry (k, l),
+// k >= l, as (w row_k) row_l, the product and order of terms of the full
+// outer product w row^T row, so each entry is the same to the bit; the
+// upper triangle is then copied from it (the LDLT of the steps reads the
+// lower triangle only).
 template <int P, typename Residual>
 double AccumulateNormalEquations(const FitInput& input, Residual&& residual,
                                  Eigen::MatrixXd* jtj, Eigen::VectorXd* jtr) {
-  Eigen::Matrix<double, P, P> a = Eigen::Matrix<double, P, P>::Zero();
-  Eigen::Matrix<double, P, 1> b = Eigen::Matrix<double, P, 1>::Zero();
+  constexpr int kLower = P * (P + 1) / 2;
+  double a[kLower] = {};
+  double b[P] = {};
   Eigen::Matrix<double, 1, P> row;
   double cost = 0.0;
   for (std::size_t i = 0; i < input.points.size(); ++i) {
     const double w = WeightAt(input, i);
     const double r = residual(i, &row);
     cost += w * r * r;
-    a.noalias() += w * row.transpose() * row;
-    b.noalias() += (w * r) * row.transpose();
+    const double wr = w * r;
+    int e = 0;
+    for (int k = 0; k < P; ++k) {
+      const double wk = w * row(k);
+      for (int l = 0; l <= k; ++l) a[e++] += wk * row(l);
+      b[k] += wr * row(k);
+    }
   }
-  *jtj = a;
-  *jtr = b;
+  jtj->resize(P, P);
+  jtr->resize(P);
+  int e = 0;
+  for (int k = 0; k < P; ++k) {
+    for (int l = 0; l <= k; ++l, ++e) (*jtj)(k, l) = (*jtj)(l, k) = a[e];
+    (*jtr)(k) = b[k];
+  }
   return cost;
 }
 

@@ -1,6 +1,8 @@
 #include "fit/levenberg_marquardt.h"
 
 #include <cmath>
+#include <cstring>
+#include <random>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -141,6 +143,63 @@ TEST(MinimizeLevenbergMarquardt, FindsFiveSixAndSevenCoefficients) {
   ExpectPolynomialFound<5>();
   ExpectPolynomialFound<6>();
   ExpectPolynomialFound<7>();
+}
+
+// The normal equations summed over the lower triangle only are those of the
+// full outer product w row^T row, bit for bit: every entry is the same sum
+// of the same products in the same order (the fits' results must not move
+// by a rounding). Rows from a fixed pseudo-random draw of widely scaled
+// values, so a product taken in another order would differ in its last bits.
+template <int P>
+void ExpectLowerTriangleIsTheFullProduct() {
+  std::mt19937 random(17 + P);
+  std::uniform_real_distribution<double> value(-1.0, 1.0);
+  std::vector<Eigen::Matrix<double, 1, P>> rows(257);
+  std::vector<Eigen::Vector3d> pts(rows.size());
+  std::vector<double> weights(rows.size());
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    for (int k = 0; k < P; ++k) rows[i](k) = value(random) * std::exp(6.0 * value(random));
+    pts[i] = Eigen::Vector3d(value(random), 0.0, 0.0);  // x: the residual
+    weights[i] = 0.5 + value(random) * value(random);
+  }
+  const FitInput input{pts, {}, weights};
+  Eigen::MatrixXd jtj;
+  Eigen::VectorXd jtr;
+  const double cost = AccumulateNormalEquations<P>(
+      input,
+      [&](std::size_t i, Eigen::Matrix<double, 1, P>* row) {
+        *row = rows[i];
+        return pts[i].x();
+      },
+      &jtj, &jtr);
+  Eigen::Matrix<double, P, P> a = Eigen::Matrix<double, P, P>::Zero();
+  Eigen::Matrix<double, P, 1> b = Eigen::Matrix<double, P, 1>::Zero();
+  double sum = 0.0;
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const double w = weights[i], r = pts[i].x();
+    sum += w * r * r;
+    a.noalias() += w * rows[i].transpose() * rows[i];
+    b.noalias() += (w * r) * rows[i].transpose();
+  }
+  ASSERT_EQ(jtj.rows(), P);
+  ASSERT_EQ(jtj.cols(), P);
+  ASSERT_EQ(jtr.size(), P);
+  EXPECT_EQ(std::memcmp(&cost, &sum, sizeof cost), 0) << cost << " vs " << sum;
+  for (int k = 0; k < P; ++k) {
+    EXPECT_EQ(std::memcmp(&jtr(k), &b(k), sizeof(double)), 0) << P << ": b " << k;
+    for (int l = 0; l <= k; ++l) {
+      EXPECT_EQ(std::memcmp(&jtj(k, l), &a(k, l), sizeof(double)), 0)
+          << P << ": (" << k << ", " << l << ") " << jtj(k, l) << " vs " << a(k, l);
+      EXPECT_EQ(jtj(l, k), jtj(k, l)) << P << ": symmetric";
+    }
+  }
+}
+
+TEST(AccumulateNormalEquations, LowerTriangleIsTheFullProductBitForBit) {
+  ExpectLowerTriangleIsTheFullProduct<4>();
+  ExpectLowerTriangleIsTheFullProduct<5>();
+  ExpectLowerTriangleIsTheFullProduct<6>();
+  ExpectLowerTriangleIsTheFullProduct<7>();
 }
 
 }  // namespace
