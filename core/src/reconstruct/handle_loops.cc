@@ -44,8 +44,9 @@ struct Scratch {
 using QueueItem = std::pair<double, int>;
 using MinQueue = std::priority_queue<QueueItem, std::vector<QueueItem>, std::greater<>>;
 
-// The covering ball of a center reaches this many of its seed radii
-// beyond the seeds it claims (ShortLoops).
+// A center of the covering claims the seeds within this many of its seed
+// radii, and its covering ball reaches kCoverReach of them beyond (ShortLoops).
+constexpr double kCoverClaim = 3.0;
 constexpr double kCoverReach = 1.25;
 
 bool EdgeInBall(const MeshGraph& g, const Scratch& s, int e) {
@@ -56,9 +57,10 @@ bool EdgeInBall(const MeshGraph& g, const Scratch& s, int e) {
 }
 
 // The geodesic ball of `radius` around `seed` under a new stamp: its
-// vertices (reached, with dist) and its faces (all three vertices in it).
-// Returns the Euler characteristic of the complex of its faces.
-int64_t GrowBall(const MeshGraph& g, int seed, double radius, Scratch* s) {
+// vertices (reached, with dist) and, with `faces`, its faces (all three
+// vertices in it). Returns the Euler characteristic of the complex of its
+// faces (0 without `faces`).
+int64_t GrowBall(const MeshGraph& g, int seed, double radius, Scratch* s, bool faces = true) {
   const uint32_t t = ++s->stamp;
   // The ball: vertices within the radius along edges, faces with all three.
   s->reached.clear();
@@ -81,6 +83,7 @@ int64_t GrowBall(const MeshGraph& g, int seed, double radius, Scratch* s) {
     }
   }
   s->ball_faces.clear();
+  if (!faces) return 0;
   for (const int v : s->reached) {
     for (int k = g.faces_begin[v]; k < g.faces_begin[v + 1]; ++k) {
       const int f = g.faces[k];
@@ -348,10 +351,11 @@ std::vector<HandleLoop> ShortLoops(const MeshGraph& g, const std::vector<double>
   // loop inside it is a boundary there, hence on the surface, and separates.
   // So a seed whose ball lies in such a complex finds no loop that could be
   // cut, and its own search is skipped. Centers are taken greedily from the
-  // seeds, each claiming the seeds within its own radius; its covering ball
-  // reaches kCoverReach of its radius beyond, holding the balls of the seeds
-  // it claimed where their radii are alike. Seeds left uncovered (near a
-  // handle, on a part thinner than a covering ball) are searched as before.
+  // seeds, each claiming the seeds within kCoverClaim of its own radius; its
+  // covering ball reaches kCoverReach of its radius beyond, holding the
+  // balls of the seeds it claimed where their radii are alike. Seeds left
+  // uncovered (near a handle, on a part thinner than a covering ball) are
+  // searched as before.
   // What a skipped loop did was cost a check against the whole surface and
   // mark its vertices as on a separating loop (handle_strips.cc).
   std::vector<int> centers;
@@ -362,8 +366,8 @@ std::vector<HandleLoop> ShortLoops(const MeshGraph& g, const std::vector<double>
     for (const int v : seeds) {
       if (claimed[v]) continue;
       centers.push_back(v);
-      cover[v] = (1.0 + kCoverReach) * radius[v];
-      GrowBall(g, v, radius[v], &s);
+      cover[v] = (kCoverClaim + kCoverReach) * radius[v];
+      GrowBall(g, v, kCoverClaim * radius[v], &s, false);
       for (const int w : s.reached) claimed[w] = 1;
     }
   }

@@ -59,16 +59,17 @@ TEST(ShortLoops, LooksOnlyNearTheFlaggedVertices) {
   EXPECT_TRUE(second);
 }
 
-// The covering: a capped rod (genus 0) as thin as the torus's tube and
-// shorter than two bounds is covered by balls that are discs, so its
-// meridians (short, but every one separates) are not searched for; the
-// torus's handle, whose balls are never discs, is searched as without a
-// covering: the same loops as on the torus alone. (A search over every seed
-// returns the rod's meridians too.)
+// The covering: a capped rod (genus 0) as thin as the torus's tube, 3 long,
+// against covering balls of radius about 4.25 × (0.25 + an edge) = 1.3: no
+// ball holds both caps, and those that hold one are discs that cover its
+// seeds, so its meridians (short, but every one separates) are not searched
+// for; the torus's handle, whose balls are never discs, is searched as
+// without a covering: the same loops as on the torus alone. (A search over
+// every seed returns the rod's meridians too.)
 TEST(ShortLoops, SkipsSeedsWhoseBallsLieInADisc) {
   const TubeMesh torus = TorusTubeMesh(1.0, 0.05, 128, 8);
   TubeMesh both = torus;
-  both.Add(RodTubeMesh(0.05, 1.0, 8, 20, Eigen::Vector3d(3, 0, 0)));
+  both.Add(RodTubeMesh(0.05, 3.0, 8, 60, Eigen::Vector3d(3, 0, 0)));
   const std::vector<HandleLoop> alone =
       ShortLoops(GraphOf(torus), std::vector<double>(torus.vertices.size(), 0.5));
   const std::vector<HandleLoop> loops =
