@@ -1,7 +1,6 @@
 #include "reconstruct/handle_strips.h"
 
 #include <algorithm>
-#include <cmath>
 #include <utility>
 
 #include <Eigen/Geometry>
@@ -197,7 +196,7 @@ HandleStrips ShortHandleStrips(const TriMesh& tri, const std::vector<double>& ma
         mean_width += max_width[v];
       }
       const double n = static_cast<double>(loop.vertices.size());
-      if (loop.length > M_PI * mean_width / n && LoopWidth(tri, loop.vertices) > mean_width / n) {
+      if (loop.length > 0.5 * mean_loop / n && LoopWidth(tri, loop.vertices) > mean_width / n) {
         continue;
       }
     }

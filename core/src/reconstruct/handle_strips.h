@@ -41,9 +41,8 @@ struct HandleStrips {
 // previous round changed).
 //
 // With `max_width` (one per vertex, model units) not empty, a loop found is
-// a candidate only when it is no longer than π × its vertices' mean
-// max_width (a round hole that wide) or its width (LoopWidth) is at most
-// their mean max_width: a flat
+// a candidate only when it is no longer than half its vertices' mean
+// max_loop or its width (LoopWidth) is at most their mean max_width: a flat
 // tunnel between two sheets a noise band apart (a slit) has a loop long for
 // its width, and the points no more show a hole that narrow than a round
 // one.

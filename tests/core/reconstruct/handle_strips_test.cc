@@ -7,7 +7,6 @@
 
 #include "clouds.h"
 #include "reconstruct/close_unsupported.h"
-#include "reconstruct/handles.h"
 #include "reconstruct/surface_mesh.h"
 #include "tube_meshes.h"
 
@@ -74,29 +73,6 @@ TEST(ShortHandleStrips, CutsASlitTunnelWhoseLoopIsLongButNarrow) {
       std::vector<double>(tube.tri.n_vertices(), kWidth));
   EXPECT_GT(kept.loop_count, 0);
   EXPECT_EQ(kept.cut_count, 0);
-}
-
-// The same slit against a round-hole bound a third of its meridian (holes
-// 0.085 across, still eight times the slit's width): searched only to twice
-// that bound it is not found; searched as the handle step does, to
-// kSlitLoops times it (handles.h), it is cut. A slit's gap, not its length,
-// is what the points cannot show.
-TEST(ShortHandleStrips, CutsASlitThreeTimesTheRoundBoundLong) {
-  TubeMesh slit = TorusTubeMesh(1.0, 0.2, 96, 16);
-  for (Eigen::Vector3d& v : slit.vertices) v.z() *= 0.05;
-  const Mesh flat = ToMesh(slit);
-  const int n = static_cast<int>(flat.tri.n_vertices());
-  double meridian = 0.0;  // the 16-gon at the first vertex round the axis
-  for (int k = 0; k < 16; ++k) meridian += (slit.vertices[(k + 1) % 16] - slit.vertices[k]).norm();
-  const double round_bound = meridian / 3.0;
-  const std::vector<double> width(n, round_bound / M_PI);
-  EXPECT_EQ(ShortHandleStrips(flat.tri, std::vector<double>(n, 2 * round_bound), 1, {}, width)
-                .cut_count,
-            0);
-  EXPECT_EQ(
-      ShortHandleStrips(flat.tri, std::vector<double>(n, kSlitLoops * round_bound), 1, {}, width)
-          .cut_count,
-      1);
 }
 
 TEST(LoopWidth, IsTheDiameterOfACircleAndAboutTwiceTheGapOfASlit) {
