@@ -1,12 +1,14 @@
 #include "reconstruct/handles.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <utility>
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include "absl/container/flat_hash_map.h"
 #include "mesh/union_find.h"
 #include "meshseg/status_macros.h"
 #include "reconstruct/close_unsupported.h"
@@ -62,20 +64,39 @@ int SeenGenus(const TriMesh& tri, const std::vector<uint8_t>& filled) {
   return static_cast<int>((2 * components - chi - loops) / 2);
 }
 
-std::vector<double> MaxHandleLoops(const TriMesh& tri, const std::vector<Eigen::Vector3d>& points,
-                                   const mesh_internal::PointIndex& index, double handle_spacings,
-                                   double min_spacing) {
-  std::vector<double> max_loop(tri.n_vertices(), 0.0);
+namespace {
+
+// MaxHandleLoops at the vertices whose entry in `*max_loop` is negative.
+void FillMaxHandleLoops(const TriMesh& tri, const std::vector<Eigen::Vector3d>& points,
+                        const mesh_internal::PointIndex& index, double handle_spacings,
+                        double min_spacing, std::vector<double>* max_loop) {
   tbb::parallel_for(tbb::blocked_range<size_t>(0, tri.n_vertices()), [&](const auto& range) {
     std::vector<uint32_t> near;
     std::vector<double> dist2;
     for (size_t i = range.begin(); i != range.end(); ++i) {
+      if ((*max_loop)[i] >= 0) continue;
       const Eigen::Vector3d& p =
           points[index.Closest(ToEigen(tri.point(TriMesh::VertexHandle(static_cast<int>(i)))))];
-      max_loop[i] =
+      (*max_loop)[i] =
           M_PI * handle_spacings * std::max(min_spacing, SpacingAtPoint(p, index, &near, &dist2));
     }
   });
+}
+
+using Position = std::array<double, 3>;
+
+Position PositionOf(const TriMesh& tri, TriMesh::VertexHandle v) {
+  const auto& p = tri.point(v);
+  return {p[0], p[1], p[2]};
+}
+
+}  // namespace
+
+std::vector<double> MaxHandleLoops(const TriMesh& tri, const std::vector<Eigen::Vector3d>& points,
+                                   const mesh_internal::PointIndex& index, double handle_spacings,
+                                   double min_spacing) {
+  std::vector<double> max_loop(tri.n_vertices(), -1.0);
+  FillMaxHandleLoops(tri, points, index, handle_spacings, min_spacing, &max_loop);
   return max_loop;
 }
 
@@ -85,6 +106,7 @@ absl::Status CutUnsupportedHandles(const std::vector<Eigen::Vector3d>& points,
                                    std::vector<uint8_t>* filled, ReconstructStats* stats) {
   // After the first round, only loops near the patches of the last one.
   std::vector<uint8_t> near;
+  absl::flat_hash_map<Position, double> known;  // max_loop by vertex position
   // The spacing the refined mesh follows (refine.h); 0 without refinement.
   const double mesh_spacing = params.refine_edge_length > 0
                                   ? stats->refine_edge_length / params.refine_edge_length
@@ -100,8 +122,18 @@ absl::Status CutUnsupportedHandles(const std::vector<Eigen::Vector3d>& points,
     if (genus <= 0) break;
     // Round holes up to handle_spacings × s across have loops up to π times
     // that; loops up to twice as long are looked at for slits as narrow.
-    std::vector<double> max_loop =
-        MaxHandleLoops(mesh->tri, points, index, params.handle_spacings, mesh_spacing);
+    // The bound is a function of a vertex's position alone (the nearest
+    // point's spacing): a vertex the last round kept where it was keeps it.
+    std::vector<double> max_loop(mesh->tri.n_vertices(), -1.0);
+    for (const auto v : mesh->tri.vertices()) {
+      const auto it = known.find(PositionOf(mesh->tri, v));
+      if (it != known.end()) max_loop[v.idx()] = it->second;
+    }
+    FillMaxHandleLoops(mesh->tri, points, index, params.handle_spacings, mesh_spacing, &max_loop);
+    known.clear();
+    for (const auto v : mesh->tri.vertices()) {
+      known.emplace(PositionOf(mesh->tri, v), max_loop[v.idx()]);
+    }
     std::vector<double> max_width(max_loop.size());
     for (size_t v = 0; v < max_loop.size(); ++v) {
       max_width[v] = max_loop[v] / M_PI;
