@@ -31,6 +31,26 @@ std::vector<uint32_t> ShuffledOrder(size_t n, uint64_t seed) {
   return order;
 }
 
+// The inner supports of `supports` (cover.h): for each whose ball holds its
+// plane and the foot of its centre on it, where the nearest input point lies
+// in the ball, the support fitted at the point a radius inside that plane
+// along m from that foot.
+std::vector<Support> InnerSupports(const std::vector<Support>& supports, const FitInput& in) {
+  std::vector<Eigen::Vector3d> at;
+  for (const Support& s : supports) {
+    const double height = s.g(s.center);
+    if (!(std::abs(height) < s.radius)) continue;
+    const Eigen::Vector3d foot = s.center - height * s.m;
+    if (!((in.points[in.index.Closest(foot)] - s.center).norm() < s.radius)) continue;
+    at.push_back(s.center + (s.radius - height) * s.m);
+  }
+  std::vector<Support> inner(at.size());
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, at.size()), [&](const auto& range) {
+    for (size_t i = range.begin(); i != range.end(); ++i) inner[i] = FitSupport(at[i], 0.0, in);
+  });
+  return inner;
+}
+
 }  // namespace
 
 absl::StatusOr<std::vector<Support>> CoverBySupports(const std::vector<OctreeLeaf>& leaves,
@@ -85,6 +105,9 @@ absl::StatusOr<std::vector<Support>> CoverBySupports(const std::vector<OctreeLea
       supports.push_back(s);
     }
   }
+  MESHSEG_RETURN_IF_ERROR(ctx.CheckStop(kStage));
+  const std::vector<Support> inner = InnerSupports(supports, in);
+  supports.insert(supports.end(), inner.begin(), inner.end());
   return supports;
 }
 
