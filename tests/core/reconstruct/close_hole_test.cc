@@ -108,6 +108,34 @@ TEST(FlipFlatPatchFaces, AFlatFaceRoundAVertexOfValenceThreeLeavesTheTriangleIts
   EXPECT_NEAR(PMP::volume(sm), volume, 1e-12);
 }
 
+// A pyramid on the square p0 p1 p2 p3 (z = 0) with apex t, whose base was
+// closed by a patch with two free vertices b and b2 that the bend put on the
+// same point, the base's centre: the patch faces p2 b b2 and b p0 b2 have a
+// zero-length edge b b2 and their apex at an end of their longest edge, and
+// neither end has valence 3, so no flip or removal mends them. Merging b2
+// into b leaves the fan of four faces round the centre: the same surface,
+// the same volume, no flat face.
+TEST(FlipFlatPatchFaces, CoincidentPatchVerticesAreMergedIntoOne) {
+  enum { p0, p1, p2, p3, t, b, b2 };
+  HoleMesh sm = MeshOf({Point(-1, -1, 0), Point(1, -1, 0), Point(1, 1, 0), Point(-1, 1, 0),
+                        Point(0, 0, 1), Point(0, 0, 0), Point(0, 0, 0)},
+                       {{p0, p1, t}, {p1, p2, t}, {p2, p3, t}, {p3, p0, t}},
+                       {{p1, p0, b}, {p2, p1, b}, {p2, b, b2}, {p3, p2, b2}, {p0, p3, b2},
+                        {b, p0, b2}});
+  ASSERT_TRUE(CGAL::is_closed(sm));
+  const double volume = PMP::volume(sm), kept = KeptArea(sm);
+
+  FlipFlatPatchFaces(&sm);
+
+  EXPECT_TRUE(CGAL::is_closed(sm));
+  EXPECT_TRUE(sm.is_valid(false));
+  EXPECT_EQ(sm.number_of_vertices(), 6u);
+  EXPECT_EQ(sm.number_of_faces(), 8u);
+  for (const auto f : sm.faces()) EXPECT_GT(AreaRatio(sm, f), 0.1);
+  EXPECT_NEAR(PMP::volume(sm), volume, 1e-12);
+  EXPECT_NEAR(KeptArea(sm), kept, 1e-12);
+}
+
 // A patch of a flat square hole (loop of 8 vertices round [-1, 1]² in
 // z = 0, mean edge 1) whose one free vertex a bad solve left 50 above the
 // loop. The membrane lies in the loop's convex hull (maximum principle), so
