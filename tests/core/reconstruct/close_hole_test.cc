@@ -54,6 +54,17 @@ HoleMesh MeshOf(const std::vector<Point>& points, const std::vector<std::array<i
   return sm;
 }
 
+// `sm` after the flips: closed and valid, with `vertices` and `faces`, no
+// flat face, and enclosing `volume` as before.
+void ExpectClosedAndNoFlatFace(const HoleMesh& sm, size_t vertices, size_t faces, double volume) {
+  EXPECT_TRUE(CGAL::is_closed(sm));
+  EXPECT_TRUE(sm.is_valid(false));
+  EXPECT_EQ(sm.number_of_vertices(), vertices);
+  EXPECT_EQ(sm.number_of_faces(), faces);
+  for (const auto f : sm.faces()) EXPECT_GT(AreaRatio(sm, f), 0.1);
+  EXPECT_NEAR(PMP::volume(sm), volume, 1e-12);
+}
+
 // A tetrahedron a c d e whose face a e c was closed by a patch through the
 // midpoint b of its edge a c: the patch faces a b e and b c e and the flat
 // a c b (three collinear corners, the apex b on the longest edge a c). The
@@ -100,12 +111,7 @@ TEST(FlipFlatPatchFaces, AFlatFaceRoundAVertexOfValenceThreeLeavesTheTriangleIts
 
   FlipFlatPatchFaces(&sm);
 
-  EXPECT_TRUE(CGAL::is_closed(sm));
-  EXPECT_TRUE(sm.is_valid(false));
-  EXPECT_EQ(sm.number_of_vertices(), 4u);
-  EXPECT_EQ(sm.number_of_faces(), 4u);
-  for (const auto f : sm.faces()) EXPECT_GT(AreaRatio(sm, f), 0.1);
-  EXPECT_NEAR(PMP::volume(sm), volume, 1e-12);
+  ExpectClosedAndNoFlatFace(sm, 4, 4, volume);
 }
 
 // A pyramid on the square p0 p1 p2 p3 (z = 0) with apex t, whose base was
@@ -127,12 +133,7 @@ TEST(FlipFlatPatchFaces, CoincidentPatchVerticesAreMergedIntoOne) {
 
   FlipFlatPatchFaces(&sm);
 
-  EXPECT_TRUE(CGAL::is_closed(sm));
-  EXPECT_TRUE(sm.is_valid(false));
-  EXPECT_EQ(sm.number_of_vertices(), 6u);
-  EXPECT_EQ(sm.number_of_faces(), 8u);
-  for (const auto f : sm.faces()) EXPECT_GT(AreaRatio(sm, f), 0.1);
-  EXPECT_NEAR(PMP::volume(sm), volume, 1e-12);
+  ExpectClosedAndNoFlatFace(sm, 6, 8, volume);
   EXPECT_NEAR(KeptArea(sm), kept, 1e-12);
 }
 
