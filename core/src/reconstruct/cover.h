@@ -26,9 +26,9 @@ namespace meshseg::reconstruct_internal {
 // centre of a leaf next to the points, and the regular triangulation (step
 // 4, weights r²) hides every centre inside a larger ball. On a plane the
 // balls grow to about 15 spacings, so under a large flat support the solid
-// has no vertex deeper than about a cell: the tets there join the vertices
+// has no vertex deeper than a few cells: the tets there join the vertices
 // along the seen face to ones beyond the solid (the hull, outside). The
-// surface then closes a cell under the seen face, a cavity whose ceiling the
+// surface then closes a few cells under the seen face, a cavity whose ceiling the
 // refinement pulls onto the points (a second sheet on them, facing in);
 // where the far side is unseen, the patch that closes it runs through the
 // solid up to that ceiling.
