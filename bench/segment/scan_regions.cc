@@ -9,6 +9,9 @@
 //   typed           surfaces whose seen area is >= 1 % of the seen area whose
 //                   majority region has the true type / how many there are
 //   regions         regions of the result / primitives with points
+// and at the end, per part over its draws: mean and worst point accuracy,
+// draws at >= 95 %, draws with every surface typed, and the surfaces that
+// were not (with how many draws).
 //   build/bin/scan_regions [parts=a,b,...] [seeds=1,2,3] [points=40000]
 //                          [views=4] [noise=0.3] [outliers=0] [normals=0]
 //                          [verbose=0] [open=0] [dir=/tmp]
@@ -85,6 +88,7 @@ struct Row {
   double accuracy = 0.0;
   int typed = 0, surfaces = 0;
   bool ok = false;
+  std::vector<std::string> untyped;  // surfaces >= 1 % of the seen area not of their type
 };
 
 Row OneScan(const std::string& part, uint64_t seed, const meshseg::ScanParams& base,
@@ -125,6 +129,7 @@ Row OneScan(const std::string& part, uint64_t seed, const meshseg::ScanParams& b
     ++row.surfaces;
     const bool typed = s.region >= 0 && r->regions[s.region].type == s.true_type;
     row.typed += typed;
+    if (!typed) row.untyped.push_back(s.name);
     if (!typed || verbose) {
       char buf[256];
       std::snprintf(buf, sizeof buf,
@@ -214,15 +219,35 @@ int main(int argc, char** argv) {
               "seen%", "unlab%", "point%", "w<1", "w1-3", "w>=3", "typed", "regions", "time s");
   int runs = 0, met = 0;
   double worst = 1.0;
+  std::string summary;
   for (const std::string& part : Split(arg["parts"])) {
+    int part_runs = 0, part_accurate = 0, part_typed = 0;
+    double part_worst = 1.0, part_sum = 0.0;
+    std::map<std::string, int> untyped;
     for (const std::string& seed : Split(arg["seeds"])) {
       const Row row =
           OneScan(part, std::stoull(seed), params, pipeline, arg["dir"], arg["verbose"] == "1");
       ++runs;
-      worst = std::min(worst, row.ok ? row.accuracy : 0.0);
+      ++part_runs;
+      const double accuracy = row.ok ? row.accuracy : 0.0;
+      worst = std::min(worst, accuracy);
+      part_worst = std::min(part_worst, accuracy);
+      part_sum += accuracy;
+      part_accurate += accuracy >= 0.95;
+      part_typed += row.ok && row.typed == row.surfaces;
       met += row.ok && row.accuracy >= 0.95 && row.typed == row.surfaces;
+      for (const std::string& name : row.untyped) ++untyped[name];
     }
+    char buf[256];
+    std::snprintf(buf, sizeof buf, "%-14s %5.2f %5.2f %5d/%-3d %5d/%-3d", part.c_str(),
+                  100.0 * part_sum / std::max(1, part_runs), 100.0 * part_worst, part_accurate,
+                  part_runs, part_typed, part_runs);
+    summary += buf;
+    for (const auto& [name, count] : untyped) summary += " " + name + " x" + std::to_string(count);
+    summary += "\n";
   }
+  std::printf("\n%-14s %5s %5s %9s %9s %s\n%s", "part", "mean%", "worst", ">=95%", "typed",
+              "surfaces not of their type (scans)", summary.c_str());
   std::printf(
       "%d of %d scans meet both bars (>= 95 %% of points, every surface typed); worst "
       "point accuracy %.2f %%\n",

@@ -16,6 +16,10 @@ namespace {
 // Fewer points than this tell no type from another (the cone's fit needs 6).
 constexpr std::size_t kMinRetypePoints = 30;
 
+// The types a curved region may take on its points.
+constexpr SurfaceType kRetypeCandidates[] = {SurfaceType::kPlane, SurfaceType::kCylinder,
+                                             SurfaceType::kCone};
+
 struct Distances {
   double rms = 0.0;
   double max = 0.0;
@@ -129,16 +133,34 @@ int RetypeToPoints(std::span<const std::vector<Eigen::Vector3d>> points_of_regio
                                            points.size(), segment_internal::ParameterCount(own));
     std::optional<std::pair<SurfaceType, FitResult>> best;
     double best_score = std::numeric_limits<double>::infinity();
-    for (const SurfaceType t : {SurfaceType::kPlane, SurfaceType::kCylinder, SurfaceType::kCone}) {
-      if (t != SurfaceType::kPlane && !segment_internal::IsLimitOf(t, own)) continue;
+    for (const SurfaceType t : kRetypeCandidates) {
+      // A plane is a limit of every curved type (IsLimitOf covers the
+      // family around an axis). A sphere and the axial types are no limits
+      // of each other, so that rule never moves a region between them; but
+      // the reconstruction closes a bore seen near its rim only into a
+      // sphere of its radius, which the points, deeper down the band, can
+      // refute: a sphere may become a cylinder or cone when that scores
+      // kScoreMargin below it (its extra parameters paid). Not the other
+      // way: over a band too short to fix a cylinder's axis a sphere fits as
+      // closely with one parameter fewer, and on a chamfer whose points
+      // include the rounded crease bands beyond both its edges it fits
+      // better; neither is evidence of a sphere. Nor a more general type of
+      // the region's own family (a torus for a cone): its extra parameters
+      // bend to those crease bands.
+      const bool limit = t == SurfaceType::kPlane || segment_internal::IsLimitOf(t, own);
+      const bool axial_of_sphere = own == SurfaceType::kSphere &&
+                                   (t == SurfaceType::kCylinder || t == SurfaceType::kCone);
+      if (!limit && !axial_of_sphere) continue;
       const FitResult fit = FitOfType(t, {.points = points, .normals = normals, .weights = {}});
       if (!fit.ok()) continue;
       const double ms = fit.rms_distance * fit.rms_distance;
       const double score = segment_internal::InformationScore(c, ms, points.size(),
                                                               segment_internal::ParameterCount(t));
-      if (segment_internal::ModelErrorOfMeanSquare(c, ms) <=
-              segment_internal::kScoredNearError * c.noise_sigma &&
-          score < own_score + segment_internal::kScoreMargin && score < best_score) {
+      const bool near = segment_internal::ModelErrorOfMeanSquare(c, ms) <=
+                        segment_internal::kScoredNearError * c.noise_sigma;
+      if (near && score < best_score &&
+          (limit ? score < own_score + segment_internal::kScoreMargin
+                 : score + segment_internal::kScoreMargin < own_score)) {
         best_score = score;
         best.emplace(t, fit);
       }

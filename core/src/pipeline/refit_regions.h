@@ -41,17 +41,21 @@ void RefitToPoints(std::span<const std::vector<Eigen::Vector3d>> points_of_regio
 
 // Point clouds: the surface-type decision (ALGORITHMS.md S1) made again on each curved
 // region's own points (points_of_region, after RefitToPoints), with the
-// segmentation's criterion (segment/decide_type.h): a simpler type that is a
-// limit of the region's (a plane of any curved type; a cylinder or cone of
-// a torus; a cylinder of a cone) takes over when it fits the points within
-// kScoredNearError sigmas of their noise (the cloud's `sigma`, or the rms
-// the region's own type leaves if larger) and its information score is
-// less than kScoreMargin above the region's. On a reconstructed mesh the
-// type was decided on vertices that round every crease over a spacing and
-// run on over the smooth patches that close unscanned areas, which bends a
-// narrow chamfer into a torus band or a flat side into a cylinder; the
-// points are the data. A retyped region leaves the shared surface it was on
-// for one of its own. Returns how many regions changed type.
+// segmentation's criterion (segment/decide_type.h), near the noise (within
+// kScoredNearError sigmas of the cloud's `sigma`, or of the rms the region's
+// own type leaves if larger):
+// - a simpler type that is a limit of the region's (a plane of any curved
+//   type; a cylinder or cone of a torus; a cylinder of a cone) takes over
+//   when its information score is less than kScoreMargin above the region's;
+// - a sphere may become a cylinder or cone (no limit of it, nor it of
+//   them) when that scores kScoreMargin below it, never the other way.
+// On a reconstructed mesh the type was decided on vertices that round every
+// crease over a spacing and run on over the smooth patches that close
+// unscanned areas, which bends a narrow chamfer into a torus band or a flat
+// side into a cylinder, or closes a bore seen near its rim only into a
+// sphere of its radius; the points are the data. A retyped region leaves
+// the shared surface it was on for one of its own. Returns how many regions
+// changed type.
 int RetypeToPoints(std::span<const std::vector<Eigen::Vector3d>> points_of_region, double sigma,
                    std::vector<Region>* regions, std::vector<SharedSurface>* surfaces);
 

@@ -198,11 +198,69 @@ void CloseHole(HoleMesh::Halfedge_index h, size_t n, double sign, bool bend, Hol
   CloseLoop(h, n, loop, normals, sign, bend, sm);
 }
 
+namespace {
+
+// Whether every face around `v` is a patch face (flagged in `filled`): `v`
+// is a free vertex of a patch, not on its loop.
+bool FreePatchVertex(Sm::Vertex_index v, Sm::Property_map<Sm::Face_index, uint8_t> filled,
+                     const Sm& sm) {
+  for (const auto g : CGAL::faces_around_target(sm.halfedge(v), sm)) {
+    if (g == Sm::null_face() || !filled[g]) return false;
+  }
+  return true;
+}
+
+// Collapses `e` (a free patch vertex at one end at least) into one vertex at
+// the position of the end that is not free, or of either; false when the
+// collapse would break the surface (the link condition).
+bool MergeEnds(Sm::Edge_index e, Sm::Property_map<Sm::Face_index, uint8_t> filled, Sm* sm) {
+  const auto h = sm->halfedge(e);
+  const bool source_free = FreePatchVertex(sm->source(h), filled, *sm);
+  if (!source_free && !FreePatchVertex(sm->target(h), filled, *sm)) return false;
+  if (!CGAL::Euler::does_satisfy_link_condition(e, *sm)) return false;
+  const auto at = sm->point(source_free ? sm->target(h) : sm->source(h));
+  sm->point(CGAL::Euler::collapse_edge(e, *sm)) = at;
+  return true;
+}
+
+// Collapses each edge of a patch face of `sm` (flagged in `filled`) whose
+// ends coincide, within kFlatRatio of the face's longest edge squared, into
+// the position of its end that is not a free patch vertex, if one is not;
+// true when any was.
+bool CollapseCoincidentPatchEnds(Sm::Property_map<Sm::Face_index, uint8_t> filled, Sm* sm) {
+  bool collapsed = false;
+  for (const auto f : sm->faces()) {
+    if (sm->is_removed(f) || !filled[f]) continue;
+    double longest2 = 0.0;
+    for (const auto h : CGAL::halfedges_around_face(sm->halfedge(f), *sm)) {
+      longest2 = std::max(longest2, CGAL::squared_distance(sm->point(sm->source(h)),
+                                                           sm->point(sm->target(h))));
+    }
+    for (const auto h : CGAL::halfedges_around_face(sm->halfedge(f), *sm)) {
+      if (CGAL::squared_distance(sm->point(sm->source(h)), sm->point(sm->target(h))) >
+          kFlatRatio * longest2) {
+        continue;
+      }
+      // A loop vertex stays where it is; two are the kept surface's.
+      if (!MergeEnds(sm->edge(h), filled, sm)) continue;
+      collapsed = true;
+      break;  // f is gone
+    }
+  }
+  return collapsed;
+}
+
+}  // namespace
+
 void FlipFlatPatchFaces(Sm* sm) {
   const auto filled = sm->property_map<Sm::Face_index, uint8_t>("f:filled").first;
   bool removed = false;
   for (int pass = 0; pass < kFlatFlipPasses; ++pass) {
-    bool changed = false;
+    // Two coincident vertices (a zero-length edge) bound no area: one point
+    // of the surface given twice. Merging them leaves the surface as it is,
+    // where no flip could: the flip's apex would be an end of its edge.
+    bool changed = CollapseCoincidentPatchEnds(filled, sm);
+    removed = removed || changed;
     for (const auto f : sm->faces()) {
       if (!filled[f]) continue;
       Sm::Halfedge_index longest;

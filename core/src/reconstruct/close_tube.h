@@ -8,57 +8,43 @@
 // hole (the outer disc) and the bore's mouth, far from the surface the scan
 // did not see; the surface there is a tube joining the two rims.
 //
-// Two loops are taken as the rims of one unseen tube when (a) they bound
-// one removed component that is an annulus (the implicit function joined
-// them through the unseen region), (b) both are longer than the loops the
-// points resolve as holes (handles.h: a shorter one is a handle the points
-// do not show, which the handle step cuts), and (c) at both, the seen
-// surface leaves the loop out of its plane: its outgoing direction (in the
-// tangent plane, across the border, away from the seen faces) runs along the
-// loop's axis, so the seen surface extended is a wall leaving the loop, not
-// a sheet closing it. A spurious bridge between two sheets fails (c): each
-// sheet, extended, closes its own loop as a disc.
+// Two loops are taken as the rims of one unseen tube when (a) they are the
+// only border loops of one removed component (the implicit function joined
+// them through the unseen region; a handle inside it is as unsupported as the
+// rest of it and goes with it), (b) both are longer than the loops the points
+// resolve as holes (handles.h: a shorter one is a handle the points do not
+// show, which the handle step cuts), and (c) at both, the seen surface leaves
+// the loop out of its plane: its outgoing direction (in the tangent plane,
+// across the border, away from the seen faces) runs along the loop's axis, so
+// the seen surface extended is a wall leaving the loop, not a sheet closing
+// it. A spurious bridge between two sheets fails (c): each sheet, extended,
+// closes its own loop as a disc.
 //
 // The tube is then built (below) and kept only if (d) its arcs bend as the
 // seen surface does at each rim: unless the arcs are straight within the
 // resolution of a curvature (their mean depth below their chords at most the
-// loops' mean edge length), each rim's curvature across the border (read
-// from the normals 3 and 9 edges inside) is within half of the arcs' mean
-// curvature. A torus's section curves on into the unseen side at the
-// curvature it had where it was seen. Walls that run straight to the rims (a
-// bore and the walls around the face it opens onto) meet the unseen face at
-// edges, not in an arc.
+// loops' mean edge length), each rim's curvature across the border (read from
+// the normals 3, 6 and 9 edges inside, tube_rims.h) is within half of the
+// arcs' mean curvature. A torus's section curves on into the unseen side at
+// the curvature it had where it was seen. Walls that run straight to the rims
+// (a bore and the walls around the face it opens onto) meet the unseen face
+// at edges, not in an arc.
 //
-// The split at the cap. Where both rims are seen as straight walls (their
-// curvature across the border under half the arcs'), the annulus is split
-// at the face between them (ALGORITHMS.md S3): a ruled wall (cylinder,
-// prism) seen down to its rim continues straight until it meets the plane
-// of the unseen face. The shorter rim is the bore's; its axis is the
-// direction its wall's normals are square to. The cap plane is the plane the
-// most of the outer rim lies on, the one a disc over the face is bent onto
-// (seen_planes.h SeenCapPlane: consensus, then least squares; robust to the
-// rim climbing the walls), within 45° of that axis; its normal then gives
-// the axis (the bore runs square to the face). The bore's wall runs on
-// straight along the axis to the plane (a short tube), and the face is the
-// strip of straight rungs between the outer rim and the bore's circle on
-// the plane (a disc with a hole), with rows about a mean edge apart along
-// each rung. Where the outer rim climbs the walls round the face, those
-// rungs cut the corner between wall and face as a disc's membrane would, so
-// the strip is bent onto the seen planes of the outer rim as a disc is
-// (seen_planes.h). Rim vertices stacked along the axis share one foot, so
-// no rung runs along the wall onto another's foot (no face without area). When no seen surface
-// ends beyond the bore's rim by a mesh edge, there is no cap to reach, and
-// the loops keep their discs, bent onto the seen planes (seen_planes.h).
+// Where both rims are seen as straight walls, the annulus is split at the
+// face between them instead (split_at_cap.h).
 //
 // The tube: the loops are joined by a strip of rungs, the sequence of
-// loop-vertex pairs of least total rung length (the optimal strip between
-// two contours, Fuchs, Kedem & Uselton 1977, with rung length as the cost,
+// loop-vertex pairs of least total rung length (the optimal strip between two
+// contours, Fuchs, Kedem & Uselton 1977, with rung length as the cost,
 // Christiansen & Sederberg 1978). Along each rung the tube follows the cubic
 // Hermite curve that leaves each rim along the seen surface's outgoing
 // direction, with the tangent length of the circular arc through both ends
 // that turns by the angle between the two directions (a semicircle across a
 // torus's tube; a straight line between aligned walls): the seen surfaces
-// extended, joined with the continuity of their tangent planes.
+// extended, joined with the continuity of their tangent planes. The tube is
+// laid as rings across the rungs a mean loop edge apart along the longest
+// arc, each as dense as the loops (tube_strip.h): rows along the rungs would
+// crowd where the longer rim's rungs fan in onto the shorter one.
 #ifndef MESHSEG_RECONSTRUCT_CLOSE_TUBE_H_
 #define MESHSEG_RECONSTRUCT_CLOSE_TUBE_H_
 

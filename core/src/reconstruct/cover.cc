@@ -1,5 +1,6 @@
 #include "reconstruct/cover.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numeric>
 #include <random>
@@ -86,6 +87,63 @@ absl::StatusOr<std::vector<Support>> CoverBySupports(const std::vector<OctreeLea
     }
   }
   return supports;
+}
+
+std::vector<Support> InnerSupports(const std::vector<Support>& supports, const FitInput& in,
+                                   double spacing) {
+  std::vector<Eigen::Vector3d> at;
+  for (const Support& s : supports) {
+    const double height = s.g(s.center);
+    if (!(std::abs(height) < s.radius)) continue;
+    // The ball's disc on its plane, sampled at `spacing`, holds about
+    // π (r² − g(c)²) / spacing² points; at least a quarter of that (cover.h).
+    const double disc = M_PI * (s.radius * s.radius - height * height) / (spacing * spacing);
+    if (!(4.0 * s.point_count >= disc)) continue;
+    const Eigen::Vector3d foot = s.center - height * s.m;
+    if (!((in.points[in.index.Closest(foot)] - s.center).norm() < s.radius)) continue;
+    at.push_back(s.center + (s.radius - height) * s.m);
+  }
+  std::vector<Support> inner(at.size());
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, at.size()), [&](const auto& range) {
+    for (size_t i = range.begin(); i != range.end(); ++i) inner[i] = FitSupport(at[i], 0.0, in);
+  });
+  return inner;
+}
+
+std::vector<double> TetWeights(const std::vector<Support>& supports, size_t covering_count) {
+  std::vector<double> weight(supports.size(), -1.0);
+  std::vector<Eigen::Vector3d> centers(covering_count);
+  double largest = 0.0;
+  for (size_t i = 0; i < covering_count; ++i) {
+    weight[i] = supports[i].radius * supports[i].radius;
+    centers[i] = supports[i].center;
+    largest = std::max(largest, supports[i].radius);
+  }
+  if (covering_count == 0) return weight;
+  const mesh_internal::PointIndex index(centers);
+  tbb::parallel_for(
+      tbb::blocked_range<size_t>(covering_count, supports.size()), [&](const auto& range) {
+        std::vector<std::pair<uint32_t, double>> found;
+        for (size_t k = range.begin(); k != range.end(); ++k) {
+          const Eigen::Vector3d& p = supports[k].center;
+          // Not hidden: w ≥ r_i² − |p − c_i|² for every covering ball. Hides
+          // none: w < r_j² + |p − c_j|² for every covering centre. The
+          // nearest centre bounds the second, so the search reaches the
+          // larger of its bound's root and the largest radius.
+          const uint32_t nearest = index.Closest(p);
+          const double hi0 = supports[nearest].radius * supports[nearest].radius +
+                             (centers[nearest] - p).squaredNorm();
+          double lo = 0.0, hi = hi0;
+          index.WithinRadiusUnordered(p, std::max(largest, std::sqrt(hi0)), &found);
+          for (const auto& [j, d2] : found) {
+            const double r2 = supports[j].radius * supports[j].radius;
+            lo = std::max(lo, r2 - d2);
+            hi = std::min(hi, r2 + d2);
+          }
+          if (lo < hi) weight[k] = 0.5 * (lo + hi);
+        }
+      });
+  return weight;
 }
 
 }  // namespace meshseg::reconstruct_internal

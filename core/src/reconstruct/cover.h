@@ -21,6 +21,58 @@ absl::StatusOr<std::vector<Support>> CoverBySupports(const std::vector<OctreeLea
                                                      const FitInput& in, uint64_t seed,
                                                      const RunContext& ctx);
 
+// Inner supports (our addition to ALGORITHMS.md S3 step 3). Marching
+// tetrahedra (step 6) puts the surface only on tet edges between an inside
+// and an outside vertex, so the tets find a solid only where their vertices
+// sample its inside. The covering gives one vertex per support, at the
+// centre of a leaf next to the points, and the regular triangulation (step
+// 4, weights r²) hides every centre inside a larger ball. On a plane the
+// balls grow to about 15 spacings, so under a large flat support the solid
+// has no vertex deeper than a few cells: the tets there join the vertices
+// along the seen face to ones beyond the solid (the hull, outside). The
+// surface then closes a few cells under the seen face, a cavity whose ceiling the
+// refinement pulls onto the points (a second sheet on them, facing in);
+// where the far side is unseen, the patch that closes it runs through the
+// solid up to that ceiling.
+//
+// A support's ball reads the inside of its sheet as deep as its radius, and
+// only where its points are. So each support whose ball holds its plane
+// (|g(c)| < r), holds that plane sampled over at least a quarter of its
+// disc (point_count ≥ π (r² − g(c)²) / (4 spacing²): a ball centred at a
+// right-angled corner of its sampled face holds a quarter; a small flat
+// clump of stray points in a ball grown past it, a ghost sheet with no
+// solid behind it, holds less) and whose centre's foot on it lies on its
+// sampled part (the foot's nearest input point is in the ball; a foot on
+// the plane run on past the ball's points, as below a wall from a support
+// in the empty space under an unseen face, reads nothing) gives the point a
+// radius inside that plane, along m from the foot. Returns one support
+// fitted there (FitSupport with no lower bound) per such support, in their
+// order; the fit gives it the point count that marks it sparse or not for
+// the labels (graph_cut.h).
+//
+// They are tet vertices that sample f and no terms of it (the caller builds
+// f from the covering alone): a fit grown to the parent's points reproduces
+// the parent's plane, so as a term it put its own centre inside by
+// construction (measured: bubbles around clumps of stray points grown past
+// the small-component drop). For a centre on its plane the point lies on
+// the parent's sphere, where the parent's weight in f is b2(3/2) = 0: f
+// there is what the other supports read.
+std::vector<Support> InnerSupports(const std::vector<Support>& supports, const FitInput& in,
+                                   double spacing);
+
+// The weight of each of `supports` as a vertex of the regular triangulation
+// (ALGORITHMS.md S3 step 4): r² for the covering (the first
+// `covering_count`), and for each Steiner vertex after them (the inner
+// supports) a weight that makes it a vertex without hiding any covering
+// centre, or −1 (not a vertex) where no weight does both. A weighted point
+// p lies in its own power cell when w ≥ r_i² − |p − c_i|² for every ball i,
+// and leaves centre c_j in its own when w < r_j² + |p − c_j|²; the weight is
+// the middle of that interval. A Steiner vertex so adds a sample of f and
+// removes none. (With its fitted ball's weight r_in² it hid the covering's
+// centres on both faces of a plate thinner than that ball, leaving no
+// inside vertex there: through-holes in the surface.)
+std::vector<double> TetWeights(const std::vector<Support>& supports, size_t covering_count);
+
 }  // namespace meshseg::reconstruct_internal
 
 #endif  // MESHSEG_RECONSTRUCT_COVER_H_

@@ -27,20 +27,27 @@ struct Scratch {
         face_stamp(g.face_vertices.size(), 0),
         complex_stamp(g.ring_begin.size(), 0),
         edge_stamp(g.edge_faces.size(), 0),
+        walk_stamp(g.face_vertices.size(), 0),
         dist(g.ring_begin.size()),
         parent(g.ring_begin.size()),
         parent_edge(g.ring_begin.size()),
         face_node(g.face_vertices.size()) {}
   uint32_t stamp = 0;
-  std::vector<uint32_t> ball_stamp, tree_stamp, face_stamp, complex_stamp, edge_stamp;
+  std::vector<uint32_t> ball_stamp, tree_stamp, face_stamp, complex_stamp, edge_stamp, walk_stamp;
   std::vector<double> dist;
   std::vector<int> parent, parent_edge, face_node;
-  std::vector<int> reached, ball_faces, union_parent;
+  std::vector<int> reached, ball_faces, union_parent, stack;
   std::vector<HandleLoop> loops;
+  std::vector<int> covered;  // seeds whose balls lie in a disc
 };
 
 using QueueItem = std::pair<double, int>;
 using MinQueue = std::priority_queue<QueueItem, std::vector<QueueItem>, std::greater<>>;
+
+// A center of the covering claims the seeds within this many of its seed
+// radii, and its covering ball reaches kCoverReach of them beyond (ShortLoops).
+constexpr double kCoverClaim = 3.0;
+constexpr double kCoverReach = 1.25;
 
 bool EdgeInBall(const MeshGraph& g, const Scratch& s, int e) {
   for (const int f : g.edge_faces[e]) {
@@ -49,12 +56,12 @@ bool EdgeInBall(const MeshGraph& g, const Scratch& s, int e) {
   return false;
 }
 
-// The shortest loop not contractible in the geodesic ball of radius
-// max_length / 2 + reach around `seed` that passes through the seed (its
-// tail to the seed dropped), if at most max_length long.
-void ShortestLoopNear(const MeshGraph& g, int seed, double max_length, double reach, Scratch* s) {
+// The geodesic ball of `radius` around `seed` under a new stamp: its
+// vertices (reached, with dist) and, with `faces`, its faces (all three
+// vertices in it). Returns the Euler characteristic of the complex of its
+// faces (0 without `faces`).
+int64_t GrowBall(const MeshGraph& g, int seed, double radius, Scratch* s, bool faces = true) {
   const uint32_t t = ++s->stamp;
-  const double radius = 0.5 * max_length + reach;
   // The ball: vertices within the radius along edges, faces with all three.
   s->reached.clear();
   MinQueue queue;
@@ -76,6 +83,7 @@ void ShortestLoopNear(const MeshGraph& g, int seed, double max_length, double re
     }
   }
   s->ball_faces.clear();
+  if (!faces) return 0;
   for (const int v : s->reached) {
     for (int k = g.faces_begin[v]; k < g.faces_begin[v + 1]; ++k) {
       const int f = g.faces[k];
@@ -98,7 +106,16 @@ void ShortestLoopNear(const MeshGraph& g, int seed, double max_length, double re
       s->complex_stamp[v] = s->edge_stamp[e] = t;
     }
   }
-  if (chi == 1) return;
+  return chi;
+}
+
+// The shortest loop not contractible in the geodesic ball of `radius`
+// around `seed` that passes through the seed (its tail to the seed
+// dropped), if at most max_length long.
+void ShortestLoopNear(const MeshGraph& g, int seed, double max_length, double radius, Scratch* s) {
+  if (GrowBall(g, seed, radius, s) == 1) return;
+  const uint32_t t = s->stamp;
+  MinQueue queue;
   // The shortest-path tree of the ball's faces' edges from the seed.
   s->tree_stamp[seed] = t;
   s->dist[seed] = 0.0;
@@ -188,6 +205,57 @@ void ShortestLoopNear(const MeshGraph& g, int seed, double max_length, double re
   if (n >= 3 && loop.length <= max_length) s->loops.push_back(std::move(loop));
 }
 
+// Whether the faces of the current ball are one piece across their edges.
+bool BallConnected(const MeshGraph& g, Scratch* s) {
+  if (s->ball_faces.empty()) return false;
+  const uint32_t t = s->stamp;
+  s->stack.assign(1, s->ball_faces[0]);
+  s->walk_stamp[s->ball_faces[0]] = t;
+  size_t walked = 1;
+  while (!s->stack.empty()) {
+    const int f = s->stack.back();
+    s->stack.pop_back();
+    for (const int e : g.face_edges[f]) {
+      for (const int o : g.edge_faces[e]) {
+        if (o < 0 || s->face_stamp[o] != t || s->walk_stamp[o] == t) continue;
+        s->walk_stamp[o] = t;
+        s->stack.push_back(o);
+        ++walked;
+      }
+    }
+  }
+  return walked == s->ball_faces.size();
+}
+
+// Seeds whose own search cannot find a loop that is cut (the covering below,
+// in ShortLoops): the ball of radius cover[c] around each center c is grown
+// once; where its faces are one piece with Euler characteristic 1, every
+// seed v in it with dist(c, v) + radius[v] <= cover[c] is flagged.
+std::vector<uint8_t> CoveredSeeds(const MeshGraph& g, const std::vector<int>& centers,
+                                  const std::vector<double>& cover,
+                                  const std::vector<double>& radius,
+                                  tbb::enumerable_thread_specific<Scratch>* scratch) {
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, centers.size()), [&](const auto& range) {
+    Scratch& s = scratch->local();
+    for (size_t i = range.begin(); i != range.end(); ++i) {
+      const int c = centers[i];
+      if (GrowBall(g, c, cover[c], &s) != 1 || !BallConnected(g, &s)) continue;
+      for (const int v : s.reached) {
+        // (A margin for the rounding of the two distance sums.)
+        if (radius[v] > 0 && s.dist[v] + radius[v] <= cover[c] * (1 - 1e-9)) {
+          s.covered.push_back(v);
+        }
+      }
+    }
+  });
+  std::vector<uint8_t> covered(radius.size(), 0);
+  for (Scratch& s : *scratch) {
+    for (const int v : s.covered) covered[v] = 1;
+    s.covered.clear();
+  }
+  return covered;
+}
+
 // Vertices within max_loop of a vertex flagged in `near` (all if empty).
 std::vector<uint8_t> SeedArea(const MeshGraph& g, const std::vector<double>& max_loop,
                               const std::vector<uint8_t>& near) {
@@ -258,24 +326,61 @@ MeshGraph MakeMeshGraph(const TriMesh& tri) {
 
 std::vector<HandleLoop> ShortLoops(const MeshGraph& g, const std::vector<double>& max_loop,
                                    const std::vector<uint8_t>& near) {
+  const int nv = static_cast<int>(max_loop.size());
   std::vector<int> seeds;
-  std::vector<uint8_t> near_seed(max_loop.size(), 0);
+  std::vector<uint8_t> near_seed(nv, 0);
+  std::vector<double> radius(nv, 0.0);  // of each seed's ball
   const std::vector<uint8_t> area = SeedArea(g, max_loop, near);
-  for (int v = 0; v < static_cast<int>(max_loop.size()); ++v) {
+  for (int v = 0; v < nv; ++v) {
     if (near_seed[v] || !area[v] || !(max_loop[v] > 0)) continue;
     seeds.push_back(v);
-    for (int k = g.ring_begin[v]; k < g.ring_begin[v + 1]; ++k) near_seed[g.to[k]] = 1;
+    double reach = 0.0;
+    for (int k = g.ring_begin[v]; k < g.ring_begin[v + 1]; ++k) {
+      near_seed[g.to[k]] = 1;
+      reach = std::max(reach, g.length[k]);
+    }
+    radius[v] = 0.5 * max_loop[v] + reach;
   }
   tbb::enumerable_thread_specific<Scratch> scratch([&] { return Scratch(g); });
-  tbb::parallel_for(tbb::blocked_range<size_t>(0, seeds.size()), [&](const auto& range) {
+  // The covering. A seed's search finds loops inside its ball, and the
+  // global test (handle_strips.h) cuts a loop only if it does not separate
+  // the surface. A simple closed curve on a surface separates it when it is
+  // a boundary over Z2 (its class in H1(S; Z2) is 0). A connected complex
+  // of faces with Euler characteristic 1 that is not a whole closed surface
+  // (whose χ would be even) has b2 = 0, hence b1 = b0 − χ = 0 over Z2: every
+  // loop inside it is a boundary there, hence on the surface, and separates.
+  // So a seed whose ball lies in such a complex finds no loop that could be
+  // cut, and its own search is skipped. Centers are taken greedily from the
+  // seeds, each claiming the seeds within kCoverClaim of its own radius; its
+  // covering ball reaches kCoverReach of its radius beyond, holding the
+  // balls of the seeds it claimed where their radii are alike. Seeds left
+  // uncovered (near a handle, on a part thinner than a covering ball) are
+  // searched as before.
+  // What a skipped loop did was cost a check against the whole surface and
+  // mark its vertices as on a separating loop (handle_strips.cc).
+  std::vector<int> centers;
+  std::vector<double> cover(nv, 0.0);
+  {
+    Scratch& s = scratch.local();
+    std::vector<uint8_t> claimed(nv, 0);
+    for (const int v : seeds) {
+      if (claimed[v]) continue;
+      centers.push_back(v);
+      cover[v] = (kCoverClaim + kCoverReach) * radius[v];
+      GrowBall(g, v, kCoverClaim * radius[v], &s, false);
+      for (const int w : s.reached) claimed[w] = 1;
+    }
+  }
+  const std::vector<uint8_t> covered = CoveredSeeds(g, centers, cover, radius, &scratch);
+  std::vector<int> searched;
+  for (const int v : seeds) {
+    if (!covered[v]) searched.push_back(v);
+  }
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, searched.size()), [&](const auto& range) {
     Scratch& s = scratch.local();
     for (size_t i = range.begin(); i != range.end(); ++i) {
-      const int v = seeds[i];
-      double reach = 0.0;
-      for (int k = g.ring_begin[v]; k < g.ring_begin[v + 1]; ++k) {
-        reach = std::max(reach, g.length[k]);
-      }
-      ShortestLoopNear(g, v, max_loop[v], reach, &s);
+      const int v = searched[i];
+      ShortestLoopNear(g, v, max_loop[v], radius[v], &s);
     }
   });
   std::vector<HandleLoop> loops;

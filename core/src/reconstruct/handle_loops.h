@@ -16,6 +16,9 @@
 // taken greedily longest loop first; Erickson & Whittlesey 2005): the
 // shortest leftover edge closes the shortest such loop through v, and its
 // tail to v is dropped. Whether a loop is a handle is handle_strips.h's test.
+// Seeds whose ball lies inside a larger ball that is a disc (connected,
+// Euler characteristic 1) are not searched: every loop there separates the
+// surface, so none of them could be cut (the covering, in ShortLoops).
 #ifndef MESHSEG_RECONSTRUCT_HANDLE_LOOPS_H_
 #define MESHSEG_RECONSTRUCT_HANDLE_LOOPS_H_
 
@@ -51,8 +54,10 @@ struct HandleLoop {
 // shortest first (several seeds may find the same loop). Every vertex is a
 // seed or next to one (a maximal independent set), so a loop passes within
 // one edge of a seed and lies in its ball of radius max_loop / 2 widened by
-// the seed's longest edge. With `near` (one per vertex) not empty, only
-// seeds within max_loop of a flagged vertex are used.
+// the seed's longest edge. Loops inside a disc of the surface (they separate
+// it) are not all returned: seeds whose balls lie in a covering disc are
+// skipped. With `near` (one per vertex) not empty, only seeds within
+// max_loop of a flagged vertex are used.
 std::vector<HandleLoop> ShortLoops(const MeshGraph& g, const std::vector<double>& max_loop,
                                    const std::vector<uint8_t>& near = {});
 

@@ -29,6 +29,12 @@
 
 namespace meshseg::reconstruct_internal {
 
+// The genus of the faces of `tri` whose `filled` flag (one per face) is 0,
+// the seen surface: (2 C − χ − B) / 2 over those faces alone, with C their
+// edge-connected pieces and B their border loops. Without one flag per face,
+// every face is taken as seen.
+int SeenGenus(const TriMesh& tri, const std::vector<uint8_t>& filled);
+
 // Rounds of cutting and closing at most: a loop through the strip of a cut
 // waits for the next round, which looks near the last round's patches only.
 inline constexpr int kHandleRounds = 8;

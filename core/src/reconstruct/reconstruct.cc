@@ -211,6 +211,15 @@ absl::StatusOr<Reconstruction> Reconstruct(const PointCloud& cloud, const Recons
                            CoverBySupports(leaves, fit_input, params.seed, ctx));
   stats.support_count = static_cast<int64_t>(supports.size());
   const PuFunction f(supports);
+  // Tet vertices: the covering's centres and its inner supports' (cover.h),
+  // which sample f without being terms of it, weighted to hide no centre of
+  // the covering.
+  std::vector<Support> vertices = supports;
+  {
+    const std::vector<Support> inner = InnerSupports(supports, fit_input, h);
+    vertices.insert(vertices.end(), inner.begin(), inner.end());
+  }
+  const std::vector<double> tet_weights = TetWeights(vertices, supports.size());
   ctx.Progress(kStage, 0.4);
 
   // Step 3: regular tetrahedralization of the support centres.
@@ -220,13 +229,14 @@ absl::StatusOr<Reconstruction> Reconstruct(const PointCloud& cloud, const Recons
     return ThinSolidError(cloud.name, absl::StrCat("the covering has only ", supports.size()),
                           cube / (1 << stats.octree_max_level));
   }
-  MESHSEG_ASSIGN_OR_RETURN(const TetMesh tets, RegularTetrahedralization(supports, ctx));
+  MESHSEG_ASSIGN_OR_RETURN(const TetMesh tets,
+                           RegularTetrahedralization(vertices, tet_weights, ctx));
   stats.tet_vertex_count = static_cast<int64_t>(tets.support.size());
   stats.tet_count = static_cast<int64_t>(tets.tets.size());
   std::vector<Eigen::Vector3d> position(tets.support.size());
   std::vector<uint8_t> sparse(tets.support.size());
   for (size_t v = 0; v < tets.support.size(); ++v) {
-    const Support& s = supports[tets.support[v]];
+    const Support& s = vertices[tets.support[v]];
     position[v] = s.center;
     sparse[v] = s.point_count < params.sparse_support_points;
   }

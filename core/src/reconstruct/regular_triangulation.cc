@@ -32,13 +32,21 @@ using WeightedPoint = Regular::Weighted_point;
 
 absl::StatusOr<TetMesh> RegularTetrahedralization(const std::vector<Support>& supports,
                                                   const RunContext& ctx) {
+  std::vector<double> weights(supports.size());
+  for (size_t i = 0; i < supports.size(); ++i) weights[i] = supports[i].radius * supports[i].radius;
+  return RegularTetrahedralization(supports, weights, ctx);
+}
+
+absl::StatusOr<TetMesh> RegularTetrahedralization(const std::vector<Support>& supports,
+                                                  const std::vector<double>& weights,
+                                                  const RunContext& ctx) {
   std::vector<std::pair<WeightedPoint, int>> input;
   input.reserve(supports.size());
   for (size_t i = 0; i < supports.size(); ++i) {
+    if (weights[i] < 0) continue;
     const auto& c = supports[i].center;
-    input.emplace_back(
-        WeightedPoint(K::Point_3(c.x(), c.y(), c.z()), supports[i].radius * supports[i].radius),
-        static_cast<int>(i));
+    input.emplace_back(WeightedPoint(K::Point_3(c.x(), c.y(), c.z()), weights[i]),
+                       static_cast<int>(i));
   }
   Regular rt;
   rt.insert(input.begin(), input.end());

@@ -28,6 +28,12 @@ struct TetMesh {
 absl::StatusOr<TetMesh> RegularTetrahedralization(const std::vector<Support>& supports,
                                                   const RunContext& ctx);
 
+// As above with the weight of each support given (one per support); a
+// support with a negative weight is not a vertex.
+absl::StatusOr<TetMesh> RegularTetrahedralization(const std::vector<Support>& supports,
+                                                  const std::vector<double>& weights,
+                                                  const RunContext& ctx);
+
 }  // namespace meshseg::reconstruct_internal
 
 #endif  // MESHSEG_RECONSTRUCT_REGULAR_TRIANGULATION_H_

@@ -26,6 +26,9 @@ namespace PMP = CGAL::Polygon_mesh_processing;
 // seen surface's run.
 constexpr int kNearRing = 3;
 constexpr int kFarRing = 9;
+// The ring halfway between: a section that curves turns its normal evenly
+// from the near ring to the far one, a crease within reach at one place.
+constexpr int kMidRing = (kNearRing + kFarRing) / 2;
 // The outgoing direction at a loop vertex is averaged over this many loop
 // vertices on either side: as far along the rim as the rings it comes from
 // reach inwards (a scan's border zigzags from one edge to the next, and
@@ -79,11 +82,12 @@ Rim RimOf(const HoleMesh& sm, HoleMesh::Halfedge_index h, double sign) {
     owner[rim.loop[k]] = static_cast<int>(k);
     front.push_back(rim.loop[k]);
   }
-  // Per rim vertex and ring (near, far): sums of the owned vertices'
+  // Per rim vertex and ring (near, far, mid): sums of the owned vertices'
   // normals and points, and their count.
-  std::vector<std::array<Eigen::Vector3d, 2>> normal_sum(n, {Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()});
-  std::vector<std::array<Eigen::Vector3d, 2>> point_sum = normal_sum;
-  std::vector<std::array<int, 2>> owned(n, {0, 0});
+  std::vector<std::array<Eigen::Vector3d, 3>> normal_sum(
+      n, {Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()});
+  std::vector<std::array<Eigen::Vector3d, 3>> point_sum = normal_sum;
+  std::vector<std::array<int, 3>> owned(n, {0, 0, 0});
   for (int r = 1; r <= kFarRing && !front.empty(); ++r) {
     std::vector<Sm::Vertex_index> next;
     for (const auto v : front) {
@@ -92,8 +96,8 @@ Rim RimOf(const HoleMesh& sm, HoleMesh::Halfedge_index h, double sign) {
         ring[w] = r;
         owner[w] = owner[v];
         next.push_back(w);
-        if (r != kNearRing && r != kFarRing) continue;
-        const int which = r == kFarRing;
+        if (r != kNearRing && r != kFarRing && r != kMidRing) continue;
+        const int which = r == kNearRing ? 0 : r == kFarRing ? 1 : 2;
         normal_sum[owner[w]][which] += NormalAt(sm, w);
         point_sum[owner[w]][which] += At(sm, w);
         ++owned[owner[w]][which];
@@ -107,8 +111,8 @@ Rim RimOf(const HoleMesh& sm, HoleMesh::Halfedge_index h, double sign) {
     const Eigen::Vector3d p = At(sm, rim.loop[k]);
     const Eigen::Vector3d along = At(sm, rim.loop[(k + 1) % n]) - At(sm, rim.loop[(k + n - 1) % n]);
     // Windowed sums: a rim vertex may own no vertex of a ring.
-    Eigen::Vector3d n1 = Eigen::Vector3d::Zero(), n2 = n1, p1 = n1, p2 = n1;
-    int c1 = 0, c2 = 0;
+    Eigen::Vector3d n1 = Eigen::Vector3d::Zero(), n2 = n1, n3 = n1, p1 = n1, p2 = n1, p3 = n1;
+    int c1 = 0, c2 = 0, c3 = 0;
     for (int w = -kRingWindow; w <= kRingWindow; ++w) {
       const size_t j = Around(k, w, n);
       n1 += normal_sum[j][0];
@@ -117,6 +121,9 @@ Rim RimOf(const HoleMesh& sm, HoleMesh::Halfedge_index h, double sign) {
       n2 += normal_sum[j][1];
       p2 += point_sum[j][1];
       c2 += owned[j][1];
+      n3 += normal_sum[j][2];
+      p3 += point_sum[j][2];
+      c3 += owned[j][2];
     }
     if (c1 == 0 || c2 == 0 || !(n1.norm() > 0) || !(n2.norm() > 0)) continue;
     p1 /= c1;
@@ -137,7 +144,31 @@ Rim RimOf(const HoleMesh& sm, HoleMesh::Halfedge_index h, double sign) {
       continue;
     }
     // Going out, the normal of a convex section turns towards the way out.
-    turn += axis.dot(normal.cross(raw[k])) >= 0 ? angle : -angle;
+    // Only its turn about the rim's tangent is curvature across the border
+    // (the rest is the rim's own bend along it, between the rings' owned
+    // vertices).
+    const Eigen::Vector3d tangent = normal.cross(raw[k]).normalized();
+    const auto signed_turn = [&](const Eigen::Vector3d& from, const Eigen::Vector3d& to) {
+      const Eigen::Vector3d about = to.cross(from);
+      const double by = std::atan2(about.norm(), to.dot(from));
+      return about.norm() > 0 ? by * about.normalized().dot(tangent) : 0.0;
+    };
+    double rate = signed_turn(n1, n2) / span;
+    // A section that curves turns as fast from the near ring to the middle
+    // one as from there to the far one; a crease within reach (the rim of a
+    // countersink above a bore's) turns it in one of the halves only. The
+    // rate is the slower half's, so a crease does not read as curvature.
+    if (c3 > 0 && n3.norm() > 0) {
+      p3 /= c3;
+      n3.normalize();
+      const double near_span = (p1 - p3).norm(), far_span = (p3 - p2).norm();
+      if (near_span > 0 && far_span > 0) {
+        const double near_rate = signed_turn(n1, n3) / near_span;
+        const double far_rate = signed_turn(n3, n2) / far_span;
+        rate = std::abs(near_rate) <= std::abs(far_rate) ? near_rate : far_rate;
+      }
+    }
+    turn += rate * span;
     run += span;
   }
   rim.curvature = run > 0 ? sign * turn / run : 0.0;
@@ -212,26 +243,10 @@ std::vector<std::pair<size_t, size_t>> TubeRims(const TriMesh& tri,
                                                 const std::vector<int>& tri_vertex,
                                                 const std::vector<HoleMesh::Halfedge_index>& loops,
                                                 double min_rim) {
-  // Removed components and their Euler characteristics.
+  // Removed components. One bounded by exactly two loops joins them
+  // through the unseen region, whatever its genus: handles inside it are no
+  // more supported by points than the rest of it, and go with it.
   std::vector<int> parent = FacePieces(tri, removed, 1);
-  std::vector<int64_t> chi(tri.n_faces(), 0);
-  for (const auto f : tri.faces()) chi[FindRoot(parent, f.idx())] += removed[f.idx()];
-  for (const auto e : tri.edges()) {
-    for (int side = 0; side < 2; ++side) {
-      const auto f = tri.face_handle(tri.halfedge_handle(e, side));
-      if (f.is_valid() && removed[f.idx()]) {
-        --chi[FindRoot(parent, f.idx())];
-        break;
-      }
-    }
-  }
-  for (const auto v : tri.vertices()) {
-    for (const auto f : tri.vf_range(v)) {
-      if (!removed[f.idx()]) continue;
-      ++chi[FindRoot(parent, f.idx())];  // one removed fan per vertex (no pinches)
-      break;
-    }
-  }
   // The component across each loop, and the loops of each component.
   std::vector<int> component(loops.size(), -1);
   std::vector<int> loop_count(tri.n_faces(), 0);
@@ -246,7 +261,7 @@ std::vector<std::pair<size_t, size_t>> TubeRims(const TriMesh& tri,
   std::vector<std::pair<size_t, size_t>> rims;
   for (size_t i = 0; i < loops.size(); ++i) {
     const int c = component[i];
-    if (c < 0 || loop_count[c] != 2 || chi[c] != 0) continue;
+    if (c < 0 || loop_count[c] != 2) continue;
     for (size_t j = i + 1; j < loops.size(); ++j) {
       if (component[j] != c) continue;
       if (Perimeter(sm, loops[i]) > min_rim && Perimeter(sm, loops[j]) > min_rim &&

@@ -33,8 +33,13 @@ inline constexpr double kMinLeavingCosine = 0.7071;
 // noisier than the turn of a curved section over it. So both come from the
 // rings kNearRing and kFarRing edges inside (each rim vertex owns the
 // vertices nearest it in edges): the curvature is the turn of the normal
-// between them over their distance, and the normal at the rim is the near
-// ring's turned on by as much as the turn carries on to the rim (an arc).
+// about the rim's tangent between them over their distance, and the normal
+// at the rim is the near ring's turned on by as much as the turn carries on
+// to the rim (an arc). A section that curves turns evenly over that reach;
+// a crease within it (a countersink's rim above a bore's) turns the normal
+// at one place. So the curvature is read over each half of the reach (from
+// the near ring to the one halfway and on to the far one), and the slower
+// half's rate is taken: a crease in reach reads as no curvature.
 struct Rim {
   std::vector<HoleMesh::Vertex_index> loop;
   std::vector<Eigen::Vector3d> out;

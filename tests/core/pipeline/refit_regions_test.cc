@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <random>
 #include <variant>
 #include <vector>
 
@@ -163,6 +164,113 @@ TEST(RelabelFacesOffTheirSurface, AFaceOnItsOwnSurfaceStays) {
   labels[0] = 1;
   EXPECT_EQ(RelabelFacesOffTheirSurface(tube, regions, 1e-6, &labels), 0);
   EXPECT_EQ(labels[0], 1);
+}
+
+// Points on the wall of a bore of radius 3.5 around the z axis, from its rim
+// (z = 0) down to depth `depth`, all around, with Gaussian noise `sigma`
+// across the wall: the band a scan from above sees near a rim.
+std::vector<Eigen::Vector3d> BoreBand(double depth, double sigma) {
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::normal_distribution<double> noise(0.0, sigma);
+  std::vector<Eigen::Vector3d> points;
+  for (int k = 0; k < 1500; ++k) {
+    const double t = 2.0 * std::numbers::pi * unit(random);
+    const double r = 3.5 + noise(random);
+    points.emplace_back(r * std::cos(t), r * std::sin(t), -depth * unit(random));
+  }
+  return points;
+}
+
+// One region of `type`, fitted to `points`.
+std::vector<Region> RegionFittedAs(SurfaceType type, const std::vector<Eigen::Vector3d>& points) {
+  const FitResult fit = FitOfType(type, {.points = points, .normals = {}, .weights = {}});
+  EXPECT_TRUE(fit.ok()) << SurfaceTypeName(type);
+  std::vector<Region> regions(1);
+  regions[0].type = type;
+  regions[0].surface = fit.surface;
+  regions[0].rms_distance = fit.rms_distance;
+  regions[0].max_distance = fit.max_distance;
+  return regions;
+}
+
+TEST(RetypeToPoints, ABoreBandTypedAsASphereIsACylinderOnItsPoints) {
+  // Depth 3: a sphere of the bore's radius leaves the band by about
+  // d^2 / 2R = 1.3 at the bottom, and its best fit misses the points by
+  // three times the noise 0.03 the cylinder meets. Depth 1: the sphere's rms
+  // is only 5 % above the cylinder's, but 1500 points tell the two apart (a
+  // likelihood ratio of about e^65). The cylinder has a parameter more and
+  // takes over all the same.
+  constexpr double kSigma = 0.03;
+  for (const double depth : {3.0, 1.0}) {
+    const std::vector<std::vector<Eigen::Vector3d>> points = {BoreBand(depth, kSigma)};
+    std::vector<Region> regions = RegionFittedAs(SurfaceType::kSphere, points[0]);
+    std::vector<SharedSurface> surfaces;
+    EXPECT_EQ(RetypeToPoints(points, kSigma, &regions, &surfaces), 1) << depth;
+    ASSERT_EQ(regions[0].type, SurfaceType::kCylinder) << depth;
+    EXPECT_NEAR(std::get<Cylinder>(regions[0].surface).radius, 3.5, 0.01) << depth;
+    EXPECT_LT(regions[0].rms_distance, 1.1 * kSigma) << depth;
+    ASSERT_EQ(surfaces.size(), 1u);
+    EXPECT_EQ(surfaces[0].type, SurfaceType::kCylinder);
+    EXPECT_EQ(surfaces[0].regions, std::vector<int>{0});
+  }
+}
+
+TEST(RetypeToPoints, ABandTooShortToTellKeepsItsType) {
+  // Depth 0.3: the sphere through the band's rims leaves it by at most
+  // d^2 / 8R = 0.003 in between, a tenth of the noise: the points do not
+  // decide, and the region keeps the type it has, either way.
+  constexpr double kSigma = 0.03;
+  const std::vector<std::vector<Eigen::Vector3d>> points = {BoreBand(0.3, kSigma)};
+  for (const SurfaceType type : {SurfaceType::kSphere, SurfaceType::kCylinder}) {
+    std::vector<Region> regions = RegionFittedAs(type, points[0]);
+    std::vector<SharedSurface> surfaces;
+    EXPECT_EQ(RetypeToPoints(points, kSigma, &regions, &surfaces), 0) << SurfaceTypeName(type);
+    EXPECT_EQ(regions[0].type, type);
+  }
+}
+
+TEST(RetypeToPoints, ACylinderBandStaysACylinder) {
+  // No more general type of its family (cone, torus) takes over by fitting
+  // the noise.
+  constexpr double kSigma = 0.03;
+  const std::vector<std::vector<Eigen::Vector3d>> points = {BoreBand(3.0, kSigma)};
+  std::vector<Region> regions = RegionFittedAs(SurfaceType::kCylinder, points[0]);
+  std::vector<SharedSurface> surfaces;
+  EXPECT_EQ(RetypeToPoints(points, kSigma, &regions, &surfaces), 0);
+  EXPECT_EQ(regions[0].type, SurfaceType::kCylinder);
+}
+
+TEST(RetypeToPoints, AChamferWithItsCreaseBandsStaysACone) {
+  // A 45-degree chamfer from radius 5 at z = 0 to 3.5 at z = 1.5, and the
+  // points a reconstruction's rounded creases give it from beyond its
+  // edges: the cylinder below (z from -0.4 to 0) and the flat top (radius
+  // 3.1 to 3.5). Both flanks turn the same way, so a sphere bends to them
+  // and fits these points better than the cone; it is not taken.
+  constexpr double kSigma = 0.03;
+  std::mt19937 random(11);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::normal_distribution<double> noise(0.0, kSigma);
+  std::vector<std::vector<Eigen::Vector3d>> points(1);
+  for (int k = 0; k < 1500; ++k) {
+    const double t = 2.0 * std::numbers::pi * unit(random);
+    const Eigen::Vector3d radial(std::cos(t), std::sin(t), 0.0);
+    const double e = noise(random);
+    const double u = unit(random);
+    if (k % 5 == 0) {  // the cylinder's crease band
+      points[0].push_back((5.0 + e) * radial + Eigen::Vector3d(0, 0, -0.4 * u));
+    } else if (k % 5 == 1) {  // the top's
+      points[0].push_back((3.1 + 0.4 * u) * radial + Eigen::Vector3d(0, 0, 1.5 + e));
+    } else {
+      const Eigen::Vector3d n(std::sqrt(0.5) * std::cos(t), std::sqrt(0.5) * std::sin(t),
+                              std::sqrt(0.5));
+      points[0].push_back((5.0 - 1.5 * u) * radial + Eigen::Vector3d(0, 0, 1.5 * u) + e * n);
+    }
+  }
+  std::vector<Region> regions = RegionFittedAs(SurfaceType::kCone, points[0]);
+  std::vector<SharedSurface> surfaces;
+  EXPECT_EQ(RetypeToPoints(points, kSigma, &regions, &surfaces), 0);
+  EXPECT_EQ(regions[0].type, SurfaceType::kCone);
 }
 
 }  // namespace

@@ -54,6 +54,17 @@ HoleMesh MeshOf(const std::vector<Point>& points, const std::vector<std::array<i
   return sm;
 }
 
+// `sm` after the flips: closed and valid, with `vertices` and `faces`, no
+// flat face, and enclosing `volume` as before.
+void ExpectClosedAndNoFlatFace(const HoleMesh& sm, size_t vertices, size_t faces, double volume) {
+  EXPECT_TRUE(CGAL::is_closed(sm));
+  EXPECT_TRUE(sm.is_valid(false));
+  EXPECT_EQ(sm.number_of_vertices(), vertices);
+  EXPECT_EQ(sm.number_of_faces(), faces);
+  for (const auto f : sm.faces()) EXPECT_GT(AreaRatio(sm, f), 0.1);
+  EXPECT_NEAR(PMP::volume(sm), volume, 1e-12);
+}
+
 // A tetrahedron a c d e whose face a e c was closed by a patch through the
 // midpoint b of its edge a c: the patch faces a b e and b c e and the flat
 // a c b (three collinear corners, the apex b on the longest edge a c). The
@@ -100,12 +111,30 @@ TEST(FlipFlatPatchFaces, AFlatFaceRoundAVertexOfValenceThreeLeavesTheTriangleIts
 
   FlipFlatPatchFaces(&sm);
 
-  EXPECT_TRUE(CGAL::is_closed(sm));
-  EXPECT_TRUE(sm.is_valid(false));
-  EXPECT_EQ(sm.number_of_vertices(), 4u);
-  EXPECT_EQ(sm.number_of_faces(), 4u);
-  for (const auto f : sm.faces()) EXPECT_GT(AreaRatio(sm, f), 0.1);
-  EXPECT_NEAR(PMP::volume(sm), volume, 1e-12);
+  ExpectClosedAndNoFlatFace(sm, 4, 4, volume);
+}
+
+// A pyramid on the square p0 p1 p2 p3 (z = 0) with apex t, whose base was
+// closed by a patch with two free vertices b and b2 that the bend put on the
+// same point, the base's centre: the patch faces p2 b b2 and b p0 b2 have a
+// zero-length edge b b2 and their apex at an end of their longest edge, and
+// neither end has valence 3, so no flip or removal mends them. Merging b2
+// into b leaves the fan of four faces round the centre: the same surface,
+// the same volume, no flat face.
+TEST(FlipFlatPatchFaces, CoincidentPatchVerticesAreMergedIntoOne) {
+  enum { p0, p1, p2, p3, t, b, b2 };
+  HoleMesh sm = MeshOf({Point(-1, -1, 0), Point(1, -1, 0), Point(1, 1, 0), Point(-1, 1, 0),
+                        Point(0, 0, 1), Point(0, 0, 0), Point(0, 0, 0)},
+                       {{p0, p1, t}, {p1, p2, t}, {p2, p3, t}, {p3, p0, t}},
+                       {{p1, p0, b}, {p2, p1, b}, {p2, b, b2}, {p3, p2, b2}, {p0, p3, b2},
+                        {b, p0, b2}});
+  ASSERT_TRUE(CGAL::is_closed(sm));
+  const double volume = PMP::volume(sm), kept = KeptArea(sm);
+
+  FlipFlatPatchFaces(&sm);
+
+  ExpectClosedAndNoFlatFace(sm, 6, 8, volume);
+  EXPECT_NEAR(KeptArea(sm), kept, 1e-12);
 }
 
 // A patch of a flat square hole (loop of 8 vertices round [-1, 1]² in

@@ -1,6 +1,7 @@
 #include "reconstruct/close_tube.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <vector>
@@ -11,9 +12,15 @@
 #include "reconstruct/close_unsupported.h"
 #include "reconstruct/surface_mesh.h"
 #include "tube_meshes.h"
+#include "washers.h"
 
 namespace meshseg::reconstruct_internal {
 namespace {
+
+using test_washers::ExpectOneClosedManifoldOfGenus;
+using test_washers::kHeight;
+using test_washers::SeenWhere;
+using test_washers::Washer;
 
 constexpr double kR = 15.0, kr = 5.0;  // torus radii (a ring lying on its side)
 constexpr int kNu = 96, kNv = 32;      // grid round the axis and round the tube
@@ -44,14 +51,6 @@ double WorstPatchDistance(const ClosedSurface& closed) {
     }
   }
   return worst;
-}
-
-// `tri` is one closed manifold of genus `genus`.
-void ExpectOneClosedManifoldOfGenus(const TriMesh& tri, int genus) {
-  EXPECT_EQ(test::BoundaryEdgeCount(tri), 0);
-  EXPECT_EQ(test::NonManifoldVertexCount(tri), 0);
-  EXPECT_EQ(test::ComponentCount(tri), 1);
-  EXPECT_EQ(Genus(tri), genus);
 }
 
 // Face 2 (i kNv + j) + k of the torus lies in grid cell (i, j); j counts
@@ -103,6 +102,58 @@ TEST(CloseTube, ATubeFollowsTheArcBetweenRimsThatTurnByLessThanHalfATurn) {
   EXPECT_LT(WorstPatchDistance(*tubes), kTolerance);
 }
 
+// As above, with a handle inside the unseen underside: a straight tube
+// through the ring's hole joins the cell just below the inner equator at
+// u = 0 to the one facing it at u = π. The removed component is still
+// bounded by the two equators alone (its genus is 1: the handle has no
+// point on it either and goes with it), so the rims are joined by the
+// ring's tube as before: genus 1, every patch vertex on the torus. Counted
+// as an annulus only, the component was left to two discs (genus 0).
+TEST(CloseTube, AHandleInsideTheUnseenPartGoesWithIt) {
+  const TubeMesh m = TorusTubeMesh(kR, kr, kNu, kNv);
+  const int j = kNv / 2 + 1, half = kNu / 2;
+  const auto id = [&](int i, int jj) { return (i % kNu) * kNv + jj % kNv; };
+  std::vector<Eigen::Vector3d> vertices = m.vertices;
+  std::vector<std::array<int, 3>> triangles;
+  std::vector<uint8_t> supported;
+  for (size_t t = 0; t < m.triangles.size(); ++t) {
+    const int cell = static_cast<int>(t) / 2;
+    if (cell == id(0, j) || cell == id(half, j)) continue;  // the handle's mouths
+    triangles.push_back(m.triangles[t]);
+    supported.push_back(cell % kNv < kNv / 2);
+  }
+  // The mouth at u = 0 along its cell's border; the one at u = π against
+  // its own, from the corner facing the first one's first.
+  std::vector<int> ring = {id(0, j), id(1, j), id(1, j + 1), id(0, j + 1)};
+  const std::vector<int> end = {id(half, j), id(half, j + 1), id(half + 1, j + 1),
+                                id(half + 1, j)};
+  constexpr int kSegments = 8;
+  for (int s = 1; s <= kSegments; ++s) {
+    std::vector<int> next = end;
+    if (s < kSegments) {
+      for (int k = 0; k < 4; ++k) {
+        const double t = static_cast<double>(s) / kSegments;
+        next[k] = static_cast<int>(vertices.size());
+        vertices.push_back((1 - t) * m.vertices[ring[k]] + t * m.vertices[end[k]]);
+      }
+    }
+    for (int k = 0; k < 4; ++k) {
+      triangles.push_back({ring[k], ring[(k + 1) % 4], next[(k + 1) % 4]});
+      triangles.push_back({ring[k], next[(k + 1) % 4], next[k]});
+      supported.push_back(0);
+      supported.push_back(0);
+    }
+    ring = next;
+  }
+  const Mesh torus = *SurfaceMesh(vertices, triangles, "torus with a handle");
+  ASSERT_EQ(Genus(torus.tri), 2);
+  const auto tubes = CloseUnsupported(torus, supported, 0.01, false, {}, true, 0.0);
+  ASSERT_TRUE(tubes.ok()) << tubes.status();
+  EXPECT_EQ(tubes->hole_count, 2);
+  ExpectOneClosedManifoldOfGenus(tubes->mesh.tri, 1);
+  EXPECT_LT(WorstPatchDistance(*tubes), kTolerance);
+}
+
 // A band across the tube (cells i in [0, 4)) leaves two meridians whose
 // seen surface leaves them along their axis: the rims of one tube when the
 // points resolve loops that long, but a handle to cut (two discs) when the
@@ -118,53 +169,6 @@ TEST(CloseTube, RimsShorterThanTheResolvedHoleAreClosedByDiscs) {
   const auto discs = CloseUnsupported(torus, supported, 0.01, false, {}, true, 1.1 * meridian);
   ASSERT_TRUE(discs.ok()) << discs.status();
   ExpectOneClosedManifoldOfGenus(discs->mesh.tri, 0);
-}
-
-// A washer: the ring of rectangular section ρ in [kInner, kOuter], z in
-// [0, height] round the z axis, kNu cells round it and cells kStep square
-// on the section, which runs anticlockwise in (ρ, z) from the outer wall's
-// foot (so the faces face outwards). Face 2 (i cells + j) + k lies in cell
-// (i, j); `section` gets the section's vertices. The walls are tall enough
-// that the rings the rims' normals come from (close_tube.cc, up to 9 edges
-// in) stay on them.
-constexpr double kInner = 10.0, kOuter = 15.0, kHeight = 10.0, kStep = 0.5;
-
-Mesh Washer(double height, std::vector<Eigen::Vector2d>* section) {
-  const int across = static_cast<int>(std::lround((kOuter - kInner) / kStep));
-  const int up = static_cast<int>(std::lround(height / kStep));
-  for (int k = 0; k < up; ++k) section->emplace_back(kOuter, k * kStep);
-  for (int k = 0; k < across; ++k) section->emplace_back(kOuter - k * kStep, height);
-  for (int k = 0; k < up; ++k) section->emplace_back(kInner, height - k * kStep);
-  for (int k = 0; k < across; ++k) section->emplace_back(kInner + k * kStep, 0.0);
-  const int nv = static_cast<int>(section->size());
-  std::vector<Eigen::Vector3d> vertices;
-  std::vector<std::array<int, 3>> triangles;
-  for (int i = 0; i < kNu; ++i) {
-    const double u = 2 * M_PI * i / kNu;
-    for (const Eigen::Vector2d& q : *section) {
-      vertices.emplace_back(q.x() * std::cos(u), q.x() * std::sin(u), q.y());
-    }
-  }
-  const auto id = [&](int i, int j) { return (i % kNu) * nv + j % nv; };
-  for (int i = 0; i < kNu; ++i) {
-    for (int j = 0; j < nv; ++j) {
-      triangles.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
-      triangles.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
-    }
-  }
-  return *SurfaceMesh(vertices, triangles, "washer");
-}
-
-// The washer's faces whose section edge (p, q) is `seen`.
-std::vector<uint8_t> SeenWhere(const Mesh& washer, const std::vector<Eigen::Vector2d>& section,
-                               bool (*seen)(const Eigen::Vector2d& p, const Eigen::Vector2d& q)) {
-  const int nv = static_cast<int>(section.size());
-  std::vector<uint8_t> supported(washer.tri.n_faces());
-  for (size_t f = 0; f < supported.size(); ++f) {
-    const int j = static_cast<int>(f) / 2 % nv;
-    supported[f] = seen(section[j], section[(j + 1) % nv]);
-  }
-  return supported;
 }
 
 // The washer's underside and both its walls below z = 2 unseen: an annulus
@@ -186,103 +190,6 @@ TEST(CloseTube, StraightWallsRoundAnUnseenFaceKeepTheirDiscs) {
   ASSERT_TRUE(closed.ok()) << closed.status();
   EXPECT_EQ(closed->hole_count, 2);
   ExpectOneClosedManifoldOfGenus(closed->mesh.tri, 0);
-}
-
-// Distance of `p` from the exact washer of `height`: from its section, the
-// rectangle [kInner, kOuter] × [0, height] in (ρ, z).
-double WasherDistance(const Eigen::Vector3d& p, double height) {
-  const double rho = std::hypot(p.x(), p.y());
-  const double inside = std::min({rho - kInner, kOuter - rho, p.z(), height - p.z()});
-  if (inside >= 0) return inside;
-  const double dr = std::max({kInner - rho, rho - kOuter, 0.0});
-  const double dz = std::max({-p.z(), p.z() - height, 0.0});
-  return std::hypot(dr, dz);
-}
-
-// A bore (the washer's inner wall) seen only above z = 6, the face it opens
-// onto (the underside) unseen, the outer wall seen all the way down to it.
-// Both rims leave straight down, so (d) refuses the arc tube; the outer
-// rim's seen wall ends on the cap plane z = 0, 6 below the bore's rim. The
-// bore's wall runs on straight down to it and the underside is the strip
-// between the outer rim and the bore's circle on it: genus 1 like the
-// solid, every patch vertex on the washer to within a tenth of the mesh's
-// spacing (the bore's polygon is the washer's own; its chord sag, 0.005,
-// is the only error), and no face without area. Discs (genus 0) span the
-// bore's mouth 6 above the unseen face.
-TEST(CloseTube, ABoreSeenToAboveTheFaceItOpensOntoRunsStraightOnToThatFace) {
-  constexpr double kTall = 20.0, kBoreSeenAbove = 6.0;
-  std::vector<Eigen::Vector2d> section;
-  const Mesh washer = Washer(kTall, &section);
-  const std::vector<uint8_t> supported = SeenWhere(
-      washer, section, [](const Eigen::Vector2d& p, const Eigen::Vector2d& q) {
-        const bool underside = p.y() == 0.0 && q.y() == 0.0;
-        const bool low_bore =
-            p.x() == kInner && q.x() == kInner && p.y() + q.y() < 2 * kBoreSeenAbove;
-        return !underside && !low_bore;
-      });
-  const auto closed = CloseUnsupported(washer, supported, 0.01, false, {}, true, 0.0);
-  ASSERT_TRUE(closed.ok()) << closed.status();
-  EXPECT_EQ(closed->hole_count, 2);
-  ExpectOneClosedManifoldOfGenus(closed->mesh.tri, 1);
-  double worst = 0.0, smallest = std::numeric_limits<double>::infinity();
-  for (const auto f : closed->mesh.tri.faces()) {
-    if (!closed->filled[f.idx()]) continue;
-    smallest = std::min(smallest, static_cast<double>(closed->mesh.tri.calc_face_area(f)));
-    for (const auto v : closed->mesh.tri.fv_range(f)) {
-      worst = std::max(worst, WasherDistance(ToEigen(closed->mesh.tri.point(v)), kTall));
-    }
-  }
-  EXPECT_LT(worst, 0.1 * kStep);
-  EXPECT_GT(smallest, 1e-3 * kStep * kStep);
-}
-
-// The largest distance of a patch vertex from the exact washer of `height`.
-double WorstWasherDistance(const ClosedSurface& closed, double height) {
-  double worst = 0.0;
-  for (const auto f : closed.mesh.tri.faces()) {
-    if (!closed.filled[f.idx()]) continue;
-    for (const auto v : closed.mesh.tri.fv_range(f)) {
-      worst = std::max(worst, WasherDistance(ToEigen(closed.mesh.tri.point(v)), height));
-    }
-  }
-  return worst;
-}
-
-// As above, but the outer wall seen down to the underside on three quarters
-// of the washer and only down to z = 3 on the rest: the outer rim climbs the
-// wall. Straight rungs from its high quarter to the bore's circle on z = 0 cut the
-// corner between wall and underside (1.5 inside the washer halfway along a
-// rung 5 across and 3 down); bent onto the seen planes (the outer wall's
-// tangent planes and the cap plane) the strip lies on the washer to within
-// a third of the mesh step: the wall's polygon between tangent planes
-// (15 (1 − cos(π / 96)), 0.01) and a corner vertex sent to the nearer of
-// wall and face (at most a row spacing, about a mean edge, from the edge).
-TEST(CloseTube, TheFaceABoreOpensOntoIsBentOntoTheWallsItsRimClimbs) {
-  constexpr double kTall = 20.0, kBoreSeenAbove = 6.0, kWallSeenAbove = 3.0;
-  std::vector<Eigen::Vector2d> section;
-  const Mesh washer = Washer(kTall, &section);
-  const size_t nv = section.size();
-  std::vector<uint8_t> supported(washer.tri.n_faces());
-  for (size_t f = 0; f < supported.size(); ++f) {
-    const Eigen::Vector2d& p = section[f / 2 % nv];
-    const Eigen::Vector2d& q = section[(f / 2 + 1) % nv];
-    const bool high_quarter = f / 2 / nv < static_cast<size_t>(kNu / 4);
-    const bool underside = p.y() == 0.0 && q.y() == 0.0;
-    const bool low_bore =
-        p.x() == kInner && q.x() == kInner && p.y() + q.y() < 2 * kBoreSeenAbove;
-    const bool low_wall = high_quarter && p.x() == kOuter && q.x() == kOuter &&
-                          p.y() + q.y() < 2 * kWallSeenAbove;
-    supported[f] = !underside && !low_bore && !low_wall;
-  }
-  const auto straight = CloseUnsupported(washer, supported, 0.01, false, {}, false, 0.0);
-  ASSERT_TRUE(straight.ok()) << straight.status();
-  ExpectOneClosedManifoldOfGenus(straight->mesh.tri, 1);
-  EXPECT_GT(WorstWasherDistance(*straight, kTall), 1.0);
-  const auto bent = CloseUnsupported(washer, supported, 0.01, false, {}, true, 0.0);
-  ASSERT_TRUE(bent.ok()) << bent.status();
-  EXPECT_EQ(bent->hole_count, 2);
-  ExpectOneClosedManifoldOfGenus(bent->mesh.tri, 1);
-  EXPECT_LT(WorstWasherDistance(*bent, kTall), kStep / 3);
 }
 
 }  // namespace

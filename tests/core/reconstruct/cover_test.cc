@@ -1,6 +1,10 @@
 #include "reconstruct/cover.h"
 
+#include <cmath>
 #include <random>
+
+#include "reconstruct/pu_function.h"
+#include "reconstruct/regular_triangulation.h"
 
 #include <gtest/gtest.h>
 
@@ -34,6 +38,170 @@ TEST(CoverBySupports, EveryLeafLiesInsideASupportAndTheOrderFollowsTheSeed) {
   }
   EXPECT_NE(a->front().center, b->front().center);
   for (const auto& s : *a) EXPECT_GE(s.radius, 0.75 * std::sqrt(3.0) / 32 - 1e-12);
+}
+
+// The covering of `points` on the level-6 octree of the cube of edge `cube`
+// centred at the origin, its inner supports after it, and their tet weights.
+struct Sampled {
+  std::vector<Support> covering;
+  std::vector<Support> all;  // the covering, then the inner supports
+  std::vector<double> weights;
+};
+
+Sampled CoverWithInner(const std::vector<Eigen::Vector3d>& points,
+                       const std::vector<Eigen::Vector3d>& normals, double spacing,
+                       double cube) {
+  const mesh_internal::PointIndex index(points);
+  const auto leaves =
+      *BalancedOctreeLeaves(points, Eigen::Vector3d::Constant(-cube / 2), cube, 6, {});
+  const FitInput in{points, normals, index, 0.1 * spacing, std::sqrt(3.0) * cube};
+  Sampled out;
+  out.covering = *CoverBySupports(leaves, in, /*seed=*/1, {});
+  out.all = out.covering;
+  const std::vector<Support> inner = InnerSupports(out.covering, in, spacing);
+  out.all.insert(out.all.end(), inner.begin(), inner.end());
+  out.weights = TetWeights(out.all, out.covering.size());
+  return out;
+}
+
+// A slab 40 × 40 × 10 (z in [-10, 0]) sampled every 0.5 on its top and its
+// four sides, not on its bottom (the side it stood on), exact points with
+// inward normals. A support whose ball holds its plane reads the solid
+// under it as deep as its radius, so each support on the top near its
+// middle (its foot among its own points, its disc fully sampled) has an
+// inner support centred a radius below the top, along its m, and f of the
+// covering is positive there where it lies in the slab. Those that get a
+// weight are tet vertices.
+TEST(InnerSupports, ASupportOnAPlaneHasAnInnerSupportARadiusInsideIt) {
+  std::vector<Eigen::Vector3d> points, normals;
+  for (int i = -40; i <= 40; ++i) {
+    const double x = 0.5 * i;
+    for (int j = -40; j <= 40; ++j) {
+      points.emplace_back(x, 0.5 * j, 0.0);
+      normals.emplace_back(0, 0, -1);
+    }
+    for (int k = 1; k <= 20; ++k) {
+      for (const double side : {-20.0, 20.0}) {
+        points.emplace_back(x, side, -0.5 * k);
+        normals.emplace_back(0, -side / 20, 0);
+        if (std::abs(i) < 40) {
+          points.emplace_back(side, x, -0.5 * k);
+          normals.emplace_back(-side / 20, 0, 0);
+        }
+      }
+    }
+  }
+  const Sampled sampled = CoverWithInner(points, normals, 0.5, 64.0);
+  const auto tets = RegularTetrahedralization(sampled.all, sampled.weights, {});
+  ASSERT_TRUE(tets.ok());
+  std::vector<uint8_t> vertex(sampled.all.size(), 0);
+  for (const int s : tets->support) vertex[s] = 1;
+  const PuFunction f(sampled.covering);
+  int parents = 0;
+  for (const Support& s : sampled.covering) {
+    const double height = s.g(s.center);
+    if (!(s.point_count > 0 && std::abs(s.center.z()) < 1 && s.center.head<2>().norm() < 10)) {
+      continue;
+    }
+    ++parents;
+    const Eigen::Vector3d at = s.center + (s.radius - height) * s.m;
+    ASSERT_NEAR(at.z(), -s.radius, 1e-6);
+    size_t inner = sampled.all.size();
+    for (size_t k = sampled.covering.size(); k < sampled.all.size(); ++k) {
+      if ((sampled.all[k].center - at).norm() < 1e-9) inner = k;
+    }
+    ASSERT_LT(inner, sampled.all.size()) << "no inner support below " << s.center.transpose();
+    if (at.z() > -10) EXPECT_GT(f(at), 0.0);
+    if (sampled.weights[inner] >= 0) EXPECT_TRUE(vertex[inner]) << at.transpose();
+  }
+  EXPECT_GT(parents, 0);
+}
+
+// A flat clump of 21 stray points (a disc of radius 2 spacings, 0.5 apart)
+// 3 units above a fully sampled plane, facing it (its "inside" above it,
+// in empty space): the clump's supports grow past it until the plane's
+// points stop their fits, so their discs hold the clump over far less than
+// a quarter. No inner support comes from them (none lies above the plane),
+// while the plane's own supports give theirs below it.
+TEST(InnerSupports, AGhostSheetFarSmallerThanItsBallGivesNone) {
+  std::vector<Eigen::Vector3d> points, normals;
+  for (int i = -40; i <= 40; ++i) {
+    for (int j = -40; j <= 40; ++j) {
+      points.emplace_back(0.5 * i, 0.5 * j, 0.0);
+      normals.emplace_back(0, 0, -1);
+    }
+  }
+  for (int x = -2; x <= 2; ++x) {
+    for (int y = -2; y <= 2; ++y) {
+      if (x * x + y * y > 4) continue;
+      points.emplace_back(0.5 * x, 0.5 * y, 3.0);
+      normals.emplace_back(0, 0, 1);  // facing the plane: "inside" above it
+    }
+  }
+  const Sampled sampled = CoverWithInner(points, normals, 0.5, 64.0);
+  int below = 0;
+  for (size_t k = sampled.covering.size(); k < sampled.all.size(); ++k) {
+    const Eigen::Vector3d& c = sampled.all[k].center;
+    EXPECT_LT(c.z(), 0.0) << "an inner support above the plane, at " << c.transpose();
+    below += c.z() < 0;
+  }
+  EXPECT_GT(below, 0);
+}
+
+// A plate 4 × 4 × 0.4 sampled every 0.05 on both faces and its rim, exact
+// points with inward normals. Inner supports of the supports on one face
+// lie about a radius inside it, near or past the other face; as tet
+// vertices they sample f and hide none of the covering's centres: every
+// centre that is a vertex of the covering's regular triangulation is one
+// with the inner supports added, and each inner support given a weight is
+// a vertex unless another inner support hides it.
+TEST(TetWeights, InnerSupportsHideNoCentreOfTheCovering) {
+  std::vector<Eigen::Vector3d> points, normals;
+  for (int i = -40; i <= 40; ++i) {
+    for (int j = -40; j <= 40; ++j) {
+      for (const double z : {0.0, -0.4}) {
+        points.emplace_back(0.05 * i, 0.05 * j, z);
+        normals.emplace_back(0, 0, z == 0 ? -1 : 1);
+      }
+    }
+    for (int k = 1; k < 8; ++k) {
+      for (const double side : {-2.0, 2.0}) {
+        points.emplace_back(0.05 * i, side, -0.05 * k);
+        normals.emplace_back(0, -side / 2, 0);
+        if (std::abs(i) < 40) {
+          points.emplace_back(side, 0.05 * i, -0.05 * k);
+          normals.emplace_back(-side / 2, 0, 0);
+        }
+      }
+    }
+  }
+  const Sampled sampled = CoverWithInner(points, normals, 0.05, 5.0);
+  const size_t n = sampled.covering.size();
+  ASSERT_GT(sampled.all.size(), n);
+  const auto before = RegularTetrahedralization(sampled.covering, {});
+  const auto after = RegularTetrahedralization(sampled.all, sampled.weights, {});
+  ASSERT_TRUE(before.ok() && after.ok());
+  std::vector<uint8_t> vertex(sampled.all.size(), 0);
+  for (const int s : after->support) vertex[s] = 1;
+  for (const int s : before->support) {
+    EXPECT_TRUE(vertex[s]) << "covering centre " << sampled.all[s].center.transpose()
+                           << " hidden";
+  }
+  int weighted = 0;
+  for (size_t k = n; k < sampled.all.size(); ++k) {
+    if (sampled.weights[k] < 0 || vertex[k]) {
+      weighted += sampled.weights[k] >= 0;
+      continue;
+    }
+    bool by_inner = false;
+    for (size_t q = n; q < sampled.all.size(); ++q) {
+      const double power = (sampled.all[k].center - sampled.all[q].center).squaredNorm() -
+                           sampled.weights[q];
+      by_inner = by_inner || (q != k && sampled.weights[q] >= 0 && power < -sampled.weights[k]);
+    }
+    EXPECT_TRUE(by_inner) << "inner support " << sampled.all[k].center.transpose() << " hidden";
+  }
+  EXPECT_GT(weighted, 0);
 }
 
 }  // namespace

@@ -38,25 +38,48 @@ TEST(ShortLoops, FindsNoLoopLongerThanTheBound) {
 }
 
 // With `near`, only loops within the bound of a flagged vertex are found:
-// the rod's meridians (a separate component, a loop as short) are not
-// looked for when only the torus is flagged.
+// a second thin torus's meridians (a separate component, loops as short) are
+// not looked for when only the first torus is flagged.
 TEST(ShortLoops, LooksOnlyNearTheFlaggedVertices) {
   TubeMesh both = TorusTubeMesh(1.0, 0.05, 128, 8);
   const size_t torus_vertices = both.vertices.size();
-  both.Add(RodTubeMesh(0.05, 1.0, 8, 20, Eigen::Vector3d(3, 0, 0)));
+  both.Add(TorusTubeMesh(1.0, 0.05, 128, 8, Eigen::Vector3d(3, 0, 0)));
   const MeshGraph g = GraphOf(both);
   const std::vector<double> bound(both.vertices.size(), 0.5);
   std::vector<uint8_t> near(both.vertices.size(), 0);
-  near[0] = 1;  // on the torus
+  near[0] = 1;  // on the first torus
   const std::vector<HandleLoop> loops = ShortLoops(g, bound, near);
   ASSERT_FALSE(loops.empty());
   for (const HandleLoop& l : loops) {
     for (const int v : l.vertices) EXPECT_LT(v, static_cast<int>(torus_vertices));
   }
-  bool rod = false;
+  bool second = false;
   for (const HandleLoop& l : ShortLoops(g, bound))
-    rod |= l.vertices[0] >= static_cast<int>(torus_vertices);
-  EXPECT_TRUE(rod);
+    second |= l.vertices[0] >= static_cast<int>(torus_vertices);
+  EXPECT_TRUE(second);
+}
+
+// The covering: a capped rod (genus 0) as thin as the torus's tube, 3 long,
+// against covering balls of radius about 4.25 × (0.25 + an edge) = 1.3: no
+// ball holds both caps, and those that hold one are discs that cover its
+// seeds, so its meridians (short, but every one separates) are not searched
+// for; the torus's handle, whose balls are never discs, is searched as
+// without a covering: the same loops as on the torus alone. (A search over
+// every seed returns the rod's meridians too.)
+TEST(ShortLoops, SkipsSeedsWhoseBallsLieInADisc) {
+  const TubeMesh torus = TorusTubeMesh(1.0, 0.05, 128, 8);
+  TubeMesh both = torus;
+  both.Add(RodTubeMesh(0.05, 3.0, 8, 60, Eigen::Vector3d(3, 0, 0)));
+  const std::vector<HandleLoop> alone =
+      ShortLoops(GraphOf(torus), std::vector<double>(torus.vertices.size(), 0.5));
+  const std::vector<HandleLoop> loops =
+      ShortLoops(GraphOf(both), std::vector<double>(both.vertices.size(), 0.5));
+  ASSERT_FALSE(alone.empty());
+  ASSERT_EQ(loops.size(), alone.size());
+  for (size_t i = 0; i < loops.size(); ++i) {
+    EXPECT_EQ(loops[i].vertices, alone[i].vertices);
+    EXPECT_DOUBLE_EQ(loops[i].length, alone[i].length);
+  }
 }
 
 }  // namespace

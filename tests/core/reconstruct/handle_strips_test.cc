@@ -118,10 +118,12 @@ TEST(ShortHandleStrips, FindsNoShortLoopOnAThickTorus) {
 
 // A thin rod's meridian is as short as the thin torus's but separates the
 // surface (genus 0 part): it is checked and kept. Next to it the thin
-// torus's handle is still cut.
+// torus's handle is still cut. (The rod, 6 long, is long enough that the
+// covering balls round its middle (radius about 1.3, handle_loops.h) are
+// annuli, not discs: its meridians are searched for.)
 TEST(ShortHandleStrips, KeepsTheSeparatingLoopOfAThinRod) {
   TubeMesh thick = TorusTubeMesh(1.0, 0.3, 96, 32);
-  thick.Add(RodTubeMesh(0.05, 1.0, 8, 20, Eigen::Vector3d(3, 0, 0)));
+  thick.Add(RodTubeMesh(0.05, 6.0, 8, 120, Eigen::Vector3d(3, 0, 0)));
   const Mesh with_rod = ToMesh(thick);
   ASSERT_EQ(Genus(with_rod.tri), 1);
   const HandleStrips kept =
@@ -131,7 +133,7 @@ TEST(ShortHandleStrips, KeepsTheSeparatingLoopOfAThinRod) {
 
   TubeMesh thin = ThinTorus();
   const int torus_faces = static_cast<int>(thin.triangles.size());
-  thin.Add(RodTubeMesh(0.05, 1.0, 8, 20, Eigen::Vector3d(3, 0, 0)));
+  thin.Add(RodTubeMesh(0.05, 6.0, 8, 120, Eigen::Vector3d(3, 0, 0)));
   const Mesh both = ToMesh(thin);
   const HandleStrips cut =
       ShortHandleStrips(both.tri, std::vector<double>(both.tri.n_vertices(), 0.5), 1);

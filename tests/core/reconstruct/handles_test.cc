@@ -46,14 +46,16 @@ struct Cut {
 
 // A torus of tube radius r sampled by `count` points, its handles cut at the
 // default handle_spacings (the holes left open with `open`); face 0 is
-// flagged as filled before.
-Cut CutTorus(double r, int count, bool open = false) {
+// flagged as filled before, and the first `filled_cells` cells round the
+// axis (a band across the tube, 2 × 8 faces each) too.
+Cut CutTorus(double r, int count, bool open = false, int filled_cells = 0) {
   const TubeMesh tube = TorusTubeMesh(1.0, r, 128, 8);
   const std::vector<Eigen::Vector3d> points = TorusSamples(1.0, r, count);
   const mesh_internal::PointIndex index(points);
   Cut out{*SurfaceMesh(tube.vertices, tube.triangles, "torus"), {}, {}};
   out.filled.assign(out.mesh.tri.n_faces(), 0);
   out.filled[0] = 1;
+  for (int f = 0; f < 2 * 8 * filled_cells; ++f) out.filled[f] = 1;
   const absl::Status status =
       CutUnsupportedHandles(points, index, ReconstructParams{.leave_unsupported_open = open},
                             &out.mesh, &out.filled, &out.stats);
@@ -101,6 +103,39 @@ TEST(CutUnsupportedHandles, KeepsATubeTheSamplingResolves) {
   EXPECT_EQ(c.stats.handle_cut_count, 0);
   EXPECT_EQ(Genus(c.mesh.tri), 1);
   EXPECT_EQ(std::count(c.filled.begin(), c.filled.end(), 1), 1);
+}
+
+// The torus above with a band across its tube flagged as filled: the band is
+// a tube the closing step made between two rims (close_tube.h), so the
+// torus's handle is one made by construction; the seen surface (a cylinder)
+// has genus 0. The meridian is as far under the bound as above, but the
+// handle stays: no loop is cut.
+TEST(CutUnsupportedHandles, LeavesTheHandleATubeMade) {
+  const Cut c = CutTorus(0.05, 600, false, 4);
+  EXPECT_EQ(c.stats.handle_cut_count, 0);
+  EXPECT_EQ(Genus(c.mesh.tri), 1);
+  EXPECT_EQ(std::count(c.filled.begin(), c.filled.end(), 1), 2 * 8 * 4);
+}
+
+// The genus of the faces not filled, on a torus (128 × 8 cells, 2 faces
+// each, cell (i, j) round the axis and round the tube).
+TEST(SeenGenus, IsTheGenusOfTheFacesNotFilled) {
+  const TubeMesh tube = TorusTubeMesh(1.0, 0.2, 128, 8);
+  const Mesh torus = *SurfaceMesh(tube.vertices, tube.triangles, "torus");
+  const auto filled_where = [&](bool (*filled)(int i, int j)) {
+    std::vector<uint8_t> flags(torus.tri.n_faces());
+    for (size_t f = 0; f < flags.size(); ++f) {
+      const int cell = static_cast<int>(f) / 2;
+      flags[f] = filled(cell / 8, cell % 8);
+    }
+    return SeenGenus(torus.tri, flags);
+  };
+  EXPECT_EQ(filled_where([](int, int) { return false; }), 1);   // the whole torus
+  EXPECT_EQ(filled_where([](int i, int j) { return i == 5 && j == 2; }), 1);  // a disc off it
+  EXPECT_EQ(filled_where([](int i, int) { return i < 4; }), 0);  // a cylinder: a band across
+  EXPECT_EQ(filled_where([](int, int j) { return j < 4; }), 0);  // half the tube: an annulus
+  EXPECT_EQ(filled_where([](int i, int) { return i < 4 || (i >= 60 && i < 64); }), 0);  // two pieces
+  EXPECT_EQ(filled_where([](int, int) { return true; }), 0);  // nothing seen
 }
 
 void ExpectClosedManifold(const TriMesh& m) {

@@ -47,6 +47,35 @@ TEST(RegularTetrahedralization, SmallBallInsideALargeOneIsHidden) {
       0);
 }
 
+// Given weights replace r²: the small centre of the test above, weighted
+// just above the largest r_i² − |c − c_i|² (so it lies in its own power
+// cell) and below the centre node's r² + |c − c_0|² (so that stays), is a
+// vertex; a support weighted −1 is none.
+TEST(RegularTetrahedralization, GivenWeightsReplaceTheSquaredRadii) {
+  auto supports = test::GridSupports(3, 1.0);
+  Support small;
+  small.center = Eigen::Vector3d(0.1, 0.05, 0.0);
+  small.radius = 0.05;
+  supports[13].radius = 1.2;
+  supports.push_back(small);
+  std::vector<double> weights(supports.size());
+  for (size_t i = 0; i < supports.size(); ++i) weights[i] = supports[i].radius * supports[i].radius;
+  double lo = 0.0;
+  for (size_t i = 0; i + 1 < supports.size(); ++i) {
+    lo = std::max(lo, weights[i] - (supports[i].center - small.center).squaredNorm());
+  }
+  ASSERT_LT(lo + 0.005, 1.44 + small.center.squaredNorm());
+  weights.back() = lo + 0.005;
+  weights[0] = -1.0;
+  const auto tets = RegularTetrahedralization(supports, weights, {});
+  ASSERT_TRUE(tets.ok()) << tets.status();
+  EXPECT_EQ(tets->support.size(), supports.size() - 1);
+  EXPECT_EQ(std::count(tets->support.begin(), tets->support.end(), 0), 0);
+  EXPECT_EQ(
+      std::count(tets->support.begin(), tets->support.end(), static_cast<int>(supports.size() - 1)),
+      1);
+}
+
 TEST(RegularTetrahedralization, CoplanarCentresAreInvalid) {
   std::vector<Support> flat(4);
   for (int i = 0; i < 4; ++i) {

@@ -49,5 +49,48 @@ TEST(RimOf, TheEquatorsOfAHalfTorusLeaveStraightDownAtTheSectionsCurvature) {
   EXPECT_EQ(loops, 2);
 }
 
+// A bore (radius 10, kNu cells round it) whose wall is seen from its rim at
+// z = 0 up to z = 3.5 in steps of 0.5, where a 45° countersink opens it out:
+// the section's edges are 0.5 long, so the rings 3 and 6 edges in lie on
+// the straight wall and the one 9 edges in on the countersink. The wall
+// does not curve across its rim (a cylinder), and the crease within reach
+// does not read as curvature: the normal turns by 45° at the crease, which
+// over the 3 edges to the far ring would read as 0.5 (0.24 read over both
+// halves).
+TEST(RimOf, ACreaseWithinReachOfTheRingsIsNoCurvatureOfTheWall) {
+  constexpr double kBore = 10.0, kEdge = 0.5;
+  std::vector<Eigen::Vector2d> section;  // (ρ, z) from the rim up
+  for (int k = 0; k <= 7; ++k) section.emplace_back(kBore, k * kEdge);
+  for (int k = 1; k <= 8; ++k) {
+    section.emplace_back(kBore + k * kEdge / std::sqrt(2.0), 7 * kEdge + k * kEdge / std::sqrt(2.0));
+  }
+  HoleMesh sm;
+  std::vector<HoleMesh::Vertex_index> vertex;
+  for (int i = 0; i < kNu; ++i) {
+    const double u = 2 * M_PI * i / kNu;
+    for (const Eigen::Vector2d& q : section) {
+      vertex.push_back(sm.add_vertex(
+          HoleKernel::Point_3(q.x() * std::cos(u), q.x() * std::sin(u), q.y())));
+    }
+  }
+  const int nv = static_cast<int>(section.size());
+  const auto id = [&](int i, int j) { return vertex[(i % kNu) * nv + j]; };
+  for (int i = 0; i < kNu; ++i) {
+    for (int j = 0; j + 1 < nv; ++j) {
+      // Faces towards the bore's axis (the solid's outside).
+      sm.add_face(id(i, j), id(i, j + 1), id(i + 1, j + 1));
+      sm.add_face(id(i, j), id(i + 1, j + 1), id(i + 1, j));
+    }
+  }
+  for (const auto h : sm.halfedges()) {
+    if (!sm.is_border(h) || sm.point(sm.target(h)).z() > 0.0) continue;
+    const Rim rim = RimOf(sm, h, 1.0);
+    ASSERT_EQ(rim.loop.size(), static_cast<size_t>(kNu));
+    EXPECT_LT(std::abs(rim.curvature), 0.02);
+    return;
+  }
+  FAIL() << "no border loop at the rim";
+}
+
 }  // namespace
 }  // namespace meshseg::reconstruct_internal
