@@ -27,13 +27,19 @@
 // vertex farther than th_dis from its surface: rows along a crease, which
 // no smooth surface meets, cost alike under either of its regions and
 // cannot decide between them.
-// The distance term of the MismatchScore (refine_boundaries.h) without its
-// normal term: the smoothed normals n'_i are biased over the W2 window
-// near creases and across narrow bands (they turn toward both neighbours of
-// a chamfer as a sphere's would), so that an angle term in units of th_nm
-// / k outweighs the distances several times and prefers the wrong type
-// there; the information criterion of decide_type.h, which the label cost
-// below completes, is in distances alone too.
+// Distances only, no normal term. The smoothed normals n'_i are biased over
+// the W2 window near creases and across narrow bands (they turn toward both
+// neighbours of a chamfer as a sphere's would), so that an angle term in
+// units of th_nm / k outweighs the distances several times and prefers the
+// wrong type there. The one-ring normals n_i are unbiased on average over a
+// surface (the facets of a staircase sum to the vector area of the surface
+// they step along), but on a surface from binary voxels their spread
+// depends on the surface's orientation to the grid: 1.3 to 2.1 times as
+// wide on the rounds, cylinders and cones as on the planes along the grid,
+// so that a term in one unit per mesh charges a round nearly the outlier
+// cost where a plane beside it explains the rows of its treads. The
+// information criterion of decide_type.h, which the label cost below
+// completes, is in distances alone too.
 //
 // Smoothness term. Every mesh edge between two labels costs lambda w_uv,
 // w_uv = 1 between non-sharp vertices and kCreaseEdgeWeight where either

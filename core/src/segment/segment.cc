@@ -21,7 +21,6 @@
 #include "segment/initial_segmentation.h"
 #include "segment/kept_prices.h"
 #include "segment/merge_regions.h"
-#include "segment/refine_boundaries.h"
 #include "segment/retype_by_interior.h"
 #include "segment/retype_coaxial_bands.h"
 #include "segment/retype_regions.h"
@@ -79,23 +78,6 @@ absl::Status Merge(const segment_internal::SegmentContext& c, std::vector<int>* 
   MESHSEG_RETURN_IF_ERROR(MergeAndDrop(c, labels, regions, prices).status());
   segment_internal::RetypeQuadrics(c, regions);
   return absl::OkStatus();
-}
-
-// The boundaries placed: alpha-expansions in bands (alpha_expansion.h) move
-// rows to the surface that explains them at least E, across any boundary
-// (rows of a face a neighbour's surface grew bent over go back); then the
-// refinement (refine_boundaries.h) settles tangent joins, where a plane and
-// a round differ in position by less than the noise within rows of the
-// tangent line but in normal by the arc's angle, which E's distance-only
-// data term does not see. Made once the surfaces and their types are
-// final (after the last merges and drops): before the retype steps a
-// region's surface can be of the wrong type (a plane over part of an arc, a
-// band of a cone read as a sphere) and about to be replaced, and the
-// refinement would settle rows by it.
-absl::Status PlaceBoundaries(const segment_internal::SegmentContext& c, std::vector<int>* labels,
-                             std::vector<segment_internal::RegionState>* regions) {
-  MESHSEG_RETURN_IF_ERROR(segment_internal::ExpandRegions(c, labels, regions).status());
-  return segment_internal::RefineBoundaries(c, labels, regions);
 }
 
 // Each region a surface of its own (the scan path does not join them).
@@ -214,11 +196,11 @@ absl::StatusOr<Segmentation> Segment(const Mesh& mesh, const CurvatureField& cur
   // Pieces of one surface typed apart are joined, and fragments dropped, by
   // the same energy.
   MESHSEG_ASSIGN_OR_RETURN(const int moves, MergeAndDrop(c, &labels, &regions, &kept_prices));
-  if (moves > 0) MESHSEG_RETURN_IF_ERROR(PlaceBoundaries(c, &labels, &regions));
+  if (moves > 0) MESHSEG_RETURN_IF_ERROR(ExpandRegions(c, &labels, &regions).status());
   // The boundary placement can narrow a region to a strip that lies on its
   // neighbours' surfaces (a plane strip along a groove): dropped.
   MESHSEG_ASSIGN_OR_RETURN(const int late, DropRegions(c, &labels, &regions, &kept_prices));
-  if (late > 0) MESHSEG_RETURN_IF_ERROR(PlaceBoundaries(c, &labels, &regions));
+  if (late > 0) MESHSEG_RETURN_IF_ERROR(ExpandRegions(c, &labels, &regions).status());
   FlattenNearlyFlatRegions(c, &regions);
   StraightenNearlyCylindricalCones(c, &regions);
   ctx.Progress("segment", 0.9);
