@@ -29,7 +29,7 @@ std::vector<int> InteriorVertices(const SegmentContext& c, const std::vector<int
 
 // True if region `id` (`r`) has kMinInteriorVertices interior vertices
 // and its type does not fit them at the noise (FitsAtNoise): the gate of
-// the steps that take a region apart (GiveBackRows, SplitOffPlanes).
+// the step that takes a region apart (SplitOffPlanes).
 bool TypeMissesInterior(const SegmentContext& c, const std::vector<int>& labels, int id,
                         const RegionState& r);
 

@@ -12,12 +12,10 @@
 #include "segment/absorb_leftovers.h"
 #include "segment/alpha_expansion.h"
 #include "segment/decide_type.h"
-#include "segment/dissolve_crease_bands.h"
 #include "segment/drop_regions.h"
 #include "segment/energy.h"
 #include "segment/estimate_noise.h"
 #include "segment/finalize_regions.h"
-#include "segment/give_back_rows.h"
 #include "segment/initial_segmentation.h"
 #include "segment/kept_prices.h"
 #include "segment/merge_regions.h"
@@ -25,7 +23,6 @@
 #include "segment/retype_coaxial_bands.h"
 #include "segment/retype_regions.h"
 #include "segment/segment_internal.h"
-#include "segment/snap_fillets.h"
 #include "segment/split_off_planes.h"
 
 namespace meshseg {
@@ -167,17 +164,6 @@ absl::StatusOr<Segmentation> Segment(const Mesh& mesh, const CurvatureField& cur
   // fits; it may then merge with the pieces of its surface around it.
   if (!RetypeInaccurateCurved(c, &regions).empty()) {
     MESHSEG_RETURN_IF_ERROR(Merge(c, &labels, &regions, &kept_prices));
-    MESHSEG_RETURN_IF_ERROR(ExpandRegions(c, &labels, &regions).status());
-  }
-  if (DissolveCreaseBands(c, &labels, &regions) > 0) {
-    MESHSEG_RETURN_IF_ERROR(ExpandRegions(c, &labels, &regions).status());
-  }
-  // A round bent into the faces it joins takes the fillet between them.
-  if (!SnapFillets(c, &labels, &regions).empty()) {
-    MESHSEG_RETURN_IF_ERROR(ExpandRegions(c, &labels, &regions).status());
-  }
-  // Rows of a neighbour's face a curved region bent over go back to it.
-  if (!GiveBackRows(c, &labels, &regions).empty()) {
     MESHSEG_RETURN_IF_ERROR(ExpandRegions(c, &labels, &regions).status());
   }
   // A small face across a crease that a curved region absorbed (a small

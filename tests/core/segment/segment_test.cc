@@ -263,7 +263,8 @@ TEST_P(SegmentPartHighNoise, KeepsTypesAtHighNoise) {
 // left in two cylinders on one axis, cut into 4 pieces by the face labels
 // once that axis was shared (seed 372, a regression of the change for 82),
 // and test_piece's countersink typed torus, the torus the best type on what
-// was left after its rows were given back (seed 382; give_back_rows.cc);
+// was left after its rows were given back (seed 382; a give-back step the
+// expansion has since replaced);
 // with the energy (#37), plate_boss's edge round (a torus of tube radius 2
 // between the boss side and top) fitted with a tube of 2.9 from its narrow
 // band, widened by the refinement over rows of both faces and dropped
