@@ -14,6 +14,7 @@
 
 #include "meshseg/status_macros.h"
 #include "segment/energy.h"
+#include "segment/expansion_band.h"
 
 namespace meshseg::segment_internal {
 namespace {
@@ -37,46 +38,10 @@ struct Arcs {
   }
 };
 
-// Per mesh vertex, its node in the expansion's graph (-1: none); only the
-// band's entries are set, and they are cleared when the expansion ends, so
-// one workspace serves every expansion of a call.
-struct Workspace {
-  explicit Workspace(int vertex_count) : node(vertex_count, -1) {}
-  std::vector<int> node;
-};
-
 // D_v under label l (-1: unlabelled).
 double LabelDataCost(const SegmentContext& c, const std::vector<RegionState>& regions, int v,
                      int l) {
   return l < 0 ? OutlierCost(c, v) : VertexCost(c, v, regions[l].surface);
-}
-
-// The vertices not labelled `alpha` within `rings` mesh edges of a vertex
-// labelled `alpha`, walked outward ring by ring (sorted). Marks each in
-// `node` (0; the caller numbers them).
-std::vector<int> Band(const SegmentContext& c, const std::vector<int>& labels,
-                      const RegionState& alpha_region, int alpha, int rings,
-                      std::vector<int>* node) {
-  std::vector<int> band;
-  std::vector<int> ring;
-  auto walk_from = [&](int v, std::vector<int>* into) {
-    for (const int u : c.graph.Neighbors(v)) {
-      if (labels[u] != alpha && (*node)[u] < 0) {
-        (*node)[u] = 0;
-        into->push_back(u);
-      }
-    }
-  };
-  for (const int v : alpha_region.vertices) walk_from(v, &ring);
-  for (int k = 1; k <= rings && !ring.empty(); ++k) {
-    band.insert(band.end(), ring.begin(), ring.end());
-    if (k == rings) break;
-    std::vector<int> next;
-    for (const int v : ring) walk_from(v, &next);
-    ring.swap(next);
-  }
-  std::sort(band.begin(), band.end());
-  return band;
 }
 
 // The minimum cut of the network `arcs` over `nodes` nodes between
@@ -118,22 +83,19 @@ std::vector<boost::default_color_type> MinimumCut(const Arcs& arcs, int nodes, i
   return color;
 }
 
-// ExpandRegion in `work` (left as it was found).
+// ExpandRegion with the bands of `bands` (current with `labels`).
 Expansion Expand(const SegmentContext& c, const std::vector<int>& labels,
-                 const std::vector<RegionState>& regions, int alpha, int rings, Workspace* work) {
+                 const std::vector<RegionState>& regions, int alpha, int rings,
+                 ExpansionBands* bands) {
   Expansion out;
-  std::vector<int>& node = work->node;
-  const std::vector<int> band = Band(c, labels, regions[alpha], alpha, rings, &node);
+  const std::vector<int> band = bands->Band(labels, alpha, rings);
   const int n = static_cast<int>(band.size());
-  for (int k = 0; k < n; ++k) node[band[k]] = k;
-  // The band's nodes cleared on every way out.
-  struct Clear {
+  // The band's numbering released on every way out.
+  struct Release {
     const std::vector<int>& band;
-    std::vector<int>& node;
-    ~Clear() {
-      for (const int v : band) node[v] = -1;
-    }
-  } clear{band, node};
+    ExpansionBands* bands;
+    ~Release() { bands->Release(band); }
+  } release{band, bands};
   if (band.empty()) return out;
   // x_v = 1: v takes alpha. diff[k] = cost(x = 1) - cost(x = 0) of the
   // unary terms of band vertex k; the pairwise terms between two band
@@ -152,7 +114,7 @@ Expansion Expand(const SegmentContext& c, const std::vector<int>& labels,
     for (const int u : c.graph.Neighbors(v)) {
       const int lu = labels[u];
       const double w = EdgeCost(c, u, v);
-      const int j = lu == alpha ? -1 : node[u];
+      const int j = lu == alpha ? -1 : bands->Node(u);
       if (j < 0) {
         // A fixed neighbour: the edge costs w [l != l_u] under v's label l.
         diff[k] += w * ((lu != alpha) - (lv != lu));
@@ -197,7 +159,7 @@ Expansion Expand(const SegmentContext& c, const std::vector<int>& labels,
     if (lv >= 0) --size_change[lv];
     for (const int u : c.graph.Neighbors(v)) {
       const int lu = labels[u];
-      const int j = lu == alpha ? -1 : node[u];
+      const int j = lu == alpha ? -1 : bands->Node(u);
       const bool u_takes = j >= 0 && takes[j];
       if (u_takes && u < v) continue;  // counted from u
       const bool before = lv != lu;
@@ -219,22 +181,22 @@ Expansion Expand(const SegmentContext& c, const std::vector<int>& labels,
 
 Expansion ExpandRegion(const SegmentContext& c, const std::vector<int>& labels,
                        const std::vector<RegionState>& regions, int alpha, int rings) {
-  Workspace work(c.vertex_count());
-  return Expand(c, labels, regions, alpha, rings, &work);
+  ExpansionBands bands(c, labels, static_cast<int>(regions.size()));
+  return Expand(c, labels, regions, alpha, rings, &bands);
 }
 
 absl::StatusOr<int> ExpandRegions(const SegmentContext& c, std::vector<int>* labels,
                                   std::vector<RegionState>* regions, int rings) {
   int moved = 0;
   const int count = static_cast<int>(regions->size());
-  Workspace work(c.vertex_count());
+  ExpansionBands bands(c, *labels, count);
   for (int sweep = 0; sweep < kMaxExpansionSweeps; ++sweep) {
     std::vector<uint8_t> changed(count, 0);
     int moved_now = 0;
     for (int alpha = 0; alpha < count; ++alpha) {
       MESHSEG_RETURN_IF_ERROR(c.run->CheckStop("segment"));
       if (!(*regions)[alpha].alive || (*regions)[alpha].vertices.empty()) continue;
-      const Expansion move = Expand(c, *labels, *regions, alpha, rings, &work);
+      const Expansion move = Expand(c, *labels, *regions, alpha, rings, &bands);
       if (move.taken.empty() || !(move.delta < 0.0)) continue;
       // The vertices each region gives up, then the labels.
       std::map<int, std::vector<int>> given;
@@ -256,6 +218,7 @@ absl::StatusOr<int> ExpandRegions(const SegmentContext& c, std::vector<int>* lab
       std::merge(grown.begin(), grown.end(), move.taken.begin(), move.taken.end(), merged.begin());
       grown.swap(merged);
       changed[alpha] = 1;
+      bands.Moved(move.taken);
       moved_now += static_cast<int>(move.taken.size());
     }
     moved += moved_now;
@@ -267,6 +230,7 @@ absl::StatusOr<int> ExpandRegions(const SegmentContext& c, std::vector<int>* lab
         region = Reestimated(c, region);
       }
     });
+    bands.Regroup(*labels);
   }
   return moved;
 }
