@@ -83,10 +83,13 @@ std::vector<boost::default_color_type> MinimumCut(const Arcs& arcs, int nodes, i
   return color;
 }
 
-// ExpandRegion with the bands of `bands` (current with `labels`).
+// ExpandRegion with the bands of `bands` (current with `labels`). If
+// `read` is given (one flag per region and a last one for -1), flags every
+// label the expansion reads: alpha and the labels of the band and of its
+// vertices' neighbours.
 Expansion Expand(const SegmentContext& c, const std::vector<int>& labels,
                  const std::vector<RegionState>& regions, int alpha, int rings,
-                 ExpansionBands* bands) {
+                 ExpansionBands* bands, std::vector<uint8_t>* read = nullptr) {
   Expansion out;
   const std::vector<int> band = bands->Band(labels, alpha, rings);
   const int n = static_cast<int>(band.size());
@@ -109,6 +112,12 @@ Expansion Expand(const SegmentContext& c, const std::vector<int>& labels,
   for (int k = 0; k < n; ++k) {
     const int v = band[k];
     const int lv = labels[v];
+    if (read != nullptr) {
+      (*read)[lv < 0 ? regions.size() : lv] = 1;
+      for (const int u : c.graph.Neighbors(v)) {
+        (*read)[labels[u] < 0 ? regions.size() : labels[u]] = 1;
+      }
+    }
     data_change[k] = VertexCost(c, v, regions[alpha].surface) - LabelDataCost(c, regions, v, lv);
     diff[k] += data_change[k];
     for (const int u : c.graph.Neighbors(v)) {
@@ -190,20 +199,49 @@ absl::StatusOr<int> ExpandRegions(const SegmentContext& c, std::vector<int>* lab
   int moved = 0;
   const int count = static_cast<int>(regions->size());
   ExpansionBands bands(c, *labels, count);
+  // An expansion not made is made again only if something it read has
+  // changed since: its result is a function of alpha's vertices (they fix
+  // the band), the labels of the band and of its vertices' neighbours, and
+  // the surfaces and sizes of those labels. Each label (the last slot: -1)
+  // has a version, raised when it gains or loses a vertex or is
+  // re-estimated; an expansion is kept with the versions of the labels it
+  // read, and while they stand it would be the same expansion, not made.
+  std::vector<long> version(count + 1, 0);
+  auto slot = [&](int l) { return l < 0 ? count : l; };
+  std::vector<std::vector<std::pair<int, long>>> not_made(count);
+  std::vector<uint8_t> read(count + 1, 0);
+  auto unchanged = [&](int alpha) {
+    const std::vector<std::pair<int, long>>& kept = not_made[alpha];
+    return !kept.empty() && std::all_of(kept.begin(), kept.end(), [&](const auto& lv) {
+      return version[lv.first] == lv.second;
+    });
+  };
   for (int sweep = 0; sweep < kMaxExpansionSweeps; ++sweep) {
     std::vector<uint8_t> changed(count, 0);
     int moved_now = 0;
     for (int alpha = 0; alpha < count; ++alpha) {
       MESHSEG_RETURN_IF_ERROR(c.run->CheckStop("segment"));
       if (!(*regions)[alpha].alive || (*regions)[alpha].vertices.empty()) continue;
-      const Expansion move = Expand(c, *labels, *regions, alpha, rings, &bands);
-      if (move.taken.empty() || !(move.delta < 0.0)) continue;
+      if (unchanged(alpha)) continue;
+      read[alpha] = 1;
+      const Expansion move = Expand(c, *labels, *regions, alpha, rings, &bands, &read);
+      not_made[alpha].clear();
+      if (move.taken.empty() || !(move.delta < 0.0)) {
+        for (int l = 0; l <= count; ++l) {
+          if (read[l]) not_made[alpha].emplace_back(l, version[l]);
+        }
+        std::fill(read.begin(), read.end(), 0);
+        continue;
+      }
+      std::fill(read.begin(), read.end(), 0);
       // The vertices each region gives up, then the labels.
       std::map<int, std::vector<int>> given;
       for (const int v : move.taken) {
         if ((*labels)[v] >= 0) given[(*labels)[v]].push_back(v);
+        ++version[slot((*labels)[v])];
         (*labels)[v] = alpha;
       }
+      ++version[alpha];
       for (const auto& [r, vertices] : given) {
         std::vector<int>& own = (*regions)[r].vertices;
         std::vector<int> rest;
@@ -230,6 +268,7 @@ absl::StatusOr<int> ExpandRegions(const SegmentContext& c, std::vector<int>* lab
         region = Reestimated(c, region);
       }
     });
+    for (int r = 0; r < count; ++r) version[r] += changed[r];
     bands.Regroup(*labels);
   }
   return moved;

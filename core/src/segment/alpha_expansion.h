@@ -57,8 +57,9 @@ Expansion ExpandRegion(const SegmentContext& c, const std::vector<int>& labels,
 // each made iff it lowers E, then the re-estimation of the regions that
 // changed, until a sweep moves no vertex or kMaxExpansionSweeps. Updates
 // labels, vertex lists and surfaces (types stay; a region may end with no
-// vertices). Returns the number of vertices moved. Errors: CANCELLED on
-// stop.
+// vertices). An expansion not made is not made again while nothing it
+// reads has changed (it would be the same). Returns the number of vertices
+// moved. Errors: CANCELLED on stop.
 absl::StatusOr<int> ExpandRegions(const SegmentContext& c, std::vector<int>* labels,
                                   std::vector<RegionState>* regions, int rings = kBandRings);
 
