@@ -9,10 +9,8 @@
 #include <span>
 
 #include <Eigen/Core>
-#if defined(__SSE2__)
-#include <emmintrin.h>
-#endif
 
+#include "fit/axial_lanes.h"
 #include "fit/levenberg_marquardt.h"
 #include "meshseg/fit.h"
 
@@ -84,62 +82,34 @@ void AxialResidualPair(const AxialFrame& f, const Eigen::Vector3d& p0, const Eig
                        Eigen::Matrix<double, 1, P>* row1) {
   static_assert(P == 5 || P == 6);
 #if defined(__SSE2__)
-  auto both = [](double x) { return _mm_set1_pd(x); };
-  // (x0 y0 + x1 y1) + x2 y2 per lane, as Eigen's dot of two Vector3d.
-  auto dot = [](__m128d x0, __m128d x1, __m128d x2, __m128d y0, __m128d y1, __m128d y2) {
-    return _mm_add_pd(_mm_add_pd(_mm_mul_pd(x0, y0), _mm_mul_pd(x1, y1)), _mm_mul_pd(x2, y2));
-  };
-  auto store = [&](__m128d x, int k) {
-    alignas(16) double lanes[2];
-    _mm_store_pd(lanes, x);
-    (*row0)(k) = lanes[0];
-    (*row1)(k) = lanes[1];
-  };
-  auto neg = [](__m128d x) { return _mm_xor_pd(x, _mm_set1_pd(-0.0)); };
-  const __m128d ax = both(f.axis.x()), ay = both(f.axis.y()), az = both(f.axis.z());
-  const __m128d vx = _mm_sub_pd(_mm_set_pd(p1.x(), p0.x()), both(f.origin.x()));
-  const __m128d vy = _mm_sub_pd(_mm_set_pd(p1.y(), p0.y()), both(f.origin.y()));
-  const __m128d vz = _mm_sub_pd(_mm_set_pd(p1.z(), p0.z()), both(f.origin.z()));
-  const __m128d h = dot(vx, vy, vz, ax, ay, az);
-  const __m128d qx = _mm_sub_pd(vx, _mm_mul_pd(h, ax));
-  const __m128d qy = _mm_sub_pd(vy, _mm_mul_pd(h, ay));
-  const __m128d qz = _mm_sub_pd(vz, _mm_mul_pd(h, az));
-  const __m128d rho = _mm_sqrt_pd(dot(qx, qy, qz, qx, qy, qz));
-  // e = q / rho where rho > 0, else 0 (the lane's 0 / 0 is masked off).
-  const __m128d positive = _mm_cmpgt_pd(rho, _mm_setzero_pd());
-  const __m128d ex = _mm_and_pd(positive, _mm_div_pd(qx, rho));
-  const __m128d ey = _mm_and_pd(positive, _mm_div_pd(qy, rho));
-  const __m128d ez = _mm_and_pd(positive, _mm_div_pd(qz, rho));
-  const __m128d b1x = both(f.b1.x()), b1y = both(f.b1.y()), b1z = both(f.b1.z());
-  const __m128d b2x = both(f.b2.x()), b2y = both(f.b2.y()), b2z = both(f.b2.z());
-  const __m128d eb1 = dot(ex, ey, ez, b1x, b1y, b1z);
-  const __m128d eb2 = dot(ex, ey, ez, b2x, b2y, b2z);
-  const __m128d minus_h = neg(h);
-  const __m128d off = _mm_sub_pd(rho, both(f.radius));  // rho - radius
+  using namespace lanes;
+  auto store = [&](__m128d x, int k) { Store(x, &(*row0)(k), &(*row1)(k)); };
+  const AxialPair a(f.origin, f.axis, p0, p1);
+  const __m128d eb1 = Dot(a.ex, a.ey, a.ez, f.b1);
+  const __m128d eb2 = Dot(a.ex, a.ey, a.ez, f.b2);
+  const __m128d minus_h = Negated(a.h);
+  const __m128d off = _mm_sub_pd(a.rho, Both(f.radius));  // rho - radius
   __m128d r;
   if (P == 5 && f.sin_angle == 0.0 && f.cos_angle == 1.0) {
-    store(neg(eb1), 0);
-    store(neg(eb2), 1);
+    store(Negated(eb1), 0);
+    store(Negated(eb2), 1);
     store(_mm_mul_pd(minus_h, eb1), 2);
     store(_mm_mul_pd(minus_h, eb2), 3);
-    store(both(-1.0), 4);
+    store(Both(-1.0), 4);
     r = off;
   } else {
-    const __m128d c = both(f.cos_angle), s = both(f.sin_angle);
-    const __m128d minus_c = both(-f.cos_angle);
+    const __m128d c = Both(f.cos_angle), s = Both(f.sin_angle);
+    const __m128d minus_c = Both(-f.cos_angle);
     const __m128d hc = _mm_mul_pd(minus_h, c);  // -h cos
     store(_mm_mul_pd(minus_c, eb1), 0);
     store(_mm_mul_pd(minus_c, eb2), 1);
-    store(_mm_sub_pd(_mm_mul_pd(hc, eb1), _mm_mul_pd(s, dot(vx, vy, vz, b1x, b1y, b1z))), 2);
-    store(_mm_sub_pd(_mm_mul_pd(hc, eb2), _mm_mul_pd(s, dot(vx, vy, vz, b2x, b2y, b2z))), 3);
+    store(_mm_sub_pd(_mm_mul_pd(hc, eb1), _mm_mul_pd(s, Dot(a.vx, a.vy, a.vz, f.b1))), 2);
+    store(_mm_sub_pd(_mm_mul_pd(hc, eb2), _mm_mul_pd(s, Dot(a.vx, a.vy, a.vz, f.b2))), 3);
     store(minus_c, 4);
-    if constexpr (P == 6) store(_mm_sub_pd(_mm_mul_pd(neg(off), s), _mm_mul_pd(h, c)), 5);
-    r = _mm_sub_pd(_mm_mul_pd(off, c), _mm_mul_pd(h, s));
+    if constexpr (P == 6) store(_mm_sub_pd(_mm_mul_pd(Negated(off), s), _mm_mul_pd(a.h, c)), 5);
+    r = _mm_sub_pd(_mm_mul_pd(off, c), _mm_mul_pd(a.h, s));
   }
-  alignas(16) double lanes[2];
-  _mm_store_pd(lanes, r);
-  *r0 = lanes[0];
-  *r1 = lanes[1];
+  Store(r, r0, r1);
 #else
   *r0 = AxialResidual<P>(f, p0, row0);
   *r1 = AxialResidual<P>(f, p1, row1);
