@@ -40,12 +40,23 @@ class AxialProblem : public LeastSquaresProblem {
   template <int P>
   double Accumulate(const Eigen::VectorXd& x, Eigen::MatrixXd* jtj, Eigen::VectorXd* jtr) const {
     const AxialFrame frame(x.head<3>(), x.segment<3>(3), x(6), x(7));
-    return AccumulateNormalEquations<P>(
-        input_,
-        [&](std::size_t i, Eigen::Matrix<double, 1, P>* row) {
-          return AxialResidual<P>(frame, input_.points[i], row);
-        },
-        jtj, jtr);
+    // AccumulateNormalEquations with the residuals made two points at a
+    // time (AxialResidualPair: the same values), summed in point order.
+    const std::span<const Eigen::Vector3d> p = input_.points;
+    NormalEquationSums<P> sums;
+    Eigen::Matrix<double, 1, P> row0, row1;
+    double r0 = 0.0, r1 = 0.0;
+    std::size_t i = 0;
+    for (; i + 1 < p.size(); i += 2) {
+      AxialResidualPair<P>(frame, p[i], p[i + 1], &r0, &row0, &r1, &row1);
+      sums.Add(WeightAt(input_, i), r0, row0);
+      sums.Add(WeightAt(input_, i + 1), r1, row1);
+    }
+    if (i < p.size()) {
+      r0 = AxialResidual<P>(frame, p[i], &row0);
+      sums.Add(WeightAt(input_, i), r0, row0);
+    }
+    return sums.Finish(jtj, jtr);
   }
 
   const FitInput& input_;

@@ -10,6 +10,7 @@
 
 #include <Eigen/Core>
 
+#include "fit/axial_lanes.h"
 #include "fit/levenberg_marquardt.h"
 #include "meshseg/fit.h"
 
@@ -66,6 +67,53 @@ double AxialResidual(const AxialFrame& f, const Eigen::Vector3d& p,
   (*row)(4) = -f.cos_angle;
   if constexpr (P == 6) (*row)(5) = -(rho - f.radius) * f.sin_angle - h * f.cos_angle;
   return (rho - f.radius) * f.cos_angle - h * f.sin_angle;
+}
+
+// AxialResidual of two points at once, p0 into (*r0, row0) and p1 into
+// (*r1, row1): the same values to the bit. With SSE2 the two points take
+// the two lanes of each packed operation; every lane runs the scalar
+// formula's operations in its order (Eigen sums a Vector3d's products as
+// (x0 + x1) + x2), and packed IEEE arithmetic rounds each lane as scalar
+// arithmetic does, so only the count of instructions changes (the
+// divisions and square roots, most of a residual's time, are shared).
+template <int P>
+void AxialResidualPair(const AxialFrame& f, const Eigen::Vector3d& p0, const Eigen::Vector3d& p1,
+                       double* r0, Eigen::Matrix<double, 1, P>* row0, double* r1,
+                       Eigen::Matrix<double, 1, P>* row1) {
+  static_assert(P == 5 || P == 6);
+#if defined(__SSE2__)
+  using namespace lanes;
+  auto store = [&](__m128d x, int k) { Store(x, &(*row0)(k), &(*row1)(k)); };
+  const AxialPair a(f.origin, f.axis, p0, p1);
+  const __m128d eb1 = Dot(a.ex, a.ey, a.ez, f.b1);
+  const __m128d eb2 = Dot(a.ex, a.ey, a.ez, f.b2);
+  const __m128d minus_h = Negated(a.h);
+  const __m128d off = _mm_sub_pd(a.rho, Both(f.radius));  // rho - radius
+  __m128d r;
+  if (P == 5 && f.sin_angle == 0.0 && f.cos_angle == 1.0) {
+    store(Negated(eb1), 0);
+    store(Negated(eb2), 1);
+    store(_mm_mul_pd(minus_h, eb1), 2);
+    store(_mm_mul_pd(minus_h, eb2), 3);
+    store(Both(-1.0), 4);
+    r = off;
+  } else {
+    const __m128d c = Both(f.cos_angle), s = Both(f.sin_angle);
+    const __m128d minus_c = Both(-f.cos_angle);
+    const __m128d hc = _mm_mul_pd(minus_h, c);  // -h cos
+    store(_mm_mul_pd(minus_c, eb1), 0);
+    store(_mm_mul_pd(minus_c, eb2), 1);
+    store(_mm_sub_pd(_mm_mul_pd(hc, eb1), _mm_mul_pd(s, Dot(a.vx, a.vy, a.vz, f.b1))), 2);
+    store(_mm_sub_pd(_mm_mul_pd(hc, eb2), _mm_mul_pd(s, Dot(a.vx, a.vy, a.vz, f.b2))), 3);
+    store(minus_c, 4);
+    if constexpr (P == 6) store(_mm_sub_pd(_mm_mul_pd(Negated(off), s), _mm_mul_pd(a.h, c)), 5);
+    r = _mm_sub_pd(_mm_mul_pd(off, c), _mm_mul_pd(a.h, s));
+  }
+  Store(r, r0, r1);
+#else
+  *r0 = AxialResidual<P>(f, p0, row0);
+  *r1 = AxialResidual<P>(f, p1, row1);
+#endif
 }
 
 // Axis point and radius from an algebraic circle fit of the points projected

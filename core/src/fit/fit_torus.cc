@@ -6,6 +6,8 @@
 // axis, major radius). Then Levenberg–Marquardt on the geometric distance
 // sqrt((rho − R)² + h²) − r. Needs normals.
 #include <cmath>
+#include <cstddef>
+#include <span>
 #include <vector>
 
 #include <Eigen/Eigenvalues>
@@ -14,12 +16,11 @@
 #include "fit/algebraic_sphere.h"
 #include "fit/fit_internal.h"
 #include "fit/levenberg_marquardt.h"
+#include "fit/torus_residual.h"
 #include "meshseg/fit.h"
 
 namespace meshseg {
 namespace {
-
-using fit_internal::AccumulateNormalEquations;
 
 constexpr double kCollinearRatio = 1e-12;
 constexpr double kMinAxisWeight = 1e-6;  // |d| of the unit eigenvector: else no finite axis
@@ -31,30 +32,24 @@ class TorusProblem : public fit_internal::LeastSquaresProblem {
   int NumSteps() const override { return 7; }
   double Evaluate(const Eigen::VectorXd& x, Eigen::MatrixXd* jtj,
                   Eigen::VectorXd* jtr) const override {
-    const Eigen::Vector3d c = x.head<3>();
-    const Eigen::Vector3d a = x.segment<3>(3);
-    const double major = x(6), minor = x(7);
-    Eigen::Vector3d b1, b2;
-    fit_internal::PerpendicularBasis(a, &b1, &b2);
-    return AccumulateNormalEquations<7>(
-        input_,
-        [&](std::size_t i, Eigen::Matrix<double, 1, 7>* row) {
-          const Eigen::Vector3d v = input_.points[i] - c;
-          const double h = v.dot(a);
-          const Eigen::Vector3d q = v - h * a;
-          const double rho = q.norm();
-          const Eigen::Vector3d e = rho > 0.0 ? Eigen::Vector3d(q / rho) : Eigen::Vector3d::Zero();
-          const double dist = std::hypot(rho - major, h);
-          const double gr = dist > 0.0 ? (rho - major) / dist : 0.0;  // ∂dist/∂rho
-          const double gh = dist > 0.0 ? h / dist : 0.0;              // ∂dist/∂h
-          row->head<3>() = -(gr * e + gh * a).transpose();
-          (*row)(3) = -gr * h * e.dot(b1) + gh * v.dot(b1);
-          (*row)(4) = -gr * h * e.dot(b2) + gh * v.dot(b2);
-          (*row)(5) = -gr;
-          (*row)(6) = -1.0;
-          return dist - minor;
-        },
-        jtj, jtr);
+    const fit_internal::TorusFrame frame(x.head<3>(), x.segment<3>(3), x(6), x(7));
+    // The residuals two points at a time (TorusResidualPair: the same
+    // values), summed in point order as AccumulateNormalEquations does.
+    const std::span<const Eigen::Vector3d> p = input_.points;
+    fit_internal::NormalEquationSums<7> sums;
+    Eigen::Matrix<double, 1, 7> row0, row1;
+    double r0 = 0.0, r1 = 0.0;
+    std::size_t i = 0;
+    for (; i + 1 < p.size(); i += 2) {
+      fit_internal::TorusResidualPair(frame, p[i], p[i + 1], &r0, &row0, &r1, &row1);
+      sums.Add(fit_internal::WeightAt(input_, i), r0, row0);
+      sums.Add(fit_internal::WeightAt(input_, i + 1), r1, row1);
+    }
+    if (i < p.size()) {
+      r0 = fit_internal::TorusResidual(frame, p[i], &row0);
+      sums.Add(fit_internal::WeightAt(input_, i), r0, row0);
+    }
+    return sums.Finish(jtj, jtr);
   }
   Eigen::VectorXd Step(const Eigen::VectorXd& x, const Eigen::VectorXd& step) const override {
     Eigen::VectorXd y = x;

@@ -44,42 +44,57 @@ struct LmOutcome {
 LmOutcome MinimizeLevenbergMarquardt(const LeastSquaresProblem& problem,
                                      const Eigen::VectorXd& x0, const FitParams& params);
 
-// Accumulates Σ w r², J^T W J and J^T W r over the input points for a
-// problem with P step values; `residual(i, &row)` returns r_i and sets its
-// Jacobian row. Fixed-size rows: no allocation per point.
-// J^T W J is symmetric: only its lower triangle is summed, entry (k, l),
-// k >= l, as (w row_k) row_l, the product and order of terms of the full
-// outer product w row^T row, so each entry is the same to the bit; the
-// upper triangle is then copied from it (the LDLT of the steps reads the
-// lower triangle only).
-template <int P, typename Residual>
-double AccumulateNormalEquations(const FitInput& input, Residual&& residual,
-                                 Eigen::MatrixXd* jtj, Eigen::VectorXd* jtr) {
-  constexpr int kLower = P * (P + 1) / 2;
-  double a[kLower] = {};
-  double b[P] = {};
-  Eigen::Matrix<double, 1, P> row;
-  double cost = 0.0;
-  for (std::size_t i = 0; i < input.points.size(); ++i) {
-    const double w = WeightAt(input, i);
-    const double r = residual(i, &row);
-    cost += w * r * r;
+// The sums of the normal equations of a problem with P step values, one
+// point at a time: Σ w r², J^T W J and J^T W r. J^T W J is symmetric: only
+// its lower triangle is summed, entry (k, l), k >= l, as (w row_k) row_l,
+// the product and order of terms of the full outer product w row^T row, so
+// each entry is the same to the bit; the upper triangle is then copied
+// from it (the LDLT of the steps reads the lower triangle only).
+template <int P>
+class NormalEquationSums {
+ public:
+  void Add(double w, double r, const Eigen::Matrix<double, 1, P>& row) {
+    cost_ += w * r * r;
     const double wr = w * r;
     int e = 0;
     for (int k = 0; k < P; ++k) {
       const double wk = w * row(k);
-      for (int l = 0; l <= k; ++l) a[e++] += wk * row(l);
-      b[k] += wr * row(k);
+      for (int l = 0; l <= k; ++l) a_[e++] += wk * row(l);
+      b_[k] += wr * row(k);
     }
   }
-  jtj->resize(P, P);
-  jtr->resize(P);
-  int e = 0;
-  for (int k = 0; k < P; ++k) {
-    for (int l = 0; l <= k; ++l, ++e) (*jtj)(k, l) = (*jtj)(l, k) = a[e];
-    (*jtr)(k) = b[k];
+  // Sets J^T W J and J^T W r; returns Σ w r².
+  double Finish(Eigen::MatrixXd* jtj, Eigen::VectorXd* jtr) const {
+    jtj->resize(P, P);
+    jtr->resize(P);
+    int e = 0;
+    for (int k = 0; k < P; ++k) {
+      for (int l = 0; l <= k; ++l, ++e) (*jtj)(k, l) = (*jtj)(l, k) = a_[e];
+      (*jtr)(k) = b_[k];
+    }
+    return cost_;
   }
-  return cost;
+
+ private:
+  double a_[P * (P + 1) / 2] = {};
+  double b_[P] = {};
+  double cost_ = 0.0;
+};
+
+// Accumulates Σ w r², J^T W J and J^T W r over the input points for a
+// problem with P step values (NormalEquationSums, in point order);
+// `residual(i, &row)` returns r_i and sets its Jacobian row. Fixed-size
+// rows: no allocation per point.
+template <int P, typename Residual>
+double AccumulateNormalEquations(const FitInput& input, Residual&& residual,
+                                 Eigen::MatrixXd* jtj, Eigen::VectorXd* jtr) {
+  NormalEquationSums<P> sums;
+  Eigen::Matrix<double, 1, P> row;
+  for (std::size_t i = 0; i < input.points.size(); ++i) {
+    const double r = residual(i, &row);
+    sums.Add(WeightAt(input, i), r, row);
+  }
+  return sums.Finish(jtj, jtr);
 }
 
 }  // namespace meshseg::fit_internal

@@ -22,7 +22,8 @@
 // The band: only the vertices within kBandRings mesh edges of a vertex of
 // alpha (not labelled alpha) may take alpha in its expansion, so a sweep
 // moves a boundary by at most kBandRings rows, and the graph cuts stay the
-// size of the boundaries, not of the mesh. A surface grown bent over rows
+// size of the boundaries, not of the mesh (the bands are found from the
+// boundaries too, expansion_band.h). A surface grown bent over rows
 // of a neighbour's face gives them back over successive sweeps: once some
 // rows go, its re-estimated surface unbends and fits the next rows worse.
 #ifndef MESHSEG_SRC_SEGMENT_ALPHA_EXPANSION_H_
@@ -56,8 +57,9 @@ Expansion ExpandRegion(const SegmentContext& c, const std::vector<int>& labels,
 // each made iff it lowers E, then the re-estimation of the regions that
 // changed, until a sweep moves no vertex or kMaxExpansionSweeps. Updates
 // labels, vertex lists and surfaces (types stay; a region may end with no
-// vertices). Returns the number of vertices moved. Errors: CANCELLED on
-// stop.
+// vertices). An expansion not made is not made again while nothing it
+// reads has changed (it would be the same). Returns the number of vertices
+// moved. Errors: CANCELLED on stop.
 absl::StatusOr<int> ExpandRegions(const SegmentContext& c, std::vector<int>* labels,
                                   std::vector<RegionState>* regions, int rings = kBandRings);
 

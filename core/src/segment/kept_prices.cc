@@ -1,5 +1,6 @@
 #include "segment/kept_prices.h"
 
+#include <algorithm>
 #include <cstddef>
 #include <cstring>
 #include <type_traits>
@@ -40,21 +41,42 @@ int KeptPrices::Version(const std::vector<RegionState>& regions, int id) {
   return seen.version;
 }
 
-void KeptPrices::Reestimate(const std::vector<RegionState>& regions, ReestimatedRegions& region,
-                            int id) {
+void KeptPrices::Reestimate(const SegmentContext& c, const std::vector<RegionState>& regions,
+                            ReestimatedRegions& region, std::span<const int> ids) {
   // Only re-estimations are kept (regions as given need no fit).
   if (!region.reestimates()) return;
   if (reestimations_.size() < regions.size()) reestimations_.resize(regions.size());
-  const int version = Version(regions, id);
-  std::optional<KeptReestimation>& kept = reestimations_[id];
-  if (kept && kept->version == version) {
-    if (!region.Has(id)) {
-      region.Keep(id, kept->region, kept->cost);
-      ++kept_reestimations_;
+  std::vector<int> todo;
+  std::vector<int> versions;
+  for (const int id : ids) {
+    const int version = Version(regions, id);
+    std::optional<KeptReestimation>& kept = reestimations_[id];
+    if (kept && kept->version == version) {
+      if (!region.Has(id)) {
+        region.Keep(id, kept->region, kept->cost);
+        ++kept_reestimations_;
+      }
+      continue;
     }
-    return;
+    if (region.Has(id)) {
+      kept = KeptReestimation{.version = version, .region = region(id), .cost = region.Cost(id)};
+      continue;
+    }
+    if (std::find(todo.begin(), todo.end(), id) != todo.end()) continue;
+    todo.push_back(id);
+    versions.push_back(version);
   }
-  kept = KeptReestimation{.version = version, .region = region(id), .cost = region.Cost(id)};
+  // Each re-estimation reads only its region: made on the cores, each as
+  // `region` would make it.
+  std::vector<KeptReestimation> made(todo.size());
+  tbb::parallel_for(std::size_t{0}, todo.size(), [&](std::size_t k) {
+    ReestimatedRegions alone(c, regions);
+    made[k] = {.version = versions[k], .region = alone(todo[k]), .cost = alone.Cost(todo[k])};
+  });
+  for (std::size_t k = 0; k < todo.size(); ++k) {
+    region.Keep(todo[k], made[k].region, made[k].cost);
+    reestimations_[todo[k]] = std::move(made[k]);
+  }
 }
 
 KeptPrices::Versions KeptPrices::DropVersions(const SegmentContext& c,
@@ -87,9 +109,11 @@ void KeptPrices::PriceDrops(const SegmentContext& c, const std::vector<int>& lab
   // A drop's price reads the re-estimations of the region and of those
   // around it (its versions); they are made first, so that the prices only
   // read `region`.
+  std::vector<int> reestimate;
   for (const Versions& versions : todo_versions) {
-    for (const auto& [o, version] : versions) Reestimate(regions, region, o);
+    for (const auto& [o, version] : versions) reestimate.push_back(o);
   }
+  Reestimate(c, regions, region, reestimate);
   std::vector<DropMove> moves(todo.size());
   tbb::parallel_for(std::size_t{0}, todo.size(),
                     [&](std::size_t k) { moves[k] = DropDelta(c, labels, region, todo[k]); });
@@ -116,7 +140,9 @@ void KeptPrices::PriceMerges(const SegmentContext& c, const std::vector<int>& la
     todo.emplace_back(a, b);
     todo_versions.push_back(std::move(versions));
   }
-  for (const auto& [a, b] : todo) Reestimate(regions, region, a), Reestimate(regions, region, b);
+  std::vector<int> reestimate;
+  for (const auto& [a, b] : todo) reestimate.insert(reestimate.end(), {a, b});
+  Reestimate(c, regions, region, reestimate);
   std::vector<std::optional<Move>> moves(todo.size());
   tbb::parallel_for(std::size_t{0}, todo.size(), [&](std::size_t k) {
     const auto [a, b] = todo[k];

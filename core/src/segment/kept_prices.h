@@ -81,9 +81,13 @@ class KeptPrices {
     double cost = 0.0;
   };
   int Version(const std::vector<RegionState>& regions, int id);
-  // Makes region `id`'s re-estimation in `region`, or gives it the one kept
-  // from an earlier step on the same region; keeps it for the next.
-  void Reestimate(const std::vector<RegionState>& regions, ReestimatedRegions& region, int id);
+  // Makes the re-estimations of regions `ids` in `region`, or gives it
+  // those kept from an earlier step on the same regions; keeps them for
+  // the next. Those to make are made in parallel, each in a
+  // ReestimatedRegions of its own (the same computation as in `region`),
+  // and then given to `region`.
+  void Reestimate(const SegmentContext& c, const std::vector<RegionState>& regions,
+                  ReestimatedRegions& region, std::span<const int> ids);
   // The versions a drop of `id` is priced on: the region, then those around.
   Versions DropVersions(const SegmentContext& c, const std::vector<int>& labels,
                         const std::vector<RegionState>& regions, int id);

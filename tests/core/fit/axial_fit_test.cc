@@ -1,6 +1,7 @@
 #include "fit/axial_fit.h"
 
 #include <cmath>
+#include <cstring>
 #include <random>
 #include <vector>
 
@@ -103,6 +104,49 @@ TEST(AxialResidual, CylinderIsTheGeneralFormulaAtAngleZero) {
     EXPECT_EQ(r5, r6) << p.transpose();
     for (int k = 0; k < 5; ++k) {
       EXPECT_EQ(row5(k), row6(k)) << "step " << k << " at " << p.transpose();
+    }
+  }
+}
+
+// AxialResidualPair must give each point AxialResidual's residual and row
+// to the bit (memcmp): the cylinder's shortcut and the general formula
+// (cone angles of both signs), P = 5 and 6, on random points at scales
+// from 1e-3 to 1e3 around tilted axes, points on the axis included.
+template <int P>
+void ExpectPairIsTwoSingles(const AxialFrame& frame, const std::vector<Eigen::Vector3d>& points) {
+  for (std::size_t i = 0; i + 1 < points.size(); ++i) {
+    Eigen::Matrix<double, 1, P> single0, single1, pair0, pair1;
+    const double r0 = AxialResidual<P>(frame, points[i], &single0);
+    const double r1 = AxialResidual<P>(frame, points[i + 1], &single1);
+    double q0 = 0.0, q1 = 0.0;
+    AxialResidualPair<P>(frame, points[i], points[i + 1], &q0, &pair0, &q1, &pair1);
+    EXPECT_EQ(std::memcmp(&r0, &q0, sizeof(double)), 0) << points[i].transpose();
+    EXPECT_EQ(std::memcmp(&r1, &q1, sizeof(double)), 0) << points[i + 1].transpose();
+    EXPECT_EQ(std::memcmp(single0.data(), pair0.data(), sizeof(double) * P), 0)
+        << "P " << P << " at " << points[i].transpose();
+    EXPECT_EQ(std::memcmp(single1.data(), pair1.data(), sizeof(double) * P), 0)
+        << "P " << P << " at " << points[i + 1].transpose();
+  }
+}
+
+TEST(AxialResidual, PairIsTwoSinglesBitForBit) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (const double scale : {1e-3, 1.0, 37.0, 1e3}) {
+    for (const double angle : {0.0, 0.35, -0.9}) {
+      const Eigen::Vector3d axis = Eigen::Vector3d(u(rng), u(rng), 1.0).normalized();
+      const AxialFrame frame(scale * Eigen::Vector3d(u(rng), u(rng), u(rng)), axis,
+                             scale * (1.0 + u(rng) * 0.5), angle);
+      std::vector<Eigen::Vector3d> points;
+      for (int i = 0; i < 400; ++i) {
+        points.push_back(scale * 3.0 * Eigen::Vector3d(u(rng), u(rng), u(rng)));
+      }
+      // On the axis (rho = 0), next to and between others.
+      points.insert(points.begin() + 7, frame.origin);
+      points.insert(points.begin() + 20, frame.origin + scale * 2.5 * axis);
+      points.push_back(frame.origin - scale * axis);
+      ExpectPairIsTwoSingles<5>(frame, points);
+      ExpectPairIsTwoSingles<6>(frame, points);
     }
   }
 }

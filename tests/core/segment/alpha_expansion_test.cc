@@ -11,7 +11,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <limits>
+#include <type_traits>
+#include <variant>
 #include <vector>
 
 #include "segment/energy.h"
@@ -227,6 +230,55 @@ TEST_F(RoundedPrismTest, GivesFilletsBackTheRingsThePlanesTook) {
   // refinement's normal term settle tangent joins after the expansions).
   ASSERT_GT(off, 100);
   EXPECT_GT(returned, off / 2) << "of " << off;
+}
+
+// ExpandRegions skips an expansion whose inputs have not changed since it
+// was last not made, and finds its bands from the boundaries: the labels
+// and surfaces must be those of the sweeps as alpha_expansion.h states
+// them, made here naively with ExpandRegion on every region of every sweep.
+TEST_F(RoundedPrismTest, SweepsAreTheNaiveSweepsBitForBit) {
+  const SegmentContext c = MakeSegmentContext(part_.mesh.tri, field_, estimates_, 0.9, run_);
+  std::vector<int> labels;
+  PlanesTakeFilletRings(c, 3, &labels);
+  std::vector<RegionState> regions = regions_;
+  RebuildVertexLists(labels, &regions);
+  std::vector<int> naive_labels = labels;
+  std::vector<RegionState> naive = regions;
+  const int count = static_cast<int>(naive.size());
+  int sweeps = 0;
+  for (int sweep = 0; sweep < kMaxExpansionSweeps; ++sweep, ++sweeps) {
+    std::vector<uint8_t> changed(count, 0);
+    for (int alpha = 0; alpha < count; ++alpha) {
+      if (!naive[alpha].alive || naive[alpha].vertices.empty()) continue;
+      const Expansion move = ExpandRegion(c, naive_labels, naive, alpha);
+      if (move.taken.empty() || !(move.delta < 0.0)) continue;
+      for (const int v : move.taken) {
+        if (naive_labels[v] >= 0) changed[naive_labels[v]] = 1;
+        naive_labels[v] = alpha;
+      }
+      changed[alpha] = 1;
+      RebuildVertexLists(naive_labels, &naive);
+    }
+    if (std::none_of(changed.begin(), changed.end(), [](uint8_t x) { return x != 0; })) break;
+    for (int r = 0; r < count; ++r) {
+      if (changed[r] && naive[r].alive && !naive[r].vertices.empty()) {
+        naive[r] = Reestimated(c, naive[r]);
+      }
+    }
+  }
+  ASSERT_GE(sweeps, 2) << "too few sweeps to skip any expansion";
+  ASSERT_TRUE(ExpandRegions(c, &labels, &regions).ok());
+  EXPECT_EQ(labels, naive_labels);
+  for (int r = 0; r < count; ++r) {
+    EXPECT_EQ(regions[r].vertices, naive[r].vertices) << "region " << r;
+    std::visit(
+        [&](const auto& x) {
+          using T = std::decay_t<decltype(x)>;
+          EXPECT_EQ(std::memcmp(&x, &std::get<T>(naive[r].surface), sizeof(T)), 0)
+              << "region " << r;
+        },
+        regions[r].surface);
+  }
 }
 
 // With the true labels, E does not rise and the only vertices that move lie
