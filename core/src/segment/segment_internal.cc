@@ -6,9 +6,6 @@
 #include <unordered_map>
 
 #include <Eigen/Eigenvalues>
-#include <tbb/parallel_for.h>
-
-#include "segment/decide_type.h"
 
 namespace meshseg::segment_internal {
 namespace {
@@ -189,23 +186,6 @@ void RebuildVertexLists(const std::vector<int>& labels, std::vector<RegionState>
   for (std::size_t v = 0; v < labels.size(); ++v) {
     if (labels[v] >= 0) (*regions)[labels[v]].vertices.push_back(static_cast<int>(v));
   }
-}
-
-void RefitRegions(const SegmentContext& c, const std::vector<uint8_t>& refit,
-                  std::vector<RegionState>* regions) {
-  // Each region's fit reads only its own vertices and writes only its own
-  // surface: the regions are refitted on both cores, one task each.
-  tbb::parallel_for(std::size_t{0}, regions->size(), [&](std::size_t r) {
-    RegionState& region = (*regions)[r];
-    if (!refit[r] || !region.alive || region.vertices.empty()) return;
-    const FitResult fit = FitType(c, region.type, region.vertices);
-    if (fit.ok()) {
-      region.surface = fit.surface;
-    } else if (const std::optional<ScoredFit> other = TypeThatFitsInstead(c, region)) {
-      region.type = other->type;
-      region.surface = other->fit.surface;
-    }
-  });
 }
 
 std::vector<int> RegionsAround(const SegmentContext& c, const std::vector<int>& labels,

@@ -36,9 +36,6 @@ inline bool IsCurved(SurfaceType type) {
          type == SurfaceType::kCone || type == SurfaceType::kTorus;
 }
 
-// True for the plane and the curved analytic types (not the quadric).
-inline bool IsAnalytic(SurfaceType type) { return type == SurfaceType::kPlane || IsCurved(type); }
-
 // Thresholds of ALGORITHMS.md S1 eqs. (5) and (6) (step 2.2).
 struct Tolerance {
   double distance = 0.0;  // th_dis, model units
@@ -134,12 +131,6 @@ inline constexpr double kCurvedDirection = 0.85;
 
 // Rebuilds every region's vertex list from `labels` (dead regions: empty).
 void RebuildVertexLists(const std::vector<int>& labels, std::vector<RegionState>* regions);
-
-// Refits, with its own type, every alive region r with vertices and
-// refit[r] set; a region whose type has no valid fit there takes the
-// TypeThatFitsInstead (decide_type.h), if any, or keeps its surface.
-void RefitRegions(const SegmentContext& c, const std::vector<uint8_t>& refit,
-                  std::vector<RegionState>* regions);
 
 // The regions other than `id` that a mesh edge from `id`'s vertices leads
 // to, sorted.

@@ -1,5 +1,5 @@
 // The shared pieces of the segment stage: FitType's per-type fit over a
-// region's vertices, and RefitRegions when that fit is invalid.
+// region's vertices, and the piece of a vertex set that holds a seed.
 #include "segment/segment_internal.h"
 
 #include <gtest/gtest.h>
@@ -9,7 +9,6 @@
 #include <vector>
 #include <variant>
 
-#include "segment/decide_type.h"
 #include "sheet_context.h"
 
 namespace meshseg::segment_internal {
@@ -62,54 +61,6 @@ TEST(FitTypeTest, SpindleTorusAwayFromItsAxisIsATorus) {
   const auto& t = std::get<Torus>(fit.surface);
   EXPECT_NEAR(t.major_radius, 2.0, 1e-3);
   EXPECT_NEAR(t.minor_radius, 10.0, 1e-3);
-}
-
-// The disc with the start of a round (testing::BuildDiscWithRoundStart) as
-// one region typed torus, no surface set: no torus fit to it is valid.
-std::vector<RegionState> DiscLabelledTorus(Sheet* s) {
-  testing::BuildDiscWithRoundStart(/*distance=*/0.15, s);
-  std::vector<int> labels;
-  return testing::OneRegion(*s, SurfaceType::kTorus, &labels);
-}
-
-TEST(RefitRegionsTest, RegionItsTypeCannotFitTakesTheTypeThatDoes) {
-  // The disc with the start of a round labelled torus, with the surface of
-  // a torus grown elsewhere (test_piece's boss rim at 0.15 h, seed 171): no
-  // torus fit is valid there, and the old surface misses the disc.
-  Sheet s;
-  std::vector<RegionState> regions = DiscLabelledTorus(&s);
-  const Torus stale{.center = Eigen::Vector3d(0.0, 0.0, -3.0),
-                    .axis_direction = Eigen::Vector3d::UnitZ(),
-                    .major_radius = 8.0,
-                    .minor_radius = 3.0};
-  regions[0].surface = stale;
-  ASSERT_FALSE(FitType(s.c, SurfaceType::kTorus, regions[0].vertices).ok());
-
-  RefitRegions(s.c, {1}, &regions);
-  const ScoredFit best = BestScoredType(s.c, regions[0].vertices);
-  ASSERT_TRUE(best.fit.ok());
-  EXPECT_EQ(regions[0].type, best.type) << SurfaceTypeName(regions[0].type);
-  EXPECT_NE(regions[0].type, SurfaceType::kTorus);
-  const double n = static_cast<double>(regions[0].vertices.size());
-  EXPECT_LT(std::sqrt(SquaredDistances(s.c, regions[0].surface, regions[0].vertices) / n),
-            0.1 * std::sqrt(SquaredDistances(s.c, stale, regions[0].vertices) / n));
-}
-
-TEST(RefitRegionsTest, RegionWhoseSurfaceStillMeetsItBestKeepsIt) {
-  // The same region with the spindle torus FitType finds there, and
-  // rejects, as its surface: it meets the disc and the round's start
-  // better than any valid type does, so the region keeps it (a torus band
-  // on fandisk_noisy whose torus fit failed for a while).
-  Sheet s;
-  std::vector<RegionState> regions = DiscLabelledTorus(&s);
-  const FitResult spindle = FitType(s.c, SurfaceType::kTorus, regions[0].vertices);
-  ASSERT_FALSE(spindle.ok());
-  regions[0].surface = spindle.surface;
-
-  RefitRegions(s.c, {1}, &regions);
-  EXPECT_EQ(regions[0].type, SurfaceType::kTorus);
-  EXPECT_EQ(std::get<Torus>(regions[0].surface).minor_radius,
-            std::get<Torus>(spindle.surface).minor_radius);
 }
 
 // A flat strip of 20 columns by 5 rows, 1 apart in the plane z = 0.
