@@ -109,6 +109,7 @@ Expansion Expand(const SegmentContext& c, const std::vector<int>& labels,
   Arcs arcs;
   const int source = n;  // source side: x = 0, keep the label
   const int sink = n + 1;
+  const SurfaceDistance alpha_distance(regions[alpha].surface);
   for (int k = 0; k < n; ++k) {
     const int v = band[k];
     const int lv = labels[v];
@@ -118,7 +119,7 @@ Expansion Expand(const SegmentContext& c, const std::vector<int>& labels,
         (*read)[labels[u] < 0 ? regions.size() : labels[u]] = 1;
       }
     }
-    data_change[k] = VertexCost(c, v, regions[alpha].surface) - LabelDataCost(c, regions, v, lv);
+    data_change[k] = VertexCost(c, v, alpha_distance) - LabelDataCost(c, regions, v, lv);
     diff[k] += data_change[k];
     for (const int u : c.graph.Neighbors(v)) {
       const int lu = labels[u];

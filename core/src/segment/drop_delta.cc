@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
-#include <functional>
 #include <utility>
 #include <vector>
 
@@ -40,6 +39,7 @@ DropLabeling DropLabels(const SegmentContext& c, const std::vector<int>& labels,
   // index in r of a neighbour in r, or -2 - its label outside (-1 none).
   std::vector<std::size_t> first(n + 1, 0);
   std::vector<long> beside;
+  beside.reserve(7 * n);  // a little above the mean degree, 6
   for (std::size_t k = 0; k < n; ++k) {
     for (const int u : c.graph.Neighbors(r.vertices[k])) {
       beside.push_back(labels[u] == id ? long{index_in_r[u]} : -2L - labels[u]);
@@ -61,7 +61,7 @@ DropLabeling DropLabels(const SegmentContext& c, const std::vector<int>& labels,
   };
   // Grows with `choose(k, seen)` (-1: not now) from every unplaced vertex
   // beside a placed one until no layer places any.
-  auto grow = [&](const std::function<int(std::size_t, const std::vector<int>&)>& choose) {
+  auto grow = [&](const auto& choose) {
     std::vector<std::size_t> layer;
     for (std::size_t k = 0; k < n; ++k) {
       if (next[k] >= 0) continue;
@@ -96,13 +96,13 @@ DropLabeling DropLabels(const SegmentContext& c, const std::vector<int>& labels,
   };
   // First each vertex within th_dis of a surface beside it takes the one it
   // costs least on (ties to the lowest id).
-  std::vector<std::pair<int, const Surface*>> surfaces;  // looked up once each
-  auto surface_of = [&](int l) -> const Surface& {
-    for (const auto& [label, surface] : surfaces) {
-      if (label == l) return *surface;
+  std::vector<std::pair<int, SurfaceDistance>> surfaces;  // made once each
+  auto cost_on = [&](int l, int v) {
+    for (const auto& [label, distance_to] : surfaces) {
+      if (label == l) return VertexCost(c, v, distance_to);
     }
-    surfaces.emplace_back(l, &region(l).surface);
-    return *surfaces.back().second;
+    surfaces.emplace_back(l, SurfaceDistance(region(l).surface));
+    return VertexCost(c, v, surfaces.back().second);
   };
   grow([&](std::size_t k, const std::vector<int>& seen) {
     const int v = r.vertices[k];
@@ -110,7 +110,7 @@ DropLabeling DropLabels(const SegmentContext& c, const std::vector<int>& labels,
     int pick = -1;
     for (std::size_t t = 0; t < seen.size(); ++t) {
       if (t > 0 && seen[t] == seen[t - 1]) continue;
-      const double cost = VertexCost(c, v, surface_of(seen[t]));
+      const double cost = cost_on(seen[t], v);
       if (cost < best) best = cost, pick = seen[t];
     }
     return pick;
@@ -170,12 +170,17 @@ DropMove DropDelta(const SegmentContext& c, const std::vector<int>& labels,
   for (std::size_t k = 0; k < r.vertices.size(); ++k) {
     if (move.next[k] < 0) delta += OutlierCost(c, r.vertices[k]);
   }
-  for (const int o : move.takers) {
+  // The vertices each taker takes, in r's order, in one pass.
+  std::vector<std::vector<int>> taken_by(move.takers.size());
+  for (std::size_t k = 0; k < r.vertices.size(); ++k) {
+    if (move.next[k] < 0) continue;
+    const auto t = std::lower_bound(move.takers.begin(), move.takers.end(), move.next[k]);
+    taken_by[t - move.takers.begin()].push_back(r.vertices[k]);
+  }
+  for (std::size_t t = 0; t < move.takers.size(); ++t) {
+    const int o = move.takers[t];
     const RegionState& taker = region(o);
-    std::vector<int> taken;
-    for (std::size_t k = 0; k < r.vertices.size(); ++k) {
-      if (move.next[k] == o) taken.push_back(r.vertices[k]);
-    }
+    const std::vector<int>& taken = taken_by[t];
     std::vector<int> grown(taker.vertices.size() + taken.size());
     std::merge(taker.vertices.begin(), taker.vertices.end(), taken.begin(), taken.end(),
                grown.begin());

@@ -34,8 +34,9 @@ double CostAtDistance(const SegmentContext& c, int v, double distance) {
 double DataCostUpTo(const SegmentContext& c, const Surface& surface,
                     std::span<const int> vertices, double limit) {
   double sum = 0.0;
+  const SurfaceDistance distance_to(surface);
   for (const int v : vertices) {
-    sum += VertexCost(c, v, surface);
+    sum += VertexCost(c, v, distance_to);
     if (sum >= limit) break;
   }
   return sum;
@@ -78,7 +79,11 @@ PricedFit PriceFit(const SegmentContext& c, SurfaceType type, std::span<const in
 }
 
 double VertexCost(const SegmentContext& c, int v, const Surface& surface) {
-  return CostAtDistance(c, v, ProjectVertex(c, surface, v).distance);
+  return CostAtDistance(c, v, SignedDistance(surface, c.position(v), c.normal(v)));
+}
+
+double VertexCost(const SegmentContext& c, int v, const SurfaceDistance& distance_to) {
+  return CostAtDistance(c, v, distance_to(c.position(v), c.normal(v)));
 }
 
 double OutlierCost(const SegmentContext& c, int v) {
@@ -87,7 +92,8 @@ double OutlierCost(const SegmentContext& c, int v) {
 
 double DataCost(const SegmentContext& c, const Surface& surface, std::span<const int> vertices) {
   double sum = 0.0;
-  for (const int v : vertices) sum += VertexCost(c, v, surface);
+  const SurfaceDistance distance_to(surface);
+  for (const int v : vertices) sum += VertexCost(c, v, distance_to);
   return sum;
 }
 

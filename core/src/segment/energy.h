@@ -123,8 +123,12 @@ inline constexpr double kCreaseEdgeWeight = 0.1;
 // boundary edge through a smooth face (lambda = 1).
 inline constexpr double kResidualResolution = 0.1;
 
-// D_v(S) for vertex v on `surface`.
+// D_v(S) for vertex v on `surface`. Only the distance enters D_v, so it
+// is taken with SignedDistance (fit.h), Project's distance to the bit
+// without the foot point and normal; a caller pricing many vertices on one
+// surface passes its SurfaceDistance, made once.
 double VertexCost(const SegmentContext& c, int v, const Surface& surface);
+double VertexCost(const SegmentContext& c, int v, const SurfaceDistance& distance_to);
 // D_v of an unlabelled vertex.
 double OutlierCost(const SegmentContext& c, int v);
 // sum of D_v(S) over `vertices`.
