@@ -51,6 +51,15 @@ void KeptPrices::Reestimate(const SegmentContext& c, const std::vector<RegionSta
   for (const int id : ids) {
     const int version = Version(regions, id);
     std::optional<KeptReestimation>& kept = reestimations_[id];
+    // A region that is, bit for bit, the re-estimation kept of an earlier
+    // version (a step between re-estimated it the same way and moved none
+    // of its vertices: an expansion's last re-estimation) is its own
+    // re-estimation: the same fit to the same vertices does not cost less
+    // than itself (PriceFit's cost is DataCost's sum, term for term), so it
+    // keeps its surface, at the kept cost.
+    if (kept && kept->version != version && SameRegion(kept->region, regions[id])) {
+      kept->version = version;
+    }
     if (kept && kept->version == version) {
       if (!region.Has(id)) {
         region.Keep(id, kept->region, kept->cost);

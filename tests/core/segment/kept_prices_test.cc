@@ -137,5 +137,52 @@ TEST(KeptPricesTest, AReestimationKeptFromAnEarlierStepIsAFreshOneBitForBit) {
   later_step(0, 1, 3);
 }
 
+TEST(KeptPricesTest, ARegionThatIsItsKeptReestimationIsNotReestimatedAgain) {
+  // A step between two pricings (an expansion's last re-estimation) sets
+  // regions 0 and 2 to their re-estimations and moves no vertex: each is
+  // then its own re-estimation (the same fit to the same vertices), taken
+  // as it is, and equal bit for bit to what a fresh re-estimation gives.
+  Sheet s;
+  std::vector<int> labels;
+  std::vector<RegionState> regions = RippledFoldWithStrip(0.01, &s, &labels);
+  // Regions 0 and 2 a little off their fits, so their re-estimations differ
+  // from them.
+  for (const int id : {0, 2}) {
+    Eigen::Vector3d& normal = std::get<Plane>(regions[id].surface).normal;
+    normal = (normal + Eigen::Vector3d(0.03, 0.0, 0.0)).normalized();
+  }
+  KeptPrices kept;
+  {
+    ReestimatedRegions first(s.c, regions);
+    kept.PriceDrops(s.c, labels, regions, first, std::vector<int>{0, 1, 2});
+  }
+  for (const int id : {0, 2}) {
+    const RegionState reestimated = Reestimated(s.c, regions[id]);
+    // Otherwise the region's version would not change, and this tests nothing.
+    ASSERT_NE(std::memcmp(&std::get<Plane>(reestimated.surface),
+                          &std::get<Plane>(regions[id].surface), sizeof(Plane)),
+              0)
+        << "region " << id;
+    regions[id] = reestimated;
+  }
+  kept.Touch();
+  ReestimatedRegions step(s.c, regions);
+  kept.PriceMerges(s.c, labels, regions, step, std::vector<std::pair<int, int>>{{0, 2}});
+  EXPECT_EQ(kept.kept_reestimations(), 2);
+  ReestimatedRegions fresh(s.c, regions);
+  ExpectSameBits(step, fresh, 0);
+  ExpectSameBits(step, fresh, 2);
+  // Region 0 is its re-estimation no longer once its surface is tilted: it
+  // is re-estimated again (region 2's is kept once more).
+  std::get<Plane>(regions[0].surface).normal =
+      (std::get<Plane>(regions[0].surface).normal + Eigen::Vector3d(0.0, 0.2, 0.0)).normalized();
+  kept.Touch();
+  ReestimatedRegions tilted(s.c, regions);
+  kept.PriceMerges(s.c, labels, regions, tilted, std::vector<std::pair<int, int>>{{0, 2}});
+  EXPECT_EQ(kept.kept_reestimations(), 3);
+  ReestimatedRegions tilted_fresh(s.c, regions);
+  ExpectSameBits(tilted, tilted_fresh, 0);
+}
+
 }  // namespace
 }  // namespace meshseg::segment_internal
