@@ -106,6 +106,21 @@ void ExpectSameBits(ReestimatedRegions& kept, ReestimatedRegions& fresh, int id)
   EXPECT_EQ(std::memcmp(&a, &b, sizeof a), 0) << "region " << id << ": " << a << " vs " << b;
 }
 
+// A later step pricing the merge of `a` and `b` with `kept`: `kept_after`
+// re-estimations taken from earlier steps so far, and both members'
+// re-estimations are what a fresh re-estimation gives.
+void ExpectLaterStep(const Sheet& s, const std::vector<int>& labels,
+                     const std::vector<RegionState>& regions, KeptPrices* kept, int a, int b,
+                     long kept_after) {
+  kept->Touch();
+  ReestimatedRegions step(s.c, regions);
+  kept->PriceMerges(s.c, labels, regions, step, std::vector<std::pair<int, int>>{{a, b}});
+  EXPECT_EQ(kept->kept_reestimations(), kept_after) << "merge of " << a << ", " << b;
+  ReestimatedRegions fresh(s.c, regions);
+  ExpectSameBits(step, fresh, a);
+  ExpectSameBits(step, fresh, b);
+}
+
 TEST(KeptPricesTest, AReestimationKeptFromAnEarlierStepIsAFreshOneBitForBit) {
   Sheet s;
   std::vector<int> labels;
@@ -117,24 +132,12 @@ TEST(KeptPricesTest, AReestimationKeptFromAnEarlierStepIsAFreshOneBitForBit) {
     kept.PriceDrops(s.c, labels, regions, first, std::vector<int>{0, 1, 2});
   }
   EXPECT_EQ(kept.kept_reestimations(), 0);
-  // A later step prices the merge of `a` and `b`: `kept_after` re-estimations
-  // taken from earlier steps so far, and both members' re-estimations are
-  // what a fresh re-estimation gives.
-  auto later_step = [&](int a, int b, long kept_after) {
-    kept.Touch();
-    ReestimatedRegions step(s.c, regions);
-    kept.PriceMerges(s.c, labels, regions, step, std::vector<std::pair<int, int>>{{a, b}});
-    EXPECT_EQ(kept.kept_reestimations(), kept_after) << "merge of " << a << ", " << b;
-    ReestimatedRegions fresh(s.c, regions);
-    ExpectSameBits(step, fresh, a);
-    ExpectSameBits(step, fresh, b);
-  };
   // The same regions: both members' re-estimations are kept ones.
-  later_step(0, 2, 2);
+  ExpectLaterStep(s, labels, regions, &kept, 0, 2, 2);
   // Region 1 tilted: its re-estimation is made again, region 0's is kept.
   std::get<Plane>(regions[1].surface).normal =
       (std::get<Plane>(regions[1].surface).normal + Eigen::Vector3d(0.0, 0.2, 0.0)).normalized();
-  later_step(0, 1, 3);
+  ExpectLaterStep(s, labels, regions, &kept, 0, 1, 3);
 }
 
 TEST(KeptPricesTest, ARegionThatIsItsKeptReestimationIsNotReestimatedAgain) {
@@ -165,23 +168,12 @@ TEST(KeptPricesTest, ARegionThatIsItsKeptReestimationIsNotReestimatedAgain) {
         << "region " << id;
     regions[id] = reestimated;
   }
-  kept.Touch();
-  ReestimatedRegions step(s.c, regions);
-  kept.PriceMerges(s.c, labels, regions, step, std::vector<std::pair<int, int>>{{0, 2}});
-  EXPECT_EQ(kept.kept_reestimations(), 2);
-  ReestimatedRegions fresh(s.c, regions);
-  ExpectSameBits(step, fresh, 0);
-  ExpectSameBits(step, fresh, 2);
+  ExpectLaterStep(s, labels, regions, &kept, 0, 2, 2);
   // Region 0 is its re-estimation no longer once its surface is tilted: it
   // is re-estimated again (region 2's is kept once more).
   std::get<Plane>(regions[0].surface).normal =
       (std::get<Plane>(regions[0].surface).normal + Eigen::Vector3d(0.0, 0.2, 0.0)).normalized();
-  kept.Touch();
-  ReestimatedRegions tilted(s.c, regions);
-  kept.PriceMerges(s.c, labels, regions, tilted, std::vector<std::pair<int, int>>{{0, 2}});
-  EXPECT_EQ(kept.kept_reestimations(), 3);
-  ReestimatedRegions tilted_fresh(s.c, regions);
-  ExpectSameBits(tilted, tilted_fresh, 0);
+  ExpectLaterStep(s, labels, regions, &kept, 0, 2, 3);
 }
 
 }  // namespace
