@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <iterator>
 #include <map>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -38,10 +39,13 @@ struct Arcs {
   }
 };
 
-// D_v under label l (-1: unlabelled).
-double LabelDataCost(const SegmentContext& c, const std::vector<RegionState>& regions, int v,
-                     int l) {
-  return l < 0 ? OutlierCost(c, v) : VertexCost(c, v, regions[l].surface);
+// D_v under label l (-1: unlabelled), with each label's SurfaceDistance
+// made once, on first use, in `distance_of` (one slot per region).
+double LabelDataCost(const SegmentContext& c, const std::vector<RegionState>& regions,
+                     std::vector<std::optional<SurfaceDistance>>& distance_of, int v, int l) {
+  if (l < 0) return OutlierCost(c, v);
+  if (!distance_of[l]) distance_of[l].emplace(regions[l].surface);
+  return VertexCost(c, v, *distance_of[l]);
 }
 
 // The minimum cut of the network `arcs` over `nodes` nodes between
@@ -110,6 +114,7 @@ Expansion Expand(const SegmentContext& c, const std::vector<int>& labels,
   const int source = n;  // source side: x = 0, keep the label
   const int sink = n + 1;
   const SurfaceDistance alpha_distance(regions[alpha].surface);
+  std::vector<std::optional<SurfaceDistance>> distance_of(regions.size());
   for (int k = 0; k < n; ++k) {
     const int v = band[k];
     const int lv = labels[v];
@@ -119,7 +124,8 @@ Expansion Expand(const SegmentContext& c, const std::vector<int>& labels,
         (*read)[labels[u] < 0 ? regions.size() : labels[u]] = 1;
       }
     }
-    data_change[k] = VertexCost(c, v, alpha_distance) - LabelDataCost(c, regions, v, lv);
+    data_change[k] =
+        VertexCost(c, v, alpha_distance) - LabelDataCost(c, regions, distance_of, v, lv);
     diff[k] += data_change[k];
     for (const int u : c.graph.Neighbors(v)) {
       const int lu = labels[u];
