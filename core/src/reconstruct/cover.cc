@@ -110,27 +110,6 @@ std::vector<Support> InnerSupports(const std::vector<Support>& supports, const F
   return inner;
 }
 
-std::vector<Support> HullCorners(const std::vector<Support>& supports) {
-  if (supports.empty()) return {};
-  Eigen::Vector3d lo = supports[0].center, hi = supports[0].center;
-  for (const Support& s : supports) {
-    lo = lo.cwiseMin(s.center - Eigen::Vector3d::Constant(s.radius));
-    hi = hi.cwiseMax(s.center + Eigen::Vector3d::Constant(s.radius));
-  }
-  // Beyond every ball by the box's own size, so no ball holds a corner.
-  const double margin = (hi - lo).maxCoeff();
-  lo.array() -= margin;
-  hi.array() += margin;
-  std::vector<Support> corners(8);
-  for (int c = 0; c < 8; ++c) {
-    corners[c].center = Eigen::Vector3d(c & 1 ? hi.x() : lo.x(), c & 2 ? hi.y() : lo.y(),
-                                        c & 4 ? hi.z() : lo.z());
-    corners[c].radius = 0.0;
-    corners[c].point_count = 0;
-  }
-  return corners;
-}
-
 std::vector<double> TetWeights(const std::vector<Support>& supports, size_t covering_count) {
   std::vector<double> weight(supports.size(), -1.0);
   std::vector<Eigen::Vector3d> centers(covering_count);

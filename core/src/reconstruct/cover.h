@@ -60,23 +60,6 @@ absl::StatusOr<std::vector<Support>> CoverBySupports(const std::vector<OctreeLea
 std::vector<Support> InnerSupports(const std::vector<Support>& supports, const FitInput& in,
                                    double spacing);
 
-// The eight corners of a box beyond every ball of `supports`, as tet
-// vertices (our addition to ALGORITHMS.md S3 step 4), to be appended after
-// all others. Marching tetrahedra is closed only if no hull vertex is
-// inside, so the labels tie the hull's vertices outside (graph_cut.h). A
-// support centre on the hull of the centres is a sample of f like any
-// other: a ball grown in the empty space beyond an unseen face until it
-// reaches the points (up to the far side of a thin solid) has its centre
-// there, and tied outside against f > 0 it made an outside vertex whose
-// ball hides every centre in the solid; the tets joined the seen face to
-// it and the surface closed a cell under that face. With these corners
-// the hull is theirs: outside by construction (no support reaches them, f
-// is negative there, pu_function.h), and they lie in no ball, so they
-// hide nothing (TetWeights gives them a weight in their interval). Every
-// support centre is then labelled by f and the points. Each corner has
-// radius 0 and no points (a sparse vertex).
-std::vector<Support> HullCorners(const std::vector<Support>& supports);
-
 // The weight of each of `supports` as a vertex of the regular triangulation
 // (ALGORITHMS.md S3 step 4): r² for the covering (the first
 // `covering_count`), and for each Steiner vertex after them (the inner

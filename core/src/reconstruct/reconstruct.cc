@@ -211,16 +211,13 @@ absl::StatusOr<Reconstruction> Reconstruct(const PointCloud& cloud, const Recons
                            CoverBySupports(leaves, fit_input, params.seed, ctx));
   stats.support_count = static_cast<int64_t>(supports.size());
   const PuFunction f(supports);
-  // Tet vertices: the covering's centres, its inner supports' (cover.h),
+  // Tet vertices: the covering's centres and its inner supports' (cover.h),
   // which sample f without being terms of it, weighted to hide no centre of
-  // the covering, and the corners that make the hull.
+  // the covering.
   std::vector<Support> vertices = supports;
   {
     const std::vector<Support> inner = InnerSupports(supports, fit_input, h);
     vertices.insert(vertices.end(), inner.begin(), inner.end());
-    // The hull: eight corners beyond every ball, outside (cover.h).
-    const std::vector<Support> corners = HullCorners(supports);
-    vertices.insert(vertices.end(), corners.begin(), corners.end());
   }
   const std::vector<double> tet_weights = TetWeights(vertices, supports.size());
   ctx.Progress(kStage, 0.4);

@@ -1,6 +1,5 @@
 #include "reconstruct/cover.h"
 
-#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -207,53 +206,6 @@ TEST(TetWeights, InnerSupportsHideNoCentreOfTheCovering) {
     EXPECT_TRUE(by_inner) << "inner support " << sampled.all[k].center.transpose() << " hidden";
   }
   EXPECT_GT(weighted, 0);
-}
-
-// The hull corners make the whole hull: on a covering of a sphere's points
-// over its cube, the centres on the cube's faces are hull vertices of the
-// covering alone (tied outside by the labels whatever f says); with the
-// corners no support centre is on the hull, all eight corners are vertices
-// outside every ball (f < 0 there), and every centre that was a vertex
-// still is one (the corners hide nothing).
-TEST(HullCorners, MakeTheHullAndHideNoCentre) {
-  std::mt19937 rng(5);
-  std::normal_distribution<double> g;
-  std::vector<Eigen::Vector3d> points, normals;
-  for (int i = 0; i < 2000; ++i) {
-    const Eigen::Vector3d n = Eigen::Vector3d(g(rng), g(rng), g(rng)).normalized();
-    points.push_back(0.4 * n);
-    normals.push_back(-n);
-  }
-  const mesh_internal::PointIndex index(points);
-  const auto leaves = *BalancedOctreeLeaves(points, Eigen::Vector3d::Constant(-0.5), 1.0, 5, {});
-  const FitInput in{points, normals, index, 0.01, 2.0};
-  const std::vector<Support> covering = *CoverBySupports(leaves, in, /*seed=*/1, {});
-  const auto alone = *RegularTetrahedralization(covering, TetWeights(covering, covering.size()), {});
-  int covering_on_hull = 0;
-  for (const uint8_t h : alone.on_hull) covering_on_hull += h;
-  ASSERT_GT(covering_on_hull, 0);  // what the corners are for
-
-  std::vector<Support> all = covering;
-  const std::vector<Support> corners = HullCorners(covering);
-  ASSERT_EQ(corners.size(), 8u);
-  all.insert(all.end(), corners.begin(), corners.end());
-  const auto with = *RegularTetrahedralization(all, TetWeights(all, covering.size()), {});
-  const PuFunction f(covering);
-  int corner_vertices = 0;
-  for (size_t v = 0; v < with.support.size(); ++v) {
-    const bool corner = with.support[v] >= static_cast<int>(covering.size());
-    EXPECT_EQ(with.on_hull[v], corner ? 1 : 0) << all[with.support[v]].center.transpose();
-    if (!corner) continue;
-    ++corner_vertices;
-    const Eigen::Vector3d& c = all[with.support[v]].center;
-    EXPECT_LT(f(c), 0.0);
-    for (const Support& s : covering) ASSERT_GT((c - s.center).norm(), s.radius);
-  }
-  EXPECT_EQ(corner_vertices, 8);
-  for (const int s : alone.support) {
-    EXPECT_TRUE(std::binary_search(with.support.begin(), with.support.end(), s))
-        << "covering centre " << covering[s].center.transpose() << " hidden by the corners";
-  }
 }
 
 }  // namespace
