@@ -7,7 +7,8 @@
 
 namespace meshseg::pipeline_internal {
 
-std::vector<double> VertexBoundaryDistance(const TriMesh& mesh, std::span<const int> face_labels) {
+std::vector<double> VertexBoundaryDistance(const TriMesh& mesh, std::span<const int> face_labels,
+                                           double limit) {
   std::vector<double> distance(mesh.n_vertices(), std::numeric_limits<double>::infinity());
   using Entry = std::pair<double, int>;  // distance, vertex
   std::priority_queue<Entry, std::vector<Entry>, std::greater<>> queue;
@@ -35,7 +36,7 @@ std::vector<double> VertexBoundaryDistance(const TriMesh& mesh, std::span<const 
     for (auto h = mesh.cvoh_iter(v); h.is_valid(); ++h) {
       const TriMesh::VertexHandle w = mesh.to_vertex_handle(*h);
       const double through = d + static_cast<double>(mesh.calc_edge_length(*h));
-      if (through < distance[w.idx()]) {
+      if (through < distance[w.idx()] && through < limit) {
         distance[w.idx()] = through;
         queue.emplace(through, w.idx());
       }

@@ -24,12 +24,22 @@ int RetypeOnInnerPoints(const TriMesh& mesh, std::span<const int> face_labels,
   const auto within_band = [&](const Region& region, const Eigen::Vector3d& p) {
     return std::abs(SignedDistance(region.surface, p)) <= params.band;
   };
-  const std::vector<double> boundary = VertexBoundaryDistance(mesh, face_labels);
+  // Only whether a vertex lies inner_distance or farther from a boundary
+  // matters (those farther stay at infinity).
   const double inner_distance = kAmbiguousSpacings * params.spacing;
+  const std::vector<double> boundary = VertexBoundaryDistance(mesh, face_labels, inner_distance);
+  // Planes, quadrics and freeform regions are not retyped on points.
+  const auto curved = [](const Region& region) {
+    return region.type != SurfaceType::kPlane && region.type != SurfaceType::kQuadric &&
+           region.type != SurfaceType::kFreeform;
+  };
   std::vector<std::vector<Eigen::Vector3d>> inner(points_of_region.size());
   for (std::size_t k = 0; k < cloud.size(); ++k) {
     const int r = nearest_label[k];
-    if (r < 0 || by_id[r] == nullptr || !(boundary[nearest_vertex[k]] >= inner_distance)) continue;
+    if (r < 0 || by_id[r] == nullptr || !curved(*by_id[r]) ||
+        !(boundary[nearest_vertex[k]] >= inner_distance)) {
+      continue;
+    }
     if (within_band(*by_id[r], cloud[k])) inner[r].push_back(cloud[k]);
   }
   // A region with fewer inner points than kMinRetypePoints is about as

@@ -48,6 +48,26 @@ TEST(VertexBoundaryDistance, EdgePathToTheNearestLabelChangeOrBorder) {
   }
 }
 
+TEST(VertexBoundaryDistance, TheSearchStopsAtTheLimit) {
+  // As above, with the search cut at 2: the vertices 2 or more edges from
+  // every boundary vertex are at infinity.
+  const TriMesh grid = Grid();
+  std::vector<int> labels(grid.n_faces());
+  for (int f = 0; f < static_cast<int>(labels.size()); ++f) labels[f] = (f / 2) % kSize < 3 ? 0 : 1;
+  const std::vector<double> d = VertexBoundaryDistance(grid, labels, 2.0);
+  for (int j = 0; j <= kSize; ++j) {
+    for (int i = 0; i <= kSize; ++i) {
+      const int expected = std::min({std::abs(i - 3), i, kSize - i, j, kSize - j});
+      const double got = d[i + (kSize + 1) * j];
+      if (expected < 2) {
+        EXPECT_DOUBLE_EQ(got, expected) << "vertex (" << i << ", " << j << ")";
+      } else {
+        EXPECT_TRUE(std::isinf(got)) << "vertex (" << i << ", " << j << ")";
+      }
+    }
+  }
+}
+
 TEST(VertexBoundaryDistance, AClosedSurfaceOfOneLabelHasNoBoundary) {
   TriMesh tetrahedron;
   const auto a = tetrahedron.add_vertex({0, 0, 0});
