@@ -1,5 +1,6 @@
 #include "pipeline/inner_points.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <utility>
@@ -9,6 +10,33 @@
 #include "pipeline/refit_regions.h"
 
 namespace meshseg::pipeline_internal {
+namespace {
+
+// Per region id (below `count`): the ids of the regions whose faces share
+// an edge with its faces.
+std::vector<std::vector<int>> NeighbourRegions(const TriMesh& mesh,
+                                               std::span<const int> face_labels,
+                                               std::size_t count) {
+  std::vector<std::vector<int>> neighbours(count);
+  const auto add = [&](int a, int b) {
+    if (a < 0 || b < 0 || a == b || a >= static_cast<int>(count) || b >= static_cast<int>(count)) {
+      return;
+    }
+    if (std::find(neighbours[a].begin(), neighbours[a].end(), b) == neighbours[a].end()) {
+      neighbours[a].push_back(b);
+    }
+  };
+  for (const auto e : mesh.edges()) {
+    if (mesh.is_boundary(e)) continue;
+    const int a = face_labels[mesh.face_handle(mesh.halfedge_handle(e, 0)).idx()];
+    const int b = face_labels[mesh.face_handle(mesh.halfedge_handle(e, 1)).idx()];
+    add(a, b);
+    add(b, a);
+  }
+  return neighbours;
+}
+
+}  // namespace
 
 int RetypeOnInnerPoints(const TriMesh& mesh, std::span<const int> face_labels,
                         std::span<const Eigen::Vector3d> cloud,
@@ -53,14 +81,47 @@ int RetypeOnInnerPoints(const TriMesh& mesh, std::span<const int> face_labels,
   // is made on copies: a region that keeps its type keeps its surface
   // fitted to all its band points.
   std::vector<Region> decided = *regions;
+  std::vector<SharedSurface> trial_surfaces = *surfaces;
   RefitToPoints(inner, params.distance_tolerance, &decided);
-  RetypeToPoints(inner, params.noise, &decided, surfaces, RetypeTo::kCurved);
+  RetypeToPoints(inner, params.noise, &decided, &trial_surfaces, RetypeTo::kCurved);
+  // A type decided on the inner points must still explain the region's
+  // band points, which its own type fits: the ambiguous points it leaves
+  // out must lie on a neighbour's surface (they were the neighbour's, as on
+  // a chamfer whose region held the crease bands beyond both its edges).
+  // Where they lie on neither, they are the region's own and refute it (a
+  // torus round whose inner third a cone fits at the noise).
+  const std::vector<std::vector<int>> neighbours = NeighbourRegions(mesh, face_labels, inner.size());
+  std::vector<SurfaceType> original_type(inner.size(), SurfaceType::kPlane);
+  for (std::size_t i = 0; i < regions->size(); ++i) {
+    const Region& region = (*regions)[i];
+    original_type[region.id] = region.type;
+    if (decided[i].type == region.type) {
+      inner[region.id].clear();
+      continue;
+    }
+    std::size_t unexplained = 0;
+    for (const Eigen::Vector3d& p : points_of_region[region.id]) {
+      if (within_band(decided[i], p)) continue;
+      bool on_neighbour = false;
+      for (const int n : neighbours[region.id]) {
+        on_neighbour = on_neighbour || (by_id[n] != nullptr && within_band(*by_id[n], p));
+      }
+      unexplained += !on_neighbour;
+    }
+    if (static_cast<double>(unexplained) >
+        kMaxUnexplainedShare * static_cast<double>(points_of_region[region.id].size())) {
+      inner[region.id].clear();
+    }
+  }
+  // The decision replayed on the regions themselves for those whose new
+  // type explains their points (the same inputs give the same decision).
+  RefitToPoints(inner, params.distance_tolerance, regions);
+  RetypeToPoints(inner, params.noise, regions, surfaces, RetypeTo::kCurved);
   std::vector<uint8_t> retyped(points_of_region.size(), 0);
   int inner_changed = 0;
-  for (std::size_t i = 0; i < regions->size(); ++i) {
-    if (decided[i].type == (*regions)[i].type) continue;
-    (*regions)[i] = decided[i];
-    retyped[decided[i].id] = 1;
+  for (const Region& region : *regions) {
+    if (inner[region.id].empty() || region.type == original_type[region.id]) continue;
+    retyped[region.id] = 1;
     ++inner_changed;
   }
   if (inner_changed == 0) return changed;

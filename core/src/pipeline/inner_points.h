@@ -33,6 +33,12 @@ namespace meshseg::pipeline_internal {
 // beyond 2 h are in a torus region on a chamfer.
 inline constexpr double kAmbiguousSpacings = 3.0;
 
+// A type decided on the inner points must explain the region's band points
+// but this share, the others lying on a neighbour's surface (within the
+// band): the band is 3 sigma wide or more, which holds all but 0.3 % of a
+// surface's points.
+inline constexpr double kMaxUnexplainedShare = 0.05;
+
 struct InnerPointParams {
   double spacing = 0.0;             // h, the cloud's median point spacing
   double noise = 0.0;               // sigma of the cloud's points about the surface
