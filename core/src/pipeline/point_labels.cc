@@ -70,15 +70,20 @@ int NearestSurfaceLabel(const TriMesh& mesh, std::span<const int> face_labels,
   return label;
 }
 
-// PointLabelsBySurface, and the nearest vertex of each point into
-// `nearest_vertex` if given.
-std::vector<int> Labels(const TriMesh& mesh, std::span<const int> face_labels,
-                        std::span<const Region> regions, const SurfaceLabelParams& params,
-                        std::span<const Eigen::Vector3d> points,
-                        std::span<const uint8_t> is_outlier,
-                        std::vector<uint32_t>* nearest_vertex) {
+}  // namespace
+
+std::vector<int> PointLabels(const TriMesh& mesh, std::span<const int> face_labels,
+                             std::span<const Eigen::Vector3d> points,
+                             std::span<const uint8_t> is_outlier) {
+  return PointLabelsBySurface(mesh, face_labels, {}, {}, points, is_outlier);
+}
+
+std::vector<int> PointLabelsBySurface(const TriMesh& mesh, std::span<const int> face_labels,
+                                      std::span<const Region> regions,
+                                      const SurfaceLabelParams& params,
+                                      std::span<const Eigen::Vector3d> points,
+                                      std::span<const uint8_t> is_outlier) {
   std::vector<int> labels(points.size(), -1);
-  if (nearest_vertex != nullptr) nearest_vertex->assign(points.size(), 0);
   if (mesh.n_vertices() == 0) return labels;
   std::vector<Eigen::Vector3d> vertices;
   vertices.reserve(mesh.n_vertices());
@@ -87,7 +92,6 @@ std::vector<int> Labels(const TriMesh& mesh, std::span<const int> face_labels,
   tbb::parallel_for(size_t{0}, points.size(), [&](size_t k) {
     if (!is_outlier.empty() && is_outlier[k]) return;
     const uint32_t nearest = index.Closest(points[k]);
-    if (nearest_vertex != nullptr) (*nearest_vertex)[k] = nearest;
     labels[k] = NearestFaceLabel(mesh, face_labels, nearest, points[k]);
     if (!regions.empty() && !params.trusted.empty() && labels[k] >= 0) {
       labels[k] =
@@ -95,23 +99,6 @@ std::vector<int> Labels(const TriMesh& mesh, std::span<const int> face_labels,
     }
   });
   return labels;
-}
-
-}  // namespace
-
-std::vector<int> PointLabels(const TriMesh& mesh, std::span<const int> face_labels,
-                             std::span<const Eigen::Vector3d> points,
-                             std::span<const uint8_t> is_outlier,
-                             std::vector<uint32_t>* nearest_vertex) {
-  return Labels(mesh, face_labels, {}, {}, points, is_outlier, nearest_vertex);
-}
-
-std::vector<int> PointLabelsBySurface(const TriMesh& mesh, std::span<const int> face_labels,
-                                      std::span<const Region> regions,
-                                      const SurfaceLabelParams& params,
-                                      std::span<const Eigen::Vector3d> points,
-                                      std::span<const uint8_t> is_outlier) {
-  return Labels(mesh, face_labels, regions, params, points, is_outlier, nullptr);
 }
 
 }  // namespace meshseg::pipeline_internal

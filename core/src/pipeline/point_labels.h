@@ -16,13 +16,10 @@ namespace meshseg::pipeline_internal {
 // Returns one label per point: the label of the face of `mesh` closest to
 // it (point-to-triangle distance over the faces around the nearest vertex),
 // or -1 where is_outlier[k] is set. `face_labels` has one entry per face;
-// `is_outlier` is empty or one flag per point. If `nearest_vertex` is given,
-// it receives one entry per point: the index of the mesh vertex nearest to
-// it (0 for an outlier and for every point of an empty mesh).
+// `is_outlier` is empty or one flag per point.
 std::vector<int> PointLabels(const TriMesh& mesh, std::span<const int> face_labels,
                              std::span<const Eigen::Vector3d> points,
-                             std::span<const uint8_t> is_outlier,
-                             std::vector<uint32_t>* nearest_vertex = nullptr);
+                             std::span<const uint8_t> is_outlier);
 
 // Which fitted surfaces PointLabelsBySurface trusts, and when.
 struct SurfaceLabelParams {

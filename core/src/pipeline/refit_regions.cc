@@ -13,6 +13,9 @@
 namespace meshseg::pipeline_internal {
 namespace {
 
+// Fewer points than this tell no type from another (the cone's fit needs 6).
+constexpr std::size_t kMinRetypePoints = 30;
+
 // The types a curved region may take on its points.
 constexpr SurfaceType kRetypeCandidates[] = {SurfaceType::kPlane, SurfaceType::kCylinder,
                                              SurfaceType::kCone};
@@ -105,8 +108,7 @@ void RefitToPoints(std::span<const std::vector<Eigen::Vector3d>> points_of_regio
 }
 
 int RetypeToPoints(std::span<const std::vector<Eigen::Vector3d>> points_of_region, double sigma,
-                   std::vector<Region>* regions, std::vector<SharedSurface>* surfaces,
-                   RetypeTo to) {
+                   std::vector<Region>* regions, std::vector<SharedSurface>* surfaces) {
   int changed = 0;
   std::vector<Eigen::Vector3d> normals;
   for (Region& region : *regions) {
@@ -132,7 +134,6 @@ int RetypeToPoints(std::span<const std::vector<Eigen::Vector3d>> points_of_regio
     std::optional<std::pair<SurfaceType, FitResult>> best;
     double best_score = std::numeric_limits<double>::infinity();
     for (const SurfaceType t : kRetypeCandidates) {
-      if (t == SurfaceType::kPlane && to == RetypeTo::kCurved) continue;
       // A plane is a limit of every curved type (IsLimitOf covers the
       // family around an axis). A sphere and the axial types are no limits
       // of each other, so that rule never moves a region between them; but

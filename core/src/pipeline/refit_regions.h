@@ -11,10 +11,6 @@
 
 namespace meshseg::pipeline_internal {
 
-// Fewer points than this tell no type from another (the cone's fit needs 6):
-// RetypeToPoints leaves a region with fewer as it is.
-inline constexpr std::size_t kMinRetypePoints = 30;
-
 // The remesh's vertices lie on the input's flat facets, a chord's sagitta
 // inside a coarsely tessellated cylinder; the vertices of a CAD export lie on
 // the CAD surface itself. For every region this refits its surface (same
@@ -60,12 +56,8 @@ void RefitToPoints(std::span<const std::vector<Eigen::Vector3d>> points_of_regio
 // sphere of its radius; the points are the data. A retyped region leaves
 // the shared surface it was on for one of its own. Returns how many regions
 // changed type.
-// With `to` kCurved, a region does not become a plane (the candidates are
-// the cylinder and the cone).
-enum class RetypeTo { kAnySimpler, kCurved };
 int RetypeToPoints(std::span<const std::vector<Eigen::Vector3d>> points_of_region, double sigma,
-                   std::vector<Region>* regions, std::vector<SharedSurface>* surfaces,
-                   RetypeTo to = RetypeTo::kAnySimpler);
+                   std::vector<Region>* regions, std::vector<SharedSurface>* surfaces);
 
 int RelabelFacesOffTheirSurface(const TriMesh& mesh, std::span<const Region> regions, double exact,
                                 std::vector<int>* face_labels);

@@ -13,7 +13,6 @@
 #include "meshseg/fit.h"
 #include "meshseg/status_macros.h"
 #include "pipeline/binary_types.h"
-#include "pipeline/inner_points.h"
 #include "pipeline/point_labels.h"
 #include "pipeline/refit_regions.h"
 #include "pipeline/remeshed_labels.h"
@@ -202,9 +201,8 @@ absl::StatusOr<std::vector<int>> SegmentReconstruction(const Reconstruction& rec
   segment.exact = ExactMode::kNever;
   MESHSEG_ASSIGN_OR_RETURN(Segmentation segmentation, Segment(mesh, curvature, segment, ctx));
   // Each region's points: those whose nearest face it holds.
-  std::vector<uint32_t> nearest_vertex;
-  const std::vector<int> nearest = PointLabels(mesh.tri, segmentation.face_labels, cloud.points,
-                                               reconstruction.is_outlier, &nearest_vertex);
+  const std::vector<int> nearest = PointLabels(
+      mesh.tri, segmentation.face_labels, cloud.points, reconstruction.is_outlier);
   std::vector<std::vector<Eigen::Vector3d>> points(segmentation.regions.size());
   for (std::size_t k = 0; k < nearest.size(); ++k) {
     if (nearest[k] >= 0) points[nearest[k]].push_back(cloud.points[k]);
@@ -225,14 +223,8 @@ absl::StatusOr<std::vector<int>> SegmentReconstruction(const Reconstruction& rec
     trusted[region.id] = !points[region.id].empty();
   }
   RefitToPoints(points, tolerance, &segmentation.regions);
-  // The type decided again on the points, away from the region boundaries
-  // the reconstruction's rounded creases make ambiguous (inner_points.h).
-  RetypeOnInnerPoints(mesh.tri, segmentation.face_labels, cloud.points, nearest, nearest_vertex,
-                      {.spacing = reconstruction.stats.point_spacing,
-                       .noise = reconstruction.stats.noise,
-                       .band = band,
-                       .distance_tolerance = tolerance},
-                      points, &segmentation.regions, &segmentation.surfaces);
+  RetypeToPoints(points, reconstruction.stats.noise, &segmentation.regions,
+                                    &segmentation.surfaces);
   // A point keeps its face's region within its noise band (2 sigma of the
   // cloud's noise); regions without points of their own (on the patches
   // that close unscanned areas) take no point from a neighbour.

@@ -241,33 +241,6 @@ TEST(RetypeToPoints, ACylinderBandStaysACylinder) {
   EXPECT_EQ(regions[0].type, SurfaceType::kCylinder);
 }
 
-TEST(RetypeToPoints, ANarrowStripOfACylinderIsAPlaneUnlessCurvedOnly) {
-  // A strip 0.6 wide around a cylinder of radius 5 (sagitta 0.009, a third
-  // of the noise 0.03), 10 long: the plane fits it at the noise with two
-  // parameters fewer and takes over; asked for a curved type only
-  // (RetypeTo::kCurved), the region stays a cylinder.
-  constexpr double kSigma = 0.03;
-  std::mt19937 random(3);
-  std::uniform_real_distribution<double> unit(0.0, 1.0);
-  std::normal_distribution<double> noise(0.0, kSigma);
-  std::vector<std::vector<Eigen::Vector3d>> points(1);
-  for (int k = 0; k < 1500; ++k) {
-    const double t = (unit(random) - 0.5) * 0.6 / 5.0;
-    const double r = 5.0 + noise(random);
-    points[0].emplace_back(r * std::cos(t), r * std::sin(t), 10.0 * unit(random));
-  }
-  std::vector<Region> regions(1);
-  regions[0].type = SurfaceType::kCylinder;
-  regions[0].surface = Cylinder{.axis_origin = {0, 0, 0}, .axis_direction = {0, 0, 1}, .radius = 5.0};
-  regions[0].rms_distance = kSigma;
-  std::vector<Region> curved_only = regions;
-  std::vector<SharedSurface> surfaces;
-  EXPECT_EQ(RetypeToPoints(points, kSigma, &regions, &surfaces), 1);
-  EXPECT_EQ(regions[0].type, SurfaceType::kPlane);
-  EXPECT_EQ(RetypeToPoints(points, kSigma, &curved_only, &surfaces, RetypeTo::kCurved), 0);
-  EXPECT_EQ(curved_only[0].type, SurfaceType::kCylinder);
-}
-
 TEST(RetypeToPoints, AChamferWithItsCreaseBandsStaysACone) {
   // A 45-degree chamfer from radius 5 at z = 0 to 3.5 at z = 1.5, and the
   // points a reconstruction's rounded creases give it from beyond its
