@@ -41,21 +41,25 @@ struct HandleStrips {
 // previous round changed).
 //
 // With `max_width` (one per vertex, model units) not empty, a loop found is
-// a candidate only when it is no longer than half its vertices' mean
-// max_loop or its width (LoopWidth) is at most their mean max_width: a flat
-// tunnel between two sheets a noise band apart (a slit) has a loop long for
-// its width, and the points no more show a hole that narrow than a round
-// one.
+// a candidate only when it is no longer than π × its vertices' mean
+// max_width (the loop of a round hole that wide) or the hole it goes round
+// is at most that wide (HoleAtMost): a tunnel between two sheets a noise
+// band apart (a slit) has a loop long for its width, and the points no more
+// show a hole that narrow than a round one.
 HandleStrips ShortHandleStrips(const TriMesh& tri, const std::vector<double>& max_loop, int genus,
                                const std::vector<uint8_t>& near = {},
                                const std::vector<double>& max_width = {});
 
-// 4 A / L of the closed polygon `loop` of `tri`'s vertices: A the norm of
-// its vector area, L its length; 0 if L is 0. For a flat loop round a
-// circle, or any polygon with an inscribed circle touching every side, it is
-// that circle's diameter; for a slit (two long sides a gap apart) about
-// twice the gap. So it never reads a hole narrower than it is.
-double LoopWidth(const TriMesh& tri, const std::vector<int>& loop);
+// Samples of HoleWidth across the width tested (HoleAtMost).
+inline constexpr double kWidthSteps = 16.0;
+
+// Whether the hole the closed polygon `loop` of `tri`'s vertices goes round
+// is at most `width` across: HoleWidth (hole_width.h) of the vertices'
+// positions, sampled at width / kWidthSteps, is at most `width`. The
+// sampling's bound is on the safe side: a hole wider than `width` is never
+// taken as narrow, and one narrower by 2.24 steps (14 %) always is. A round
+// hole d across reads d, a slit its gap, flat or not.
+bool HoleAtMost(const TriMesh& tri, const std::vector<int>& loop, double width);
 
 }  // namespace meshseg::reconstruct_internal
 

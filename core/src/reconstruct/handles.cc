@@ -121,7 +121,8 @@ absl::Status CutUnsupportedHandles(const std::vector<Eigen::Vector3d>& points,
     const int genus = std::min(Genus(mesh->tri), SeenGenus(mesh->tri, *filled));
     if (genus <= 0) break;
     // Round holes up to handle_spacings × s across have loops up to π times
-    // that; loops up to twice as long are looked at for slits as narrow.
+    // that; loops up to kSlitLoops times as long are looked at for slits as
+    // narrow.
     // The bound is a function of a vertex's position alone (the nearest
     // point's spacing): a vertex the last round kept where it was keeps it.
     std::vector<double> max_loop(mesh->tri.n_vertices(), -1.0);
@@ -137,7 +138,7 @@ absl::Status CutUnsupportedHandles(const std::vector<Eigen::Vector3d>& points,
     std::vector<double> max_width(max_loop.size());
     for (size_t v = 0; v < max_loop.size(); ++v) {
       max_width[v] = max_loop[v] / M_PI;
-      max_loop[v] *= 2.0;
+      max_loop[v] *= kSlitLoops;
     }
     const HandleStrips strips = ShortHandleStrips(mesh->tri, max_loop, genus, near, max_width);
     if (strips.cut_count == 0) break;

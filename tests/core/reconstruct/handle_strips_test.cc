@@ -1,12 +1,14 @@
 #include "reconstruct/handle_strips.h"
 
 #include <array>
+#include <cmath>
 #include <vector>
 
 #include <gtest/gtest.h>
 
 #include "clouds.h"
 #include "reconstruct/close_unsupported.h"
+#include "reconstruct/handles.h"
 #include "reconstruct/surface_mesh.h"
 #include "tube_meshes.h"
 
@@ -51,9 +53,9 @@ TEST(ShortHandleStrips, CutsTheShortNonSeparatingLoopOfAThinTorus) {
 
 // A ring whose tube is flattened into a slit (ellipse, semi-axes 0.2 and
 // 0.01): its meridian, about 0.8 long, is longer than the round-hole bound
-// (0.47 for holes 0.15 across) but only about π × 0.01 wide. Looked for up
-// to twice the bound, it is cut for its width; a round tube with a meridian
-// as long is kept.
+// (0.47 for holes 0.15 across) but the hole it goes round only 0.02 across
+// (hole_width.h). Looked for up to twice the bound, it is cut for its width;
+// a round tube with a meridian as long is kept.
 TEST(ShortHandleStrips, CutsASlitTunnelWhoseLoopIsLongButNarrow) {
   constexpr double kWidth = 0.15;
   const double round_bound = M_PI * kWidth;
@@ -75,28 +77,46 @@ TEST(ShortHandleStrips, CutsASlitTunnelWhoseLoopIsLongButNarrow) {
   EXPECT_EQ(kept.cut_count, 0);
 }
 
-TEST(LoopWidth, IsTheDiameterOfACircleAndAboutTwiceTheGapOfASlit) {
-  TubeMesh polygons;
+// The same slit against a round-hole bound a third of its meridian (holes
+// 0.085 across, still four times the slit's width): searched only to twice
+// that bound it is not found; searched as the handle step does, to
+// kSlitLoops times it (handles.h), it is cut. A slit's gap, not its length,
+// is what the points cannot show.
+TEST(ShortHandleStrips, CutsASlitThreeTimesTheRoundBoundLong) {
+  TubeMesh slit = TorusTubeMesh(1.0, 0.2, 96, 16);
+  for (Eigen::Vector3d& v : slit.vertices) v.z() *= 0.05;
+  const Mesh flat = ToMesh(slit);
+  const int n = static_cast<int>(flat.tri.n_vertices());
+  double meridian = 0.0;  // the 16-gon at the first vertex round the axis
+  for (int k = 0; k < 16; ++k) meridian += (slit.vertices[(k + 1) % 16] - slit.vertices[k]).norm();
+  const double round_bound = meridian / 3.0;
+  const std::vector<double> width(n, round_bound / M_PI);
+  EXPECT_EQ(ShortHandleStrips(flat.tri, std::vector<double>(n, 2 * round_bound), 1, {}, width)
+                .cut_count,
+            0);
+  EXPECT_EQ(
+      ShortHandleStrips(flat.tri, std::vector<double>(n, kSlitLoops * round_bound), 1, {}, width)
+          .cut_count,
+      1);
+}
+
+// HoleAtMost on a flat 64-gon of radius 1 (its inscribed circle 2 cos(π/64)
+// = 1.9976 across): never at most 1.99; at most a width whose sampling
+// margin (2.24 steps of a sixteenth of it) leaves room for 2.
+TEST(HoleAtMost, ReadsTheHoleAcrossTheLoop) {
+  TubeMesh polygon;
   constexpr int kSides = 64;
   for (int i = 0; i < kSides; ++i) {
     const double t = 2 * M_PI * i / kSides;
-    polygons.vertices.push_back(Eigen::Vector3d(std::cos(t), std::sin(t), 0.0));
+    polygon.vertices.push_back(Eigen::Vector3d(std::cos(t), std::sin(t), 0.0));
   }
-  for (const Eigen::Vector3d& c : {Eigen::Vector3d(5, 0, 0), Eigen::Vector3d(5, 0.02, 0),
-                                   Eigen::Vector3d(7, 0.02, 0), Eigen::Vector3d(7, 0, 0)}) {
-    polygons.vertices.push_back(c);
-  }
-  polygons.vertices.push_back(Eigen::Vector3d::Zero());  // the circle's fan centre
-  for (int i = 0; i < kSides; ++i) polygons.triangles.push_back({i, (i + 1) % kSides, kSides + 4});
-  polygons.triangles.push_back({kSides, kSides + 1, kSides + 2});
-  polygons.triangles.push_back({kSides, kSides + 2, kSides + 3});
-  const Mesh m = ToMesh(polygons);
+  polygon.vertices.push_back(Eigen::Vector3d::Zero());  // the fan's centre
+  for (int i = 0; i < kSides; ++i) polygon.triangles.push_back({i, (i + 1) % kSides, kSides});
+  const Mesh m = ToMesh(polygon);
   std::vector<int> circle(kSides);
   for (int i = 0; i < kSides; ++i) circle[i] = i;
-  EXPECT_NEAR(LoopWidth(m.tri, circle), 2.0, 0.003);  // the 64-gon's: 2 cos(π/64)
-  const double slit = LoopWidth(m.tri, {kSides, kSides + 1, kSides + 2, kSides + 3});
-  EXPECT_NEAR(slit, 4 * 2 * 0.02 / (2 * 2 + 2 * 0.02), 1e-12);
-  EXPECT_LT(slit, 2.0 * 0.02);
+  EXPECT_FALSE(HoleAtMost(m.tri, circle, 1.99));
+  EXPECT_TRUE(HoleAtMost(m.tri, circle, 2.0 / (1.0 - 2.24 / kWidthSteps)));
 }
 
 TEST(ShortHandleStrips, KeepsALoopLongerThanTheBound) {
