@@ -146,13 +146,7 @@ TubeMesh SaddleWasher(double h) {
                               p.y() + h * std::cos(2 * u));
     }
   }
-  const auto id = [&](int i, int j) { return (i % kAround) * nv + j % nv; };
-  for (int i = 0; i < kAround; ++i) {
-    for (int j = 0; j < nv; ++j) {
-      m.triangles.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
-      m.triangles.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
-    }
-  }
+  AddTorusGrid(kAround, nv, &m);
   return m;
 }
 
