@@ -39,11 +39,15 @@ int SeenGenus(const TriMesh& tri, const std::vector<uint8_t>& filled);
 // Slits are looked for up to this many times the round-hole loop. A slit's
 // gap, not its length, is what the points cannot show, and its width is read
 // across its least-area disc (hole_width.h), so the length bounds only the
-// search's cost (its balls grow with it), not what is cut.
+// search's cost (its balls grow with it), not what is cut. The search runs
+// to twice the round-hole loop first, and to kSlitLoops times it only when
+// that leaves nothing to cut and the genus is not spent: loops are still cut
+// shortest first, and the larger balls are paid only where handles are left.
 inline constexpr double kSlitLoops = 4.0;
 
-// Rounds of cutting and closing at most: a loop through the strip of a cut
-// waits for the next round, which looks near the last round's patches only.
+// Rounds of cutting and closing at most, twice as many with the slit
+// search: a loop through the strip of a cut waits for the next round, which
+// looks near the last round's patches only.
 inline constexpr int kHandleRounds = 8;
 
 // The longest loop cut at each vertex of `tri`, model units: π ×
