@@ -144,16 +144,23 @@ bool StripKeepsSurfaceConnected(const MeshGraph& g, const std::vector<uint8_t>& 
 
 }  // namespace
 
-bool HoleAtMost(const TriMesh& tri, const std::vector<int>& loop, double width) {
+bool HoleAtMost(const TriMesh& tri, const std::vector<int>& loop, double width,
+                const ScanPoints& scan) {
   std::vector<Eigen::Vector3d> points;
   points.reserve(loop.size());
   for (const int v : loop) points.push_back(ToEigen(tri.point(TriMesh::VertexHandle(v))));
-  return HoleWidth(points, width / kWidthSteps, width) <= width;
+  Clearance to_scan;
+  if (scan.points != nullptr && scan.index != nullptr && !scan.points->empty()) {
+    to_scan = [&scan](const Eigen::Vector3d& q) {
+      return ((*scan.points)[scan.index->Closest(q)] - q).norm();
+    };
+  }
+  return HoleWidth(points, width / kWidthSteps, width, to_scan) <= width;
 }
 
 HandleStrips ShortHandleStrips(const TriMesh& tri, const std::vector<double>& max_loop, int genus,
                                const std::vector<uint8_t>& near,
-                               const std::vector<double>& max_width) {
+                               const std::vector<double>& max_width, const ScanPoints& scan) {
   HandleStrips out;
   out.cut.assign(tri.n_faces(), 0);
   if (genus <= 0 || tri.n_faces() == 0) return out;
@@ -187,7 +194,9 @@ HandleStrips ShortHandleStrips(const TriMesh& tri, const std::vector<double>& ma
       double mean_width = 0.0;
       for (const int v : loop.vertices) mean_width += max_width[v];
       mean_width /= static_cast<double>(loop.vertices.size());
-      if (loop.length > M_PI * mean_width && !HoleAtMost(tri, loop.vertices, mean_width)) continue;
+      if (loop.length > M_PI * mean_width && !HoleAtMost(tri, loop.vertices, mean_width, scan)) {
+        continue;
+      }
     }
     // The loop's star, grown by a ring while it is not an annulus (a loop
     // of a few edges through a tunnel as short as itself).

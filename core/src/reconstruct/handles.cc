@@ -125,7 +125,7 @@ absl::Status CutUnsupportedHandles(const std::vector<Eigen::Vector3d>& points,
     if (genus <= 0) break;
     // Round holes up to handle_spacings × s across have loops up to π times
     // that; loops up to `search` times as long are looked at for slits as
-    // narrow.
+    // narrow, and for holes whose void the scan points fill (HoleAtMost).
     // The bound is a function of a vertex's position alone (the nearest
     // point's spacing): a vertex the last round kept where it was keeps it.
     std::vector<double> max_loop(mesh->tri.n_vertices(), -1.0);
@@ -143,7 +143,7 @@ absl::Status CutUnsupportedHandles(const std::vector<Eigen::Vector3d>& points,
       max_width[v] = max_loop[v] / M_PI;
       max_loop[v] *= search;
     }
-    const HandleStrips strips = ShortHandleStrips(mesh->tri, max_loop, genus, near, max_width);
+    const HandleStrips strips = ShortHandleStrips(mesh->tri, max_loop, genus, near, max_width, {&points, &index});
     if (strips.cut_count == 0) {
       if (search == kSlitLoops) break;
       search = kSlitLoops;

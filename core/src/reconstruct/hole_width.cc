@@ -61,7 +61,8 @@ std::vector<std::array<int, 3>> LeastAreaDisc(const std::vector<Eigen::Vector3d>
   return triangles;
 }
 
-double HoleWidth(const std::vector<Eigen::Vector3d>& loop, double step, double stop) {
+double HoleWidth(const std::vector<Eigen::Vector3d>& loop, double step, double stop,
+                 const Clearance& clearance) {
   if (loop.size() < 3 || !(step > 0)) return 0.0;
   const double slack = 0.5 * std::sqrt(5.0) * step;
   // Rows parallel to each triangle's longest side a b, from it to the apex
@@ -91,7 +92,10 @@ double HoleWidth(const std::vector<Eigen::Vector3d>& loop, double step, double s
       const int samples = static_cast<int>(std::ceil((q - p).norm() / step));
       for (int s = 0; s <= samples; ++s) {
         const double u = samples > 0 ? static_cast<double>(s) / samples : 0.0;
-        radius = std::max(radius, DistanceToLoop(loop, p + u * (q - p)));
+        const Eigen::Vector3d x = p + u * (q - p);
+        double free = DistanceToLoop(loop, x);
+        if (clearance && free > radius) free = std::min(free, clearance(x));
+        radius = std::max(radius, free);
         if (2.0 * (radius + slack) > stop) return 2.0 * (radius + slack);
       }
     }

@@ -22,6 +22,7 @@
 #define MESHSEG_RECONSTRUCT_HOLE_WIDTH_H_
 
 #include <array>
+#include <functional>
 #include <limits>
 #include <vector>
 
@@ -44,8 +45,15 @@ std::vector<std::array<int, 3>> LeastAreaDisc(const std::vector<Eigen::Vector3d>
 // 2.24 steps above it. It returns as soon as that bound exceeds `stop`,
 // with a value above `stop` (not the full width): the hole is then not known
 // to be at most `stop` across.
+//
+// With `clearance` (the distance from a point to the nearest of other things
+// the ball may not enter either, 1-Lipschitz like the distance to the loop),
+// the ball keeps clear of those as well: the hole as the scan points show it
+// (handle_strips.h), whose void no point lies in.
+using Clearance = std::function<double(const Eigen::Vector3d&)>;
 double HoleWidth(const std::vector<Eigen::Vector3d>& loop, double step,
-                 double stop = std::numeric_limits<double>::infinity());
+                 double stop = std::numeric_limits<double>::infinity(),
+                 const Clearance& clearance = nullptr);
 
 }  // namespace meshseg::reconstruct_internal
 

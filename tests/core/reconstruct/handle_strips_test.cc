@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "clouds.h"
+#include "mesh/point_index.h"
 #include "reconstruct/close_unsupported.h"
 #include "reconstruct/handle_loops.h"
 #include "reconstruct/handles.h"
@@ -174,6 +175,37 @@ TEST(ShortHandleStrips, KeepsAWideHoleWhoseLoopIsNotFlat) {
   EXPECT_LT(4 * area.norm() / shortest.length, 1.8);
   EXPECT_FALSE(HoleAtMost(washer.tri, shortest.vertices, 1.8));
   EXPECT_EQ(ShortHandleStrips(washer.tri, search, 1, {}, width).cut_count, 0);
+}
+
+// The same washer with scan points given: on its faces (its vertices, none
+// nearer the axis than the hole's radius 1) the hole is kept, its void
+// shown; with points across the hole as well (a grid 0.3 apart filling the
+// hole's cylinder, every point of which is then within 0.26 of one, against
+// half the 1.8 bound) the points show a surface there and the loop round
+// it is cut, however wide it is.
+TEST(ShortHandleStrips, CutsAWideHoleThePointsShowCovered) {
+  const Mesh washer = ToMesh(SaddleWasher(1.0));
+  const int n = static_cast<int>(washer.tri.n_vertices());
+  const std::vector<double> search(n, 13.0), width(n, 1.8);
+  std::vector<Eigen::Vector3d> faces;
+  for (const auto v : washer.tri.vertices()) faces.push_back(ToEigen(washer.tri.point(v)));
+  const mesh_internal::PointIndex face_index(faces);
+  const ScanPoints on_faces{&faces, &face_index};
+  const std::vector<HandleLoop> loops = ShortLoops(MakeMeshGraph(washer.tri), search);
+  ASSERT_FALSE(loops.empty());
+  EXPECT_FALSE(HoleAtMost(washer.tri, loops.front().vertices, 1.8, on_faces));
+  EXPECT_EQ(ShortHandleStrips(washer.tri, search, 1, {}, width, on_faces).cut_count, 0);
+
+  std::vector<Eigen::Vector3d> covered = faces;
+  for (int i = -4; i <= 4; ++i) {
+    for (int j = -4; j <= 4; ++j) {
+      for (int k = -6; k <= 6; ++k) covered.emplace_back(0.3 * i, 0.3 * j, 0.3 * k);
+    }
+  }
+  const mesh_internal::PointIndex covered_index(covered);
+  const ScanPoints across{&covered, &covered_index};
+  EXPECT_TRUE(HoleAtMost(washer.tri, loops.front().vertices, 1.8, across));
+  EXPECT_EQ(ShortHandleStrips(washer.tri, search, 1, {}, width, across).cut_count, 1);
 }
 
 TEST(ShortHandleStrips, KeepsALoopLongerThanTheBound) {

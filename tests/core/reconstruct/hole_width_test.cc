@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 #include <Eigen/Geometry>
@@ -86,6 +87,23 @@ TEST(HoleWidth, IsTheDiameterOfAFlatRoundHole) {
   EXPECT_GE(w, inscribed);
   EXPECT_LE(w, inscribed + 0.15 * MeanEdge(circle));
   EXPECT_NEAR(VectorAreaWidth(circle), w, 0.15 * MeanEdge(circle));
+}
+
+// A flat round hole with a point at its centre: the largest ball centred on
+// the disc that neither the rim nor the point enters lies half way between
+// them: between cos(π/64) / 2 (towards an edge's middle) and 1 / 2 (the
+// rim's circumcircle) in radius.
+TEST(HoleWidth, KeepsClearOfThePointsItIsGiven) {
+  const std::vector<Eigen::Vector3d> circle = SaddleRim(0.0, 64);
+  const double step = MeanEdge(circle) / 16;
+  const Clearance to_centre = [](const Eigen::Vector3d& q) { return q.norm(); };
+  const double w = HoleWidth(circle, step, std::numeric_limits<double>::infinity(), to_centre);
+  EXPECT_GE(w, std::cos(M_PI / 64));
+  EXPECT_LE(w, 1.0 + 2.24 * step);
+  // Points farther than the hole is wide change nothing.
+  const Clearance far = [](const Eigen::Vector3d& q) { return (q - Eigen::Vector3d(0, 0, 5)).norm(); };
+  EXPECT_DOUBLE_EQ(HoleWidth(circle, step, std::numeric_limits<double>::infinity(), far),
+                   HoleWidth(circle, step));
 }
 
 // A slit 2 long, 0.02 wide, its long sides sampled at 0.04 like a mesh
