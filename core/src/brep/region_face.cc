@@ -163,6 +163,12 @@ RegionFace MakeRegionFace(const Topology& topology, int region, int patch,
     fix.SetPrecision(precision);
     fix.SetMaxTolerance(max_tolerance);
     fix.FixAddNaturalBoundMode() = loops.empty() ? 1 : 0;
+    // No periodic-degenerated fix: on a periodic face built from our own
+    // wires, OCCT 7.6's ShapeFix_Face::FixPeriodicDegenerated can crash
+    // (a segfault, not a Standard_Failure, so it took the whole process
+    // down, on a coarse voxel block). CheckFace and Heal below
+    // judge the face either way.
+    fix.FixPeriodicDegeneratedMode() = 0;
     fix.Perform();
     face = fix.Face();
     if (sign < 0) face.Reverse();
