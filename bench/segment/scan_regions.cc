@@ -121,6 +121,12 @@ Row OneScan(const std::string& part, uint64_t seed, const meshseg::ScanParams& b
       meshseg::testing::EvaluatePoints(*scan, r->point_labels, static_cast<int>(r->regions.size()));
   double seen = 0.0;
   for (const double a : scan->primitive_seen_area) seen += a;
+  std::vector<long> genuine_points(scan->part.primitives.size(), 0);
+  for (size_t i = 0; i < scan->point_primitive.size(); ++i) {
+    if (!scan->is_outlier[i] && scan->point_primitive[i] >= 0) {
+      ++genuine_points[scan->point_primitive[i]];
+    }
+  }
   std::string misses;
   int with_points = 0;
   for (const auto& s : e.primitives) {
@@ -133,10 +139,11 @@ Row OneScan(const std::string& part, uint64_t seed, const meshseg::ScanParams& b
     if (!typed || verbose) {
       char buf[256];
       std::snprintf(buf, sizeof buf,
-                    "\n      %s %s (%.1f %% of seen area): %s region %d (%ld faces, rms %.3g), "
-                    "%.3f right",
+                    "\n      %s %s (%.1f %% of seen area, %ld points): %s region %d (%ld faces, "
+                    "rms %.3g), %.3f right",
                     typed ? "  " : "!!", s.name.c_str(),
                     100.0 * scan->primitive_seen_area[s.primitive] / seen,
+                    genuine_points[s.primitive],
                     s.region >= 0 ? meshseg::SurfaceTypeName(r->regions[s.region].type) : "no",
                     s.region,
                     s.region >= 0 ? static_cast<long>(r->regions[s.region].face_count) : 0L,

@@ -103,11 +103,12 @@ struct ReconstructParams {
   // Reconstruction::is_filled. 2: every point of a surface sampled at
   // spacing s lies within about s of a sample, so a hole no wider than 2 s
   // looks like the gaps between samples and the points do not show it. A
-  // flat tunnel (a slit between two sheets) is cut when its loop's width
-  // 4 A / L is within handle_spacings × s, for loops up to twice the bound
-  // (reconstruct/handle_strips.h). Where the face budget makes the refined
-  // mesh coarser than the points, s is at least the spacing the mesh follows
-  // (its edge / refine_edge_length). (On a
+  // tunnel between two sheets (a slit) is cut when the hole its loop goes
+  // round (the largest ball in the loop's least-area disc) is at most
+  // handle_spacings × s across, for loops up to 4 times the bound
+  // (reconstruct/hole_width.h, handles.h). Where the face budget makes the
+  // refined mesh coarser than the points, s is at least the spacing the mesh
+  // follows (its edge / refine_edge_length). (On a
   // simulated scan of uneven density, 126 of 137 spurious handles are cut at
   // 2; at 3 the truth's narrowest hole, in a sparse area, would be cut too.)
   // 0 keeps every handle.

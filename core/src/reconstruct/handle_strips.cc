@@ -1,6 +1,7 @@
 #include "reconstruct/handle_strips.h"
 
 #include <algorithm>
+#include <cmath>
 #include <utility>
 
 #include <Eigen/Geometry>
@@ -9,6 +10,7 @@
 #include "absl/container/flat_hash_set.h"
 #include "mesh/union_find.h"
 #include "reconstruct/handle_loops.h"
+#include "reconstruct/hole_width.h"
 
 namespace meshseg::reconstruct_internal {
 
@@ -142,24 +144,23 @@ bool StripKeepsSurfaceConnected(const MeshGraph& g, const std::vector<uint8_t>& 
 
 }  // namespace
 
-double LoopWidth(const TriMesh& tri, const std::vector<int>& loop) {
-  const auto at = [&](int v) { return ToEigen(tri.point(TriMesh::VertexHandle(v))); };
-  if (loop.empty()) return 0.0;
-  const Eigen::Vector3d origin = at(loop[0]);
-  Eigen::Vector3d area = Eigen::Vector3d::Zero();
-  double length = 0.0;
-  for (size_t i = 0; i < loop.size(); ++i) {
-    const Eigen::Vector3d a = at(loop[i]) - origin;
-    const Eigen::Vector3d b = at(loop[(i + 1) % loop.size()]) - origin;
-    area += 0.5 * a.cross(b);
-    length += (b - a).norm();
+bool HoleAtMost(const TriMesh& tri, const std::vector<int>& loop, double width,
+                const ScanPoints& scan) {
+  std::vector<Eigen::Vector3d> points;
+  points.reserve(loop.size());
+  for (const int v : loop) points.push_back(ToEigen(tri.point(TriMesh::VertexHandle(v))));
+  Clearance to_scan;
+  if (scan.points != nullptr && scan.index != nullptr && !scan.points->empty()) {
+    to_scan = [&scan](const Eigen::Vector3d& q) {
+      return ((*scan.points)[scan.index->Closest(q)] - q).norm();
+    };
   }
-  return length > 0 ? 4.0 * area.norm() / length : 0.0;
+  return HoleWidth(points, width / kWidthSteps, width, to_scan) <= width;
 }
 
 HandleStrips ShortHandleStrips(const TriMesh& tri, const std::vector<double>& max_loop, int genus,
                                const std::vector<uint8_t>& near,
-                               const std::vector<double>& max_width) {
+                               const std::vector<double>& max_width, const ScanPoints& scan) {
   HandleStrips out;
   out.cut.assign(tri.n_faces(), 0);
   if (genus <= 0 || tri.n_faces() == 0) return out;
@@ -190,13 +191,10 @@ HandleStrips ShortHandleStrips(const TriMesh& tri, const std::vector<double>& ma
     // loop that separates is that loop slid along the surface.
     if (on_cut > 0 || 2 * on_separating >= static_cast<int>(loop.vertices.size())) continue;
     if (!max_width.empty()) {
-      double mean_loop = 0.0, mean_width = 0.0;
-      for (const int v : loop.vertices) {
-        mean_loop += max_loop[v];
-        mean_width += max_width[v];
-      }
-      const double n = static_cast<double>(loop.vertices.size());
-      if (loop.length > 0.5 * mean_loop / n && LoopWidth(tri, loop.vertices) > mean_width / n) {
+      double mean_width = 0.0;
+      for (const int v : loop.vertices) mean_width += max_width[v];
+      mean_width /= static_cast<double>(loop.vertices.size());
+      if (loop.length > M_PI * mean_width && !HoleAtMost(tri, loop.vertices, mean_width, scan)) {
         continue;
       }
     }

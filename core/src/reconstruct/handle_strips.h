@@ -11,6 +11,9 @@
 #include <cstdint>
 #include <vector>
 
+#include <Eigen/Core>
+
+#include "mesh/point_index.h"
 #include "meshseg/mesh.h"
 
 namespace meshseg::reconstruct_internal {
@@ -23,6 +26,12 @@ inline constexpr int kMaxLoopChecks = 256;
 // A loop's strip (the faces at its vertices) that is not an annulus is grown
 // by a ring of faces at most this many times before the loop is passed over.
 inline constexpr int kMaxStripGrowth = 2;
+
+// The points a surface was made from and their index; empty: none known.
+struct ScanPoints {
+  const std::vector<Eigen::Vector3d>* points = nullptr;
+  const mesh_internal::PointIndex* index = nullptr;
+};
 
 struct HandleStrips {
   // One per face of the mesh: 1 = on the strip of faces around a cut loop.
@@ -41,21 +50,38 @@ struct HandleStrips {
 // previous round changed).
 //
 // With `max_width` (one per vertex, model units) not empty, a loop found is
-// a candidate only when it is no longer than half its vertices' mean
-// max_loop or its width (LoopWidth) is at most their mean max_width: a flat
-// tunnel between two sheets a noise band apart (a slit) has a loop long for
-// its width, and the points no more show a hole that narrow than a round
-// one.
+// a candidate only when it is no longer than π × its vertices' mean
+// max_width (the loop of a round hole that wide) or the hole it goes round
+// is at most that wide (HoleAtMost): a tunnel between two sheets a noise
+// band apart (a slit) has a loop long for its width, and the points no more
+// show a hole that narrow than a round one.
+//
+// With `scan` (the points the surface was made from), the hole is the one
+// the points show (HoleAtMost with them): its void is where no point lies.
 HandleStrips ShortHandleStrips(const TriMesh& tri, const std::vector<double>& max_loop, int genus,
                                const std::vector<uint8_t>& near = {},
-                               const std::vector<double>& max_width = {});
+                               const std::vector<double>& max_width = {},
+                               const ScanPoints& scan = {});
 
-// 4 A / L of the closed polygon `loop` of `tri`'s vertices: A the norm of
-// its vector area, L its length; 0 if L is 0. For a flat loop round a
-// circle, or any polygon with an inscribed circle touching every side, it is
-// that circle's diameter; for a slit (two long sides a gap apart) about
-// twice the gap. So it never reads a hole narrower than it is.
-double LoopWidth(const TriMesh& tri, const std::vector<int>& loop);
+// Samples of HoleWidth across the width tested (HoleAtMost).
+inline constexpr double kWidthSteps = 16.0;
+
+// Whether the hole the closed polygon `loop` of `tri`'s vertices goes round
+// is at most `width` across: HoleWidth (hole_width.h) of the vertices'
+// positions, sampled at width / kWidthSteps, is at most `width`. The
+// sampling's bound is on the safe side: a hole wider than `width` is never
+// taken as narrow, and one narrower by 2.24 steps (14 %) always is. A round
+// hole d across reads d, a slit its gap, flat or not.
+//
+// With `scan`, the ball may not hold a scan point either: a hole the points
+// support is a void they show, and a sample shows a surface wherever it has
+// a point within half the bound (its gaps are no wider than the bound: the
+// principle of the bound itself, handles.h). A hole whose least-area disc
+// lies all within `width` / 2 of scan points (a tunnel through a sheet the
+// points cover, between two sheets of one noisy layer) reads at most
+// `width`, however wide its loop: the points do not show it.
+bool HoleAtMost(const TriMesh& tri, const std::vector<int>& loop, double width,
+                const ScanPoints& scan = {});
 
 }  // namespace meshseg::reconstruct_internal
 

@@ -111,7 +111,10 @@ absl::Status CutUnsupportedHandles(const std::vector<Eigen::Vector3d>& points,
   const double mesh_spacing = params.refine_edge_length > 0
                                   ? stats->refine_edge_length / params.refine_edge_length
                                   : 0.0;
-  for (int round = 0; round < kHandleRounds; ++round) {
+  // Loops up to twice the round-hole loop first; once those leave nothing
+  // to cut, the longer slit search (balls twice as large) from scratch.
+  double search = 2.0;
+  for (int round = 0; round < 2 * kHandleRounds; ++round) {
     // The patches add genus only by construction: a disc none, a tube
     // (close_tube.h) one, a handle its rims show the points resolve. By
     // Euler's formula the closed surface's genus is the seen surface's (the
@@ -121,7 +124,8 @@ absl::Status CutUnsupportedHandles(const std::vector<Eigen::Vector3d>& points,
     const int genus = std::min(Genus(mesh->tri), SeenGenus(mesh->tri, *filled));
     if (genus <= 0) break;
     // Round holes up to handle_spacings × s across have loops up to π times
-    // that; loops up to twice as long are looked at for slits as narrow.
+    // that; loops up to `search` times as long are looked at for slits as
+    // narrow, and for holes whose void the scan points fill (HoleAtMost).
     // The bound is a function of a vertex's position alone (the nearest
     // point's spacing): a vertex the last round kept where it was keeps it.
     std::vector<double> max_loop(mesh->tri.n_vertices(), -1.0);
@@ -137,10 +141,15 @@ absl::Status CutUnsupportedHandles(const std::vector<Eigen::Vector3d>& points,
     std::vector<double> max_width(max_loop.size());
     for (size_t v = 0; v < max_loop.size(); ++v) {
       max_width[v] = max_loop[v] / M_PI;
-      max_loop[v] *= 2.0;
+      max_loop[v] *= search;
     }
-    const HandleStrips strips = ShortHandleStrips(mesh->tri, max_loop, genus, near, max_width);
-    if (strips.cut_count == 0) break;
+    const HandleStrips strips = ShortHandleStrips(mesh->tri, max_loop, genus, near, max_width, {&points, &index});
+    if (strips.cut_count == 0) {
+      if (search == kSlitLoops) break;
+      search = kSlitLoops;
+      near.clear();
+      continue;
+    }
     std::vector<uint8_t> supported(strips.cut.size());
     for (size_t f = 0; f < supported.size(); ++f) supported[f] = !strips.cut[f];
     // Faces filled before this round are marked 2, so this round's are the 1s.

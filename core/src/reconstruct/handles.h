@@ -7,13 +7,14 @@
 // 2 s looks like the gaps between samples; the points do not show it, and it
 // is not a feature of the sampled surface (Guskov & Wood 2001;
 // handle_loops.h). A slit between two sheets has a loop long for the hole it
-// bounds; loops up to twice that length are cut when their width (4 A / L,
-// handle_strips.h) is within handle_spacings × s. Where the refined mesh is
-// coarser than the points (its edge raised by the face budget, refine.h), s
-// is at least the spacing the mesh follows (its edge over
-// refine_edge_length): the output resolves no finer hole than that. The
-// strip of faces around each such loop is removed and the two holes it
-// leaves closed by minimal patches (close_unsupported.h), flagged as filled.
+// bounds; loops up to kSlitLoops times that length are cut when the hole
+// they go round (the largest ball in their least-area disc, hole_width.h) is
+// at most handle_spacings × s across. Where the refined mesh is coarser than
+// the points (its edge raised by the face budget, refine.h), s is at least
+// the spacing the mesh follows (its edge over refine_edge_length): the
+// output resolves no finer hole than that. The strip of faces around each
+// such loop is removed and the two holes it leaves closed by minimal patches
+// (close_unsupported.h), flagged as filled.
 #ifndef MESHSEG_RECONSTRUCT_HANDLES_H_
 #define MESHSEG_RECONSTRUCT_HANDLES_H_
 
@@ -35,8 +36,18 @@ namespace meshseg::reconstruct_internal {
 // every face is taken as seen.
 int SeenGenus(const TriMesh& tri, const std::vector<uint8_t>& filled);
 
-// Rounds of cutting and closing at most: a loop through the strip of a cut
-// waits for the next round, which looks near the last round's patches only.
+// Slits are looked for up to this many times the round-hole loop. A slit's
+// gap, not its length, is what the points cannot show, and its width is read
+// across its least-area disc (hole_width.h), so the length bounds only the
+// search's cost (its balls grow with it), not what is cut. The search runs
+// to twice the round-hole loop first, and to kSlitLoops times it only when
+// that leaves nothing to cut and the genus is not spent: loops are still cut
+// shortest first, and the larger balls are paid only where handles are left.
+inline constexpr double kSlitLoops = 4.0;
+
+// Rounds of cutting and closing at most, twice as many with the slit
+// search: a loop through the strip of a cut waits for the next round, which
+// looks near the last round's patches only.
 inline constexpr int kHandleRounds = 8;
 
 // The longest loop cut at each vertex of `tri`, model units: π ×

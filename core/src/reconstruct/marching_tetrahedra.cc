@@ -4,7 +4,6 @@
 #include <cmath>
 #include <utility>
 
-#include <Eigen/Geometry>
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
@@ -51,6 +50,20 @@ Eigen::Vector3d ZeroOnSegment(const Eigen::Vector3d& a, const Eigen::Vector3d& b
   return a + t * (b - a);
 }
 
+// True when `listed` holds the vertices of `tet` in an odd permutation of
+// the tet's own order.
+bool IsOddPermutation(const std::array<int, 4>& tet, const int (&listed)[4]) {
+  int rank[4];
+  for (int i = 0; i < 4; ++i) {
+    rank[i] = static_cast<int>(std::find(tet.begin(), tet.end(), listed[i]) - tet.begin());
+  }
+  bool odd = false;
+  for (int i = 0; i < 4; ++i) {
+    for (int j = i + 1; j < 4; ++j) odd ^= rank[i] > rank[j];
+  }
+  return odd;
+}
+
 }  // namespace
 
 absl::StatusOr<IsoSurface> MarchingTetrahedra(const TetMesh& tets,
@@ -90,24 +103,27 @@ absl::StatusOr<IsoSurface> MarchingTetrahedra(const TetMesh& tets,
   });
   MESHSEG_RETURN_IF_ERROR(ctx.CheckStop(kStage));
   const auto edge_vertex = [&](int a, int b) { return vertex_of_edge.at(EdgeKey(a, b)); };
-  const auto mid = [&](int a, int b) -> Eigen::Vector3d {
-    return 0.5 * (position[a] + position[b]);
-  };
   for (const auto& tet : tets.tets) {
     int in[4], out_v[4], n_in = 0, n_out = 0;
     for (const int v : tet) (inside[v] ? in[n_in++] : out_v[n_out++]) = v;
     if (n_in == 0 || n_out == 0) continue;
-    Eigen::Vector3d c_in = Eigen::Vector3d::Zero(), c_out = Eigen::Vector3d::Zero();
-    for (int i = 0; i < n_in; ++i) c_in += position[in[i]] / n_in;
-    for (int i = 0; i < n_out; ++i) c_out += position[out_v[i]] / n_out;
-    const Eigen::Vector3d outward = c_out - c_in;
-    // Corners as tet edges; the edge midpoints give a non-degenerate proxy
-    // of the triangle that separates in from out, for the orientation test.
+    // The tet's vertices are in positive order (regular_triangulation.h).
+    // Listed as (in..., out...), a triangle written below as
+    // (in0 out0, in0 out1, in0 out2), (in0 out0, in1 out0, in2 out0) or the
+    // quad (in0 out0, in0 out1, in1 out1, in1 out0) has a normal whose dot
+    // with (mean of out − mean of in) is a positive multiple of that list's
+    // orientation determinant. So it faces from in to out exactly when the
+    // list is an even permutation of the tet's order. Read from the order,
+    // not from coordinates: on a tet of almost no volume (four centres
+    // coplanar up to rounding) a floating-point side test can come out
+    // against the exact predicate that built the tet, and the triangle then
+    // runs the same way as its neighbour along their edge.
+    int listed[4], k = 0;
+    for (int i = 0; i < n_in; ++i) listed[k++] = in[i];
+    for (int i = 0; i < n_out; ++i) listed[k++] = out_v[i];
+    const bool odd = IsOddPermutation(tet, listed);
     const auto emit = [&](std::array<std::array<int, 2>, 3> corner) {
-      const Eigen::Vector3d n =
-          (mid(corner[1][0], corner[1][1]) - mid(corner[0][0], corner[0][1]))
-              .cross(mid(corner[2][0], corner[2][1]) - mid(corner[0][0], corner[0][1]));
-      if (n.dot(outward) < 0) std::swap(corner[1], corner[2]);
+      if (odd) std::swap(corner[1], corner[2]);
       out.triangles.push_back({edge_vertex(corner[0][0], corner[0][1]),
                                edge_vertex(corner[1][0], corner[1][1]),
                                edge_vertex(corner[2][0], corner[2][1])});

@@ -18,7 +18,9 @@ namespace meshseg::reconstruct_internal {
 
 struct IsoSurface {
   std::vector<Eigen::Vector3d> vertices;      // one per cut tet edge
-  std::vector<std::array<int, 3>> triangles;  // oriented inside → outside
+  // Oriented inside → outside by each tet's vertex order (a closed surface
+  // is consistently oriented however flat its tets).
+  std::vector<std::array<int, 3>> triangles;
   // Per vertex: 1 if placed on an edge whose ends have the same sign of f or
   // whose ends include a sparse support; these get smoothed.
   std::vector<uint8_t> to_smooth;

@@ -15,7 +15,9 @@ namespace meshseg::reconstruct_internal {
 
 struct TetMesh {
   std::vector<int> support;               // per tet vertex: its support index
-  std::vector<std::array<int, 4>> tets;   // finite tetrahedra, tet vertex indices
+  // Finite tetrahedra, tet vertex indices, each in positive orientation as
+  // the exact predicates decide it (also for a tet of almost no volume).
+  std::vector<std::array<int, 4>> tets;
   std::vector<std::array<int, 2>> edges;  // finite edges, tet vertex indices, a < b
   std::vector<uint8_t> on_hull;           // per tet vertex: 1 on the convex hull
 };

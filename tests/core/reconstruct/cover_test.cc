@@ -111,8 +111,12 @@ TEST(InnerSupports, ASupportOnAPlaneHasAnInnerSupportARadiusInsideIt) {
       if ((sampled.all[k].center - at).norm() < 1e-9) inner = k;
     }
     ASSERT_LT(inner, sampled.all.size()) << "no inner support below " << s.center.transpose();
-    if (at.z() > -10) EXPECT_GT(f(at), 0.0);
-    if (sampled.weights[inner] >= 0) EXPECT_TRUE(vertex[inner]) << at.transpose();
+    if (at.z() > -10) {
+      EXPECT_GT(f(at), 0.0);
+    }
+    if (sampled.weights[inner] >= 0) {
+      EXPECT_TRUE(vertex[inner]) << at.transpose();
+    }
   }
   EXPECT_GT(parents, 0);
 }

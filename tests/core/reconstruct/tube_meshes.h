@@ -24,6 +24,18 @@ struct TubeMesh {
   }
 };
 
+// Appends the triangles of a closed nu × nv grid of vertices (vertex i × nv
+// + j, both directions wrapping round): a torus-like surface.
+inline void AddTorusGrid(int nu, int nv, TubeMesh* m) {
+  const auto id = [&](int i, int j) { return (i % nu) * nv + j % nv; };
+  for (int i = 0; i < nu; ++i) {
+    for (int j = 0; j < nv; ++j) {
+      m->triangles.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
+      m->triangles.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+    }
+  }
+}
+
 // Torus about the z axis through `center`: major radius R, minor r, nu
 // vertices round the axis and nv round the tube.
 inline TubeMesh TorusTubeMesh(double R, double r, int nu, int nv,
@@ -37,13 +49,7 @@ inline TubeMesh TorusTubeMesh(double R, double r, int nu, int nv,
                                                     r * std::sin(v)));
     }
   }
-  const auto id = [&](int i, int j) { return (i % nu) * nv + j % nv; };
-  for (int i = 0; i < nu; ++i) {
-    for (int j = 0; j < nv; ++j) {
-      m.triangles.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
-      m.triangles.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
-    }
-  }
+  AddTorusGrid(nu, nv, &m);
   return m;
 }
 
