@@ -166,11 +166,11 @@ absl::StatusOr<Segmentation> Segment(const Mesh& mesh, const CurvatureField& cur
     MESHSEG_RETURN_IF_ERROR(Merge(c, &labels, &regions, &kept_prices));
     MESHSEG_RETURN_IF_ERROR(ExpandRegions(c, &labels, &regions).status());
   }
-  // A small face across a crease that a curved region absorbed (a small
-  // plane disc on top of a conical frustum, in a piece of the cone) becomes
-  // a plane of its own; the rest of the region is then typed on its
-  // interior like every other.
-  SplitOffPlanes(c, &labels, &regions);
+  // A flat face that a curved region absorbed (a small plane disc on top
+  // of a conical frustum, in a piece of the cone; a top grown over by its
+  // round) becomes a plane of its own where E falls; the rest of the region
+  // is then typed on its interior like every other.
+  MESHSEG_RETURN_IF_ERROR(SplitOffPlanes(c, &labels, &regions).status());
   // The outer rows of a narrow band can decide its type (a chamfer between
   // rounded creases passes as a sphere); its interior tells.
   RetypeByInterior(c, labels, &regions);

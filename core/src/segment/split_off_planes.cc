@@ -5,8 +5,11 @@
 #include <cstdint>
 #include <optional>
 
+#include "meshseg/status_macros.h"
 #include "segment/absorb_leftovers.h"
+#include "segment/alpha_expansion.h"
 #include "segment/decide_type.h"
+#include "segment/energy.h"
 #include "segment/region_graph.h"
 #include "segment/retype_by_interior.h"
 
@@ -18,12 +21,6 @@ constexpr double kPi = 3.14159265358979323846;
 constexpr std::size_t kDirectionSamples = 200;
 // Rounds of giving the region's vertices to the nearer surface.
 constexpr int kSplitRounds = 3;
-// A junction is a crease at min(th_bnd, this many th_nm): measured on
-// fitted surfaces, a tangent junction stays within a row's turn (9 degrees
-// on a concave torus fillet of r 8 h at sigma = 0.05 h, th_nm 5), while a
-// 69-degree crease between a small plane disc and a cone comes out at 40-51
-// against a quadric or sphere bent toward it.
-constexpr double kCreaseAngles = 3.0;
 
 struct Split {
   FitResult plane;
@@ -60,27 +57,6 @@ std::vector<int> DominantNormalVertices(const SegmentContext& c, const std::vect
     if (n[v].dot(best) > cos_max) out.push_back(v);
   }
   return out;
-}
-
-// Mean angle, in degrees, between the plane's normal and the curved
-// surface's at the rest's vertices next to the plane's.
-double JunctionAngleDeg(const SegmentContext& c, const Split& s) {
-  std::vector<uint8_t> on_plane(c.vertex_count(), 0);
-  for (const int v : s.on_plane) on_plane[v] = 1;
-  const Eigen::Vector3d normal = ProjectVertex(c, s.plane.surface, s.on_plane.front()).normal;
-  double sum = 0.0;
-  int count = 0;
-  for (const int v : s.rest) {
-    const auto around = c.graph.Neighbors(v);
-    if (std::none_of(around.begin(), around.end(), [&](int u) { return on_plane[u] != 0; })) {
-      continue;
-    }
-    const double cosine =
-        std::min(1.0, std::abs(ProjectVertex(c, s.curved.surface, v).normal.dot(normal)));
-    sum += std::acos(cosine) * 180.0 / kPi;
-    ++count;
-  }
-  return count > 0 ? sum / count : 0.0;
 }
 
 constexpr int8_t kOutside = -1;
@@ -155,26 +131,11 @@ std::optional<Split> FindSplit(const SegmentContext& c, const RegionState& r) {
   return s;
 }
 
-// Step 3: whether `s` explains region `r` clearly better than r's type.
-bool SplitPays(const SegmentContext& c, const RegionState& r, const Split& s) {
-  const double crease = std::min(kSharpBoundaryDeg, kCreaseAngles * c.angle_tolerance_deg);
-  if (!(JunctionAngleDeg(c, s) >= crease)) return false;
-  const FitResult alone = FitType(c, r.type, r.vertices);
-  if (!alone.ok()) return false;
-  const std::size_t n = r.vertices.size();
-  const double squares = SquaredDistances(c, s.plane.surface, s.on_plane) +
-                         SquaredDistances(c, s.curved.surface, s.rest);
-  const double two = InformationScore(c, squares / n, n,
-                                      ParameterCount(SurfaceType::kPlane) + ParameterCount(r.type));
-  const double one = InformationScore(c, SquaredDistances(c, alone.surface, r.vertices) / n, n,
-                                      ParameterCount(r.type));
-  return two + kScoreMargin < one;
-}
-
 }  // namespace
 
-std::vector<int> SplitOffPlanes(const SegmentContext& c, std::vector<int>* labels,
-                                std::vector<RegionState>* regions) {
+absl::StatusOr<std::vector<int>> SplitOffPlanes(const SegmentContext& c,
+                                                 std::vector<int>* labels,
+                                                 std::vector<RegionState>* regions) {
   std::vector<int> split;
   if (!(c.noise_sigma > 0.0)) return split;
   const std::size_t n_regions = regions->size();
@@ -186,10 +147,13 @@ std::vector<int> SplitOffPlanes(const SegmentContext& c, std::vector<int>* label
       continue;
     }
     const std::optional<Split> s = FindSplit(c, r);
-    if (!s || !SplitPays(c, r, *s)) continue;
-    const int plane_id = static_cast<int>(regions->size());
-    for (const int v : s->on_plane) (*labels)[v] = plane_id;
-    RegionState& kept = (*regions)[id];
+    if (!s) continue;
+    // Step 3 on copies: the plane joins the labels as a proposal.
+    std::vector<int> next_labels = *labels;
+    std::vector<RegionState> next = *regions;
+    const int plane_id = static_cast<int>(next.size());
+    for (const int v : s->on_plane) next_labels[v] = plane_id;
+    RegionState& kept = next[id];
     kept.vertices = s->rest;
     kept.surface = s->curved.surface;
     // The quadric may have been the mix; the rest may have a type.
@@ -200,10 +164,14 @@ std::vector<int> SplitOffPlanes(const SegmentContext& c, std::vector<int>* label
         kept.surface = typed.fit.surface;
       }
     }
-    regions->push_back(RegionState{.type = SurfaceType::kPlane,
-                                   .surface = s->plane.surface,
-                                   .vertices = s->on_plane,
-                                   .alive = true});
+    next.push_back(RegionState{.type = SurfaceType::kPlane,
+                               .surface = s->plane.surface,
+                               .vertices = s->on_plane,
+                               .alive = true});
+    MESHSEG_RETURN_IF_ERROR(ExpandRegions(c, &next_labels, &next).status());
+    if (!(TotalEnergy(c, next_labels, next) < TotalEnergy(c, *labels, *regions))) continue;
+    *labels = std::move(next_labels);
+    *regions = std::move(next);
     split.push_back(static_cast<int>(id));
   }
   return split;

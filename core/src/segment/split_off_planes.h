@@ -12,6 +12,7 @@
 
 #include <vector>
 
+#include "absl/status/statusor.h"
 #include "segment/segment_internal.h"
 
 namespace meshseg::segment_internal {
@@ -25,19 +26,21 @@ namespace meshseg::segment_internal {
 //     rounded);
 //  2. gives each vertex of the region to the nearer of that plane and the
 //     region's type refitted to the rest, a few rounds;
-//  3. splits the plane's vertices off as a new plane region if both sides
-//     keep kMinRegionVertices, the two meet at a crease (the curved
-//     surface's normal along the junction is at least min(th_bnd, 3 th_nm)
-//     from the plane's: a fillet's flat-looking rows meet their face
-//     tangentially and are the boundary refinement's business), and plane
-//     and rest explain the region better than its type alone
-//     (InformationScore, by kScoreMargin).
+//  3. keeps the split iff E (energy.h) falls: the plane joins the labels
+//     as a proposal (PEARL), the expansion with re-estimation places its
+//     boundary with the rest and with the neighbours, and E with the plane
+//     is compared with E without it. A junction is priced, not tested: a
+//     boundary through a smooth face costs lambda per edge, so rows a fillet
+//     explains as well as the plane (flat-looking near its tangent line)
+//     stay, and a flat face the curved fit was grown over (a top beside
+//     its round, meeting it without a crease) is split off.
 // A quadric region left without the plane gets the curved type that passes
 // the alpha test on the rest, if any. Nothing happens when the estimated
 // noise is zero. Returns the ids of the regions split (their planes are
-// appended to `regions`).
-std::vector<int> SplitOffPlanes(const SegmentContext& c, std::vector<int>* labels,
-                                std::vector<RegionState>* regions);
+// appended to `regions`). Errors: CANCELLED on stop.
+absl::StatusOr<std::vector<int>> SplitOffPlanes(const SegmentContext& c,
+                                                 std::vector<int>* labels,
+                                                 std::vector<RegionState>* regions);
 
 }  // namespace meshseg::segment_internal
 

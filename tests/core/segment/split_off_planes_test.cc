@@ -1,6 +1,6 @@
-// SplitOffPlanes on sheets: test_piece's boss top absorbed by its cone (a
-// crease), also with noise, and a fillet that took rows of its floor (a
-// tangent junction).
+// SplitOffPlanes on sheets: a boss top absorbed by its cone (a crease),
+// also with noise, and a fillet that took rows of its floor (a tangent
+// junction).
 #include "segment/split_off_planes.h"
 
 #include <gtest/gtest.h>
@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "segment/decide_type.h"
+#include "segment/energy.h"
 #include "sheet_context.h"
 
 namespace meshseg::segment_internal {
@@ -33,7 +34,7 @@ TEST(SplitOffPlanesTest, TopAbsorbedByItsConeIsSplitOff) {
   std::vector<int> labels(s.u.size(), 0);
   std::vector<RegionState> regions = RegionsFromLabels(s.c, labels, {SurfaceType::kCone});
 
-  EXPECT_EQ(SplitOffPlanes(s.c, &labels, &regions), std::vector<int>{0});
+  EXPECT_EQ(SplitOffPlanes(s.c, &labels, &regions).value(), std::vector<int>{0});
   ASSERT_EQ(regions.size(), 2u);
   EXPECT_EQ(regions[0].type, SurfaceType::kCone);
   EXPECT_EQ(regions[1].type, SurfaceType::kPlane);
@@ -63,7 +64,7 @@ TEST(SplitOffPlanesTest, LeavesNoVertexAloneAmongTheOtherSide) {
   std::vector<int> labels(s.u.size(), 0);
   std::vector<RegionState> regions = RegionsFromLabels(s.c, labels, {SurfaceType::kSphere});
 
-  EXPECT_EQ(SplitOffPlanes(s.c, &labels, &regions), std::vector<int>{0});
+  EXPECT_EQ(SplitOffPlanes(s.c, &labels, &regions).value(), std::vector<int>{0});
   ASSERT_EQ(regions.size(), 2u);
   for (std::size_t v = 0; v < labels.size(); ++v) {
     const auto around = s.c.graph.Neighbors(static_cast<int>(v));
@@ -96,7 +97,7 @@ TEST(SplitOffPlanesTest, TopWithARoundedRimIsSplitOff) {
   std::vector<int> labels(s.u.size(), 0);
   std::vector<RegionState> regions = RegionsFromLabels(s.c, labels, {SurfaceType::kCone});
 
-  EXPECT_EQ(SplitOffPlanes(s.c, &labels, &regions), std::vector<int>{0});
+  EXPECT_EQ(SplitOffPlanes(s.c, &labels, &regions).value(), std::vector<int>{0});
   ASSERT_EQ(regions.size(), 2u);
   EXPECT_EQ(regions[1].type, SurfaceType::kPlane);
   const auto on_plane =
@@ -110,15 +111,16 @@ TEST(SplitOffPlanesTest, NothingSplitsAtNoiseZero) {
   s.c.noise_sigma = 0.0;
   std::vector<int> labels(s.u.size(), 0);
   std::vector<RegionState> regions = RegionsFromLabels(s.c, labels, {SurfaceType::kCone});
-  EXPECT_TRUE(SplitOffPlanes(s.c, &labels, &regions).empty());
+  EXPECT_TRUE(SplitOffPlanes(s.c, &labels, &regions).value().empty());
   EXPECT_EQ(regions.size(), 1u);
 }
 
-TEST(SplitOffPlanesTest, FilletRowsOfItsFloorStay) {
+TEST(SplitOffPlanesTest, FloorRowsAFilletTookAreSplitOffWithoutACrease) {
   // A quarter-round fillet of radius 1 (rows 0.1 apart) grown 6 rows into
-  // the floor it runs tangent into: its cylinder misses those rows, and a
-  // plane for them scores better, but they meet the fillet without a
-  // crease.
+  // the floor it runs tangent into: its cylinder misses those rows, and
+  // they meet the fillet without a crease. E prices the boundary between
+  // them at a smooth edge's full cost, and still falls: the floor rows go
+  // to a plane, the fillet's rows stay on the cylinder.
   Sheet s;
   constexpr double kRowStep = 0.1;
   constexpr int kFloorRows = 6, kFilletRows = 16;
@@ -137,8 +139,21 @@ TEST(SplitOffPlanesTest, FilletRowsOfItsFloorStay) {
   s.c.noise_sigma = kSigma;
   std::vector<int> labels(s.u.size(), 0);
   std::vector<RegionState> regions = RegionsFromLabels(s.c, labels, {SurfaceType::kCylinder});
-  EXPECT_TRUE(SplitOffPlanes(s.c, &labels, &regions).empty());
-  EXPECT_EQ(regions.size(), 1u);
+  const double before = TotalEnergy(s.c, labels, regions);
+  EXPECT_EQ(SplitOffPlanes(s.c, &labels, &regions).value(), std::vector<int>{0});
+  ASSERT_EQ(regions.size(), 2u);
+  EXPECT_LT(TotalEnergy(s.c, labels, regions), before);
+  EXPECT_EQ(regions[0].type, SurfaceType::kCylinder);
+  EXPECT_EQ(regions[1].type, SurfaceType::kPlane);
+  // One row either side of the tangent line may go either way (the two
+  // surfaces meet there within the noise).
+  for (std::size_t v = 0; v < labels.size(); ++v) {
+    if (s.u[v] < kFloorRows - 1.5) {
+      EXPECT_EQ(labels[v], 1) << "floor row " << s.u[v];
+    } else if (s.u[v] > kFloorRows + 1.5) {
+      EXPECT_EQ(labels[v], 0) << "fillet row " << s.u[v];
+    }
+  }
 }
 
 }  // namespace
