@@ -14,8 +14,10 @@
 #include <limits>
 #include <map>
 #include <random>
+#include <set>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "clouds.h"
@@ -258,6 +260,58 @@ TEST(RunPipelineOnPoints, FindsTheTestPieceCylindersAndPlanesWithTheRightTypes) 
           << ", " << found[t.id].share << " of its points";
     }
   }
+}
+
+
+// A box cloud: the points of a regular grid on the six sides of a 2 x 1.5 x 1
+// box, `n` intervals per edge, each point once, written as XYZ (no normals).
+std::string WriteBoxCloud(int n, const std::string& name) {
+  const Eigen::Vector3d size(2.0, 1.5, 1.0);
+  PointCloud cloud;
+  for (int i = 0; i <= n; ++i) {
+    for (int j = 0; j <= n; ++j) {
+      for (int k = 0; k <= n; ++k) {
+        if (i != 0 && i != n && j != 0 && j != n && k != 0 && k != n) continue;  // inside
+        cloud.points.push_back(size.cwiseProduct(Eigen::Vector3d(i, j, k)) / n);
+      }
+    }
+  }
+  const std::string path = testing_files::ScratchPath(name);
+  EXPECT_TRUE(WritePointCloud(cloud, path).ok());
+  return path;
+}
+
+// A noise-free box cloud, once reconstructed, is six planes on the box's
+// sides. Its smallest side (1.0) is 15 mean edges of the reconstructed mesh
+// wide at 32 points per edge, wider than the curvature stage's pass-2 window
+// (2 W2 = 10 edges), so the segmentation's noise estimate sees faces and not
+// edges (at 16 points per edge, 7 edges wide, every window straddles an edge
+// and the estimate is the edges' bend, a third of the box's thickness as
+// th_dis, under which one torus fits the whole closed surface).
+TEST(RunPipelineOnPoints, ABoxCloudIsSixPlanesOnItsSides) {
+  constexpr double kNormalTolDeg = 1.0;
+  constexpr double kOffsetTol = 0.01;  // the side's centre off the plane (grid step 0.031-0.0625)
+  const std::string path = WriteBoxCloud(32, "box_points.xyz");
+  const absl::StatusOr<PipelineResult> r = RunPipeline(path);
+  std::filesystem::remove(path);
+  ASSERT_TRUE(r.ok()) << r.status();
+  ASSERT_EQ(r->regions.size(), 6u);
+  const Eigen::Vector3d size(2.0, 1.5, 1.0);
+  std::set<std::pair<int, int>> sides;  // (axis, low 0 / high 1)
+  for (const Region& region : r->regions) {
+    const auto* p = std::get_if<Plane>(&region.surface);
+    ASSERT_NE(p, nullptr) << SurfaceTypeName(region.type);
+    int axis = 0;
+    p->normal.cwiseAbs().maxCoeff(&axis);
+    EXPECT_LT(AngleDeg(p->normal, Eigen::Vector3d::Unit(axis)), kNormalTolDeg);
+    const int high = p->point[axis] > 0.5 * size[axis];
+    Eigen::Vector3d centre = 0.5 * size;  // of the side
+    centre[axis] = high * size[axis];
+    EXPECT_LT(std::abs(p->normal.normalized().dot(centre - p->point)), kOffsetTol)
+        << "axis " << axis << " side " << high;
+    sides.emplace(axis, high);
+  }
+  EXPECT_EQ(sides.size(), 6u) << "one plane per side";
 }
 
 }  // namespace
