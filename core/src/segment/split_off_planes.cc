@@ -10,7 +10,6 @@
 #include "segment/alpha_expansion.h"
 #include "segment/decide_type.h"
 #include "segment/energy.h"
-#include "segment/region_graph.h"
 #include "segment/retype_by_interior.h"
 
 namespace meshseg::segment_internal {
