@@ -262,7 +262,6 @@ TEST(RunPipelineOnPoints, FindsTheTestPieceCylindersAndPlanesWithTheRightTypes) 
   }
 }
 
-
 // A box cloud: the points of a regular grid on the six sides of a 2 x 1.5 x 1
 // box, `n` intervals per edge, each point once, written as XYZ (no normals).
 std::string WriteBoxCloud(int n, const std::string& name) {
