@@ -2,8 +2,10 @@
 
 #include <cmath>
 #include <optional>
+#include <span>
 
 #include "segment/decide_type.h"
+#include "segment/energy.h"
 
 namespace meshseg::segment_internal {
 namespace {
@@ -51,14 +53,28 @@ void RetypeQuadrics(const SegmentContext& c, std::vector<RegionState>* regions) 
   }
 }
 
+bool RetypeIfLower(const SegmentContext& c, RegionState* r, std::span<const SurfaceType> types) {
+  std::optional<RegionState> own;  // re-estimated once, if any type is new
+  std::optional<Move> best;
+  for (const SurfaceType type : types) {
+    if (type == r->type) continue;
+    if (!own) own = Reestimated(c, *r);
+    const std::optional<Move> move = RetypeDelta(c, *own, type);
+    if (move && (!best || move->delta < best->delta)) best = move;
+  }
+  if (!best || !(best->delta < 0.0)) return false;
+  r->type = best->type;
+  r->surface = best->surface;
+  return true;
+}
+
 bool RetypeCurved(const SegmentContext& c, RegionState* r) {
   const std::vector<int> smooth = SmoothVertices(c, r->vertices);
   if (smooth.size() < kMinRetypeVertices) return false;
   const TypedFit curved = DecideCurvedType(c, smooth, c.tolerance);
-  if (!(curved.fraction > c.alpha) || curved.type == SurfaceType::kQuadric) return false;
-  r->type = curved.type;
-  r->surface = curved.fit.surface;
-  return true;
+  if (curved.type == SurfaceType::kQuadric) return false;
+  const SurfaceType types[] = {curved.type};
+  return RetypeIfLower(c, r, types);
 }
 
 std::vector<int> RetypeBentPlanes(const SegmentContext& c, std::vector<RegionState>* regions) {

@@ -4,6 +4,7 @@
 #ifndef MESHSEG_SRC_SEGMENT_RETYPE_REGIONS_H_
 #define MESHSEG_SRC_SEGMENT_RETYPE_REGIONS_H_
 
+#include <span>
 #include <vector>
 
 #include "segment/segment_internal.h"
@@ -17,15 +18,23 @@ inline constexpr std::size_t kMinRetypeVertices = 10;
 // merging, so ALGORITHMS.md S1 step 2.5 is asked again).
 void RetypeQuadrics(const SegmentContext& c, std::vector<RegionState>* regions);
 
-// Gives plane regions that their plane no longer fits (the alpha test fails
-// on their non-sharp vertices) the first analytic curved type that passes
-// it: at high noise a fillet can start as a plane from a seed on its middle
-// and take its whole arc as leftovers. Returns the ids of those retyped.
+// Gives region `r` the one of `types` that lowers E most, with the surface
+// of that type fitted to it for least energy (FitForEnergy), if it lowers E
+// (RetypeDelta, energy.h) against `r` re-estimated with its own type (a
+// region keeps the surface it grew with until a refit, and priced with that
+// stale surface any retype looks a gain). Returns whether it did.
+bool RetypeIfLower(const SegmentContext& c, RegionState* r, std::span<const SurfaceType> types);
+
+// Proposes for every plane region that its plane no longer fits (the alpha
+// test fails on its non-sharp vertices) the curved type DecideCurvedType
+// finds there, taken iff it lowers E (RetypeIfLower): at high noise a fillet
+// can start as a plane from a seed on its middle and take its whole arc as
+// leftovers. Returns the ids of those retyped.
 std::vector<int> RetypeBentPlanes(const SegmentContext& c, std::vector<RegionState>* regions);
 
-// Gives region `r` the curved type DecideCurvedType finds on its non-sharp
-// vertices if it passes the alpha test and is not a general quadric;
-// returns whether it did.
+// Proposes for region `r` the curved type DecideCurvedType finds on its
+// non-sharp vertices (not a general quadric), taken iff it lowers E
+// (RetypeIfLower); returns whether it was.
 bool RetypeCurved(const SegmentContext& c, RegionState* r);
 
 // Gives a curved region whose fit misses it by more than kInaccurateError

@@ -1,4 +1,6 @@
-// RetypeInaccurateCurved on sheets cut from a cone and from a sphere.
+// The priced retype (RetypeIfLower) and the proposals that use it
+// (RetypeBentPlanes, RetypeInaccurateCurved) on sheets cut from a cone, a
+// cylinder and a disc with the start of its edge round.
 #include "segment/retype_regions.h"
 
 #include <gtest/gtest.h>
@@ -6,10 +8,12 @@
 #include <Eigen/Geometry>
 
 #include <cmath>
+#include <optional>
 #include <numbers>
 #include <variant>
 #include <vector>
 
+#include "segment/energy.h"
 #include "sheet_context.h"
 
 namespace meshseg::segment_internal {
@@ -33,6 +37,59 @@ void ConeBand(Sheet* s) {
         return std::pair{p, n};
       },
       4.0, 10.0, 31, 0.0, std::numbers::pi, 61, /*distance=*/0.15, /*angle_deg=*/5.0, s);
+}
+
+// A quarter turn of a cylinder of radius 5 about the z axis, 10 long.
+void QuarterCylinder(Sheet* s) {
+  BuildSheet(
+      [](double phi, double z) {
+        const Eigen::Vector3d radial(std::cos(phi), std::sin(phi), 0.0);
+        return std::pair{Eigen::Vector3d(5.0 * radial + z * Eigen::Vector3d::UnitZ()), radial};
+      },
+      0.0, std::numbers::pi / 2.0, 41, 0.0, 10.0, 41, /*distance=*/0.15, /*angle_deg=*/5.0, s);
+}
+
+TEST(RetypeIfLowerTest, TheTypeOfTheSurfaceLowersETheOtherDoesNot) {
+  Sheet s;
+  ConeBand(&s);
+  std::vector<int> labels(s.u.size(), 0);
+  std::vector<RegionState> sphere = RegionsFromLabels(s.c, labels, {SurfaceType::kSphere});
+  std::vector<RegionState> cone = RegionsFromLabels(s.c, labels, {SurfaceType::kCone});
+
+  const SurfaceType to_cone[] = {SurfaceType::kCone}, to_sphere[] = {SurfaceType::kSphere};
+  EXPECT_TRUE(RetypeIfLower(s.c, &sphere[0], to_cone));
+  EXPECT_EQ(sphere[0].type, SurfaceType::kCone);
+  EXPECT_FALSE(RetypeIfLower(s.c, &cone[0], to_sphere));
+  EXPECT_EQ(cone[0].type, SurfaceType::kCone);
+}
+
+TEST(RetypeIfLowerTest, AStaleSurfaceIsNotWhatARetypeIsPricedAgainst) {
+  // The cone moved 0.5 along its axis: every vertex misses it by more than
+  // th_dis, so a sphere fitted to the band costs less than that surface,
+  // but not less than the cone refitted.
+  Sheet s;
+  ConeBand(&s);
+  std::vector<int> labels(s.u.size(), 0);
+  std::vector<RegionState> regions = RegionsFromLabels(s.c, labels, {SurfaceType::kCone});
+  std::get<Cone>(regions[0].surface).apex += Eigen::Vector3d(0, 0, 0.5);
+  const std::optional<Move> against_stale = RetypeDelta(s.c, regions[0], SurfaceType::kSphere);
+  ASSERT_TRUE(against_stale.has_value());
+  ASSERT_LT(against_stale->delta, 0.0);
+
+  const SurfaceType to_sphere[] = {SurfaceType::kSphere};
+  EXPECT_FALSE(RetypeIfLower(s.c, &regions[0], to_sphere));
+  EXPECT_EQ(regions[0].type, SurfaceType::kCone);
+}
+
+TEST(RetypeBentPlanesTest, PlaneOverAnArcBecomesItsCylinder) {
+  Sheet s;
+  QuarterCylinder(&s);
+  std::vector<int> labels(s.u.size(), 0);
+  std::vector<RegionState> regions = RegionsFromLabels(s.c, labels, {SurfaceType::kPlane});
+
+  EXPECT_EQ(RetypeBentPlanes(s.c, &regions), std::vector<int>{0});
+  ASSERT_EQ(regions[0].type, SurfaceType::kCylinder);
+  EXPECT_NEAR(std::get<Cylinder>(regions[0].surface).radius, 5.0, 1e-3);
 }
 
 TEST(RetypeInaccurateCurvedTest, SphereOnAConeBandBecomesACone) {
