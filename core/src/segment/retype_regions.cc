@@ -21,14 +21,9 @@ std::vector<int> SmoothVertices(const SegmentContext& c, const std::vector<int>&
   return smooth.size() < kMinRetypeVertices ? vertices : smooth;
 }
 
-// Fractions within this of each other count as equal (simpler type wins).
-constexpr double kFractionTie = 0.02;
-// RetypeInaccurateCurved looks again at curved regions whose model error
-// exceeds this many noise sigmas (rms above 1.12 sigma).
+// RetypeInaccurateCurved proposes a type for curved regions whose model
+// error exceeds this many noise sigmas (rms above 1.12 sigma).
 constexpr double kInaccurateError = 0.5;
-// ... and takes a type that fits this share of a region its own type no
-// longer fits validly (the trim share of the initial segmentation).
-constexpr double kStaleTypeFraction = 0.75;
 
 }  // namespace
 
@@ -103,24 +98,11 @@ std::vector<int> RetypeInaccurateCurved(const SegmentContext& c,
     const FitResult current = FitType(c, r.type, smooth);
     const double error = current.ok() ? ModelError(c, current) : HUGE_VAL;
     if (!(error > kInaccurateError * c.noise_sigma)) continue;
-    const TypedFit plane = TryType(c, SurfaceType::kPlane, smooth, c.tolerance);
-    TypedFit typed = plane.fraction > c.alpha ? plane : DecideCurvedType(c, smooth, c.tolerance);
-    // With no valid fit left, a type that fits kStaleTypeFraction will do:
-    // the boundary refinement that follows hands the rest to the
-    // neighbours (a plane annulus retyped from a torus holds the first rows
-    // of its convex edge round).
-    double needed = c.alpha;
-    if (!current.ok() && !(typed.fraction > c.alpha)) {
-      needed = kStaleTypeFraction;
-      if (plane.fraction >= typed.fraction - kFractionTie) typed = plane;
-    }
-    if (typed.type == r.type || typed.type == SurfaceType::kQuadric ||
-        !(typed.fraction >= needed) || !(ModelError(c, typed.fit) < 0.5 * error)) {
-      continue;
-    }
-    r.type = typed.type;
-    r.surface = typed.fit.surface;
-    retyped.push_back(id);
+    // The proposals: the plane and the curved type of S1's order.
+    const SurfaceType curved = DecideCurvedType(c, smooth, c.tolerance).type;
+    std::vector<SurfaceType> types = {SurfaceType::kPlane};
+    if (curved != SurfaceType::kQuadric) types.push_back(curved);
+    if (RetypeIfLower(c, &r, types)) retyped.push_back(id);
   }
   return retyped;
 }

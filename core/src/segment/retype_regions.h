@@ -37,17 +37,17 @@ std::vector<int> RetypeBentPlanes(const SegmentContext& c, std::vector<RegionSta
 // (RetypeIfLower); returns whether it was.
 bool RetypeCurved(const SegmentContext& c, RegionState* r);
 
-// Gives a curved region whose fit misses it by more than kInaccurateError
-// noise sigmas beyond the noise (ModelError), or that its type no longer
-// fits validly, the type of ALGORITHMS.md S1's order (step 2.5) on its
-// non-sharp vertices (the plane, else DecideCurvedType's), if that passes
-// the alpha test with under half the model error. A seed on a noisy cone can
-// grow as a sphere that passes the tolerances (a 45-degree cone joining
-// coaxial cylinders of radius 12 and 8, at sigma = 0.15 h: a sphere of
-// r 14.7, model error 1.0 sigma, where the cone's is 0); a torus typed on a
-// ring at the rim of a plane annulus (the flat top of a turned cylinder with
-// a convex edge round) can be grown over the whole top, where only a
-// spindle torus with its cusp inside fits. Returns the ids retyped.
+// Proposes for a curved region whose fit misses it by more than
+// kInaccurateError noise sigmas beyond the noise (ModelError), or that its
+// type no longer fits validly, the plane and the curved type DecideCurvedType
+// finds on its non-sharp vertices; the one that lowers E more is taken, iff
+// it lowers E (RetypeDelta against the region re-estimated). A seed on a
+// noisy cone can grow as a sphere that passes the tolerances (a 45-degree
+// cone joining coaxial cylinders of radius 12 and 8, at sigma = 0.15 h: a
+// sphere of r 14.7, model error 1.0 sigma, where the cone's is 0); a torus
+// typed on a ring at the rim of a plane annulus (the flat top of a turned
+// cylinder with a convex edge round) can be grown over the whole top, where
+// only a spindle torus with its cusp inside fits. Returns the ids retyped.
 std::vector<int> RetypeInaccurateCurved(const SegmentContext& c,
                                         std::vector<RegionState>* regions);
 
