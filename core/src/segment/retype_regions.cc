@@ -1,8 +1,12 @@
 #include "segment/retype_regions.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <optional>
 #include <span>
+
+#include <tbb/parallel_for.h>
 
 #include "segment/decide_type.h"
 #include "segment/energy.h"
@@ -105,6 +109,19 @@ std::vector<int> RetypeInaccurateCurved(const SegmentContext& c,
     if (RetypeIfLower(c, &r, types)) retyped.push_back(id);
   }
   return retyped;
+}
+
+int RetypeToSimplerLimits(const SegmentContext& c, std::vector<RegionState>* regions) {
+  std::vector<uint8_t> retyped(regions->size(), 0);
+  // Each proposal reads and changes its own region only: concurrent.
+  tbb::parallel_for(std::size_t{0}, regions->size(), [&](std::size_t id) {
+    RegionState& r = (*regions)[id];
+    if (!r.alive || !IsCurved(r.type) || r.vertices.size() < kMinRetypeVertices) return;
+    std::vector<SurfaceType> types = {SurfaceType::kPlane};
+    if (r.type == SurfaceType::kCone) types.push_back(SurfaceType::kCylinder);
+    retyped[id] = RetypeIfLower(c, &r, types);
+  });
+  return static_cast<int>(std::count(retyped.begin(), retyped.end(), 1));
 }
 
 }  // namespace meshseg::segment_internal

@@ -51,6 +51,16 @@ bool RetypeCurved(const SegmentContext& c, RegionState* r);
 std::vector<int> RetypeInaccurateCurved(const SegmentContext& c,
                                         std::vector<RegionState>* regions);
 
+// Proposes for every curved region the plane, and for a cone also the
+// cylinder (its limit of half-angle 0, IsLimitOf), the one that lowers E
+// more taken iff it lowers E (RetypeIfLower): a curved fit that bends or
+// widens less than the noise over its region buys less with its extra
+// parameters than the label cost charges for them (a reconstructed flat
+// face fitted by a cylinder of radius 914 mm; a CAD edge round fitted by a
+// cone of half angle 0.06 degrees, 0.16 wider at one end of 150). Returns
+// how many were retyped.
+int RetypeToSimplerLimits(const SegmentContext& c, std::vector<RegionState>* regions);
+
 }  // namespace meshseg::segment_internal
 
 #endif  // MESHSEG_SRC_SEGMENT_RETYPE_REGIONS_H_

@@ -187,8 +187,9 @@ absl::StatusOr<Segmentation> Segment(const Mesh& mesh, const CurvatureField& cur
   // neighbours' surfaces (a plane strip along a groove): dropped.
   MESHSEG_ASSIGN_OR_RETURN(const int late, DropRegions(c, &labels, &regions, &kept_prices));
   if (late > 0) MESHSEG_RETURN_IF_ERROR(ExpandRegions(c, &labels, &regions).status());
-  FlattenNearlyFlatRegions(c, &regions);
-  StraightenNearlyCylindricalCones(c, &regions);
+  // A curved type that bends or widens less than the noise over its region
+  // gives way to its simpler limit where that lowers E.
+  RetypeToSimplerLimits(c, &regions);
   ctx.Progress("segment", 0.9);
   MESHSEG_RETURN_IF_ERROR(ctx.CheckStop("segment"));
   Segmentation seg = FinalizeRegions(c, mesh.tri, std::move(labels), std::move(regions));

@@ -1,6 +1,7 @@
 // The priced retype (RetypeIfLower) and the proposals that use it
-// (RetypeBentPlanes, RetypeInaccurateCurved) on sheets cut from a cone, a
-// cylinder and a disc with the start of its edge round.
+// (RetypeBentPlanes, RetypeInaccurateCurved, RetypeToSimplerLimits) on
+// sheets cut from cones, cylinders, a plane and a disc with the start of its
+// edge round.
 #include "segment/retype_regions.h"
 
 #include <gtest/gtest.h>
@@ -154,6 +155,78 @@ TEST(RetypeInaccurateCurvedTest, TorusWithNoValidFitLeftTakesTheProposalThatLowe
   EXPECT_EQ(RetypeInaccurateCurved(s.c, &regions), std::vector<int>{0});
   EXPECT_NE(regions[0].type, SurfaceType::kTorus);
   EXPECT_LE(TotalEnergy(s.c, labels, regions) - before, plane->delta + 1e-6 * std::abs(before));
+}
+
+// A quarter of a cone around the z axis, 150 long, radius 6.35 at z = 0 and
+// half angle `degrees` (a CAD part's edge round is 6.35 across and about
+// 150 long); th_dis 0.75, th_nm 5, as that part remeshed has.
+void QuarterCone(double degrees, Sheet* s) {
+  const double half_angle = degrees * std::numbers::pi / 180.0;
+  BuildSheet(
+      [half_angle](double phi, double z) {
+        const Eigen::Vector3d radial(std::cos(phi), std::sin(phi), 0.0);
+        const double radius = 6.35 + z * std::tan(half_angle);
+        return std::pair{Eigen::Vector3d(radius * radial + z * Eigen::Vector3d::UnitZ()),
+                         Eigen::Vector3d(std::cos(half_angle) * radial -
+                                         std::sin(half_angle) * Eigen::Vector3d::UnitZ())};
+      },
+      0.0, std::numbers::pi / 2, 10, -75.0, 75.0, 151, /*distance=*/0.75, /*angle_deg=*/5.0, s);
+}
+
+TEST(RetypeToSimplerLimitsTest, ACylinderFittedAsAWideningConeBecomesACylinder) {
+  // The round as a cone of half angle 0.06 degrees (0.16 wider at one end):
+  // the cylinder misses it by 0.08 at most, well within the noise unit
+  // th_dis / 3, and saves a parameter.
+  Sheet s;
+  QuarterCone(0.0, &s);
+  std::vector<int> labels;
+  std::vector<RegionState> regions = testing::OneRegion(s, SurfaceType::kCone, &labels);
+  const double half_angle = 0.06 * std::numbers::pi / 180.0;
+  regions[0].surface = Cone{.apex = Eigen::Vector3d(0.0, 0.0, -6.35 / std::tan(half_angle)),
+                            .axis_direction = Eigen::Vector3d::UnitZ(),
+                            .half_angle = half_angle};
+
+  EXPECT_EQ(RetypeToSimplerLimits(s.c, &regions), 1);
+  ASSERT_EQ(regions[0].type, SurfaceType::kCylinder);
+  EXPECT_NEAR(std::get<Cylinder>(regions[0].surface).radius, 6.35, 0.01);
+}
+
+TEST(RetypeToSimplerLimitsTest, ADraftedConeStaysACone) {
+  // A 1-degree draft widens by 2.6 over the 150: the cylinder misses the
+  // ends by over th_dis.
+  Sheet s;
+  QuarterCone(1.0, &s);
+  std::vector<int> labels;
+  std::vector<RegionState> regions = testing::OneRegion(s, SurfaceType::kCone, &labels);
+  regions[0].surface = FitType(s.c, SurfaceType::kCone, regions[0].vertices).surface;
+
+  EXPECT_EQ(RetypeToSimplerLimits(s.c, &regions), 0);
+  EXPECT_EQ(regions[0].type, SurfaceType::kCone);
+}
+
+TEST(RetypeToSimplerLimitsTest, AHugeCylinderAlongAFlatSideBecomesAPlaneAndARoundStays) {
+  // A flat side 60 long and 10 high grown as a cylinder of r 572 whose axis
+  // runs along it; beside it, a quarter of a cylinder of radius 5.
+  Sheet side;
+  BuildSheet(
+      [](double x, double z) {
+        return std::pair{Eigen::Vector3d(x, 0.0, z), Eigen::Vector3d::UnitY()};
+      },
+      -30.0, 30.0, 61, -5.0, 5.0, 11, /*distance=*/0.225, /*angle_deg=*/10.0, &side);
+  std::vector<int> labels;
+  std::vector<RegionState> regions = testing::OneRegion(side, SurfaceType::kCylinder, &labels);
+  regions[0].surface = Cylinder{.axis_origin = Eigen::Vector3d(0.0, 572.0, 0.0),
+                                .axis_direction = Eigen::Vector3d::UnitX(),
+                                .radius = 572.0};
+  EXPECT_EQ(RetypeToSimplerLimits(side.c, &regions), 1);
+  EXPECT_EQ(regions[0].type, SurfaceType::kPlane);
+
+  Sheet round;
+  QuarterCylinder(&round);
+  regions = RegionsFromLabels(round.c, std::vector<int>(round.u.size(), 0),
+                              {SurfaceType::kCylinder});
+  EXPECT_EQ(RetypeToSimplerLimits(round.c, &regions), 0);
+  EXPECT_EQ(regions[0].type, SurfaceType::kCylinder);
 }
 
 }  // namespace
