@@ -54,11 +54,7 @@ TEST(NearlyFlatTest, HugeCylinderAlongAFlatSideIsFlat) {
   // 5^2 / 1144 = 0.02; along it, not at all (30^2 / 1144 = 0.79 would say
   // curved).
   Sheet s;
-  BuildSheet(
-      [](double x, double z) {
-        return std::pair{Eigen::Vector3d(x, 0.0, z), Eigen::Vector3d::UnitY()};
-      },
-      -30.0, 30.0, 61, -5.0, 5.0, 11, /*distance=*/0.225, /*angle_deg=*/10.0, &s);
+  testing::BuildFlatSide(&s);
   const Cylinder cylinder{.axis_origin = Eigen::Vector3d(0.0, 572.0, 0.0),
                           .axis_direction = Eigen::Vector3d::UnitX(),
                           .radius = 572.0};

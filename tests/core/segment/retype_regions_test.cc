@@ -208,11 +208,7 @@ TEST(RetypeToSimplerLimitsTest, AHugeCylinderAlongAFlatSideBecomesAPlaneAndARoun
   // A flat side 60 long and 10 high grown as a cylinder of r 572 whose axis
   // runs along it; beside it, a quarter of a cylinder of radius 5.
   Sheet side;
-  BuildSheet(
-      [](double x, double z) {
-        return std::pair{Eigen::Vector3d(x, 0.0, z), Eigen::Vector3d::UnitY()};
-      },
-      -30.0, 30.0, 61, -5.0, 5.0, 11, /*distance=*/0.225, /*angle_deg=*/10.0, &side);
+  testing::BuildFlatSide(&side);
   std::vector<int> labels;
   std::vector<RegionState> regions = testing::OneRegion(side, SurfaceType::kCylinder, &labels);
   regions[0].surface = Cylinder{.axis_origin = Eigen::Vector3d(0.0, 572.0, 0.0),
