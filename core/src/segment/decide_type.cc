@@ -104,26 +104,6 @@ bool NearlyFlatImpl(const SegmentContext& c, const Surface& surface, double rms,
          std::sqrt(extent2) / radius < max_turn;
 }
 
-// Refits as type `to` every alive region of a type `from` accepts whose
-// own fit `simpler(region, fit)` accepts, if that fit is valid; returns how
-// many.
-template <typename From, typename Simpler>
-int RetypeToSimpler(const SegmentContext& c, From from, SurfaceType to,
-                    std::vector<RegionState>* regions, Simpler simpler) {
-  int retyped = 0;
-  for (RegionState& r : *regions) {
-    if (!r.alive || !from(r.type)) continue;
-    const FitResult own = FitType(c, r.type, r.vertices);
-    if (!own.ok() || !simpler(r, own)) continue;
-    const FitResult fit = FitType(c, to, r.vertices);
-    if (!fit.ok()) continue;
-    r.type = to;
-    r.surface = fit.surface;
-    ++retyped;
-  }
-  return retyped;
-}
-
 }  // namespace
 
 TypedFit TryType(const SegmentContext& c, SurfaceType type, std::span<const int> vertices,
@@ -224,33 +204,6 @@ std::array<ScoredFit, kCurvedTypes.size()> ScoreCurvedTypes(const SegmentContext
 bool NearlyFlat(const SegmentContext& c, const Surface& surface, double rms,
                 std::span<const int> vertices, const Tolerance& tol) {
   return NearlyFlatImpl(c, surface, rms, vertices, tol);
-}
-
-int FlattenNearlyFlatRegions(const SegmentContext& c, std::vector<RegionState>* regions) {
-  return RetypeToSimpler(
-      c, IsCurved, SurfaceType::kPlane, regions, [&](const RegionState& r, const FitResult& fit) {
-        return NearlyFlat(c, fit.surface, fit.rms_distance, r.vertices, c.tolerance);
-      });
-}
-
-bool NearlyCylindrical(const SegmentContext& c, const Cone& cone, double rms,
-                       std::span<const int> vertices, const Tolerance& tol) {
-  if (vertices.empty()) return false;
-  std::vector<Eigen::Vector3d> points;
-  points.reserve(vertices.size());
-  for (const int v : vertices) points.push_back(c.position(v));
-  return ConeWidening(cone, points) < std::max(tol.distance, 2.0 * rms);
-}
-
-int StraightenNearlyCylindricalCones(const SegmentContext& c, std::vector<RegionState>* regions) {
-  return RetypeToSimpler(
-      c, [](SurfaceType type) { return type == SurfaceType::kCone; }, SurfaceType::kCylinder,
-      regions,
-      [&](const RegionState& r, const FitResult& fit) {
-        const auto* cone = std::get_if<Cone>(&fit.surface);
-        return cone != nullptr &&
-               NearlyCylindrical(c, *cone, fit.rms_distance, r.vertices, c.tolerance);
-      });
 }
 
 std::optional<TypedFit> PlaneIfFits(const SegmentContext& c, std::span<const int> vertices,

@@ -143,23 +143,6 @@ TypedFit DecideCurvedType(const SegmentContext& c, std::span<const int> vertices
 bool NearlyFlat(const SegmentContext& c, const Surface& surface, double rms,
                 std::span<const int> vertices, const Tolerance& tol);
 
-// Makes every curved region that is NearlyFlat a plane (refitted); returns
-// how many. Run after merging, whichever path typed the region.
-int FlattenNearlyFlatRegions(const SegmentContext& c, std::vector<RegionState>* regions);
-
-// True if `cone`, fitted to `vertices` with residual `rms`, widens less than
-// the tolerance over the region: its radius changes by L tan(half angle)
-// along the region's extent L on the axis, under th_dis (or twice the fit's
-// own rms scatter). Such a cone passes only by fitting what a cylinder
-// leaves (on a CAD tessellation an edge round of r 6.35, 150 long, came out
-// as a cone of half angle 0.06 degrees: 0.16 wider at one end, th_dis 0.75).
-bool NearlyCylindrical(const SegmentContext& c, const Cone& cone, double rms,
-                       std::span<const int> vertices, const Tolerance& tol);
-
-// Makes every cone region that is NearlyCylindrical a cylinder (refitted);
-// returns how many. Run with FlattenNearlyFlatRegions.
-int StraightenNearlyCylindricalCones(const SegmentContext& c, std::vector<RegionState>* regions);
-
 }  // namespace meshseg::segment_internal
 
 #endif  // MESHSEG_SRC_SEGMENT_DECIDE_TYPE_H_

@@ -131,7 +131,7 @@ Segmentation FinalizeRegions(const SegmentContext& c, const TriMesh& mesh, std::
       }
     }
     // The inliers can leave a curved fit flat where the fit to all of the
-    // region (FlattenNearlyFlatRegions) was not: a small plane disc at
+    // region (priced by RetypeToSimplerLimits) was not: a small plane disc at
     // sigma = 0.15 h, grown as a sphere of radius 28.7 over it and its rim
     // rows, 128.0 over the disc alone, would be reported so.
     if (fit.ok() && IsCurved(r.type) &&

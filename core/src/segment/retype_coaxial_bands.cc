@@ -5,6 +5,7 @@
 
 #include "segment/align_coaxial.h"
 #include "segment/decide_type.h"
+#include "segment/energy.h"
 #include "segment/retype_by_interior.h"
 
 namespace meshseg::segment_internal {
@@ -78,17 +79,16 @@ std::vector<int> RetypeCoaxialBands(const SegmentContext& c, const std::vector<i
     const int ids[] = {id};
     const std::vector<int> interior = Sample(InteriorVertices(c, labels, ids, r.vertices));
     if (interior.size() < kMinInteriorVertices) continue;
-    // Infinite if the region's own type has no valid fit there.
-    const double own = ScoreType(c, r.type, interior).score;
     const std::optional<CoaxialFit> best = BestCoaxialCone(c, labels, *regions, id, interior);
-    // As RetypeByInterior weighs a type against the region's: within
-    // kScoreMargin of the torus it is a limit of, or kScoreMargin below
-    // the sphere it is not.
-    if (!best || !TakesOverNearTheNoise(c, SurfaceType::kCone,
-                                        ModelErrorOfMeanSquare(c, best->mean_square),
-                                        best->score, r.type, own)) {
-      continue;
-    }
+    if (!best) continue;
+    // The cone on the axis, priced as E prices a retype (RetypeDelta's terms
+    // with this surface): against the region re-estimated with its own type.
+    const RegionState own = Reestimated(c, r);
+    const double delta = DataCost(c, best->fit.surface, r.vertices) +
+                         LabelCost(c, SurfaceType::kCone, r.vertices.size()) -
+                         DataCost(c, own.surface, r.vertices) -
+                         LabelCost(c, r.type, r.vertices.size());
+    if (!(delta < 0.0)) continue;
     r.type = SurfaceType::kCone;
     r.surface = best->fit.surface;
     retyped.push_back(id);

@@ -21,12 +21,11 @@ namespace meshseg::segment_internal {
 // kCoaxialMaxOffset of the tube radius of its centre; a sphere: within that
 // share of its radius of its centre), fits a cone to the interior together
 // with the neighbour's vertices on one axis (FitCoaxial), and scores it on
-// the interior with kCoaxialConeParameters (InformationScore). The region
-// becomes the best such cone that meets the interior within
-// kScoredNearError sigmas and scores less than kScoreMargin above a torus
-// (the cone is its limit, IsLimitOf) or kScoreMargin below a sphere (or any
-// cone, if the region's own type has no valid fit there). Nothing happens
-// when the estimated noise is zero. Returns the ids of the regions retyped.
+// the interior with kCoaxialConeParameters (InformationScore). The best
+// scoring such cone is proposed, and the region becomes it iff that lowers E
+// (RetypeDelta's terms with that surface, against the region re-estimated
+// with its own type). Nothing is proposed when the estimated noise is zero.
+// Returns the ids of the regions retyped.
 inline constexpr int kCoaxialConeParameters = 2;  // apex along the axis, half angle
 
 std::vector<int> RetypeCoaxialBands(const SegmentContext& c, const std::vector<int>& labels,

@@ -1,9 +1,15 @@
 #include "segment/retype_regions.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <optional>
+#include <span>
+
+#include <tbb/parallel_for.h>
 
 #include "segment/decide_type.h"
+#include "segment/energy.h"
 
 namespace meshseg::segment_internal {
 namespace {
@@ -19,14 +25,9 @@ std::vector<int> SmoothVertices(const SegmentContext& c, const std::vector<int>&
   return smooth.size() < kMinRetypeVertices ? vertices : smooth;
 }
 
-// Fractions within this of each other count as equal (simpler type wins).
-constexpr double kFractionTie = 0.02;
-// RetypeInaccurateCurved looks again at curved regions whose model error
-// exceeds this many noise sigmas (rms above 1.12 sigma).
+// RetypeInaccurateCurved proposes a type for curved regions whose model
+// error exceeds this many noise sigmas (rms above 1.12 sigma).
 constexpr double kInaccurateError = 0.5;
-// ... and takes a type that fits this share of a region its own type no
-// longer fits validly (the trim share of the initial segmentation).
-constexpr double kStaleTypeFraction = 0.75;
 
 }  // namespace
 
@@ -51,14 +52,28 @@ void RetypeQuadrics(const SegmentContext& c, std::vector<RegionState>* regions) 
   }
 }
 
+bool RetypeIfLower(const SegmentContext& c, RegionState* r, std::span<const SurfaceType> types) {
+  std::optional<RegionState> own;  // re-estimated once, if any type is new
+  std::optional<Move> best;
+  for (const SurfaceType type : types) {
+    if (type == r->type) continue;
+    if (!own) own = Reestimated(c, *r);
+    const std::optional<Move> move = RetypeDelta(c, *own, type);
+    if (move && (!best || move->delta < best->delta)) best = move;
+  }
+  if (!best || !(best->delta < 0.0)) return false;
+  r->type = best->type;
+  r->surface = best->surface;
+  return true;
+}
+
 bool RetypeCurved(const SegmentContext& c, RegionState* r) {
   const std::vector<int> smooth = SmoothVertices(c, r->vertices);
   if (smooth.size() < kMinRetypeVertices) return false;
   const TypedFit curved = DecideCurvedType(c, smooth, c.tolerance);
-  if (!(curved.fraction > c.alpha) || curved.type == SurfaceType::kQuadric) return false;
-  r->type = curved.type;
-  r->surface = curved.fit.surface;
-  return true;
+  if (curved.type == SurfaceType::kQuadric) return false;
+  const SurfaceType types[] = {curved.type};
+  return RetypeIfLower(c, r, types);
 }
 
 std::vector<int> RetypeBentPlanes(const SegmentContext& c, std::vector<RegionState>* regions) {
@@ -87,26 +102,26 @@ std::vector<int> RetypeInaccurateCurved(const SegmentContext& c,
     const FitResult current = FitType(c, r.type, smooth);
     const double error = current.ok() ? ModelError(c, current) : HUGE_VAL;
     if (!(error > kInaccurateError * c.noise_sigma)) continue;
-    const TypedFit plane = TryType(c, SurfaceType::kPlane, smooth, c.tolerance);
-    TypedFit typed = plane.fraction > c.alpha ? plane : DecideCurvedType(c, smooth, c.tolerance);
-    // With no valid fit left, a type that fits kStaleTypeFraction will do:
-    // the boundary refinement that follows hands the rest to the
-    // neighbours (a plane annulus retyped from a torus holds the first rows
-    // of its convex edge round).
-    double needed = c.alpha;
-    if (!current.ok() && !(typed.fraction > c.alpha)) {
-      needed = kStaleTypeFraction;
-      if (plane.fraction >= typed.fraction - kFractionTie) typed = plane;
-    }
-    if (typed.type == r.type || typed.type == SurfaceType::kQuadric ||
-        !(typed.fraction >= needed) || !(ModelError(c, typed.fit) < 0.5 * error)) {
-      continue;
-    }
-    r.type = typed.type;
-    r.surface = typed.fit.surface;
-    retyped.push_back(id);
+    // The proposals: the plane and the curved type of S1's order.
+    const SurfaceType curved = DecideCurvedType(c, smooth, c.tolerance).type;
+    std::vector<SurfaceType> types = {SurfaceType::kPlane};
+    if (curved != SurfaceType::kQuadric) types.push_back(curved);
+    if (RetypeIfLower(c, &r, types)) retyped.push_back(id);
   }
   return retyped;
+}
+
+int RetypeToSimplerLimits(const SegmentContext& c, std::vector<RegionState>* regions) {
+  std::vector<uint8_t> retyped(regions->size(), 0);
+  // Each proposal reads and changes its own region only: concurrent.
+  tbb::parallel_for(std::size_t{0}, regions->size(), [&](std::size_t id) {
+    RegionState& r = (*regions)[id];
+    if (!r.alive || !IsCurved(r.type) || r.vertices.size() < kMinRetypeVertices) return;
+    std::vector<SurfaceType> types = {SurfaceType::kPlane};
+    if (r.type == SurfaceType::kCone) types.push_back(SurfaceType::kCylinder);
+    retyped[id] = RetypeIfLower(c, &r, types);
+  });
+  return static_cast<int>(std::count(retyped.begin(), retyped.end(), 1));
 }
 
 }  // namespace meshseg::segment_internal

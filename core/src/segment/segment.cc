@@ -77,6 +77,33 @@ absl::Status Merge(const segment_internal::SegmentContext& c, std::vector<int>* 
   return absl::OkStatus();
 }
 
+// PEARL's alternation (Isack & Boykov, IJCV 2012) over the moves of E
+// (energy.h): the retypes proposed (a plane its plane no longer fits, a
+// curved region its type misses; retype_regions.h), the merges and the
+// drops, each made iff it lowers E, then the expansion with re-estimation
+// over the boundaries they changed; repeated until no move is made (each
+// move lowers E, so it ends; kMaxImproveRounds guards against a cycle of
+// moves whose gains are rounding). The expansion can shrink a region to a
+// sliver or a strip whose vertices cost less on its neighbours' surfaces
+// (between a countersink and its plane, along a groove), which the next
+// round drops, and it gives a plane retyped on part of its arc the rest,
+// whose type the next round proposes again.
+constexpr int kMaxImproveRounds = 16;
+absl::Status Improve(const segment_internal::SegmentContext& c, std::vector<int>* labels,
+                     std::vector<segment_internal::RegionState>* regions,
+                     segment_internal::KeptPrices* prices) {
+  for (int round = 0; round < kMaxImproveRounds; ++round) {
+    std::size_t moves = segment_internal::RetypeBentPlanes(c, regions).size() +
+                        segment_internal::RetypeInaccurateCurved(c, regions).size();
+    MESHSEG_ASSIGN_OR_RETURN(const int merged, MergeAndDrop(c, labels, regions, prices));
+    segment_internal::RetypeQuadrics(c, regions);
+    moves += static_cast<std::size_t>(merged);
+    if (moves == 0) return absl::OkStatus();
+    MESHSEG_RETURN_IF_ERROR(segment_internal::ExpandRegions(c, labels, regions).status());
+  }
+  return absl::OkStatus();
+}
+
 // Each region a surface of its own (the scan path does not join them).
 void OwnSurfaces(Segmentation* seg) {
   for (Region& r : seg->regions) {
@@ -144,28 +171,8 @@ absl::StatusOr<Segmentation> Segment(const Mesh& mesh, const CurvatureField& cur
   // over rows of a neighbour's face (a sphere over a flat top and a ring of
   // the cone below) gives them back the same way.
   MESHSEG_RETURN_IF_ERROR(ExpandRegions(c, &labels, &regions).status());
-  // A plane retyped here held only part of its arc; the type is decided
-  // again once the expansion has given it the rest.
-  const std::vector<int> bent = RetypeBentPlanes(c, &regions);
-  if (!bent.empty()) {
-    MESHSEG_RETURN_IF_ERROR(ExpandRegions(c, &labels, &regions).status());
-    for (const int id : bent) RetypeCurved(c, &regions[id]);
-    MESHSEG_RETURN_IF_ERROR(ExpandRegions(c, &labels, &regions).status());
-  }
-  // The expansion can shrink a region it started with to a sliver whose
-  // vertices cost less on their neighbours' surfaces (between a countersink
-  // and its plane); it is dropped, and the pieces it kept apart may merge.
-  MESHSEG_ASSIGN_OR_RETURN(const int dropped, DropRegions(c, &labels, &regions, &kept_prices));
-  if (dropped > 0) {
-    MESHSEG_RETURN_IF_ERROR(Merge(c, &labels, &regions, &kept_prices));
-    MESHSEG_RETURN_IF_ERROR(ExpandRegions(c, &labels, &regions).status());
-  }
-  // A region whose type misses it by more than the noise gets the type that
-  // fits; it may then merge with the pieces of its surface around it.
-  if (!RetypeInaccurateCurved(c, &regions).empty()) {
-    MESHSEG_RETURN_IF_ERROR(Merge(c, &labels, &regions, &kept_prices));
-    MESHSEG_RETURN_IF_ERROR(ExpandRegions(c, &labels, &regions).status());
-  }
+  // The moves E prices, until none lowers it.
+  MESHSEG_RETURN_IF_ERROR(Improve(c, &labels, &regions, &kept_prices));
   // A flat face that a curved region absorbed (a small plane disc on top
   // of a conical frustum, in a piece of the cone; a top grown over by its
   // round) becomes a plane of its own where E falls; the rest of the region
@@ -179,16 +186,12 @@ absl::StatusOr<Segmentation> Segment(const Mesh& mesh, const CurvatureField& cur
   if (!RetypeCoaxialBands(c, labels, &regions).empty()) {
     MESHSEG_RETURN_IF_ERROR(ExpandRegions(c, &labels, &regions).status());
   }
-  // Pieces of one surface typed apart are joined, and fragments dropped, by
-  // the same energy.
-  MESHSEG_ASSIGN_OR_RETURN(const int moves, MergeAndDrop(c, &labels, &regions, &kept_prices));
-  if (moves > 0) MESHSEG_RETURN_IF_ERROR(ExpandRegions(c, &labels, &regions).status());
-  // The boundary placement can narrow a region to a strip that lies on its
-  // neighbours' surfaces (a plane strip along a groove): dropped.
-  MESHSEG_ASSIGN_OR_RETURN(const int late, DropRegions(c, &labels, &regions, &kept_prices));
-  if (late > 0) MESHSEG_RETURN_IF_ERROR(ExpandRegions(c, &labels, &regions).status());
-  FlattenNearlyFlatRegions(c, &regions);
-  StraightenNearlyCylindricalCones(c, &regions);
+  // Pieces of one surface typed apart are joined, fragments dropped, and
+  // the retypes proposed again, by the same energy.
+  MESHSEG_RETURN_IF_ERROR(Improve(c, &labels, &regions, &kept_prices));
+  // A curved type that bends or widens less than the noise over its region
+  // gives way to its simpler limit where that lowers E.
+  RetypeToSimplerLimits(c, &regions);
   ctx.Progress("segment", 0.9);
   MESHSEG_RETURN_IF_ERROR(ctx.CheckStop("segment"));
   Segmentation seg = FinalizeRegions(c, mesh.tri, std::move(labels), std::move(regions));

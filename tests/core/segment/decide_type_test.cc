@@ -1,6 +1,5 @@
-// NearlyFlat, the test behind FlattenNearlyFlatRegions: a curved fit that
-// bends less than the tolerances over its region is a plane; NearlyCylindrical
-// the same for a cone that does not widen. And
+// NearlyFlat, the test behind the type decision's and FinalizeRegions' plane
+// for a curved fit that bends less than the tolerances over its region. And
 // TakesOverNearTheNoise, the rule by which RetypeByInterior and
 // RetypeCoaxialBands weigh a type against a region's own.
 #include "segment/decide_type.h"
@@ -55,11 +54,7 @@ TEST(NearlyFlatTest, HugeCylinderAlongAFlatSideIsFlat) {
   // 5^2 / 1144 = 0.02; along it, not at all (30^2 / 1144 = 0.79 would say
   // curved).
   Sheet s;
-  BuildSheet(
-      [](double x, double z) {
-        return std::pair{Eigen::Vector3d(x, 0.0, z), Eigen::Vector3d::UnitY()};
-      },
-      -30.0, 30.0, 61, -5.0, 5.0, 11, /*distance=*/0.225, /*angle_deg=*/10.0, &s);
+  testing::BuildFlatSide(&s);
   const Cylinder cylinder{.axis_origin = Eigen::Vector3d(0.0, 572.0, 0.0),
                           .axis_direction = Eigen::Vector3d::UnitX(),
                           .radius = 572.0};
@@ -81,60 +76,6 @@ TEST(NearlyFlatTest, TorusLargeBothWaysIsFlat) {
                     .major_radius = 2000.0,
                     .minor_radius = 1000.0};
   EXPECT_TRUE(NearlyFlat(s.c, torus, /*rms=*/0.0, AllVertices(s), s.c.tolerance));
-}
-
-// A quarter of a cone around the z axis, 150 long, radius 6.35 at z = 0 and
-// half angle `degrees` (plate_holes.stl's edge rounds are 6.35 across and
-// about 150 long); th_dis 0.75, th_nm 5, as the remeshed plate_holes has.
-void BuildQuarterCone(double degrees, Sheet* s) {
-  const double half_angle = degrees * std::numbers::pi / 180.0;
-  BuildSheet(
-      [half_angle](double phi, double z) {
-        const Eigen::Vector3d radial(std::cos(phi), std::sin(phi), 0.0);
-        const double radius = 6.35 + z * std::tan(half_angle);
-        return std::pair{Eigen::Vector3d(radius * radial + z * Eigen::Vector3d::UnitZ()),
-                         Eigen::Vector3d(std::cos(half_angle) * radial -
-                                         std::sin(half_angle) * Eigen::Vector3d::UnitZ())};
-      },
-      0.0, std::numbers::pi / 2, 10, -75.0, 75.0, 151, /*distance=*/0.75, /*angle_deg=*/5.0, s);
-}
-
-Cone ConeOfHalfAngle(double degrees) {
-  const double half_angle = degrees * std::numbers::pi / 180.0;
-  return Cone{.apex = Eigen::Vector3d(0.0, 0.0, -6.35 / std::tan(half_angle)),
-              .axis_direction = Eigen::Vector3d::UnitZ(),
-              .half_angle = half_angle};
-}
-
-TEST(NearlyCylindricalTest, ConeWideningLessThanTheToleranceIsACylinder) {
-  // plate_holes' edge round came out as a cone of 0.06 degrees: 150 tan
-  // 0.06 = 0.16 wider at one end, under th_dis 0.75. A 1-degree draft
-  // widens by 2.6 over the same length.
-  Sheet s;
-  BuildQuarterCone(0.0, &s);
-  EXPECT_TRUE(NearlyCylindrical(s.c, ConeOfHalfAngle(0.06), 0.0, AllVertices(s), s.c.tolerance));
-  EXPECT_FALSE(NearlyCylindrical(s.c, ConeOfHalfAngle(1.0), 0.0, AllVertices(s), s.c.tolerance));
-}
-
-TEST(StraightenNearlyCylindricalConesTest, OnlyTheConeThatDoesNotWidenBecomesACylinder) {
-  for (const double degrees : {0.06, 1.0}) {
-    SCOPED_TRACE(::testing::Message() << "half angle " << degrees);
-    Sheet s;
-    BuildQuarterCone(degrees, &s);
-    std::vector<int> labels;
-    std::vector<RegionState> regions = testing::OneRegion(s, SurfaceType::kCone, &labels);
-    regions[0].surface = FitType(s.c, SurfaceType::kCone, regions[0].vertices).surface;
-    const bool straight = degrees < 0.5;
-    EXPECT_EQ(StraightenNearlyCylindricalCones(s.c, &regions), straight ? 1 : 0);
-    if (straight) {
-      EXPECT_EQ(regions[0].type, SurfaceType::kCylinder);
-      const auto* cylinder = std::get_if<Cylinder>(&regions[0].surface);
-      ASSERT_NE(cylinder, nullptr);
-      EXPECT_NEAR(cylinder->radius, 6.35, 0.1);
-    } else {
-      EXPECT_EQ(regions[0].type, SurfaceType::kCone);
-    }
-  }
 }
 
 TEST(TakesOverNearTheNoiseTest, ALimitNeedsOnlyToScoreWithinTheMarginAbove) {

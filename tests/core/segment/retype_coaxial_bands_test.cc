@@ -54,13 +54,20 @@ std::vector<RegionState> NoisyChamfer(unsigned seed, SurfaceType band, SurfaceTy
 }
 
 TEST(RetypeCoaxialBandsTest, TorusOnAChamferBesideItsShaftBecomesACone) {
-  // A torus has no valid fit to a straight profile: its own type fails the
-  // interior, and the cone on the shaft's axis takes it.
+  // A torus has no valid fit to a straight profile: the region keeps the
+  // torus it was typed on, and the cone on the shaft's axis lowers E.
   Sheet s;
   std::vector<int> labels;
   std::vector<RegionState> regions =
       NoisyChamfer(7, SurfaceType::kTorus, SurfaceType::kCylinder, &s, &labels);
   ASSERT_FALSE(FitType(s.c, SurfaceType::kTorus, regions[0].vertices).ok());
+  // The torus it was typed on: a tube of radius 1 touching the band's middle
+  // row (r 4.25, z 69.25), which the band's outer rows leave by over th_dis.
+  const double inward = 1.0 / std::sqrt(2.0);
+  regions[0].surface = Torus{.center = Eigen::Vector3d(0.0, 0.0, 69.25 - inward),
+                             .axis_direction = Eigen::Vector3d::UnitZ(),
+                             .major_radius = 4.25 - inward,
+                             .minor_radius = 1.0};
 
   EXPECT_EQ(RetypeCoaxialBands(s.c, labels, &regions), std::vector<int>{0});
   ASSERT_EQ(regions[0].type, SurfaceType::kCone);

@@ -70,6 +70,16 @@ inline void BuildSheet(const SheetPoint& f, double u0, double u1, int nu, double
   s->c.alpha = 0.9;
 }
 
+// A flat side 60 long (x) and 10 high (z) in the plane y = 0, vertices 1
+// apart; th_dis 0.225 (3 sigma at 0.15 h), th_nm 10 degrees.
+inline void BuildFlatSide(Sheet* s) {
+  BuildSheet(
+      [](double x, double z) {
+        return std::pair{Eigen::Vector3d(x, 0.0, z), Eigen::Vector3d::UnitY()};
+      },
+      -30.0, 30.0, 61, -5.0, 5.0, 11, /*distance=*/0.225, /*angle_deg=*/10.0, s);
+}
+
 // The plane z = 0 for u <= `crease` and, beyond it, a plane rising at 45
 // degrees; v runs along the crease.
 inline SheetPoint Fold45(double crease) {
