@@ -10,6 +10,7 @@
 
 #include "absl/strings/str_cat.h"
 #include "client/commands.h"
+#include "client/memory_reuse.h"
 #include "client/progress.h"
 #include "client/report.h"
 #include "client/volume_args.h"
@@ -177,6 +178,8 @@ absl::Status RunSegment(const Argv& argv) {
   }
   // Checked here as the server checks them, before any work.
   MESHSEG_RETURN_IF_ERROR(StepUnitFromWire(step.unit, options.length_unit).status());
+  // In process, the pipeline's freed arrays are reused by its next stages.
+  if (!args.Has("--server")) KeepFreedMemoryForReuse();
   ProgressPrinter progress;
   absl::StatusOr<v1::SegmentationResult> result =
       args.Has("--server") ? SegmentOnServer(args, input, options, step, progress)

@@ -1,10 +1,14 @@
 #include "mesh/ply_body.h"
 
+#include <atomic>
 #include <cmath>
 #include <cstring>
 #include <optional>
 #include <string>
 #include <utility>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
 
 #include "absl/strings/str_cat.h"
 #include "meshseg/status_macros.h"
@@ -152,6 +156,54 @@ struct PropertyRoles {
   int corners = -1;  // the face element's list of vertex indices
 };
 
+// A binary face element whose one property is its corner list, all of
+// triangles, read side by side; false (nothing written) if it is not that
+// or a value fails a check, for ReadBinaryElement to read as before. The
+// count at byte pos + i * (one triangle's bytes) being 3 for every i proves
+// face i starts there (by induction from face 0), so each face is decoded
+// alone into its own slots: the values and checks ReadBinaryElement's.
+bool ReadBinaryTriangles(const PlyElement& element, const PropertyRoles& roles,
+                         ValueReader& reader, PlyData* data) {
+  if (element.properties.size() != 1 || roles.corners != 0) return false;
+  const PlyProperty& p = element.properties[0];
+  const int count_size = PlyTypeSize(p.count_type);
+  const int size = PlyTypeSize(p.type);
+  const int64_t record = count_size + 3 * size;
+  const std::string_view bytes = reader.bytes();
+  const size_t begin = reader.position();
+  if (element.count <= 0 || (bytes.size() - begin) / record < static_cast<size_t>(element.count)) {
+    return false;
+  }
+  const bool big_endian = reader.big_endian();
+  const double nv = static_cast<double>(data->vertices.size());
+  const size_t first = data->corners.size();  // = data->face_start.back()
+  data->corners.resize(first + 3 * element.count);
+  data->face_start.resize(data->face_start.size() + element.count);
+  int64_t* starts = data->face_start.data() + data->face_start.size() - element.count;
+  std::atomic<bool> failed{false};
+  tbb::parallel_for(tbb::blocked_range<int64_t>(0, element.count, 1 << 14),
+                    [&](const tbb::blocked_range<int64_t>& range) {
+    for (int64_t i = range.begin(); i < range.end() && !failed; ++i) {
+      const char* at = bytes.data() + begin + i * record;
+      bool ok = DecodeAt(p.count_type, count_size, at, big_endian) == 3.0;
+      for (int c = 0; c < 3 && ok; ++c) {
+        const double v = DecodeAt(p.type, size, at + count_size + c * size, big_endian);
+        ok = v >= 0 && v < nv && v == std::floor(v);
+        if (ok) data->corners[first + 3 * i + c] = static_cast<int>(v);
+      }
+      if (!ok) failed = true;
+      starts[i] = static_cast<int64_t>(first + 3 * (i + 1));
+    }
+  });
+  if (failed) {
+    data->corners.resize(first);
+    data->face_start.resize(data->face_start.size() - element.count);
+    return false;
+  }
+  reader.set_position(begin + element.count * record);
+  return true;
+}
+
 // Reads the binary `element` in one pass, with the checks ReadElement makes
 // value by value. True if every value passed; false where one did not (or
 // the file ends), with the reader not moved, so that ReadElement reads the
@@ -164,6 +216,7 @@ bool ReadBinaryElement(const PlyElement& element, const PropertyRoles& roles,
   const bool big_endian = reader.big_endian();
   const int64_t nv = static_cast<int64_t>(data->vertices.size());
   const bool is_vertex = roles.xyz[0] >= 0;
+  if (!is_vertex && ReadBinaryTriangles(element, roles, reader, data)) return true;
   size_t pos = reader.position();
   for (int64_t i = 0; i < element.count; ++i) {
     for (int k = 0; k < static_cast<int>(element.properties.size()); ++k) {

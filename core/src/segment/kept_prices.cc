@@ -88,13 +88,10 @@ void KeptPrices::Reestimate(const SegmentContext& c, const std::vector<RegionSta
   }
 }
 
-KeptPrices::Versions KeptPrices::DropVersions(const SegmentContext& c,
-                                              const std::vector<int>& labels,
-                                              const std::vector<RegionState>& regions, int id) {
+KeptPrices::Versions KeptPrices::DropVersions(const std::vector<RegionState>& regions, int id,
+                                              std::span<const int> around) {
   Versions versions = {{id, Version(regions, id)}};
-  for (const int o : RegionsAround(c, labels, regions, id)) {
-    versions.emplace_back(o, Version(regions, o));
-  }
+  for (const int o : around) versions.emplace_back(o, Version(regions, o));
   return versions;
 }
 
@@ -102,12 +99,22 @@ void KeptPrices::PriceDrops(const SegmentContext& c, const std::vector<int>& lab
                             const std::vector<RegionState>& regions, ReestimatedRegions& region,
                             std::span<const int> ids) {
   if (drops_.size() < regions.size()) drops_.resize(regions.size());
+  // The regions around each drop read only the labels: gathered side by
+  // side (each list sorted, so the same), the versions then taken in order.
+  std::vector<std::vector<int>> around(ids.size());
+  tbb::parallel_for(std::size_t{0}, ids.size(), [&](std::size_t k) {
+    const std::optional<DropEntry>& entry = drops_[ids[k]];
+    if (!entry || entry->current != generation_) {
+      around[k] = RegionsAround(c, labels, regions, ids[k]);
+    }
+  });
   std::vector<int> todo;
   std::vector<Versions> todo_versions;
-  for (const int id : ids) {
+  for (std::size_t k = 0; k < ids.size(); ++k) {
+    const int id = ids[k];
     std::optional<DropEntry>& entry = drops_[id];
     if (entry && entry->current == generation_) continue;
-    Versions versions = DropVersions(c, labels, regions, id);
+    Versions versions = DropVersions(regions, id, around[k]);
     if (entry && entry->versions == versions) {
       entry->current = generation_;
       continue;

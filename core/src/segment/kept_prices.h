@@ -88,9 +88,10 @@ class KeptPrices {
   // and then given to `region`.
   void Reestimate(const SegmentContext& c, const std::vector<RegionState>& regions,
                   ReestimatedRegions& region, std::span<const int> ids);
-  // The versions a drop of `id` is priced on: the region, then those around.
-  Versions DropVersions(const SegmentContext& c, const std::vector<int>& labels,
-                        const std::vector<RegionState>& regions, int id);
+  // The versions a drop of `id` is priced on: the region, then `around`
+  // (RegionsAround of it).
+  Versions DropVersions(const std::vector<RegionState>& regions, int id,
+                        std::span<const int> around);
   long generation_ = 0;
   std::vector<Seen> seen_;
   std::vector<std::optional<DropEntry>> drops_;

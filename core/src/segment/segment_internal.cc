@@ -6,6 +6,7 @@
 #include <unordered_map>
 
 #include <Eigen/Eigenvalues>
+#include <tbb/parallel_invoke.h>
 
 namespace meshseg::segment_internal {
 namespace {
@@ -42,9 +43,11 @@ SegmentContext MakeSegmentContext(const TriMesh& mesh, const CurvatureField& cur
                                   const SegmentEstimates& estimates, double alpha,
                                   const RunContext& run) {
   SegmentContext c;
-  c.graph = BuildVertexGraph(mesh);
+  // Both read only the mesh, each in its own order: made side by side, the
+  // same values.
+  tbb::parallel_invoke([&] { c.graph = BuildVertexGraph(mesh); },
+                       [&] { c.vertex_area = VertexAreas(mesh); });
   c.curvature = &curvature;
-  c.vertex_area = VertexAreas(mesh);
   c.mean_edge_length = estimates.mean_edge_length;
   c.noise_sigma = estimates.noise_sigma;
   c.tolerance.distance = estimates.distance_tolerance;

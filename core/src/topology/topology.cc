@@ -10,6 +10,8 @@
 #include <string>
 #include <utility>
 
+#include <tbb/task_group.h>
+
 #include "absl/strings/str_cat.h"
 #include "meshseg/status_macros.h"
 #include "topology/chain_curves.h"
@@ -96,28 +98,20 @@ void BuildAdjacency(Topology* topo) {
   }
 }
 
-}  // namespace
-
-absl::StatusOr<Topology> ExtractTopology(const Mesh& mesh, std::span<const int> face_labels,
-                                         std::span<const Region> regions,
-                                         const TopologyParams& params, const RunContext& ctx) {
-  MESHSEG_RETURN_IF_ERROR(ValidateParams(params));
-  MESHSEG_RETURN_IF_ERROR(ValidateInput(mesh, face_labels, regions));
-  const TriMesh& tri = mesh.tri;
-  Topology topo;
-  topo.mean_edge_length = MeanEdgeLength(tri);
-  const double l_avg = topo.mean_edge_length;
+// Length, geometry and character of each of topo->curves (chained, with
+// their vertices), reporting progress over the first 0.8 of the stage.
+absl::Status DescribeCurves(const TriMesh& tri, std::span<const int> face_labels,
+                            std::span<const Region> regions, const TopologyParams& params,
+                            const RunContext& ctx, Topology* topo) {
+  const double l_avg = topo->mean_edge_length;
   const IntersectionTolerances tol{params.angle_tolerance_deg * std::numbers::pi / 180.0,
                                    params.curve_tolerance * l_avg};
-
-  topology_internal::CurveChains chains = topology_internal::ChainCurves(tri, face_labels);
-  topo.curves = std::move(chains.curves);
-  for (size_t i = 0; i < topo.curves.size(); ++i) {
+  for (size_t i = 0; i < topo->curves.size(); ++i) {
     if (i % 64 == 0) {
       MESHSEG_RETURN_IF_ERROR(ctx.CheckStop(kStage));
-      ctx.Progress(kStage, 0.8 * static_cast<double>(i) / static_cast<double>(topo.curves.size()));
+      ctx.Progress(kStage, 0.8 * static_cast<double>(i) / static_cast<double>(topo->curves.size()));
     }
-    BoundaryCurve& c = topo.curves[i];
+    BoundaryCurve& c = topo->curves[i];
     const std::vector<Eigen::Vector3d> points = PointsOf(tri, c.vertices);
     for (size_t j = 0; j + 1 < points.size(); ++j) c.length += (points[j + 1] - points[j]).norm();
     const Surface* left = c.left_region >= 0 ? &regions[c.left_region].surface : nullptr;
@@ -131,10 +125,38 @@ absl::StatusOr<Topology> ExtractTopology(const Mesh& mesh, std::span<const int> 
     c.junction_artifact = !c.closed && c.start_corner >= 0 && c.end_corner >= 0 &&
                           c.length < params.junction_length * l_avg;
   }
-  MESHSEG_RETURN_IF_ERROR(ctx.CheckStop(kStage));
+  return ctx.CheckStop(kStage);
+}
+
+}  // namespace
+
+absl::StatusOr<Topology> ExtractTopology(const Mesh& mesh, std::span<const int> face_labels,
+                                         std::span<const Region> regions,
+                                         const TopologyParams& params, const RunContext& ctx) {
+  MESHSEG_RETURN_IF_ERROR(ValidateParams(params));
+  MESHSEG_RETURN_IF_ERROR(ValidateInput(mesh, face_labels, regions));
+  const TriMesh& tri = mesh.tri;
+  const int region_count = static_cast<int>(regions.size());
+  // The patch flood fill (serial, the longest step) and the regions' normal
+  // signs read only the mesh and the labels: they are made beside the
+  // curves, from the start. Each is a function of its inputs alone, so the
+  // values are the same whichever thread makes them.
+  topology_internal::FacePatches patches;
+  std::vector<int> signs;
+  tbb::task_group beside;
+  beside.run([&] { patches = topology_internal::LabelPatches(tri, face_labels, region_count); });
+  beside.run([&] { signs = topology_internal::RegionNormalSigns(tri, face_labels, regions); });
+  Topology topo;
+  topo.mean_edge_length = MeanEdgeLength(tri);
+  topology_internal::CurveChains chains = topology_internal::ChainCurves(tri, face_labels);
+  topo.curves = std::move(chains.curves);
+  const absl::Status described = DescribeCurves(tri, face_labels, regions, params, ctx, &topo);
+  beside.wait();  // before any return: the tasks write to this frame
+  MESHSEG_RETURN_IF_ERROR(described);
+  const double l_avg = topo.mean_edge_length;
 
   topology_internal::TracedLoops traced = topology_internal::TraceLoops(
-      tri, face_labels, chains.halfedge_curve, static_cast<int>(regions.size()));
+      tri, face_labels, chains.halfedge_curve, std::move(patches));
   topology_internal::ClassifyLoops(tri, face_labels, regions, &traced);
   topo.loops = std::move(traced.loops);
 
@@ -142,7 +164,6 @@ absl::StatusOr<Topology> ExtractTopology(const Mesh& mesh, std::span<const int> 
                                  params.corner_snap_distance * l_avg, &topo);
   BuildAdjacency(&topo);
 
-  const std::vector<int> signs = topology_internal::RegionNormalSigns(tri, face_labels, regions);
   topo.regions.resize(regions.size());
   for (size_t k = 0; k < regions.size(); ++k) {
     topo.regions[k].region = static_cast<int>(k);

@@ -1,10 +1,10 @@
 #include "topology/trace_loops.h"
 
 #include <cassert>
+#include <utility>
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
-#include <tbb/parallel_invoke.h>
 
 #include "topology/chain_curves.h"
 
@@ -13,29 +13,6 @@ namespace {
 
 using OpenMesh::FaceHandle;
 using OpenMesh::HalfedgeHandle;
-
-// Patch index per face by flood fill across non-boundary edges.
-void LabelPatches(const TriMesh& mesh, std::span<const int> labels, TracedLoops* out) {
-  out->face_patch.assign(mesh.n_faces(), -1);
-  std::vector<FaceHandle> stack;
-  for (FaceHandle seed : mesh.faces()) {
-    const int label = labels[seed.idx()];
-    if (label < 0 || out->face_patch[seed.idx()] >= 0) continue;
-    const int patch = out->patch_count[label]++;
-    out->face_patch[seed.idx()] = patch;
-    stack.push_back(seed);
-    while (!stack.empty()) {
-      const FaceHandle f = stack.back();
-      stack.pop_back();
-      for (HalfedgeHandle h : mesh.fh_range(f)) {
-        const FaceHandle g = mesh.opposite_face_handle(h);
-        if (!g.is_valid() || labels[g.idx()] != label || out->face_patch[g.idx()] >= 0) continue;
-        out->face_patch[g.idx()] = patch;
-        stack.push_back(g);
-      }
-    }
-  }
-}
 
 // The next boundary halfedge of the patch on the left of `h`: turn around
 // h's end vertex inside the patch until the boundary.
@@ -57,28 +34,51 @@ CurveUse UseOf(const TriMesh& mesh, std::span<const int> halfedge_curve, Halfedg
 
 }  // namespace
 
-TracedLoops TraceLoops(const TriMesh& mesh, std::span<const int> face_labels,
-                       std::span<const int> halfedge_curve, int region_count) {
-  TracedLoops out;
+FacePatches LabelPatches(const TriMesh& mesh, std::span<const int> labels, int region_count) {
+  FacePatches out;
   out.patch_count.assign(region_count, 0);
+  out.face_patch.assign(mesh.n_faces(), -1);
+  // Flood fill across edges between faces of one label.
+  std::vector<FaceHandle> stack;
+  for (FaceHandle seed : mesh.faces()) {
+    const int label = labels[seed.idx()];
+    if (label < 0 || out.face_patch[seed.idx()] >= 0) continue;
+    const int patch = out.patch_count[label]++;
+    out.face_patch[seed.idx()] = patch;
+    stack.push_back(seed);
+    while (!stack.empty()) {
+      const FaceHandle f = stack.back();
+      stack.pop_back();
+      for (HalfedgeHandle h : mesh.fh_range(f)) {
+        const FaceHandle g = mesh.opposite_face_handle(h);
+        if (!g.is_valid() || labels[g.idx()] != label || out.face_patch[g.idx()] >= 0) continue;
+        out.face_patch[g.idx()] = patch;
+        stack.push_back(g);
+      }
+    }
+  }
+  return out;
+}
+
+TracedLoops TraceLoops(const TriMesh& mesh, std::span<const int> face_labels,
+                       std::span<const int> halfedge_curve, FacePatches patches) {
+  TracedLoops out;
+  out.face_patch = std::move(patches.face_patch);
+  out.patch_count = std::move(patches.patch_count);
   // Which halfedges can start a loop (a labelled face on the left, another
   // label across) is a test of each halfedge alone: flag them in parallel,
-  // beside the (serial) patch flood fill, and walk only the flagged ones in
-  // index order, so the loops come out exactly as from a scan of all.
+  // and walk only the flagged ones in index order, so the loops come out
+  // exactly as from a scan of all.
   std::vector<char> boundary(mesh.n_halfedges(), 0);
-  tbb::parallel_invoke(
-      [&] { LabelPatches(mesh, face_labels, &out); },
-      [&] {
-        tbb::parallel_for(tbb::blocked_range<int>(0, static_cast<int>(mesh.n_halfedges()), 1 << 14),
-                          [&](const tbb::blocked_range<int>& range) {
-                            for (int i = range.begin(); i < range.end(); ++i) {
-                              const HalfedgeHandle h(i);
-                              const FaceHandle f = mesh.face_handle(h);
-                              boundary[i] = f.is_valid() && face_labels[f.idx()] >= 0 &&
-                                            IsBoundaryHalfedge(mesh, face_labels, h);
-                            }
-                          });
-      });
+  tbb::parallel_for(tbb::blocked_range<int>(0, static_cast<int>(mesh.n_halfedges()), 1 << 14),
+                    [&](const tbb::blocked_range<int>& range) {
+                      for (int i = range.begin(); i < range.end(); ++i) {
+                        const HalfedgeHandle h(i);
+                        const FaceHandle f = mesh.face_handle(h);
+                        boundary[i] = f.is_valid() && face_labels[f.idx()] >= 0 &&
+                                      IsBoundaryHalfedge(mesh, face_labels, h);
+                      }
+                    });
   std::vector<char> visited(mesh.n_halfedges(), 0);
   for (int i = 0; i < static_cast<int>(mesh.n_halfedges()); ++i) {
     if (!boundary[i] || visited[i]) continue;

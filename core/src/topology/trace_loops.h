@@ -20,10 +20,20 @@ struct TracedLoops {
   std::vector<int> patch_count;  // per region
 };
 
-// Returns the loops of every labelled patch. `halfedge_curve` is
-// CurveChains::halfedge_curve; labels lie in [-1, region_count).
+// The patches of `face_labels` (labels in [-1, region_count)): each labelled
+// face's patch index within its region, numbered in order of the patch's
+// lowest face, and the patch count per region. It reads only the mesh and
+// the labels, so it can be made beside the curves (ExtractTopology does).
+struct FacePatches {
+  std::vector<int> face_patch;   // per face: patch index within its region, -1 unlabelled
+  std::vector<int> patch_count;  // per region
+};
+FacePatches LabelPatches(const TriMesh& mesh, std::span<const int> face_labels, int region_count);
+
+// Returns the loops of every labelled patch of `patches` (LabelPatches of
+// the same labels). `halfedge_curve` is CurveChains::halfedge_curve.
 TracedLoops TraceLoops(const TriMesh& mesh, std::span<const int> face_labels,
-                       std::span<const int> halfedge_curve, int region_count);
+                       std::span<const int> halfedge_curve, FacePatches patches);
 
 }  // namespace meshseg::topology_internal
 

@@ -136,6 +136,71 @@ TEST(ReadPlyData, NamesTheByteOffsetOfABadBinaryValue) {
                                                 ": vertex 2: non-finite coordinate inf")));
 }
 
+// A mesh of `faces` faces over 7 vertices, triangles except a quad at face
+// `quad_at` (-1: none), with index `bad` at the last corner of face
+// `bad_at`; binary (either byte order) or ascii, the same values.
+std::string Faces(int faces, int quad_at, int bad_at, int32_t bad, const char* format) {
+  const bool ascii = std::string(format) == "ascii";
+  const bool big = std::string(format) == "binary_big_endian";
+  std::string out = absl::StrCat("ply\nformat ", format, " 1.0\nelement vertex 7\n",
+                                 "property float x\nproperty float y\nproperty float z\n",
+                                 "element face ", faces,
+                                 "\nproperty list uchar int vertex_indices\nend_header\n");
+  for (int v = 0; v < 7; ++v) {
+    for (int c = 0; c < 3; ++c) {
+      if (ascii) absl::StrAppend(&out, v + c, c == 2 ? "\n" : " ");
+      if (!ascii) testing_files::AppendRaw<float>(out, static_cast<float>(v + c), big);
+    }
+  }
+  for (int f = 0; f < faces; ++f) {
+    std::vector<int32_t> corners = {f % 7, (f + 1) % 7, (f + 3) % 7};
+    if (f == quad_at) corners.push_back((f + 5) % 7);
+    if (f == bad_at) corners.back() = bad;
+    if (ascii) absl::StrAppend(&out, corners.size());
+    if (!ascii) testing_files::AppendRaw<uint8_t>(out, static_cast<uint8_t>(corners.size()));
+    for (const int32_t c : corners) {
+      if (ascii) absl::StrAppend(&out, " ", c);
+      if (!ascii) testing_files::AppendRaw<int32_t>(out, c, big);
+    }
+    if (ascii) out += "\n";
+  }
+  return out;
+}
+
+// Binary triangles are read side by side (ReadBinaryTriangles); a face that
+// is not a triangle or a bad index sends the element back to the reading
+// one value after another. Either way the data, or the error, is the ascii
+// reading's (values) and the one-by-one binary reading's (byte offset).
+TEST(ReadPlyData, BinaryTrianglesReadSideBySideAsOneByOne) {
+  constexpr int kFaces = 50000;  // several blocks of the parallel read
+  for (const int quad_at : {-1, 0, 37000, kFaces - 1}) {
+    const absl::StatusOr<PlyData> ascii =
+        ReadPlyData(Faces(kFaces, quad_at, -1, 0, "ascii"), kSrc, 1 << 20);
+    ASSERT_TRUE(ascii.ok()) << ascii.status();
+    ASSERT_EQ(ascii->corners.size(), 3u * kFaces + (quad_at >= 0));
+    for (const char* format : {"binary_little_endian", "binary_big_endian"}) {
+      const absl::StatusOr<PlyData> binary =
+          ReadPlyData(Faces(kFaces, quad_at, -1, 0, format), kSrc, 1 << 20);
+      ASSERT_TRUE(binary.ok()) << binary.status();
+      EXPECT_TRUE(binary->corners == ascii->corners) << format << " quad at " << quad_at;
+      EXPECT_TRUE(binary->face_start == ascii->face_start) << format << " quad at " << quad_at;
+      EXPECT_TRUE(binary->vertices == ascii->vertices) << format;
+    }
+  }
+  // 7 vertices of 12 bytes, then 13 bytes a face: a bad last corner of face
+  // 41000 is named at the offset after it, as one by one.
+  const std::size_t body =
+      Faces(kFaces, -1, -1, 0, "binary_little_endian").size() - 7 * 12 - 13 * kFaces;
+  for (const int32_t bad : {7, -1}) {
+    const absl::StatusOr<PlyData> data =
+        ReadPlyData(Faces(kFaces, -1, 41000, bad, "binary_little_endian"), kSrc, 1 << 20);
+    EXPECT_THAT(testing_files::Message(data.status()),
+                ::testing::HasSubstr(absl::StrCat("byte offset ", body + 7 * 12 + 13 * 41001,
+                                                  ": face 41000: vertex index ", bad,
+                                                  " out of range [0, 7)")));
+  }
+}
+
 // Found by fuzz_ply_binary (fuzz/regressions/ply_binary/): a second vertex
 // element with a partial set of normals wrote past the first one's normals.
 TEST(ReadPlyData, RejectsASecondVertexOrFaceElement) {
