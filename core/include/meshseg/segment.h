@@ -14,19 +14,20 @@
 // for faces no analytic type explains, and the regions on one surface
 // sharing it (core/src/segment/exact_facets.h). Whether a mesh is exact is
 // measured (EstimateExactness), never assumed.
-// Our additions, for noisy scans and CAD exports: the noise and tolerances
-// are estimated from the data; on a noisy mesh, flat seeds grow as planes
-// before seed 000's loop; boundary vertices move to the neighbour that
-// fits them best; after merging, regions the refinement shrank are released,
-// regions their type misses beyond the noise are typed again, bands along
-// creases the sharp test missed are dissolved into their neighbours, rows
-// of neighbouring faces a curved region bent over are given back, small
-// faces a curved region absorbed across a crease are split off as planes,
-// curved types are checked on each region's interior (without the rows
-// along its creases) and neighbours that one surface explains better than
-// two are merged, the last four by an information criterion; each
-// surface is reported as fitted to its region's inliers
-// (core/src/segment/segment.cc holds the order).
+// Our additions, for noisy scans: the noise and tolerances are estimated
+// from the data; on a noisy mesh, flat seeds grow as planes before seed
+// 000's loop. Seeds 000/002's growing is the proposal mechanism; labels,
+// types and merges are then decided by one energy (PEARL multi-model
+// fitting with label costs, core/src/segment/energy.h): squared distances
+// to each region's surface in units of the noise, a boundary cost per
+// mesh edge (cheap along creases), and a BIC label cost per surface, with
+// the evidence discounted where residuals are correlated (binary voxels,
+// chords). Boundaries are placed by alpha-expansion with the surfaces
+// re-estimated between sweeps; merges, drops, retypes and planes split off
+// a curved region are each proposed and kept iff the energy falls, except
+// the retype of a narrow band by its interior, still a rule
+// (core/src/segment/segment.cc holds the order). Each surface is reported
+// as fitted to its region's inliers.
 //
 // In: a Mesh and its CurvatureField. Out: Segmentation with a label per mesh
 // face and vertex and one Region per label.
