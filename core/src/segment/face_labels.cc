@@ -11,6 +11,8 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include "mesh/union_find.h"
+
 namespace meshseg::segment_internal {
 namespace {
 
@@ -40,37 +42,11 @@ struct Pieces {
   std::vector<std::size_t> size;  // faces per piece
 };
 
-// Root of f's tree. Trees only hang a root under a smaller root, so a
-// tree's root is its smallest face; the walk halves the path it takes (each
-// face it passes then points at an ancestor, still in the same tree).
-int Root(std::vector<std::atomic<int>>& parent, int f) {
-  while (true) {
-    const int p = parent[f].load(std::memory_order_relaxed);
-    if (p == f) return f;
-    const int up = parent[p].load(std::memory_order_relaxed);
-    if (up != p) parent[f].store(up, std::memory_order_relaxed);
-    f = up;
-  }
-}
-
-// Joins the trees of faces a and b: the larger root goes under the smaller
-// (retried if another join moved it first).
-void Join(std::vector<std::atomic<int>>& parent, int a, int b) {
-  while (true) {
-    a = Root(parent, a);
-    b = Root(parent, b);
-    if (a == b) return;
-    if (a > b) std::swap(a, b);
-    int expected = b;
-    if (parent[b].compare_exchange_strong(expected, a)) return;
-  }
-}
-
 // The pieces are the components of the graph of equally labelled
 // neighbours, found with a concurrent union-find (each edge joined once, side
-// by side). Every component's root is its smallest face, whatever order the
-// joins ran in, so numbering the roots in face order gives each piece the id
-// a search seeded in face order gives it.
+// by side; mesh/union_find.h). Every component's root is its smallest face,
+// whatever order the joins ran in, so numbering the roots in face order gives
+// each piece the id a search seeded in face order gives it.
 Pieces FindPieces(const FaceNeighbors& adjacent, const std::vector<int>& labels) {
   const int nf = static_cast<int>(labels.size());
   std::vector<std::atomic<int>> parent(nf);
@@ -82,7 +58,7 @@ Pieces FindPieces(const FaceNeighbors& adjacent, const std::vector<int>& labels)
       if (labels[f] < 0) continue;
       for (const int g : adjacent[f]) {
         if (g < 0) break;
-        if (g > f && labels[g] == labels[f]) Join(parent, f, g);
+        if (g > f && labels[g] == labels[f]) mesh_internal::JoinToLowest(parent, f, g);
       }
     }
   });
@@ -90,7 +66,7 @@ Pieces FindPieces(const FaceNeighbors& adjacent, const std::vector<int>& labels)
   p.of_face.assign(nf, -1);
   tbb::parallel_for(tbb::blocked_range<int>(0, nf, 8192), [&](const tbb::blocked_range<int>& r) {
     for (int f = r.begin(); f < r.end(); ++f) {
-      if (labels[f] >= 0) p.of_face[f] = Root(parent, f);
+      if (labels[f] >= 0) p.of_face[f] = mesh_internal::FindLowestRoot(parent, f);
     }
   });
   // Roots numbered in face order (the number kept in the root's parent

@@ -1,11 +1,13 @@
 #include "topology/trace_loops.h"
 
+#include <atomic>
 #include <cassert>
 #include <utility>
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include "mesh/union_find.h"
 #include "topology/chain_curves.h"
 
 namespace meshseg::topology_internal {
@@ -35,28 +37,48 @@ CurveUse UseOf(const TriMesh& mesh, std::span<const int> halfedge_curve, Halfedg
 }  // namespace
 
 FacePatches LabelPatches(const TriMesh& mesh, std::span<const int> labels, int region_count) {
-  FacePatches out;
-  out.patch_count.assign(region_count, 0);
-  out.face_patch.assign(mesh.n_faces(), -1);
-  // Flood fill across edges between faces of one label.
-  std::vector<FaceHandle> stack;
-  for (FaceHandle seed : mesh.faces()) {
-    const int label = labels[seed.idx()];
-    if (label < 0 || out.face_patch[seed.idx()] >= 0) continue;
-    const int patch = out.patch_count[label]++;
-    out.face_patch[seed.idx()] = patch;
-    stack.push_back(seed);
-    while (!stack.empty()) {
-      const FaceHandle f = stack.back();
-      stack.pop_back();
-      for (HalfedgeHandle h : mesh.fh_range(f)) {
+  // The patches are the components of the graph of equally labelled faces
+  // across an edge, found with a concurrent union-find (each edge joined
+  // once, from its lower face, side by side; mesh/union_find.h). Every
+  // component's root is its lowest face whatever order the joins ran in, so
+  // numbering the roots in face order within their label gives each patch
+  // the index a flood fill seeded in face order gives it.
+  const int nf = static_cast<int>(mesh.n_faces());
+  std::vector<std::atomic<int>> parent(nf);
+  tbb::parallel_for(tbb::blocked_range<int>(0, nf, 8192), [&](const tbb::blocked_range<int>& r) {
+    for (int f = r.begin(); f < r.end(); ++f) parent[f].store(f, std::memory_order_relaxed);
+  });
+  tbb::parallel_for(tbb::blocked_range<int>(0, nf, 4096), [&](const tbb::blocked_range<int>& r) {
+    for (int f = r.begin(); f < r.end(); ++f) {
+      if (labels[f] < 0) continue;
+      for (HalfedgeHandle h : mesh.fh_range(FaceHandle(f))) {
         const FaceHandle g = mesh.opposite_face_handle(h);
-        if (!g.is_valid() || labels[g.idx()] != label || out.face_patch[g.idx()] >= 0) continue;
-        out.face_patch[g.idx()] = patch;
-        stack.push_back(g);
+        if (g.is_valid() && g.idx() > f && labels[g.idx()] == labels[f]) {
+          mesh_internal::JoinToLowest(parent, f, g.idx());
+        }
       }
     }
+  });
+  FacePatches out;
+  out.patch_count.assign(region_count, 0);
+  out.face_patch.assign(nf, -1);
+  tbb::parallel_for(tbb::blocked_range<int>(0, nf, 8192), [&](const tbb::blocked_range<int>& r) {
+    for (int f = r.begin(); f < r.end(); ++f) {
+      if (labels[f] >= 0) out.face_patch[f] = mesh_internal::FindLowestRoot(parent, f);
+    }
+  });
+  // Roots numbered in face order within their label (the number kept in the
+  // root's parent entry, no longer needed); then each face takes its root's.
+  for (int f = 0; f < nf; ++f) {
+    if (out.face_patch[f] == f) parent[f].store(out.patch_count[labels[f]]++, std::memory_order_relaxed);
   }
+  tbb::parallel_for(tbb::blocked_range<int>(0, nf, 8192), [&](const tbb::blocked_range<int>& r) {
+    for (int f = r.begin(); f < r.end(); ++f) {
+      if (out.face_patch[f] >= 0) {
+        out.face_patch[f] = parent[out.face_patch[f]].load(std::memory_order_relaxed);
+      }
+    }
+  });
   return out;
 }
 

@@ -1,6 +1,7 @@
 #include "topology/trace_loops.h"
 
 #include <algorithm>
+#include <cstdint>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -35,6 +36,69 @@ TEST(LabelPatches, NumbersEachLabelsFaceComponentsByTheirLowestFace) {
     const int side = box.face_labels[f];
     const int expected = side == 0 ? (minus_x_first ? 0 : 1) : side == 1 ? (minus_x_first ? 1 : 0) : 0;
     ASSERT_EQ(patches.face_patch[f], expected) << "face " << f << " of side " << side;
+  }
+}
+
+// The reference numbering: a flood fill across edges between equally
+// labelled faces, seeded in face order, each label's patches counted from 0.
+FacePatches FloodFilledPatches(const TriMesh& mesh, const std::vector<int>& labels,
+                               int region_count) {
+  FacePatches out;
+  out.patch_count.assign(region_count, 0);
+  out.face_patch.assign(mesh.n_faces(), -1);
+  std::vector<int> stack;
+  for (int seed = 0; seed < static_cast<int>(mesh.n_faces()); ++seed) {
+    if (labels[seed] < 0 || out.face_patch[seed] >= 0) continue;
+    const int patch = out.patch_count[labels[seed]]++;
+    out.face_patch[seed] = patch;
+    stack.push_back(seed);
+    while (!stack.empty()) {
+      const int f = stack.back();
+      stack.pop_back();
+      for (const auto h : mesh.fh_range(TriMesh::FaceHandle(f))) {
+        const int g = mesh.opposite_face_handle(h).idx();
+        if (g < 0 || labels[g] != labels[seed] || out.face_patch[g] >= 0) continue;
+        out.face_patch[g] = patch;
+        stack.push_back(g);
+      }
+    }
+  }
+  return out;
+}
+
+// Labels drawn per face from a fixed hash (k labels, about one face in ten
+// unlabelled) cut a fine box into hundreds of patches for k >= 2, many of
+// them across the face blocks the union-find joins side by side; with one
+// label the labelled faces (90%, above the percolation threshold of the
+// face graph) mostly form one patch that spans every block. Every face's
+// patch index and every count equal the serial flood fill's.
+TEST(LabelPatches, EqualsTheFloodFillOnManyPatches) {
+  const testing::LabelledMesh box = testing::GriddedBox({2.0, 3.0, 4.0}, 60);  // 43200 faces
+  const int nf = static_cast<int>(box.mesh.tri.n_faces());
+  for (const int k : {1, 2, 3, 5}) {
+    std::vector<int> labels(box.mesh.tri.n_faces());
+    uint64_t state = 88172645463325252ull;
+    for (int& l : labels) {
+      state ^= state << 13;
+      state ^= state >> 7;
+      state ^= state << 17;
+      l = state % 10 == 0 ? -1 : static_cast<int>((state >> 8) % k);
+    }
+    const FacePatches expected = FloodFilledPatches(box.mesh.tri, labels, k);
+    if (k == 1) {
+      std::vector<int> size(expected.patch_count[0], 0);
+      for (const int p : expected.face_patch) {
+        if (p >= 0) ++size[p];
+      }
+      EXPECT_GT(*std::max_element(size.begin(), size.end()), nf / 2);
+    } else {
+      int total = 0;
+      for (const int c : expected.patch_count) total += c;
+      EXPECT_GT(total, 100) << k << " labels";
+    }
+    const FacePatches patches = LabelPatches(box.mesh.tri, labels, k);
+    EXPECT_EQ(patches.patch_count, expected.patch_count) << k << " labels";
+    EXPECT_EQ(patches.face_patch, expected.face_patch) << k << " labels";
   }
 }
 
