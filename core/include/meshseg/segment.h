@@ -174,6 +174,14 @@ absl::StatusOr<Segmentation> Segment(const Mesh& mesh, const CurvatureField& cur
                                      const SegmentParams& params = {},
                                      const RunContext& ctx = {});
 
+// The same, with `mean_edge_length` = MeanEdgeLength(mesh.tri) already
+// measured (MeshStats::mean_edge_length of this mesh), so it is not summed
+// again: the same segmentation bit for bit when the value is that one.
+// Errors: also INVALID_ARGUMENT for a mean_edge_length not finite and > 0.
+absl::StatusOr<Segmentation> Segment(const Mesh& mesh, const CurvatureField& curvature,
+                                     double mean_edge_length, const SegmentParams& params = {},
+                                     const RunContext& ctx = {});
+
 // Returns how exact `mesh` is (Exactness), with `tolerance` (model units)
 // if given, else the tolerance from the rounding of its coordinates.
 Exactness EstimateExactness(const Mesh& mesh, std::optional<double> tolerance = std::nullopt);

@@ -181,6 +181,15 @@ absl::StatusOr<Topology> ExtractTopology(const Mesh& mesh, std::span<const int> 
                                          const TopologyParams& params = {},
                                          const RunContext& ctx = {});
 
+// The same, with `mean_edge_length` = MeanEdgeLength(mesh.tri) already
+// measured (MeshStats::mean_edge_length of this mesh), so it is not summed
+// again: the same topology bit for bit when the value is that one.
+// Errors: also INVALID_ARGUMENT for a mean_edge_length not finite and > 0.
+absl::StatusOr<Topology> ExtractTopology(const Mesh& mesh, std::span<const int> face_labels,
+                                         std::span<const Region> regions, double mean_edge_length,
+                                         const TopologyParams& params = {},
+                                         const RunContext& ctx = {});
+
 }  // namespace meshseg
 
 #endif  // MESHSEG_TOPOLOGY_H_

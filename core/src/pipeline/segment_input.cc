@@ -41,21 +41,24 @@ void OwnSurfaces(PipelineResult* result) {
   }
 }
 
-// Boundaries and features of `labels` (one per face of `mesh`) into `result`.
+// Boundaries and features of `labels` (one per face of `mesh`) into `result`;
+// result->mesh holds MeshStatistics(mesh), whose mean edge length is used.
 absl::Status DescribeRegions(const Mesh& mesh, std::span<const int> labels,
                              const std::vector<Region>& regions, const PipelineParams& params,
                              const RunContext& ctx, PipelineResult* result) {
   ctx.Progress("topology", 0.0);
   MESHSEG_ASSIGN_OR_RETURN(result->topology,
-                           ExtractTopology(mesh, labels, regions, params.topology, ctx));
+                           ExtractTopology(mesh, labels, regions, result->mesh.mean_edge_length,
+                                           params.topology, ctx));
   MESHSEG_ASSIGN_OR_RETURN(result->features,
                            RecognizeFeatures(result->topology, regions, params.features));
   ctx.Progress("topology", 1.0);
   return absl::OkStatus();
 }
 
-// Boundaries and features of `segmentation` (of `mesh`) into `result`, with
-// its regions, surfaces and estimates; returns its labels per mesh face.
+// Boundaries and features of `segmentation` (of `mesh`; result->mesh holds
+// MeshStatistics(mesh)) into `result`, with its regions, surfaces and
+// estimates; returns its labels per mesh face.
 absl::StatusOr<std::vector<int>> TakeSegmentation(const Mesh& mesh, Segmentation segmentation,
                                                   const PipelineParams& params,
                                                   const RunContext& ctx, PipelineResult* result) {
@@ -77,7 +80,9 @@ absl::StatusOr<std::vector<int>> SegmentMesh(const Mesh& mesh, const PipelinePar
                            EstimateCurvature(mesh, params.curvature, ctx));
   SegmentParams segment = params.segment;
   segment.exact = ExactMode::kNever;  // the caller has decided
-  MESHSEG_ASSIGN_OR_RETURN(Segmentation segmentation, Segment(mesh, curvature, segment, ctx));
+  MESHSEG_ASSIGN_OR_RETURN(
+      Segmentation segmentation,
+      Segment(mesh, curvature, result->mesh.mean_edge_length, segment, ctx));
   return TakeSegmentation(mesh, std::move(segmentation), params, ctx, result);
 }
 
@@ -123,8 +128,8 @@ absl::StatusOr<std::vector<int>> SegmentRemeshed(const Mesh& surface, const Mesh
     RefitPlanesBySeparation(mesh.tri, labels, *binary, &result->regions);
   }
   OwnSurfaces(result);
-  MESHSEG_RETURN_IF_ERROR(DescribeRegions(mesh, labels, result->regions, params, ctx, result));
   result->mesh = MeshStatistics(mesh);
+  MESHSEG_RETURN_IF_ERROR(DescribeRegions(mesh, labels, result->regions, params, ctx, result));
   result->estimates = segmentation.estimates;
   result->estimates.path = SegmentationPath::kRemeshed;
   result->remesh_edge_length = edge_length;
@@ -183,8 +188,8 @@ absl::StatusOr<std::vector<int>> SegmentBinary(const Mesh& mesh, const BinaryVer
   // Planes: the separator of the binary samples, sharper than any fit to
   // the vertices between them (separating_planes.h).
   RefitPlanesBySeparation(mesh.tri, labels, binary, &result->regions);
-  MESHSEG_RETURN_IF_ERROR(DescribeRegions(mesh, labels, result->regions, params, ctx, result));
   result->mesh = MeshStatistics(mesh);
+  MESHSEG_RETURN_IF_ERROR(DescribeRegions(mesh, labels, result->regions, params, ctx, result));
   return labels;
 }
 
@@ -199,7 +204,9 @@ absl::StatusOr<std::vector<int>> SegmentReconstruction(const Reconstruction& rec
                            EstimateCurvature(mesh, params.curvature, ctx));
   SegmentParams segment = params.segment;
   segment.exact = ExactMode::kNever;
-  MESHSEG_ASSIGN_OR_RETURN(Segmentation segmentation, Segment(mesh, curvature, segment, ctx));
+  MESHSEG_ASSIGN_OR_RETURN(
+      Segmentation segmentation,
+      Segment(mesh, curvature, result->mesh.mean_edge_length, segment, ctx));
   // Each region's points: those whose nearest face it holds.
   const std::vector<int> nearest = PointLabels(
       mesh.tri, segmentation.face_labels, cloud.points, reconstruction.is_outlier);

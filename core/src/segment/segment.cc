@@ -4,6 +4,7 @@
 #include "meshseg/segment.h"
 
 #include <cmath>
+#include <optional>
 
 #include <Eigen/Geometry>
 
@@ -117,10 +118,13 @@ void OwnSurfaces(Segmentation* seg) {
   }
 }
 
-}  // namespace
-
-absl::StatusOr<Segmentation> Segment(const Mesh& mesh, const CurvatureField& curvature,
-                                     const SegmentParams& params, const RunContext& ctx) {
+// Segment, with l_avg = MeanEdgeLength(mesh.tri) given if the caller
+// already measured it (else summed here, where the seeded path needs it).
+absl::StatusOr<Segmentation> SegmentWithEdgeLength(const Mesh& mesh,
+                                                   const CurvatureField& curvature,
+                                                   const SegmentParams& params,
+                                                   const RunContext& ctx,
+                                                   std::optional<double> mean_edge_length) {
   using namespace segment_internal;
   MESHSEG_RETURN_IF_ERROR(ValidateParams(params));
   if (mesh.tri.n_faces() == 0) {
@@ -142,7 +146,8 @@ absl::StatusOr<Segmentation> Segment(const Mesh& mesh, const CurvatureField& cur
       return seg;
     }
   }
-  const SegmentEstimates estimates = EstimateNoise(curvature, MeanEdgeLength(mesh.tri), params);
+  const SegmentEstimates estimates = EstimateNoise(
+      curvature, mean_edge_length ? *mean_edge_length : MeanEdgeLength(mesh.tri), params);
   SegmentContext c = MakeSegmentContext(mesh.tri, curvature, estimates, params.alpha, ctx);
   c.on_facets = params.on_facets;
 
@@ -199,6 +204,24 @@ absl::StatusOr<Segmentation> Segment(const Mesh& mesh, const CurvatureField& cur
   OwnSurfaces(&seg);
   ctx.Progress("segment", 1.0);
   return seg;
+}
+
+}  // namespace
+
+absl::StatusOr<Segmentation> Segment(const Mesh& mesh, const CurvatureField& curvature,
+                                     const SegmentParams& params, const RunContext& ctx) {
+  return SegmentWithEdgeLength(mesh, curvature, params, ctx, std::nullopt);
+}
+
+absl::StatusOr<Segmentation> Segment(const Mesh& mesh, const CurvatureField& curvature,
+                                     double mean_edge_length, const SegmentParams& params,
+                                     const RunContext& ctx) {
+  if (!(mean_edge_length > 0.0) || !std::isfinite(mean_edge_length)) {
+    return absl::InvalidArgumentError(
+        absl::StrCat("segment: mean edge length of \"", mesh.name, "\" is ", mean_edge_length,
+                     ", must be finite and > 0"));
+  }
+  return SegmentWithEdgeLength(mesh, curvature, params, ctx, mean_edge_length);
 }
 
 }  // namespace meshseg

@@ -128,16 +128,17 @@ absl::Status DescribeCurves(const TriMesh& tri, std::span<const int> face_labels
   return ctx.CheckStop(kStage);
 }
 
-}  // namespace
-
-absl::StatusOr<Topology> ExtractTopology(const Mesh& mesh, std::span<const int> face_labels,
-                                         std::span<const Region> regions,
-                                         const TopologyParams& params, const RunContext& ctx) {
+// ExtractTopology, with l_avg = MeanEdgeLength(mesh.tri) given if the
+// caller already measured it (else summed here).
+absl::StatusOr<Topology> ExtractTopologyWith(const Mesh& mesh, std::span<const int> face_labels,
+                                             std::span<const Region> regions,
+                                             const TopologyParams& params, const RunContext& ctx,
+                                             std::optional<double> mean_edge_length) {
   MESHSEG_RETURN_IF_ERROR(ValidateParams(params));
   MESHSEG_RETURN_IF_ERROR(ValidateInput(mesh, face_labels, regions));
   const TriMesh& tri = mesh.tri;
   const int region_count = static_cast<int>(regions.size());
-  // The patch flood fill (serial, the longest step) and the regions' normal
+  // The patches (a union-find on both cores) and the regions' normal
   // signs read only the mesh and the labels: they are made beside the
   // curves, from the start. Each is a function of its inputs alone, so the
   // values are the same whichever thread makes them.
@@ -147,7 +148,7 @@ absl::StatusOr<Topology> ExtractTopology(const Mesh& mesh, std::span<const int> 
   beside.run([&] { patches = topology_internal::LabelPatches(tri, face_labels, region_count); });
   beside.run([&] { signs = topology_internal::RegionNormalSigns(tri, face_labels, regions); });
   Topology topo;
-  topo.mean_edge_length = MeanEdgeLength(tri);
+  topo.mean_edge_length = mean_edge_length ? *mean_edge_length : MeanEdgeLength(tri);
   topology_internal::CurveChains chains = topology_internal::ChainCurves(tri, face_labels);
   topo.curves = std::move(chains.curves);
   const absl::Status described = DescribeCurves(tri, face_labels, regions, params, ctx, &topo);
@@ -174,6 +175,25 @@ absl::StatusOr<Topology> ExtractTopology(const Mesh& mesh, std::span<const int> 
   MESHSEG_RETURN_IF_ERROR(ctx.CheckStop(kStage));
   ctx.Progress(kStage, 1.0);
   return topo;
+}
+
+}  // namespace
+
+absl::StatusOr<Topology> ExtractTopology(const Mesh& mesh, std::span<const int> face_labels,
+                                         std::span<const Region> regions,
+                                         const TopologyParams& params, const RunContext& ctx) {
+  return ExtractTopologyWith(mesh, face_labels, regions, params, ctx, std::nullopt);
+}
+
+absl::StatusOr<Topology> ExtractTopology(const Mesh& mesh, std::span<const int> face_labels,
+                                         std::span<const Region> regions, double mean_edge_length,
+                                         const TopologyParams& params, const RunContext& ctx) {
+  if (!(mean_edge_length > 0.0) || !std::isfinite(mean_edge_length)) {
+    const std::string name = mesh.name.empty() ? "mesh" : "\"" + mesh.name + "\"";
+    return absl::InvalidArgumentError(absl::StrCat("topology: ", name, ": mean edge length ",
+                                                   mean_edge_length, ", must be finite and > 0"));
+  }
+  return ExtractTopologyWith(mesh, face_labels, regions, params, ctx, mean_edge_length);
 }
 
 }  // namespace meshseg

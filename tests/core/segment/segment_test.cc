@@ -507,6 +507,37 @@ TEST(SegmentDeterminism, OneThreadGivesTheSameResultAsMany) {
   }
 }
 
+// The mean edge length measured once by the caller (MeshStatistics) is the
+// value Segment sums itself, so passing it gives the same segmentation bit
+// for bit; a length that is not finite and > 0 is refused, named.
+TEST(SegmentWithMeanEdgeLength, GivesTheSameResultAsMeasuringItAgain) {
+  auto part = GeneratePart("plate_boss", {.noise = 0.05, .seed = 7});
+  ASSERT_TRUE(part.ok()) << part.status();
+  auto field = EstimateCurvature(part->mesh);
+  ASSERT_TRUE(field.ok()) << field.status();
+  const absl::StatusOr<Segmentation> own = Segment(part->mesh, *field);
+  const absl::StatusOr<Segmentation> given =
+      Segment(part->mesh, *field, MeanEdgeLength(part->mesh.tri));
+  ASSERT_TRUE(own.ok()) << own.status();
+  ASSERT_TRUE(given.ok()) << given.status();
+  ASSERT_FALSE(own->face_labels.empty());
+  EXPECT_EQ(given->face_labels, own->face_labels);
+  EXPECT_EQ(given->vertex_labels, own->vertex_labels);
+  EXPECT_EQ(given->estimates.mean_edge_length, own->estimates.mean_edge_length);
+  EXPECT_EQ(given->estimates.distance_tolerance, own->estimates.distance_tolerance);
+  ASSERT_EQ(given->regions.size(), own->regions.size());
+  for (std::size_t r = 0; r < own->regions.size(); ++r) {
+    EXPECT_EQ(given->regions[r].type, own->regions[r].type) << r;
+    EXPECT_EQ(given->regions[r].rms_distance, own->regions[r].rms_distance) << r;
+  }
+  for (const double bad : {0.0, -1.0, std::nan("")}) {
+    const absl::StatusOr<Segmentation> refused = Segment(part->mesh, *field, bad);
+    EXPECT_EQ(refused.status().code(), absl::StatusCode::kInvalidArgument) << bad;
+    EXPECT_NE(refused.status().message().find("mean edge length"), std::string::npos)
+        << refused.status();
+  }
+}
+
 // A part where its CAD frame leaves it (tens of metres from the origin),
 // turned, or in other units (micrometres, metres) gets the same regions with
 // its surfaces moved and scaled alike: no threshold is absolute, and the

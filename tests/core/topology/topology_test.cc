@@ -175,6 +175,41 @@ TEST(ExtractTopology, RejectsBadParams) {
   EXPECT_THAT(topo.status().message(), HasSubstr("curve_tolerance = -1"));
 }
 
+// The mean edge length measured once by the caller (MeshStatistics) is the
+// value ExtractTopology sums itself: the same curves, corners and loops bit
+// for bit. A length that is not finite and > 0 is refused, named.
+TEST(ExtractTopology, GivenTheMeanEdgeLengthGivesTheSameTopology) {
+  const testing::LabelledMesh box = GriddedBox({2.0, 3.0, 4.0}, 4);
+  const absl::StatusOr<Topology> own = ExtractTopology(box.mesh, box.face_labels, box.regions);
+  const absl::StatusOr<Topology> given = ExtractTopology(
+      box.mesh, box.face_labels, box.regions, MeanEdgeLength(box.mesh.tri));
+  ASSERT_TRUE(own.ok()) << own.status();
+  ASSERT_TRUE(given.ok()) << given.status();
+  EXPECT_EQ(given->mean_edge_length, own->mean_edge_length);
+  ASSERT_EQ(given->curves.size(), own->curves.size());
+  for (std::size_t i = 0; i < own->curves.size(); ++i) {
+    EXPECT_EQ(given->curves[i].vertices, own->curves[i].vertices) << i;
+    EXPECT_EQ(given->curves[i].length, own->curves[i].length) << i;
+    EXPECT_EQ(given->curves[i].junction_artifact, own->curves[i].junction_artifact) << i;
+  }
+  ASSERT_EQ(own->corners.size(), 8u);
+  ASSERT_EQ(given->corners.size(), own->corners.size());
+  for (std::size_t i = 0; i < own->corners.size(); ++i) {
+    EXPECT_EQ(given->corners[i].position, own->corners[i].position) << i;
+  }
+  ASSERT_EQ(given->loops.size(), own->loops.size());
+  for (std::size_t i = 0; i < own->loops.size(); ++i) {
+    EXPECT_EQ(given->loops[i].kind, own->loops[i].kind) << i;
+    EXPECT_EQ(given->loops[i].patch, own->loops[i].patch) << i;
+  }
+  for (const double bad : {0.0, -1.0, std::nan("")}) {
+    const absl::StatusOr<Topology> refused =
+        ExtractTopology(box.mesh, box.face_labels, box.regions, bad);
+    EXPECT_EQ(refused.status().code(), absl::StatusCode::kInvalidArgument) << bad;
+    EXPECT_THAT(refused.status().message(), HasSubstr("mean edge length"));
+  }
+}
+
 TEST(ExtractTopology, StopsWhenCancelled) {
   const testing::LabelledMesh box = GriddedBox({1.0, 1.0, 1.0}, 2);
   std::stop_source stop;
