@@ -3,8 +3,6 @@
 #ifndef MESHSEG_MESH_UNION_FIND_H_
 #define MESHSEG_MESH_UNION_FIND_H_
 
-#include <atomic>
-#include <utility>
 #include <vector>
 
 namespace meshseg::mesh_internal {
@@ -12,36 +10,6 @@ namespace meshseg::mesh_internal {
 inline int FindRoot(std::vector<int>& parent, int a) {
   while (parent[a] != a) a = parent[a] = parent[parent[a]];
   return a;
-}
-
-// The same sets joined side by side (a concurrent union-find). Joins only
-// hang a root under a smaller root, so a tree's root is its smallest
-// element whatever order the joins run in: numbering the roots in index
-// order numbers the sets as a search seeded in index order does.
-
-// Root of a's tree; the walk halves the path it takes (each element it
-// passes then points at an ancestor, still in the same tree).
-inline int FindLowestRoot(std::vector<std::atomic<int>>& parent, int a) {
-  while (true) {
-    const int p = parent[a].load(std::memory_order_relaxed);
-    if (p == a) return a;
-    const int up = parent[p].load(std::memory_order_relaxed);
-    if (up != p) parent[a].store(up, std::memory_order_relaxed);
-    a = up;
-  }
-}
-
-// Joins the trees of a and b: the larger root goes under the smaller
-// (retried if another join moved it first).
-inline void JoinToLowest(std::vector<std::atomic<int>>& parent, int a, int b) {
-  while (true) {
-    a = FindLowestRoot(parent, a);
-    b = FindLowestRoot(parent, b);
-    if (a == b) return;
-    if (a > b) std::swap(a, b);
-    int expected = b;
-    if (parent[b].compare_exchange_strong(expected, a)) return;
-  }
 }
 
 }  // namespace meshseg::mesh_internal

@@ -11,7 +11,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
-#include "mesh/union_find.h"
+#include "mesh/concurrent_union_find.h"
 
 namespace meshseg::segment_internal {
 namespace {
@@ -44,15 +44,12 @@ struct Pieces {
 
 // The pieces are the components of the graph of equally labelled
 // neighbours, found with a concurrent union-find (each edge joined once, side
-// by side; mesh/union_find.h). Every component's root is its smallest face,
-// whatever order the joins ran in, so numbering the roots in face order gives
-// each piece the id a search seeded in face order gives it.
+// by side; mesh/concurrent_union_find.h). Every component's root is its
+// smallest face, whatever order the joins ran in, so numbering the roots in
+// face order gives each piece the id a search seeded in face order gives it.
 Pieces FindPieces(const FaceNeighbors& adjacent, const std::vector<int>& labels) {
   const int nf = static_cast<int>(labels.size());
-  std::vector<std::atomic<int>> parent(nf);
-  tbb::parallel_for(tbb::blocked_range<int>(0, nf, 8192), [&](const tbb::blocked_range<int>& r) {
-    for (int f = r.begin(); f < r.end(); ++f) parent[f].store(f, std::memory_order_relaxed);
-  });
+  std::vector<std::atomic<int>> parent = mesh_internal::SingletonSets(nf);
   tbb::parallel_for(tbb::blocked_range<int>(0, nf, 4096), [&](const tbb::blocked_range<int>& r) {
     for (int f = r.begin(); f < r.end(); ++f) {
       if (labels[f] < 0) continue;

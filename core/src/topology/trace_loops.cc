@@ -7,7 +7,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
-#include "mesh/union_find.h"
+#include "mesh/concurrent_union_find.h"
 #include "topology/chain_curves.h"
 
 namespace meshseg::topology_internal {
@@ -39,15 +39,12 @@ CurveUse UseOf(const TriMesh& mesh, std::span<const int> halfedge_curve, Halfedg
 FacePatches LabelPatches(const TriMesh& mesh, std::span<const int> labels, int region_count) {
   // The patches are the components of the graph of equally labelled faces
   // across an edge, found with a concurrent union-find (each edge joined
-  // once, from its lower face, side by side; mesh/union_find.h). Every
-  // component's root is its lowest face whatever order the joins ran in, so
-  // numbering the roots in face order within their label gives each patch
-  // the index a flood fill seeded in face order gives it.
+  // once, from its lower face, side by side; mesh/concurrent_union_find.h).
+  // Every component's root is its lowest face whatever order the joins ran
+  // in, so numbering the roots in face order within their label gives each
+  // patch the index a flood fill seeded in face order gives it.
   const int nf = static_cast<int>(mesh.n_faces());
-  std::vector<std::atomic<int>> parent(nf);
-  tbb::parallel_for(tbb::blocked_range<int>(0, nf, 8192), [&](const tbb::blocked_range<int>& r) {
-    for (int f = r.begin(); f < r.end(); ++f) parent[f].store(f, std::memory_order_relaxed);
-  });
+  std::vector<std::atomic<int>> parent = mesh_internal::SingletonSets(nf);
   tbb::parallel_for(tbb::blocked_range<int>(0, nf, 4096), [&](const tbb::blocked_range<int>& r) {
     for (int f = r.begin(); f < r.end(); ++f) {
       if (labels[f] < 0) continue;
@@ -70,7 +67,8 @@ FacePatches LabelPatches(const TriMesh& mesh, std::span<const int> labels, int r
   // Roots numbered in face order within their label (the number kept in the
   // root's parent entry, no longer needed); then each face takes its root's.
   for (int f = 0; f < nf; ++f) {
-    if (out.face_patch[f] == f) parent[f].store(out.patch_count[labels[f]]++, std::memory_order_relaxed);
+    if (out.face_patch[f] != f) continue;
+    parent[f].store(out.patch_count[labels[f]]++, std::memory_order_relaxed);
   }
   tbb::parallel_for(tbb::blocked_range<int>(0, nf, 8192), [&](const tbb::blocked_range<int>& r) {
     for (int f = r.begin(); f < r.end(); ++f) {
