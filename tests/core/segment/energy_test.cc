@@ -7,10 +7,8 @@
 
 #include <Eigen/Core>
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <limits>
-#include <numbers>
 #include <optional>
 #include <random>
 #include <set>
@@ -27,6 +25,7 @@
 #include "segment/decide_type.h"
 #include "segment/estimate_noise.h"
 #include "segment/facet_mesh.h"
+#include "cylinder_band.h"
 #include "sheet_context.h"
 
 namespace meshseg::segment_internal {
@@ -356,26 +355,12 @@ TEST(LabelCost, IsTheBicOnTheEffectiveSampleCount) {
 // cylinder of a radius off by 1e-3 (far above tau = 1e-6) and on the
 // facet's own neighbour's plane; the label cost is the BIC with f = 1.
 TEST(ExactEnergy, DataTermIsZeroOnTheSurfaceAndInfiniteOff) {
-  constexpr int kAround = 24;
-  std::vector<Eigen::Vector3d> v;
-  for (const double z : {0.0, 4.0}) {
-    for (int k = 0; k < kAround; ++k) {
-      const double a = 2.0 * std::numbers::pi * k / kAround;
-      v.emplace_back(5.0 * std::cos(a), 5.0 * std::sin(a), z);
-    }
-  }
-  std::vector<std::array<int, 3>> f;
-  for (int k = 0; k < kAround; ++k) {
-    const int a = k, b = (k + 1) % kAround;
-    f.push_back({a, b, b + kAround});
-    f.push_back({a, b + kAround, a + kAround});
-  }
-  absl::StatusOr<Mesh> mesh = BuildMesh(std::move(v), f, "band");
-  ASSERT_TRUE(mesh.ok()) << mesh.status();
-  const FacetMesh fm = BuildFacetMesh(mesh->tri);
+  const Mesh band = testing::CylinderBand(0.0);
+  const FacetMesh fm = BuildFacetMesh(band.tri);
   const Eigen::Vector3d axis_origin = -fm.origin;  // the band's axis, in fm's frame
-  const Surface cylinder = Cylinder{axis_origin, Eigen::Vector3d::UnitZ(), 5.0};
-  const Surface wider = Cylinder{axis_origin, Eigen::Vector3d::UnitZ(), 5.001};
+  const Eigen::Vector3d z = Eigen::Vector3d::UnitZ();
+  const Surface cylinder = Cylinder{axis_origin, z, testing::kBandRadius};
+  const Surface wider = Cylinder{axis_origin, z, testing::kBandRadius + 1e-3};
   const Surface next_plane = Plane{fm.Centroid(2), fm.normal[2]};
   constexpr double kTau = 1e-6;
   for (int facet = 0; facet < fm.facet_count(); ++facet) {
