@@ -184,8 +184,9 @@ absl::StatusOr<Segmentation> SegmentWithEdgeLength(const Mesh& mesh,
   // is then typed on its interior like every other.
   MESHSEG_RETURN_IF_ERROR(SplitOffPlanes(c, &labels, &regions).status());
   // The outer rows of a narrow band can decide its type (a chamfer between
-  // rounded creases passes as a sphere); its interior tells.
-  RetypeByInterior(c, labels, &regions);
+  // rounded creases passes as a sphere); its interior tells, and the
+  // expansion then places the band's boundary for the type it tells.
+  MESHSEG_RETURN_IF_ERROR(RetypeByInteriorAndExpand(c, &labels, &regions).status());
   // A band beside a turned face may be a cone on that face's axis (a
   // countersink on its bore's) with 4 parameters fewer.
   if (!RetypeCoaxialBands(c, labels, &regions).empty()) {
