@@ -94,8 +94,10 @@ absl::Status Improve(const segment_internal::SegmentContext& c, std::vector<int>
                      std::vector<segment_internal::RegionState>* regions,
                      segment_internal::KeptPrices* prices) {
   for (int round = 0; round < kMaxImproveRounds; ++round) {
-    std::size_t moves = segment_internal::RetypeBentPlanes(c, regions).size() +
-                        segment_internal::RetypeInaccurateCurved(c, regions).size();
+    // Only the regions changed since a proposal last made no move on them
+    // are asked it again (KeptPrices::Refused).
+    std::size_t moves = segment_internal::RetypeBentPlanes(c, regions, prices).size() +
+                        segment_internal::RetypeInaccurateCurved(c, regions, prices).size();
     MESHSEG_ASSIGN_OR_RETURN(const int merged, MergeAndDrop(c, labels, regions, prices));
     segment_internal::RetypeQuadrics(c, regions);
     moves += static_cast<std::size_t>(merged);
@@ -196,7 +198,7 @@ absl::StatusOr<Segmentation> SegmentWithEdgeLength(const Mesh& mesh,
   MESHSEG_RETURN_IF_ERROR(Improve(c, &labels, &regions, &kept_prices));
   // A curved type that bends or widens less than the noise over its region
   // gives way to its simpler limit where that lowers E.
-  RetypeToSimplerLimits(c, &regions);
+  RetypeToSimplerLimits(c, &regions, &kept_prices);
   ctx.Progress("segment", 0.9);
   MESHSEG_RETURN_IF_ERROR(ctx.CheckStop("segment"));
   Segmentation seg = FinalizeRegions(c, mesh.tri, std::move(labels), std::move(regions));

@@ -204,6 +204,25 @@ TEST(RetypeToSimplerLimitsTest, ADraftedConeStaysACone) {
   EXPECT_EQ(regions[0].type, SurfaceType::kCone);
 }
 
+TEST(RetypeToSimplerLimitsTest, ARefusalIsKeptForTheRegionAsItStandsOnly) {
+  // The drafted cone refuses its cylinder: kept, it is not asked again
+  // while it is the same; a region changed since (its surface moved) is.
+  Sheet s;
+  QuarterCone(1.0, &s);
+  std::vector<int> labels;
+  std::vector<RegionState> regions = testing::OneRegion(s, SurfaceType::kCone, &labels);
+  regions[0].surface = FitType(s.c, SurfaceType::kCone, regions[0].vertices).surface;
+  KeptPrices kept;
+  EXPECT_FALSE(kept.Refused(regions, 0, KeptPrices::kSimplerLimit));
+  EXPECT_EQ(RetypeToSimplerLimits(s.c, &regions, &kept), 0);
+  EXPECT_TRUE(kept.Refused(regions, 0, KeptPrices::kSimplerLimit));
+  EXPECT_FALSE(kept.Refused(regions, 0, KeptPrices::kInaccurateCurved));
+  EXPECT_EQ(RetypeToSimplerLimits(s.c, &regions, &kept), 0);
+  std::get<Cone>(regions[0].surface).apex += Eigen::Vector3d(0.0, 0.0, 1e-9);
+  EXPECT_FALSE(kept.Refused(regions, 0, KeptPrices::kSimplerLimit));
+  EXPECT_EQ(regions[0].type, SurfaceType::kCone);
+}
+
 TEST(RetypeToSimplerLimitsTest, AHugeCylinderAlongAFlatSideBecomesAPlaneAndARoundStays) {
   // A flat side 60 long and 10 high grown as a cylinder of r 572 whose axis
   // runs along it; beside it, a quarter of a cylinder of radius 5.
