@@ -80,15 +80,17 @@ absl::Status Merge(const segment_internal::SegmentContext& c, std::vector<int>* 
 
 // PEARL's alternation (Isack & Boykov, IJCV 2012) over the moves of E
 // (energy.h): the retypes proposed (a plane its plane no longer fits, a
-// curved region its type misses; retype_regions.h), the merges and the
-// drops, each made iff it lowers E, then the expansion with re-estimation
-// over the boundaries they changed; repeated until no move is made (each
-// move lowers E, so it ends; kMaxImproveRounds guards against a cycle of
-// moves whose gains are rounding). The expansion can shrink a region to a
-// sliver or a strip whose vertices cost less on its neighbours' surfaces
-// (between a countersink and its plane, along a groove), which the next
-// round drops, and it gives a plane retyped on part of its arc the rest,
-// whose type the next round proposes again.
+// curved region its type misses, a band beside a turned face the cone on
+// that face's axis, a curved type its simpler limit; retype_regions.h,
+// retype_coaxial_bands.h), the merges and the drops, each made iff it
+// lowers E, then the expansion with re-estimation over the boundaries they
+// changed; repeated until no move is made (each move lowers E, so it ends;
+// kMaxImproveRounds guards against a cycle of moves whose gains are
+// rounding). The expansion can shrink a region to a sliver or a strip
+// whose vertices cost less on its neighbours' surfaces (between a
+// countersink and its plane, along a groove), which the next round drops,
+// and it gives a plane retyped on part of its arc the rest, whose type the
+// next round proposes again.
 constexpr int kMaxImproveRounds = 16;
 absl::Status Improve(const segment_internal::SegmentContext& c, std::vector<int>* labels,
                      std::vector<segment_internal::RegionState>* regions,
@@ -96,8 +98,11 @@ absl::Status Improve(const segment_internal::SegmentContext& c, std::vector<int>
   for (int round = 0; round < kMaxImproveRounds; ++round) {
     // Only the regions changed since a proposal last made no move on them
     // are asked it again (KeptPrices::Refused).
-    std::size_t moves = segment_internal::RetypeBentPlanes(c, regions, prices).size() +
-                        segment_internal::RetypeInaccurateCurved(c, regions, prices).size();
+    std::size_t moves =
+        segment_internal::RetypeBentPlanes(c, regions, prices).size() +
+        segment_internal::RetypeInaccurateCurved(c, regions, prices).size() +
+        segment_internal::RetypeCoaxialBands(c, *labels, regions).size() +
+        static_cast<std::size_t>(segment_internal::RetypeToSimplerLimits(c, regions, prices));
     MESHSEG_ASSIGN_OR_RETURN(const int merged, MergeAndDrop(c, labels, regions, prices));
     segment_internal::RetypeQuadrics(c, regions);
     moves += static_cast<std::size_t>(merged);
@@ -188,17 +193,9 @@ absl::StatusOr<Segmentation> SegmentWithEdgeLength(const Mesh& mesh,
   // The outer rows of a narrow band can decide its type (a chamfer between
   // rounded creases passes as a sphere); its interior tells.
   RetypeByInterior(c, labels, &regions);
-  // A band beside a turned face may be a cone on that face's axis (a
-  // countersink on its bore's) with 4 parameters fewer.
-  if (!RetypeCoaxialBands(c, labels, &regions).empty()) {
-    MESHSEG_RETURN_IF_ERROR(ExpandRegions(c, &labels, &regions).status());
-  }
   // Pieces of one surface typed apart are joined, fragments dropped, and
   // the retypes proposed again, by the same energy.
   MESHSEG_RETURN_IF_ERROR(Improve(c, &labels, &regions, &kept_prices));
-  // A curved type that bends or widens less than the noise over its region
-  // gives way to its simpler limit where that lowers E.
-  RetypeToSimplerLimits(c, &regions, &kept_prices);
   ctx.Progress("segment", 0.9);
   MESHSEG_RETURN_IF_ERROR(ctx.CheckStop("segment"));
   Segmentation seg = FinalizeRegions(c, mesh.tri, std::move(labels), std::move(regions));
