@@ -96,10 +96,14 @@ absl::Status Improve(const segment_internal::SegmentContext& c, std::vector<int>
                      std::vector<segment_internal::RegionState>* regions,
                      segment_internal::KeptPrices* prices) {
   for (int round = 0; round < kMaxImproveRounds; ++round) {
+    // The retype by the interior first: it is priced with the expansion it
+    // enables, at the expansion's fixed point the last round (or step) left.
+    MESHSEG_ASSIGN_OR_RETURN(const std::vector<int> by_interior,
+                             segment_internal::RetypeByInterior(c, labels, regions, prices));
     // Only the regions changed since a proposal last made no move on them
     // are asked it again (KeptPrices::Refused).
     std::size_t moves =
-        segment_internal::RetypeBentPlanes(c, regions, prices).size() +
+        by_interior.size() + segment_internal::RetypeBentPlanes(c, regions, prices).size() +
         segment_internal::RetypeInaccurateCurved(c, regions, prices).size() +
         segment_internal::RetypeCoaxialBands(c, *labels, regions).size() +
         static_cast<std::size_t>(segment_internal::RetypeToSimplerLimits(c, regions, prices));
@@ -190,9 +194,6 @@ absl::StatusOr<Segmentation> SegmentWithEdgeLength(const Mesh& mesh,
   // round) becomes a plane of its own where E falls; the rest of the region
   // is then typed on its interior like every other.
   MESHSEG_RETURN_IF_ERROR(SplitOffPlanes(c, &labels, &regions).status());
-  // The outer rows of a narrow band can decide its type (a chamfer between
-  // rounded creases passes as a sphere); its interior tells.
-  RetypeByInterior(c, labels, &regions);
   // Pieces of one surface typed apart are joined, fragments dropped, and
   // the retypes proposed again, by the same energy.
   MESHSEG_RETURN_IF_ERROR(Improve(c, &labels, &regions, &kept_prices));
