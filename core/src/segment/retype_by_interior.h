@@ -1,5 +1,5 @@
-// The type a region's interior proposes, and the move E makes of it (our
-// addition to ALGORITHMS.md S1 and S2).
+// Type decision on a region's interior (our addition to ALGORITHMS.md S1
+// and S2).
 // A region's outer row of vertices sits on the crease it shares with its
 // neighbour, which the mesh rounds off (marching cubes blurs it over a
 // voxel) and where n'_i turns toward the neighbour. On a narrow band between
@@ -7,8 +7,7 @@
 // 6 h wide at sigma = 0.15 h fits a sphere (rms 1.06 sigma) better than
 // a cone (1.11 sigma) over all its vertices, and the alpha test, which
 // passes the sphere first, agrees. Without the outer row the cone fits at
-// the noise (0.98 sigma) and the sphere does not (1.02 sigma). The interior
-// proposes the type; E decides, with the expansion that moves the rows.
+// the noise (0.98 sigma) and the sphere does not (1.02 sigma).
 #ifndef MESHSEG_SRC_SEGMENT_RETYPE_BY_INTERIOR_H_
 #define MESHSEG_SRC_SEGMENT_RETYPE_BY_INTERIOR_H_
 
@@ -16,8 +15,6 @@
 #include <span>
 #include <vector>
 
-#include "absl/status/statusor.h"
-#include "segment/kept_prices.h"
 #include "segment/segment_internal.h"
 
 namespace meshseg::segment_internal {
@@ -36,24 +33,15 @@ std::vector<int> InteriorVertices(const SegmentContext& c, const std::vector<int
 bool TypeMissesInterior(const SegmentContext& c, const std::vector<int>& labels, int id,
                         const RegionState& r);
 
-// The retype a region's interior proposes: region `id` as `type`, with
-// `surface` fitted to all of its vertices (to the interior if that fit is
-// not valid).
-struct InteriorRetype {
-  int id = -1;
-  SurfaceType type = SurfaceType::kQuadric;
-  Surface surface;
-};
-
-// The proposals, one per cylinder, sphere, cone or torus region at most: the
-// curved type that explains its interior vertices best (InformationScore),
-// if that scores kScoreMargin less than its own type, or that type's
-// simplest limit doing as well; or, before that, the simplest limit of its
-// own type (a cone or cylinder for a torus, a cylinder for a cone) that fits
-// at the noise and scores within kScoreMargin of the best, or that is within
-// half a sigma of the noise and scores less than kScoreMargin above its own
-// type (whose extra parameters must buy that much). Only if some type fits
-// the interior at the noise (FitsAtNoise), or near it (within a sigma) and
+// Gives every cylinder, sphere, cone or torus region the curved type that
+// explains its interior vertices best (InformationScore), if that scores
+// kScoreMargin less than its own type, or that type's simplest limit doing
+// as well; or, before that, the simplest limit of its own type (a cone or
+// cylinder for a torus, a cylinder for a cone) that fits at the noise and
+// scores within kScoreMargin of the best, or that is within half a sigma of
+// the noise and scores less than kScoreMargin above its own type (whose
+// extra parameters must buy that much). Only if some type fits the
+// interior at the noise (FitsAtNoise), or near it (within a sigma) and
 // either at half the own type's model error or less (a torus on a
 // countersink, 3.26 sigma off where the cone is 0.28) or, within half a
 // sigma, scoring kScoreMargin below it (a sphere on a chamfer, 0.49 sigma,
@@ -73,32 +61,11 @@ struct InteriorRetype {
 // region can be.
 // On a mesh whose vertices lie on facets (SegmentParams::on_facets) no type
 // fits at the noise; there the type of lowest score over all of the
-// region's vertices is proposed if it scores kScoreMargin below its own, or
-// its simplest limit within kScoreMargin of it. Nothing is proposed on a
-// noise-free mesh that is not on facets. With `kept`, a region other than
-// a cone (whose proposal reads its neighbours) that proposed nothing and is
-// unchanged since is not asked again (KeptPrices::Refused).
-std::vector<InteriorRetype> ProposeInteriorTypes(const SegmentContext& c,
-                                                 const std::vector<int>& labels,
-                                                 const std::vector<RegionState>& regions,
-                                                 KeptPrices* kept = nullptr);
-
-// The retype by the interior as a move of E (energy.h): each proposal, in
-// id order, made together with the expansion it enables, and kept iff E
-// falls, E(retype + expansion) < E. The expansion belongs in the price:
-// the outer rows that made the region's type are the crease's, and E on the
-// labels as they stand sides with the type they made (a chamfer band with
-// a row of each neighbour: the sphere over all of it, RetypeDelta to the
-// cone > 0). With the proposed type (re-estimated, energy.h Reestimated)
-// the rows cost more than on the neighbours' surfaces, the expansion with
-// re-estimation hands them over, and the proposed type then meets what is
-// left at the noise. Priced at an expansion's fixed point (as Improve asks
-// it, first in a round), so that the expansion alone would gain nothing.
-// Returns the ids retyped. Errors: CANCELLED on stop.
-absl::StatusOr<std::vector<int>> RetypeByInterior(const SegmentContext& c,
-                                                  std::vector<int>* labels,
-                                                  std::vector<RegionState>* regions,
-                                                  KeptPrices* kept = nullptr);
+// region's vertices takes over if it scores kScoreMargin below its own, or
+// its simplest limit within kScoreMargin of it.
+// The new surface is fitted to the whole region. Returns the ids retyped.
+std::vector<int> RetypeByInterior(const SegmentContext& c, const std::vector<int>& labels,
+                                  std::vector<RegionState>* regions);
 
 }  // namespace meshseg::segment_internal
 

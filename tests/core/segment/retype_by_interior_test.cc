@@ -1,7 +1,5 @@
-// The retype a region's interior proposes (ProposeInteriorTypes), and the
-// move E makes of it with the expansion (RetypeByInterior), on
-// stepped_shaft's chamfer as a sheet: a cylinder of radius 5, a 45-degree
-// cone band up to radius 3.5, and a flat top.
+// RetypeByInterior on stepped_shaft's chamfer as a sheet: a cylinder of
+// radius 5, a 45-degree cone band up to radius 3.5, and a flat top.
 #include "segment/retype_by_interior.h"
 
 #include <gtest/gtest.h>
@@ -13,7 +11,6 @@
 #include <vector>
 
 #include "segment/decide_type.h"
-#include "segment/energy.h"
 #include "sheet_context.h"
 
 namespace meshseg::segment_internal {
@@ -46,19 +43,6 @@ std::vector<int> BandLabels(const Sheet& s, int first, int last) {
 const std::vector<SurfaceType> kTypes = {SurfaceType::kSphere, SurfaceType::kCylinder,
                                          SurfaceType::kPlane};
 
-// Every proposal of ProposeInteriorTypes made, as a rule would make it;
-// the ids proposed.
-std::vector<int> Propose(const SegmentContext& c, const std::vector<int>& labels,
-                         std::vector<RegionState>* regions) {
-  std::vector<int> ids;
-  for (const InteriorRetype& p : ProposeInteriorTypes(c, labels, *regions)) {
-    (*regions)[p.id].type = p.type;
-    (*regions)[p.id].surface = p.surface;
-    ids.push_back(p.id);
-  }
-  return ids;
-}
-
 TEST(RetypeByInteriorTest, SphereOnAChamferBandBecomesACone) {
   // The band region took one row of each neighbour, as it does where the
   // crease is rounded: over all its vertices a sphere fits it better than a
@@ -72,50 +56,11 @@ TEST(RetypeByInteriorTest, SphereOnAChamferBandBecomesACone) {
   EXPECT_EQ(InteriorVertices(s.c, labels, kBand, regions[0].vertices).size(),
             static_cast<std::size_t>((kConeEnd - kConeStart + 1) * kAround));
 
-  EXPECT_EQ(Propose(s.c, labels, &regions), std::vector<int>{0});
+  EXPECT_EQ(RetypeByInterior(s.c, labels, &regions), std::vector<int>{0});
   ASSERT_EQ(regions[0].type, SurfaceType::kCone);
   EXPECT_NEAR(std::get<Cone>(regions[0].surface).half_angle, std::numbers::pi / 4.0, 0.02);
   EXPECT_EQ(regions[1].type, SurfaceType::kCylinder);
   EXPECT_EQ(regions[2].type, SurfaceType::kPlane);
-}
-
-TEST(RetypeByInteriorTest, ASphereOnAChamferBandBecomesItsConeAndGivesTheRowsBack) {
-  // The same band, the move made with the expansion: with the cone, the
-  // rows of the cylinder and the top go back to them, and E falls below
-  // where it stood with the sphere.
-  Sheet s;
-  BuildChamfer(&s);
-  std::vector<int> labels = BandLabels(s, kConeStart - 1, kConeEnd + 1);
-  std::vector<RegionState> regions = RegionsFromLabels(s.c, labels, kTypes);
-  const double before = TotalEnergy(s.c, labels, regions);
-
-  const absl::StatusOr<std::vector<int>> retyped = RetypeByInterior(s.c, &labels, &regions);
-  ASSERT_TRUE(retyped.ok()) << retyped.status();
-  EXPECT_EQ(*retyped, std::vector<int>{0});
-  ASSERT_EQ(regions[0].type, SurfaceType::kCone);
-  EXPECT_NEAR(std::get<Cone>(regions[0].surface).half_angle, std::numbers::pi / 4.0, 0.02);
-  EXPECT_LT(TotalEnergy(s.c, labels, regions), before);
-  // The band is the cone's rows (kConeStart to kConeEnd) and no more.
-  for (std::size_t v = 0; v < labels.size(); ++v) {
-    if (s.u[v] < kConeStart - 0.5 || s.u[v] > kConeEnd + 0.5) {
-      EXPECT_NE(labels[v], 0) << v;
-    }
-  }
-}
-
-TEST(RetypeByInteriorTest, AConeBandTypedAConeIsNotMoved) {
-  // Nothing is proposed for a band whose type fits its interior: labels
-  // and regions stay as they were.
-  Sheet s;
-  BuildChamfer(&s);
-  std::vector<int> labels = BandLabels(s, kConeStart, kConeEnd);
-  std::vector<RegionState> regions = RegionsFromLabels(
-      s.c, labels, {SurfaceType::kCone, SurfaceType::kCylinder, SurfaceType::kPlane});
-  const std::vector<int> labels_before = labels;
-  const absl::StatusOr<std::vector<int>> retyped = RetypeByInterior(s.c, &labels, &regions);
-  ASSERT_TRUE(retyped.ok()) << retyped.status();
-  EXPECT_TRUE(retyped->empty());
-  EXPECT_EQ(labels, labels_before);
 }
 
 // A ring band 1.2 wide at radius 30 of a torus whose tube (radius 70) leans
@@ -153,7 +98,7 @@ TEST(RetypeByInteriorTest, TorusOnAConeBandBecomesACone) {
   ASSERT_LE(cone.score, torus.score + kScoreMargin);
   ASSERT_GT(cone.score + kScoreMargin, torus.score);
 
-  EXPECT_EQ(Propose(s.c, labels, &regions), std::vector<int>{0});
+  EXPECT_EQ(RetypeByInterior(s.c, labels, &regions), std::vector<int>{0});
   ASSERT_EQ(regions[0].type, SurfaceType::kCone);
   EXPECT_NEAR(std::get<Cone>(regions[0].surface).half_angle, std::numbers::pi / 4.0, 0.01);
 }
@@ -175,7 +120,7 @@ TEST(RetypeByInteriorTest, SphereOnAConeBandBecomesAConeNotATorus) {
   ASSERT_LT(torus.score, cone.score);
   ASSERT_LE(cone.score, torus.score + kScoreMargin);
 
-  EXPECT_EQ(Propose(s.c, labels, &regions), std::vector<int>{0});
+  EXPECT_EQ(RetypeByInterior(s.c, labels, &regions), std::vector<int>{0});
   ASSERT_EQ(regions[0].type, SurfaceType::kCone);
   EXPECT_NEAR(std::get<Cone>(regions[0].surface).half_angle, std::numbers::pi / 4.0, 0.01);
 }
@@ -216,7 +161,7 @@ TEST(RetypeByInteriorTest, TorusWhoseConeDoesAsWellNearTheNoiseBecomesACone) {
   ASSERT_LE(r.cone.score, r.torus.score);
   ASSERT_GT(r.cone.score + kScoreMargin, r.torus.score);
 
-  EXPECT_EQ(Propose(r.s.c, r.labels, &r.regions), std::vector<int>{0});
+  EXPECT_EQ(RetypeByInterior(r.s.c, r.labels, &r.regions), std::vector<int>{0});
   EXPECT_EQ(r.regions[0].type, SurfaceType::kCone);
 }
 
@@ -231,7 +176,7 @@ TEST(RetypeByInteriorTest, TorusScoringLittleBelowItsConeNearTheNoiseBecomesACon
   ASSERT_LT(r.torus.score, r.cone.score);
   ASSERT_GT(r.torus.score + kScoreMargin, r.cone.score);
 
-  EXPECT_EQ(Propose(r.s.c, r.labels, &r.regions), std::vector<int>{0});
+  EXPECT_EQ(RetypeByInterior(r.s.c, r.labels, &r.regions), std::vector<int>{0});
   EXPECT_EQ(r.regions[0].type, SurfaceType::kCone);
 }
 
@@ -245,13 +190,14 @@ TEST(RetypeByInteriorTest, TorusThatDoesBetterThanItsConeNearTheNoiseStays) {
   ASSERT_LT(ModelError(r.s.c, r.cone.fit), 0.5 * kSigma);
   ASSERT_LT(r.torus.score + kScoreMargin, r.cone.score);
 
-  EXPECT_TRUE(Propose(r.s.c, r.labels, &r.regions).empty());
+  EXPECT_TRUE(RetypeByInterior(r.s.c, r.labels, &r.regions).empty());
   EXPECT_EQ(r.regions[0].type, SurfaceType::kTorus);
 }
 
-// A quarter-round fillet of radius 1.5 between the cylinder and the top,
-// in place of the chamfer.
-void BuildFillet(Sheet* s) {
+TEST(RetypeByInteriorTest, TorusFilletStaysATorus) {
+  // A quarter-round fillet of radius 1.5 between the cylinder and the top,
+  // in place of the chamfer: no cone fits it at the noise.
+  Sheet s;
   BuildSheet(
       [](double row, double phi) {
         const Eigen::Vector3d radial(std::cos(phi), std::sin(phi), 0.0);
@@ -261,33 +207,12 @@ void BuildFillet(Sheet* s) {
                          n};
       },
       0.0, kRows - 1, kRows, 0.0, 1.5 * std::numbers::pi, kAround, /*distance=*/5.0 * kSigma,
-      /*angle_deg=*/10.0, s);
-  s->c.noise_sigma = kSigma;
-}
-
-TEST(RetypeByInteriorTest, TorusFilletStaysATorus) {
-  // No cone fits the fillet at the noise.
-  Sheet s;
-  BuildFillet(&s);
+      /*angle_deg=*/10.0, &s);
+  s.c.noise_sigma = kSigma;
   std::vector<int> labels(s.u.size(), 0);
   std::vector<RegionState> regions = RegionsFromLabels(s.c, labels, {SurfaceType::kTorus});
-  EXPECT_TRUE(Propose(s.c, labels, &regions).empty());
+  EXPECT_TRUE(RetypeByInterior(s.c, labels, &regions).empty());
   EXPECT_EQ(regions[0].type, SurfaceType::kTorus);
-}
-
-TEST(RetypeByInteriorTest, AFilletThatProposedNothingIsNotAskedAgainUntilItChanges) {
-  // The fillet's torus reads only itself: its refusal is kept while it is
-  // the same, and forgotten once its vertices change.
-  Sheet s;
-  BuildFillet(&s);
-  const std::vector<int> labels(s.u.size(), 0);
-  std::vector<RegionState> regions = RegionsFromLabels(s.c, labels, {SurfaceType::kTorus});
-  KeptPrices kept;
-  EXPECT_FALSE(kept.Refused(regions, 0, KeptPrices::kInteriorType));
-  EXPECT_TRUE(ProposeInteriorTypes(s.c, labels, regions, &kept).empty());
-  EXPECT_TRUE(kept.Refused(regions, 0, KeptPrices::kInteriorType));
-  regions[0].vertices.pop_back();
-  EXPECT_FALSE(kept.Refused(regions, 0, KeptPrices::kInteriorType));
 }
 
 TEST(RetypeByInteriorTest, TypeFarOffGivesWayToOneNearTheNoise) {
@@ -305,7 +230,7 @@ TEST(RetypeByInteriorTest, TypeFarOffGivesWayToOneNearTheNoise) {
   ASSERT_GT(cone, kMinModelError * kSigma);
   ASSERT_LT(cone, kSigma);
 
-  EXPECT_EQ(Propose(s.c, labels, &regions), std::vector<int>{0});
+  EXPECT_EQ(RetypeByInterior(s.c, labels, &regions), std::vector<int>{0});
   EXPECT_EQ(regions[0].type, SurfaceType::kCone);
 }
 
@@ -342,7 +267,7 @@ TEST(RetypeByInteriorTest, TypeNearTheNoiseThatScoresFarBelowTakesOver) {
   ASSERT_GT(cone, 0.5 * ModelError(b.s.c, b.sphere.fit));
   ASSERT_LT(b.cone.score + kScoreMargin, b.sphere.score);
 
-  EXPECT_EQ(Propose(b.s.c, b.labels, &b.regions), std::vector<int>{0});
+  EXPECT_EQ(RetypeByInterior(b.s.c, b.labels, &b.regions), std::vector<int>{0});
   EXPECT_EQ(b.regions[0].type, SurfaceType::kCone);
 }
 
@@ -356,7 +281,7 @@ TEST(RetypeByInteriorTest, TypeScoringBelowButOverHalfASigmaOffDoesNot) {
   ASSERT_GT(ModelError(b.s.c, b.cone.fit), 0.5 * kSigma);
   ASSERT_LT(b.cone.score + kScoreMargin, b.sphere.score);
 
-  EXPECT_TRUE(Propose(b.s.c, b.labels, &b.regions).empty());
+  EXPECT_TRUE(RetypeByInterior(b.s.c, b.labels, &b.regions).empty());
   EXPECT_EQ(b.regions[0].type, SurfaceType::kSphere);
 }
 
@@ -366,7 +291,7 @@ TEST(RetypeByInteriorTest, TypeThatFitsItsInteriorStays) {
   const std::vector<int> labels = BandLabels(s, kConeStart - 1, kConeEnd + 1);
   std::vector<RegionState> regions = RegionsFromLabels(
       s.c, labels, {SurfaceType::kCone, SurfaceType::kCylinder, SurfaceType::kPlane});
-  EXPECT_TRUE(Propose(s.c, labels, &regions).empty());
+  EXPECT_TRUE(RetypeByInterior(s.c, labels, &regions).empty());
   EXPECT_EQ(regions[0].type, SurfaceType::kCone);
 }
 
@@ -377,7 +302,7 @@ TEST(RetypeByInteriorTest, NoTypeAtTheNoiseChangesNothing) {
   BuildChamfer(&s);
   const std::vector<int> labels = BandLabels(s, kConeStart - 1, kConeEnd + 7);
   std::vector<RegionState> regions = RegionsFromLabels(s.c, labels, kTypes);
-  EXPECT_TRUE(Propose(s.c, labels, &regions).empty());
+  EXPECT_TRUE(RetypeByInterior(s.c, labels, &regions).empty());
   EXPECT_EQ(regions[0].type, SurfaceType::kSphere);
 }
 
@@ -392,7 +317,7 @@ TEST(RetypeByInteriorTest, SmallInteriorKeepsItsType) {
   }
   std::vector<RegionState> regions = RegionsFromLabels(s.c, labels, kTypes);
   ASSERT_EQ(InteriorVertices(s.c, labels, kBand, regions[0].vertices).size(), 20u);
-  EXPECT_TRUE(Propose(s.c, labels, &regions).empty());
+  EXPECT_TRUE(RetypeByInterior(s.c, labels, &regions).empty());
   EXPECT_EQ(regions[0].type, SurfaceType::kSphere);
 }
 
@@ -444,7 +369,7 @@ TEST(RetypeByInteriorTest, SphereOnAFacetedRoundBecomesACylinder) {
   EXPECT_GT(ScoreType(s.c, SurfaceType::kCylinder, interior).score + kScoreMargin,
             ScoreType(s.c, SurfaceType::kSphere, interior).score);
 
-  EXPECT_EQ(Propose(s.c, labels, &regions), std::vector<int>{0});
+  EXPECT_EQ(RetypeByInterior(s.c, labels, &regions), std::vector<int>{0});
   ASSERT_EQ(regions[0].type, SurfaceType::kCylinder);
   const auto& cylinder = std::get<Cylinder>(regions[0].surface);
   // Under the arc by at most the sagitta, 0.22.
@@ -462,7 +387,7 @@ TEST(RetypeByInteriorTest, SphereOnAFacetedRoundStaysUnlessOnFacets) {
   std::vector<RegionState> regions =
       RegionsFromLabels(s.c, labels, {SurfaceType::kSphere, SurfaceType::kPlane,
                                       SurfaceType::kPlane});
-  EXPECT_TRUE(Propose(s.c, labels, &regions).empty());
+  EXPECT_TRUE(RetypeByInterior(s.c, labels, &regions).empty());
   EXPECT_EQ(regions[0].type, SurfaceType::kSphere);
 }
 
@@ -473,7 +398,7 @@ TEST(RetypeByInteriorTest, CylinderOnAFacetedRoundStays) {
   std::vector<RegionState> regions =
       RegionsFromLabels(s.c, labels, {SurfaceType::kCylinder, SurfaceType::kPlane,
                                       SurfaceType::kPlane});
-  EXPECT_TRUE(Propose(s.c, labels, &regions).empty());
+  EXPECT_TRUE(RetypeByInterior(s.c, labels, &regions).empty());
   EXPECT_EQ(regions[0].type, SurfaceType::kCylinder);
 }
 
