@@ -29,9 +29,12 @@
 // chords). Boundaries are placed by alpha-expansion with the surfaces
 // re-estimated between sweeps; merges, drops, retypes and planes split off
 // a curved region are each proposed and kept iff the energy falls, except
-// the retype of a narrow band by its interior, still a rule
-// (core/src/segment/segment.cc holds the order). Each surface is reported
-// as fitted to its region's inliers.
+// the retype of a narrow band by its interior, still a rule. Nine steps:
+// grow; absorb; evidence share; merge; expand; improve (the moves
+// alternated with the expansion until none lowers the energy); split off
+// planes; retype by interior; improve (core/src/segment/segment.cc lists
+// them with their principle). Each surface is reported as fitted to its
+// region's inliers.
 //
 // In: a Mesh and its CurvatureField. Out: Segmentation with a label per mesh
 // face and vertex and one Region per label.
