@@ -14,8 +14,8 @@
 namespace meshseg::pipeline_internal {
 namespace {
 
-// Assign-and-refit rounds of FitBeside; the assignment of a band between
-// two creases settles in two or three.
+// A bound on FitBeside's assign-and-refit rounds; if the assignment has not
+// settled by then, the last fit stands.
 constexpr int kMaxRounds = 8;
 
 // The types a torus or cone region may take here (limits in its family).

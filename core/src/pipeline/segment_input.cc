@@ -234,8 +234,9 @@ absl::StatusOr<std::vector<int>> SegmentReconstruction(const Reconstruction& rec
   RetypeToPoints(points, reconstruction.stats.noise, &segmentation.regions,
                                     &segmentation.surfaces);
   // A narrow band's region may hold its neighbours' points beyond both its
-  // creases, which bend its type (a chamfer into a torus): decided again
-  // with each point on the nearest of its and its neighbours' surfaces.
+  // creases, which bend its type (a chamfer into a torus): its type decided
+  // again with each point on the nearest of a simpler type's surface and
+  // its neighbours' (retype_beside_neighbours.h).
   RetypeBesideNeighbours(
       points,
       RegionNeighbours(mesh.tri, segmentation.face_labels, segmentation.regions.size()),
