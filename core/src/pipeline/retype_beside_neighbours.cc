@@ -18,8 +18,8 @@ namespace {
 // settled by then, the last fit stands.
 constexpr int kMaxRounds = 8;
 
-// The types a torus or cone region may take here (limits in its family).
-constexpr SurfaceType kAxialLimits[] = {SurfaceType::kCylinder, SurfaceType::kCone};
+// The types a region may take here: the axial types.
+constexpr SurfaceType kAxialTypes[] = {SurfaceType::kCylinder, SurfaceType::kCone};
 
 bool Analytic(SurfaceType type) {
   return type == SurfaceType::kPlane || type == SurfaceType::kCylinder ||
@@ -105,7 +105,8 @@ int RetypeBesideNeighbours(std::span<const std::vector<Eigen::Vector3d>> points_
   for (Region& region : *regions) {
     const std::vector<Eigen::Vector3d>& points = points_of_region[region.id];
     const SurfaceType own_type = region.type;
-    if ((own_type != SurfaceType::kTorus && own_type != SurfaceType::kCone) ||
+    if ((own_type != SurfaceType::kTorus && own_type != SurfaceType::kCone &&
+         own_type != SurfaceType::kSphere) ||
         points.size() < kMinRetypePoints) {
       continue;
     }
@@ -148,8 +149,14 @@ int RetypeBesideNeighbours(std::span<const std::vector<Eigen::Vector3d>> points_
     for (const Eigen::Vector3d& p : points) normals.push_back(Project(region.surface, p).normal);
     std::optional<std::pair<SurfaceType, BesideFit>> best;
     double best_score = std::numeric_limits<double>::infinity();
-    for (const SurfaceType t : kAxialLimits) {
-      if (!segment_internal::IsLimitOf(t, own_type)) continue;
+    for (const SurfaceType t : kAxialTypes) {
+      // A limit of the region's type (a cylinder or cone of a torus, a
+      // cylinder of a cone) must score less than kScoreMargin above it; an
+      // axial type in place of a sphere (no limit of it, nor it of them)
+      // kScoreMargin below it, its extra parameters paid (as in
+      // RetypeToPoints).
+      const bool limit = segment_internal::IsLimitOf(t, own_type);
+      if (!limit && own_type != SurfaceType::kSphere) continue;
       const FitResult start = FitOfType(t, {.points = points, .normals = normals, .weights = {}});
       if (!start.ok()) continue;
       const std::optional<BesideFit> fit = FitBeside(t, start.surface, points, other_distance);
@@ -158,7 +165,9 @@ int RetypeBesideNeighbours(std::span<const std::vector<Eigen::Vector3d>> points_
           c, fit->mean_square, points.size(), segment_internal::ParameterCount(t));
       const bool near = segment_internal::ModelErrorOfMeanSquare(cloud, fit->mean_square) <=
                         segment_internal::kScoredNearError * sigma;
-      if (near && score < best_score && score < own_score + segment_internal::kScoreMargin) {
+      if (near && score < best_score &&
+          (limit ? score < own_score + segment_internal::kScoreMargin
+                 : score + segment_internal::kScoreMargin < own_score)) {
         best_score = score;
         best.emplace(t, *fit);
       }

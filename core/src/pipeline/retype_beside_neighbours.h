@@ -21,11 +21,11 @@ std::vector<std::vector<int>> RegionNeighbours(const TriMesh& mesh,
                                                std::size_t region_count);
 
 // The type decision (ALGORITHMS.md S1, with RetypeToPoints' criterion) made
-// again for each torus or cone region on its points (points_of_region, its
-// band), against the hypothesis that some of them are its neighbours'
-// (`neighbours`, RegionNeighbours; analytic regions with points of their
-// own): each point on the nearest of a limit type's surface and the
-// neighbours' surfaces.
+// again for each torus, cone or sphere region on its points
+// (points_of_region, its band), against the hypothesis that some of them
+// are its neighbours' (`neighbours`, RegionNeighbours; analytic regions
+// with points of their own): each point on the nearest of an axial type's
+// surface and the neighbours' surfaces.
 //
 // The reconstruction rounds a crease over about a spacing, and the region of
 // a narrow band between two creases (a chamfer) can reach a few spacings
@@ -44,15 +44,22 @@ std::vector<std::vector<int>> RegionNeighbours(const TriMesh& mesh,
 // distance to the nearest of the fit and the neighbours' surfaces; the
 // region's type is scored on all of them at its own surface. A limit of the
 // region's type in its axial family (a cylinder or cone of a torus, a
-// cylinder of a cone) takes over when it is near the cloud's noise `sigma`
-// (not the region's own scatter, which the neighbours' points it holds
+// cylinder of a cone), or a cylinder or cone in place of a sphere, takes
+// over when it is near the cloud's noise `sigma` (not the region's own
+// scatter, which the neighbours' points it holds
 // inflate: a torus fitted badly to a fillet's band and its neighbours'
 // points is no measure of what a cone beside them must meet) and scores
 // less than kScoreMargin above the region's type (its extra parameters
-// must buy that much). A region whose points its neighbours' surfaces
-// explain near the noise without it is a fragment of theirs and is left
-// alone. No plane: a plane fits any narrow enough strip of a curved
-// surface within the noise, and RetypeToPoints has tried it on all the band.
+// must buy that much), or, in place of a sphere (no limit of it, nor it of
+// them), kScoreMargin below it. Over a band a few spacings wide a sphere
+// meets a cone's straight profile within its sagitta, and on a chamfer
+// whose band holds the rounded creases beyond both edges it fits about as
+// well with 2 parameters fewer; beside the neighbours the cone explains
+// the band at the noise and the sagitta is the sphere's alone. A region
+// whose points its neighbours' surfaces explain near the noise without it
+// is a fragment of theirs and is left alone. No plane: a plane fits any
+// narrow enough strip of a curved surface within the noise, and
+// RetypeToPoints has tried it on all the band.
 // A retyped region takes the fit on the points it explains, and a surface of
 // its own (TakeOwnSurface). Returns how many regions changed type.
 int RetypeBesideNeighbours(std::span<const std::vector<Eigen::Vector3d>> points_of_region,

@@ -137,6 +137,83 @@ TEST(RetypeBesideNeighbours, AChamferWhoseRegionReachesOverBothCreasesIsACone) {
   EXPECT_EQ(surfaces[0].regions, std::vector<int>{0});
 }
 
+// A sphere fitted to `points` (with their true normals) as region 0.
+Region SphereRegion(const std::vector<Eigen::Vector3d>& points,
+                    const std::vector<Eigen::Vector3d>& normals) {
+  const FitResult fit =
+      FitOfType(SurfaceType::kSphere, {.points = points, .normals = normals, .weights = {}});
+  EXPECT_TRUE(fit.ok());
+  return RegionOn(0, SurfaceType::kSphere, fit.surface, points);
+}
+
+TEST(RetypeBesideNeighbours, AChamferTypedASphereIsACone) {
+  // The turned end's chamfer band as above, typed a sphere: over a band a
+  // few spacings wide a sphere meets a cone's straight profile within its
+  // sagitta (about 0.09 over the 2.1 slant, for a sphere of radius 6 on
+  // the axis), and with the neighbours' points beyond both creases it fits
+  // the band about as well as the cone does, with 2 parameters fewer. Set
+  // beside its neighbours, the cone explains the band at the noise and the
+  // sphere's sagitta stays: the cone scores kScoreMargin below it.
+  constexpr double kReach = 2.5 * kSpacing;
+  std::vector<Eigen::Vector3d> normals;
+  std::vector<std::vector<Eigen::Vector3d>> points(3);
+  points[0] = Revolve(ChamferBand(kReach), kChamferSlant + 2.0 * kReach, 2000, 3, &normals);
+  points[1] = Revolve([](double s) -> ProfilePoint { return {5.0, -s, 1.0, 0.0}; }, 4.0, 3000, 4,
+                      nullptr);
+  points[2] = Revolve([](double s) -> ProfilePoint { return {s, 1.5, 0.0, 1.0}; }, 3.5, 1500, 5,
+                      nullptr);
+  std::vector<Region> regions = {
+      SphereRegion(points[0], normals),
+      RegionOn(1, SurfaceType::kCylinder, Cylinder{.radius = 5.0}, points[1]),
+      RegionOn(2, SurfaceType::kPlane, Plane{.point = {0, 0, 1.5}}, points[2])};
+  std::vector<SharedSurface> surfaces = OwnSurfaces(regions);
+  // On its band alone the sphere stays.
+  std::vector<Region> alone = regions;
+  EXPECT_EQ(RetypeToPoints(points, kSigma, &alone, &surfaces), 0);
+  ASSERT_EQ(alone[0].type, SurfaceType::kSphere);
+
+  const std::vector<std::vector<int>> neighbours = {{1, 2}, {0}, {0}};
+  EXPECT_EQ(RetypeBesideNeighbours(points, neighbours, kSigma, &regions, &surfaces), 1);
+  ASSERT_EQ(regions[0].type, SurfaceType::kCone);
+  const Cone& cone = std::get<Cone>(regions[0].surface);
+  EXPECT_NEAR(cone.half_angle, std::numbers::pi / 4, 0.02);
+  EXPECT_NEAR(std::abs(cone.axis_direction.z()), 1.0, 1e-3);
+  EXPECT_LT(regions[0].rms_distance, 1.2 * kSigma);
+  EXPECT_EQ(regions[1].type, SurfaceType::kCylinder);
+  EXPECT_EQ(regions[2].type, SurfaceType::kPlane);
+}
+
+TEST(RetypeBesideNeighbours, ASphericalCapStaysASphere) {
+  // A cylinder of radius 15 capped by a sphere of radius 20 meeting its rim
+  // at a crease (about 41 degrees); the cap's region reaches 2.5 spacings
+  // down the cylinder. Beside the cylinder an axial type leaves the cap's
+  // curvature (its profile turns 49 degrees over 17 units) far above the
+  // noise: the sphere stays.
+  constexpr double kReach = 2.5 * kSpacing;
+  constexpr double kRadius = 20.0;
+  const double rim_angle = std::asin(15.0 / kRadius);  // from the pole
+  const double rim_z = kRadius * std::cos(rim_angle);   // sphere centred at 0
+  const Profile cap = [&](double s) -> ProfilePoint {
+    if (s < kReach) return {15.0, rim_z - (kReach - s), 1.0, 0.0};  // the cylinder
+    const double phi = rim_angle - (s - kReach) / kRadius;          // from the pole
+    return {kRadius * std::sin(phi), kRadius * std::cos(phi), std::sin(phi), std::cos(phi)};
+  };
+  std::vector<Eigen::Vector3d> normals;
+  std::vector<std::vector<Eigen::Vector3d>> points(2);
+  points[0] = Revolve(cap, kReach + kRadius * rim_angle, 4000, 11, &normals);
+  const Profile side = [&](double s) -> ProfilePoint {
+    return {15.0, rim_z - kReach - s, 1.0, 0.0};
+  };
+  points[1] = Revolve(side, 5.0, 3000, 12, nullptr);
+  std::vector<Region> regions = {
+      SphereRegion(points[0], normals),
+      RegionOn(1, SurfaceType::kCylinder, Cylinder{.radius = 15.0}, points[1])};
+  std::vector<SharedSurface> surfaces = OwnSurfaces(regions);
+  const std::vector<std::vector<int>> neighbours = {{1}, {0}};
+  EXPECT_EQ(RetypeBesideNeighbours(points, neighbours, kSigma, &regions, &surfaces), 0);
+  EXPECT_EQ(regions[0].type, SurfaceType::kSphere);
+}
+
 TEST(RetypeBesideNeighbours, ARoundTangentToItsNeighboursStaysATorus) {
   // A boss of radius 6 with its top edge (z = 0) rounded, tube radius 2
   // (about 10 spacings across): tangent to the top (r <= 4) and to the
