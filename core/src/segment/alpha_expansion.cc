@@ -186,8 +186,8 @@ Expansion Expand(const SegmentContext& c, const std::vector<int>& labels,
   out.smooth_data_delta = change;
   for (const auto& [r, dn] : size_change) {
     const long size = static_cast<long>(regions[r].vertices.size());
-    change += LabelCost(c, regions[r].type, static_cast<std::size_t>(size + dn)) -
-              LabelCost(c, regions[r].type, static_cast<std::size_t>(size));
+    change += LabelCost(c, regions[r], static_cast<std::size_t>(size + dn)) -
+              LabelCost(c, regions[r], static_cast<std::size_t>(size));
   }
   out.delta = change;
   return out;

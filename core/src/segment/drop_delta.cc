@@ -166,7 +166,7 @@ DropMove DropDelta(const SegmentContext& c, const std::vector<int>& labels,
 
   // Data and label costs: r's go, the outliers pay c_out / 2, each taker
   // pays for all it holds under its refitted surface.
-  double delta = -region.Cost(id) - LabelCost(c, r.type, r.vertices.size());
+  double delta = -region.Cost(id) - LabelCost(c, r);
   for (std::size_t k = 0; k < r.vertices.size(); ++k) {
     if (move.next[k] < 0) delta += OutlierCost(c, r.vertices[k]);
   }
@@ -188,11 +188,13 @@ DropMove DropDelta(const SegmentContext& c, const std::vector<int>& labels,
     double cost = own + DataCost(c, taker.surface, taken);
     Surface surface = taker.surface;
     // The refit is taken only if it costs less than `cost`: a cost above
-    // that need not be summed to the end.
-    const PricedFit fit = PriceFit(c, taker.type, grown, /*stop=*/cost);
-    if (fit.surface && fit.cost < cost) cost = fit.cost, surface = *fit.surface;
-    delta += cost - own + LabelCost(c, taker.type, grown.size()) -
-             LabelCost(c, taker.type, taker.vertices.size());
+    // that need not be summed to the end. A surface sharing parameters with
+    // a neighbour's fit keeps them (energy.h): only re-estimation frees it.
+    if (taker.shared_parameters == 0) {
+      const PricedFit fit = PriceFit(c, taker.type, grown, /*stop=*/cost);
+      if (fit.surface && fit.cost < cost) cost = fit.cost, surface = *fit.surface;
+    }
+    delta += cost - own + LabelCost(c, taker, grown.size()) - LabelCost(c, taker);
     move.surfaces.push_back(surface);
   }
 

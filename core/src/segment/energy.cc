@@ -98,14 +98,35 @@ double DataCost(const SegmentContext& c, const Surface& surface, std::span<const
   return sum;
 }
 
-double LabelCost(SurfaceType type, std::size_t vertex_count, double f) {
+namespace {
+
+// (p / (2 f)) ln (f n) for `parameters` p.
+double LabelCostOf(int parameters, std::size_t vertex_count, double f) {
   const double effective = f * static_cast<double>(vertex_count);
   if (!(effective > 1.0)) return 0.0;
-  return 0.5 * ParameterCount(type) * std::log(effective) / f;
+  return 0.5 * parameters * std::log(effective) / f;
+}
+
+}  // namespace
+
+double LabelCost(SurfaceType type, std::size_t vertex_count, double f) {
+  return LabelCostOf(ParameterCount(type), vertex_count, f);
 }
 
 double LabelCost(const SegmentContext& c, SurfaceType type, std::size_t vertex_count) {
   return LabelCost(type, vertex_count, c.evidence_share);
+}
+
+int FreeParameters(const RegionState& r) {
+  return ParameterCount(r.type) - r.shared_parameters;
+}
+
+double LabelCost(const SegmentContext& c, const RegionState& r, std::size_t vertex_count) {
+  return LabelCostOf(FreeParameters(r), vertex_count, c.evidence_share);
+}
+
+double LabelCost(const SegmentContext& c, const RegionState& r) {
+  return LabelCost(c, r, r.vertices.size());
 }
 
 double ExactFacetCost(const FacetMesh& fm, int f, const Surface& surface, double tau) {
@@ -165,7 +186,7 @@ double TotalEnergy(const SegmentContext& c, const std::vector<int>& labels,
     }
   }
   for (const RegionState& r : regions) {
-    if (r.alive) e += LabelCost(c, r.type, r.vertices.size());
+    if (r.alive) e += LabelCost(c, r);
   }
   return e;
 }
@@ -183,8 +204,11 @@ std::pair<RegionState, double> ReestimatedWithCost(const SegmentContext& c, cons
   RegionState out = r;
   const PricedFit fit = PriceFit(c, r.type, r.vertices);
   const double cost = DataCost(c, r.surface, r.vertices);
-  if (fit.surface && fit.cost < cost) {
+  // The label cost the free refit adds (0 for a surface fitted free).
+  const double freed = LabelCost(c, r.type, r.vertices.size()) - LabelCost(c, r);
+  if (fit.surface && fit.cost + freed < cost) {
     out.surface = *fit.surface;
+    out.shared_parameters = 0;
     return {std::move(out), fit.cost};
   }
   return {std::move(out), cost};
@@ -256,8 +280,7 @@ std::optional<Move> PriceMerge(const SegmentContext& c, const std::vector<int>& 
   const double before = x_cost + y_cost +
                         BoundaryCost(c, labels, x_smaller ? x.vertices : y.vertices,
                                      x_smaller ? b : a) +
-                        LabelCost(c, x.type, x.vertices.size()) +
-                        LabelCost(c, y.type, y.vertices.size());
+                        LabelCost(c, x) + LabelCost(c, y);
   std::optional<Move> best;
   for (const SurfaceType type : types) {
     const double label = LabelCost(c, type, both.size());
@@ -295,7 +318,7 @@ std::optional<Move> MergeDelta(const SegmentContext& c, const std::vector<int>& 
 std::optional<Move> RetypeDelta(const SegmentContext& c, const RegionState& r, SurfaceType type) {
   const PricedFit fit = PriceFit(c, type, r.vertices);
   if (!fit.surface) return std::nullopt;
-  const double before = DataCost(c, r.surface, r.vertices) + LabelCost(c, r.type, r.vertices.size());
+  const double before = DataCost(c, r.surface, r.vertices) + LabelCost(c, r);
   return Move{.delta = fit.cost + LabelCost(c, type, r.vertices.size()) - before,
               .type = type,
               .surface = *fit.surface};

@@ -52,6 +52,21 @@
 // information criterion of InformationScore with the variance known, so
 // that with the data term above a type or a second surface must lower the
 // residuals by more than its parameters' cost.
+// Shared parameters. The BIC counts the parameters estimated from the data
+// it is the likelihood of. A surface fitted with some of its parameters
+// taken from a neighbour's fit (a countersink's cone on its bore's axis: the
+// axis, 4 of the cone's 6, is the bore's, estimated from the bore's
+// vertices; a round tangent to two planes: its axis direction and the
+// bisector its centre lies on are the planes') shares them with that
+// neighbour, whose own label already pays for them: the joint model of the
+// two regions has them once. Region r's label then counts p_r = p_T - s_r,
+// s_r its shared parameters (RegionState::shared_parameters; 0 for a
+// surface fitted free). One mechanism for every such constraint: whatever
+// fits a surface on a neighbour's parameters sets s_r, whatever refits it
+// free sets 0. Re-estimation (Reestimated) compares the two models of the
+// region by E: the free refit replaces the shared surface only if its data
+// cost falls by more than the s_r parameters it adds to the label, the BIC
+// of a nested model; the shared surface is not refitted on its own.
 //
 // Correlated residuals. The data term and the BIC count every vertex as an
 // independent sample of the noise. Where the residuals are correlated
@@ -177,6 +192,13 @@ double DataCost(const SegmentContext& c, const Surface& surface, std::span<const
 double LabelCost(const SegmentContext& c, SurfaceType type, std::size_t vertex_count);
 // The same for evidence share `f` (0 < f <= 1), without a mesh.
 double LabelCost(SurfaceType type, std::size_t vertex_count, double f);
+// p_r = p_T - s_r: the parameters of region `r`'s surface estimated from
+// its own vertices ("Shared parameters" above).
+int FreeParameters(const RegionState& r);
+// (p_r / (2 f)) ln (f n) of region `r` on `vertex_count` vertices (its
+// own by default).
+double LabelCost(const SegmentContext& c, const RegionState& r);
+double LabelCost(const SegmentContext& c, const RegionState& r, std::size_t vertex_count);
 
 // E with exact vertices (above). D_f(S): 0 if facet f of `fm` lies on
 // `surface` within `tau` (FacetOnSurface), else infinity.
@@ -247,7 +269,9 @@ std::optional<Surface> FitForEnergy(const SegmentContext& c, SurfaceType type,
                                     std::span<const int> vertices);
 
 // Region `r` re-estimated (PEARL's step between expansions): refitted with
-// its own type (FitForEnergy) if that costs less than its current surface.
+// its own type (FitForEnergy) if that costs less than its current surface,
+// and for a surface sharing parameters with a neighbour's fit, less by more
+// than the label cost those parameters add when freed (s_r = 0 then).
 // A region keeps its surface from before absorption and refinement changed
 // its vertices; priced with that stale surface, any move that refits it
 // looks a gain.

@@ -11,11 +11,11 @@
 namespace meshseg::segment_internal {
 namespace {
 
-// Whether two regions are the same: alive, type, surface (bit for bit) and
-// vertices.
+// Whether two regions are the same: alive, type, surface (bit for bit), its
+// shared parameters and vertices.
 bool SameRegion(const RegionState& a, const RegionState& b) {
   if (a.alive != b.alive || a.type != b.type || a.surface.index() != b.surface.index() ||
-      a.vertices != b.vertices) {
+      a.shared_parameters != b.shared_parameters || a.vertices != b.vertices) {
     return false;
   }
   return std::visit(

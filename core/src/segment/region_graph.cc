@@ -90,6 +90,7 @@ absl::StatusOr<int> MergeBestPairs(
     MergeInto(into, a_larger ? b : a, labels, regions);
     (*regions)[into].type = merge.type;
     (*regions)[into].surface = merge.surface;
+    (*regions)[into].shared_parameters = 0;  // the union is fitted free
     ++merges;
     std::erase_if(cache, [&](const auto& e) {
       return e.first.first == a || e.first.second == a || e.first.first == b ||

@@ -69,6 +69,14 @@ std::optional<CoaxialFit> BestCoaxialCone(const SegmentContext& c, const std::ve
   return best;
 }
 
+RegionState CoaxialConeRegion(const RegionState& r, const Surface& cone) {
+  RegionState out = r;
+  out.type = SurfaceType::kCone;
+  out.surface = cone;
+  out.shared_parameters = ParameterCount(SurfaceType::kCone) - kCoaxialConeParameters;
+  return out;
+}
+
 std::vector<int> RetypeCoaxialBands(const SegmentContext& c, const std::vector<int>& labels,
                                     std::vector<RegionState>* regions) {
   std::vector<int> retyped;
@@ -84,13 +92,11 @@ std::vector<int> RetypeCoaxialBands(const SegmentContext& c, const std::vector<i
     // The cone on the axis, priced as E prices a retype (RetypeDelta's terms
     // with this surface): against the region re-estimated with its own type.
     const RegionState own = Reestimated(c, r);
-    const double delta = DataCost(c, best->fit.surface, r.vertices) +
-                         LabelCost(c, SurfaceType::kCone, r.vertices.size()) -
-                         DataCost(c, own.surface, r.vertices) -
-                         LabelCost(c, r.type, r.vertices.size());
+    const RegionState cone = CoaxialConeRegion(r, best->fit.surface);
+    const double delta = DataCost(c, cone.surface, r.vertices) + LabelCost(c, cone) -
+                         DataCost(c, own.surface, r.vertices) - LabelCost(c, own);
     if (!(delta < 0.0)) continue;
-    r.type = SurfaceType::kCone;
-    r.surface = best->fit.surface;
+    r = cone;
     retyped.push_back(id);
   }
   return retyped;

@@ -24,9 +24,14 @@ namespace meshseg::segment_internal {
 // the interior with kCoaxialConeParameters (InformationScore). The best
 // scoring such cone is proposed, and the region becomes it iff that lowers E
 // (RetypeDelta's terms with that surface, against the region re-estimated
-// with its own type). Nothing is proposed when the estimated noise is zero.
-// Returns the ids of the regions retyped.
+// with its own type), its label counting kCoaxialConeParameters: the axis
+// is the neighbour's (energy.h, "Shared parameters"). Nothing is proposed
+// when the estimated noise is zero. Returns the ids of the regions retyped.
 inline constexpr int kCoaxialConeParameters = 2;  // apex along the axis, half angle
+
+// Region `r` as the cone `cone` fitted on a turned neighbour's axis: its
+// label counts kCoaxialConeParameters (shared_parameters the other 4).
+RegionState CoaxialConeRegion(const RegionState& r, const Surface& cone);
 
 std::vector<int> RetypeCoaxialBands(const SegmentContext& c, const std::vector<int>& labels,
                                     std::vector<RegionState>* regions);

@@ -44,6 +44,7 @@ bool RetypeIfLowerThan(const SegmentContext& c, RegionState* r,
   if (!best || !(best->delta < 0.0)) return false;
   r->type = best->type;
   r->surface = best->surface;
+  r->shared_parameters = 0;  // fitted free
   return true;
 }
 
@@ -89,6 +90,7 @@ void RetypeQuadrics(const SegmentContext& c, std::vector<RegionState>* regions) 
     if (!typed) continue;
     r.type = typed->type;
     r.surface = typed->fit.surface;
+    r.shared_parameters = 0;
   }
 }
 

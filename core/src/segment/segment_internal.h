@@ -28,6 +28,12 @@ struct RegionState {
   Surface surface;
   std::vector<int> vertices;
   bool alive = true;
+  // How many of its type's parameters `surface` shares with a neighbour's
+  // fit, estimated from that neighbour's vertices, not this region's (a
+  // cone on its bore's axis: the axis, 4 of 6). The label cost counts the
+  // rest (energy.h, "Label cost"); 0 for a surface fitted free. Whatever
+  // refits `surface` free sets it back to 0.
+  int shared_parameters = 0;
 };
 
 // True for the curved analytic types: cylinder, sphere, cone, torus.

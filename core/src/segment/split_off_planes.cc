@@ -178,6 +178,7 @@ absl::StatusOr<std::vector<int>> SplitOffPlanes(const SegmentContext& c,
     kept.vertices = s->rest;
     kept.type = s->curved_type;
     kept.surface = s->curved.surface;
+    kept.shared_parameters = 0;  // the rest is fitted free
     // The quadric may have been the mix; the rest may have a type.
     if (kept.type == SurfaceType::kQuadric) {
       const TypedFit typed = DecideCurvedType(c, kept.vertices, c.tolerance);
