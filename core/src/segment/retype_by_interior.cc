@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <span>
 
 #include <tbb/parallel_for.h>
@@ -12,6 +13,7 @@
 #include "meshseg/status_macros.h"
 #include "segment/alpha_expansion.h"
 #include "segment/decide_type.h"
+#include "segment/energy.h"
 #include "segment/retype_coaxial_bands.h"
 
 namespace meshseg::segment_internal {
@@ -162,57 +164,101 @@ bool TypeMissesInterior(const SegmentContext& c, const std::vector<int>& labels,
   return interior.size() >= kMinInteriorVertices && !FitsAtNoise(c, FitType(c, r.type, interior));
 }
 
-std::vector<int> RetypeByInterior(const SegmentContext& c, const std::vector<int>& labels,
-                                  std::vector<RegionState>* regions) {
+std::vector<InteriorRetype> ProposeInteriorTypes(const SegmentContext& c,
+                                                 const std::vector<int>& labels,
+                                                 const std::vector<RegionState>& regions,
+                                                 KeptPrices* kept) {
+  constexpr KeptPrices::Proposal kProposal = KeptPrices::kInteriorType;
   // On a noise-free mesh nothing fits "at the noise"; on facets see above.
   if (!(c.noise_sigma > 0.0) && !c.on_facets) return {};
-  const int n_regions = static_cast<int>(regions->size());
-  std::vector<uint8_t> retyped(n_regions, 0);
-  // The score of each cone region's interior on a turned neighbour's axis
-  // (BestCoaxialCone) where that cone meets it within kScoredNearError
-  // sigmas, read before any region changes.
-  std::vector<double> on_axis(n_regions, std::numeric_limits<double>::infinity());
+  const int n_regions = static_cast<int>(regions.size());
+  if (kept != nullptr) kept->Reserve(regions.size());
+  std::vector<std::optional<InteriorRetype>> proposed(n_regions);
+  // Each region's proposal reads the labels and regions as given and writes
+  // its own entries (of `proposed`, and `kept`'s): concurrent.
   tbb::parallel_for(0, n_regions, [&](int id) {
-    const RegionState& r = (*regions)[id];
-    if (c.on_facets || !r.alive || r.type != SurfaceType::kCone) return;
-    const int ids[] = {id};
-    const std::vector<int> interior = InteriorVertices(c, labels, ids, r.vertices);
-    if (interior.size() < kMinInteriorVertices) return;
-    const auto cone = BestCoaxialCone(c, labels, *regions, id, interior);
-    if (cone && ModelErrorOfMeanSquare(c, cone->mean_square) <= kScoredNearError * c.noise_sigma) {
-      on_axis[id] = cone->score;
-    }
-  });
-  tbb::parallel_for(0, n_regions, [&](int id) {
-    RegionState& r = (*regions)[id];
+    const RegionState& r = regions[id];
     if (!r.alive || !IsCurved(r.type)) return;
+    // A cone's own score reads its neighbours (BestCoaxialCone): asked
+    // every time; every other region's proposal reads the region alone.
+    const bool alone = c.on_facets || r.type != SurfaceType::kCone;
+    if (alone && kept != nullptr && kept->Refused(regions, id, kProposal)) return;
     const int ids[] = {id};
     const std::vector<int> interior = InteriorVertices(c, labels, ids, r.vertices);
-    if (interior.size() < kMinInteriorVertices) return;
     FitResult interior_fit;
-    const SurfaceType type = c.on_facets
-                                 ? BestTypeOnFacets(c, r.type, r.vertices, &interior_fit)
-                                 : BestInteriorType(c, r.type, on_axis[id], interior, &interior_fit);
-    if (type == r.type) return;
+    SurfaceType type = r.type;
+    if (interior.size() >= kMinInteriorVertices) {
+      // The score of a cone region's interior on a turned neighbour's axis
+      // (BestCoaxialCone) where that cone meets it within kScoredNearError
+      // sigmas.
+      double on_axis = std::numeric_limits<double>::infinity();
+      if (!alone) {
+        const auto cone = BestCoaxialCone(c, labels, regions, id, interior);
+        if (cone &&
+            ModelErrorOfMeanSquare(c, cone->mean_square) <= kScoredNearError * c.noise_sigma) {
+          on_axis = cone->score;
+        }
+      }
+      type = c.on_facets ? BestTypeOnFacets(c, r.type, r.vertices, &interior_fit)
+                         : BestInteriorType(c, r.type, on_axis, interior, &interior_fit);
+    }
+    if (type == r.type) {
+      if (alone && kept != nullptr) kept->Refuse(regions, id, kProposal);
+      return;
+    }
+    // A cone beside a turned face whose axis it shares is proposed on that
+    // axis, its label counting only its own parameters (energy.h, "Shared
+    // parameters"); the re-estimation frees it where its data pays for that.
+    if (type == SurfaceType::kCone && !c.on_facets) {
+      if (const auto cone = BestCoaxialCone(c, labels, regions, id, Sample(interior))) {
+        const RegionState on_axis = CoaxialConeRegion(r, cone->fit.surface);
+        proposed[id] = InteriorRetype{.id = id,
+                                      .type = type,
+                                      .surface = on_axis.surface,
+                                      .shared_parameters = on_axis.shared_parameters};
+        return;
+      }
+    }
     // On facets the fit was already made to all of the region's vertices.
     const FitResult whole = c.on_facets ? interior_fit : FitType(c, type, r.vertices);
-    r.type = type;
-    r.surface = whole.ok() ? whole.surface : interior_fit.surface;
-    retyped[id] = 1;
+    proposed[id] = InteriorRetype{
+        .id = id, .type = type, .surface = whole.ok() ? whole.surface : interior_fit.surface};
   });
-  std::vector<int> ids;
-  for (int id = 0; id < n_regions; ++id) {
-    if (retyped[id]) ids.push_back(id);
+  std::vector<InteriorRetype> proposals;
+  for (auto& p : proposed) {
+    if (p) proposals.push_back(std::move(*p));
   }
-  return ids;
+  return proposals;
 }
 
-absl::StatusOr<std::vector<int>> RetypeByInteriorAndExpand(const SegmentContext& c,
-                                                           std::vector<int>* labels,
-                                                           std::vector<RegionState>* regions) {
-  std::vector<int> retyped = RetypeByInterior(c, *labels, regions);
-  if (!retyped.empty()) MESHSEG_RETURN_IF_ERROR(ExpandRegions(c, labels, regions).status());
+absl::StatusOr<std::vector<int>> RetypeByInterior(const SegmentContext& c,
+                                                  std::vector<int>* labels,
+                                                  std::vector<RegionState>* regions,
+                                                  KeptPrices* kept) {
+  std::vector<int> retyped;
+  const std::vector<InteriorRetype> proposals = ProposeInteriorTypes(c, *labels, *regions, kept);
+  if (proposals.empty()) return retyped;
+  double energy = TotalEnergy(c, *labels, *regions);
+  for (const InteriorRetype& p : proposals) {
+    // On copies: the retype, re-estimated, then the expansion.
+    std::vector<int> next_labels = *labels;
+    std::vector<RegionState> next = *regions;
+    RegionState& r = next[p.id];
+    if (!r.alive || r.vertices.empty()) continue;
+    r.type = p.type;
+    r.surface = p.surface;
+    r.shared_parameters = p.shared_parameters;
+    r = Reestimated(c, r);
+    MESHSEG_RETURN_IF_ERROR(ExpandRegions(c, &next_labels, &next).status());
+    const double next_energy = TotalEnergy(c, next_labels, next);
+    if (!(next_energy < energy)) continue;
+    *labels = std::move(next_labels);
+    *regions = std::move(next);
+    energy = next_energy;
+    retyped.push_back(p.id);
+  }
   return retyped;
 }
+
 
 }  // namespace meshseg::segment_internal

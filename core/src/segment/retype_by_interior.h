@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "absl/status/statusor.h"
+#include "segment/kept_prices.h"
 #include "segment/segment_internal.h"
 
 namespace meshseg::segment_internal {
@@ -34,15 +35,27 @@ std::vector<int> InteriorVertices(const SegmentContext& c, const std::vector<int
 bool TypeMissesInterior(const SegmentContext& c, const std::vector<int>& labels, int id,
                         const RegionState& r);
 
-// Gives every cylinder, sphere, cone or torus region the curved type that
-// explains its interior vertices best (InformationScore), if that scores
-// kScoreMargin less than its own type, or that type's simplest limit doing
-// as well; or, before that, the simplest limit of its own type (a cone or
-// cylinder for a torus, a cylinder for a cone) that fits at the noise and
-// scores within kScoreMargin of the best, or that is within half a sigma of
-// the noise and scores less than kScoreMargin above its own type (whose
-// extra parameters must buy that much). Only if some type fits the
-// interior at the noise (FitsAtNoise), or near it (within a sigma) and
+// The retype a region's interior proposes: region `id` as `type`, with
+// `surface` fitted to all of its vertices (to the interior if that fit is
+// not valid), or a cone on the axis of a turned face beside it
+// (BestCoaxialCone), which shares `shared_parameters` with that face
+// (RegionState::shared_parameters).
+struct InteriorRetype {
+  int id = -1;
+  SurfaceType type = SurfaceType::kQuadric;
+  Surface surface;
+  int shared_parameters = 0;
+};
+
+// The proposals, one per cylinder, sphere, cone or torus region at most: the
+// curved type that explains its interior vertices best (InformationScore),
+// if that scores kScoreMargin less than its own type, or that type's
+// simplest limit doing as well; or, before that, the simplest limit of its
+// own type (a cone or cylinder for a torus, a cylinder for a cone) that fits
+// at the noise and scores within kScoreMargin of the best, or that is within
+// half a sigma of the noise and scores less than kScoreMargin above its own
+// type (whose extra parameters must buy that much). Only if some type fits
+// the interior at the noise (FitsAtNoise), or near it (within a sigma) and
 // either at half the own type's model error or less (a torus on a
 // countersink, 3.26 sigma off where the cone is 0.28) or, within half a
 // sigma, scoring kScoreMargin below it (a sphere on a chamfer, 0.49 sigma,
@@ -62,24 +75,32 @@ bool TypeMissesInterior(const SegmentContext& c, const std::vector<int>& labels,
 // region can be.
 // On a mesh whose vertices lie on facets (SegmentParams::on_facets) no type
 // fits at the noise; there the type of lowest score over all of the
-// region's vertices takes over if it scores kScoreMargin below its own, or
-// its simplest limit within kScoreMargin of it.
-// The new surface is fitted to the whole region. Returns the ids retyped.
-std::vector<int> RetypeByInterior(const SegmentContext& c, const std::vector<int>& labels,
-                                  std::vector<RegionState>* regions);
+// region's vertices is proposed if it scores kScoreMargin below its own, or
+// its simplest limit within kScoreMargin of it. Nothing is proposed on a
+// noise-free mesh that is not on facets. With `kept`, a region other than
+// a cone (whose proposal reads its neighbours) that proposed nothing and is
+// unchanged since is not asked again (KeptPrices::Refused).
+std::vector<InteriorRetype> ProposeInteriorTypes(const SegmentContext& c,
+                                                 const std::vector<int>& labels,
+                                                 const std::vector<RegionState>& regions,
+                                                 KeptPrices* kept = nullptr);
 
-// RetypeByInterior, then, if it retyped a region, the expansion with
-// re-estimation (ExpandRegions, alpha_expansion.h). The retype is a rule,
-// not a move E priced: the region keeps the rows its old surface bent to
-// take (a sphere follows a chamfer's rounded crease rows, which lie off the
-// cone), and on those rows E charges the new surface for them. Priced from
-// that labelling, the old type comes back as a gain (RetypeIfLower) that the
-// labelling the expansion places for the new type refutes; PEARL follows a
-// change of model by the labelling step before any move compares models.
+// The retype by the interior as a move of E (energy.h): each proposal, in
+// id order, made together with the expansion it enables, and kept iff E
+// falls, E(retype + expansion) < E. The expansion belongs in the price:
+// the outer rows that made the region's type are the crease's, and E on the
+// labels as they stand sides with the type they made (a chamfer band with
+// a row of each neighbour: the sphere over all of it, RetypeDelta to the
+// cone > 0). With the proposed type (re-estimated, energy.h Reestimated)
+// the rows cost more than on the neighbours' surfaces, the expansion with
+// re-estimation hands them over, and the proposed type then meets what is
+// left at the noise. Priced at an expansion's fixed point (as Improve asks
+// it, first in a round), so that the expansion alone would gain nothing.
 // Returns the ids retyped. Errors: CANCELLED on stop.
-absl::StatusOr<std::vector<int>> RetypeByInteriorAndExpand(const SegmentContext& c,
-                                                           std::vector<int>* labels,
-                                                           std::vector<RegionState>* regions);
+absl::StatusOr<std::vector<int>> RetypeByInterior(const SegmentContext& c,
+                                                  std::vector<int>* labels,
+                                                  std::vector<RegionState>* regions,
+                                                  KeptPrices* kept = nullptr);
 
 }  // namespace meshseg::segment_internal
 

@@ -96,10 +96,14 @@ absl::Status Improve(const segment_internal::SegmentContext& c, std::vector<int>
                      std::vector<segment_internal::RegionState>* regions,
                      segment_internal::KeptPrices* prices) {
   for (int round = 0; round < kMaxImproveRounds; ++round) {
+    // The retype by the interior first: it is priced with the expansion it
+    // enables, at the expansion's fixed point the last round (or step) left.
+    MESHSEG_ASSIGN_OR_RETURN(const std::vector<int> by_interior,
+                             segment_internal::RetypeByInterior(c, labels, regions, prices));
     // Only the regions changed since a proposal last made no move on them
     // are asked it again (KeptPrices::Refused).
     std::size_t moves =
-        segment_internal::RetypeBentPlanes(c, regions, prices).size() +
+        by_interior.size() + segment_internal::RetypeBentPlanes(c, regions, prices).size() +
         segment_internal::RetypeInaccurateCurved(c, regions, prices).size() +
         segment_internal::RetypeCoaxialBands(c, *labels, regions).size() +
         static_cast<std::size_t>(segment_internal::RetypeToSimplerLimits(c, regions, prices));
@@ -213,10 +217,7 @@ absl::StatusOr<Segmentation> SegmentWithEdgeLength(const Mesh& mesh,
   MESHSEG_RETURN_IF_ERROR(Improve(c, &labels, &regions, &kept_prices));
   // 7. Split off planes.
   MESHSEG_RETURN_IF_ERROR(SplitOffPlanes(c, &labels, &regions).status());
-  // 8. Retype by interior, then the expansion places the band's boundary
-  // for the type its interior tells, before any move compares types.
-  MESHSEG_RETURN_IF_ERROR(RetypeByInteriorAndExpand(c, &labels, &regions).status());
-  // 9. Improve again.
+  // 8. Improve again.
   MESHSEG_RETURN_IF_ERROR(Improve(c, &labels, &regions, &kept_prices));
   ctx.Progress("segment", 0.9);
   MESHSEG_RETURN_IF_ERROR(ctx.CheckStop("segment"));

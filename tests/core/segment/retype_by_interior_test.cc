@@ -1,5 +1,7 @@
-// RetypeByInterior on stepped_shaft's chamfer as a sheet: a cylinder of
-// radius 5, a 45-degree cone band up to radius 3.5, and a flat top.
+// The retype a region's interior proposes (ProposeInteriorTypes), and the
+// move E makes of it with the expansion (RetypeByInterior), on
+// stepped_shaft's chamfer as a sheet: a cylinder of radius 5, a 45-degree
+// cone band up to radius 3.5, and a flat top.
 #include "segment/retype_by_interior.h"
 
 #include <gtest/gtest.h>
@@ -46,6 +48,20 @@ std::vector<int> BandLabels(const Sheet& s, int first, int last) {
 const std::vector<SurfaceType> kTypes = {SurfaceType::kSphere, SurfaceType::kCylinder,
                                          SurfaceType::kPlane};
 
+// Every proposal of ProposeInteriorTypes made, as a rule would make it;
+// the ids proposed.
+std::vector<int> Propose(const SegmentContext& c, const std::vector<int>& labels,
+                         std::vector<RegionState>* regions) {
+  std::vector<int> ids;
+  for (const InteriorRetype& p : ProposeInteriorTypes(c, labels, *regions)) {
+    (*regions)[p.id].type = p.type;
+    (*regions)[p.id].surface = p.surface;
+    (*regions)[p.id].shared_parameters = p.shared_parameters;
+    ids.push_back(p.id);
+  }
+  return ids;
+}
+
 TEST(RetypeByInteriorTest, SphereOnAChamferBandBecomesACone) {
   // The band region took one row of each neighbour, as it does where the
   // crease is rounded: over all its vertices a sphere fits it better than a
@@ -59,7 +75,7 @@ TEST(RetypeByInteriorTest, SphereOnAChamferBandBecomesACone) {
   EXPECT_EQ(InteriorVertices(s.c, labels, kBand, regions[0].vertices).size(),
             static_cast<std::size_t>((kConeEnd - kConeStart + 1) * kAround));
 
-  EXPECT_EQ(RetypeByInterior(s.c, labels, &regions), std::vector<int>{0});
+  EXPECT_EQ(Propose(s.c, labels, &regions), std::vector<int>{0});
   ASSERT_EQ(regions[0].type, SurfaceType::kCone);
   EXPECT_NEAR(std::get<Cone>(regions[0].surface).half_angle, std::numbers::pi / 4.0, 0.02);
   EXPECT_EQ(regions[1].type, SurfaceType::kCylinder);
@@ -77,7 +93,7 @@ TEST(RetypeByInteriorTest, AChamferRetypedOnItsInteriorKeepsTheConeOnceItsBounda
   std::vector<RegionState> regions = RegionsFromLabels(s.c, labels, kTypes);
   {
     std::vector<RegionState> unplaced = regions;
-    ASSERT_EQ(RetypeByInterior(s.c, labels, &unplaced), std::vector<int>{0});
+    ASSERT_EQ(Propose(s.c, labels, &unplaced), std::vector<int>{0});
     ASSERT_EQ(RetypeInaccurateCurved(s.c, &unplaced), std::vector<int>{0});
     ASSERT_EQ(unplaced[0].type, SurfaceType::kSphere);
   }
@@ -86,7 +102,7 @@ TEST(RetypeByInteriorTest, AChamferRetypedOnItsInteriorKeepsTheConeOnceItsBounda
   std::vector<RegionState> sphere = regions;
   ASSERT_TRUE(ExpandRegions(s.c, &sphere_labels, &sphere).ok());
 
-  const absl::StatusOr<std::vector<int>> retyped = RetypeByInteriorAndExpand(s.c, &labels, &regions);
+  const absl::StatusOr<std::vector<int>> retyped = RetypeByInterior(s.c, &labels, &regions);
   ASSERT_TRUE(retyped.ok()) << retyped.status();
   EXPECT_EQ(*retyped, std::vector<int>{0});
   ASSERT_EQ(regions[0].type, SurfaceType::kCone);
@@ -105,6 +121,43 @@ TEST(RetypeByInteriorTest, AChamferRetypedOnItsInteriorKeepsTheConeOnceItsBounda
   ASSERT_EQ(regions[0].type, SurfaceType::kCone);
   EXPECT_NEAR(std::get<Cone>(regions[0].surface).half_angle, std::numbers::pi / 4.0, 0.01);
   EXPECT_LT(TotalEnergy(s.c, labels, regions), TotalEnergy(s.c, sphere_labels, sphere));
+}
+
+TEST(RetypeByInteriorTest, ASphereOnAChamferBandBecomesItsConeAndGivesTheRowsBack) {
+  // The same band, the move made with the expansion: with the cone, the
+  // rows of the cylinder and the top go back to them, and E falls below
+  // where it stood with the sphere.
+  Sheet s;
+  BuildChamfer(&s);
+  std::vector<int> labels = BandLabels(s, kConeStart - 1, kConeEnd + 1);
+  std::vector<RegionState> regions = RegionsFromLabels(s.c, labels, kTypes);
+  const double before = TotalEnergy(s.c, labels, regions);
+
+  const absl::StatusOr<std::vector<int>> retyped = RetypeByInterior(s.c, &labels, &regions);
+  ASSERT_TRUE(retyped.ok()) << retyped.status();
+  EXPECT_EQ(*retyped, std::vector<int>{0});
+  ASSERT_EQ(regions[0].type, SurfaceType::kCone);
+  EXPECT_NEAR(std::get<Cone>(regions[0].surface).half_angle, std::numbers::pi / 4.0, 0.02);
+  EXPECT_LT(TotalEnergy(s.c, labels, regions), before);
+  // The band is the cone's rows (kConeStart to kConeEnd) and no more.
+  for (std::size_t v = 0; v < labels.size(); ++v) {
+    if (s.u[v] < kConeStart - 0.5 || s.u[v] > kConeEnd + 0.5) EXPECT_NE(labels[v], 0) << v;
+  }
+}
+
+TEST(RetypeByInteriorTest, AConeBandTypedAConeIsNotMoved) {
+  // Nothing is proposed for a band whose type fits its interior: labels
+  // and regions stay as they were.
+  Sheet s;
+  BuildChamfer(&s);
+  std::vector<int> labels = BandLabels(s, kConeStart, kConeEnd);
+  std::vector<RegionState> regions = RegionsFromLabels(
+      s.c, labels, {SurfaceType::kCone, SurfaceType::kCylinder, SurfaceType::kPlane});
+  const std::vector<int> labels_before = labels;
+  const absl::StatusOr<std::vector<int>> retyped = RetypeByInterior(s.c, &labels, &regions);
+  ASSERT_TRUE(retyped.ok()) << retyped.status();
+  EXPECT_TRUE(retyped->empty());
+  EXPECT_EQ(labels, labels_before);
 }
 
 // A ring band 1.2 wide at radius 30 of a torus whose tube (radius 70) leans
@@ -142,7 +195,7 @@ TEST(RetypeByInteriorTest, TorusOnAConeBandBecomesACone) {
   ASSERT_LE(cone.score, torus.score + kScoreMargin);
   ASSERT_GT(cone.score + kScoreMargin, torus.score);
 
-  EXPECT_EQ(RetypeByInterior(s.c, labels, &regions), std::vector<int>{0});
+  EXPECT_EQ(Propose(s.c, labels, &regions), std::vector<int>{0});
   ASSERT_EQ(regions[0].type, SurfaceType::kCone);
   EXPECT_NEAR(std::get<Cone>(regions[0].surface).half_angle, std::numbers::pi / 4.0, 0.01);
 }
@@ -164,7 +217,7 @@ TEST(RetypeByInteriorTest, SphereOnAConeBandBecomesAConeNotATorus) {
   ASSERT_LT(torus.score, cone.score);
   ASSERT_LE(cone.score, torus.score + kScoreMargin);
 
-  EXPECT_EQ(RetypeByInterior(s.c, labels, &regions), std::vector<int>{0});
+  EXPECT_EQ(Propose(s.c, labels, &regions), std::vector<int>{0});
   ASSERT_EQ(regions[0].type, SurfaceType::kCone);
   EXPECT_NEAR(std::get<Cone>(regions[0].surface).half_angle, std::numbers::pi / 4.0, 0.01);
 }
@@ -205,7 +258,7 @@ TEST(RetypeByInteriorTest, TorusWhoseConeDoesAsWellNearTheNoiseBecomesACone) {
   ASSERT_LE(r.cone.score, r.torus.score);
   ASSERT_GT(r.cone.score + kScoreMargin, r.torus.score);
 
-  EXPECT_EQ(RetypeByInterior(r.s.c, r.labels, &r.regions), std::vector<int>{0});
+  EXPECT_EQ(Propose(r.s.c, r.labels, &r.regions), std::vector<int>{0});
   EXPECT_EQ(r.regions[0].type, SurfaceType::kCone);
 }
 
@@ -220,7 +273,7 @@ TEST(RetypeByInteriorTest, TorusScoringLittleBelowItsConeNearTheNoiseBecomesACon
   ASSERT_LT(r.torus.score, r.cone.score);
   ASSERT_GT(r.torus.score + kScoreMargin, r.cone.score);
 
-  EXPECT_EQ(RetypeByInterior(r.s.c, r.labels, &r.regions), std::vector<int>{0});
+  EXPECT_EQ(Propose(r.s.c, r.labels, &r.regions), std::vector<int>{0});
   EXPECT_EQ(r.regions[0].type, SurfaceType::kCone);
 }
 
@@ -234,7 +287,7 @@ TEST(RetypeByInteriorTest, TorusThatDoesBetterThanItsConeNearTheNoiseStays) {
   ASSERT_LT(ModelError(r.s.c, r.cone.fit), 0.5 * kSigma);
   ASSERT_LT(r.torus.score + kScoreMargin, r.cone.score);
 
-  EXPECT_TRUE(RetypeByInterior(r.s.c, r.labels, &r.regions).empty());
+  EXPECT_TRUE(Propose(r.s.c, r.labels, &r.regions).empty());
   EXPECT_EQ(r.regions[0].type, SurfaceType::kTorus);
 }
 
@@ -255,7 +308,7 @@ TEST(RetypeByInteriorTest, TorusFilletStaysATorus) {
   s.c.noise_sigma = kSigma;
   std::vector<int> labels(s.u.size(), 0);
   std::vector<RegionState> regions = RegionsFromLabels(s.c, labels, {SurfaceType::kTorus});
-  EXPECT_TRUE(RetypeByInterior(s.c, labels, &regions).empty());
+  EXPECT_TRUE(Propose(s.c, labels, &regions).empty());
   EXPECT_EQ(regions[0].type, SurfaceType::kTorus);
 }
 
@@ -274,7 +327,7 @@ TEST(RetypeByInteriorTest, TypeFarOffGivesWayToOneNearTheNoise) {
   ASSERT_GT(cone, kMinModelError * kSigma);
   ASSERT_LT(cone, kSigma);
 
-  EXPECT_EQ(RetypeByInterior(s.c, labels, &regions), std::vector<int>{0});
+  EXPECT_EQ(Propose(s.c, labels, &regions), std::vector<int>{0});
   EXPECT_EQ(regions[0].type, SurfaceType::kCone);
 }
 
@@ -311,7 +364,7 @@ TEST(RetypeByInteriorTest, TypeNearTheNoiseThatScoresFarBelowTakesOver) {
   ASSERT_GT(cone, 0.5 * ModelError(b.s.c, b.sphere.fit));
   ASSERT_LT(b.cone.score + kScoreMargin, b.sphere.score);
 
-  EXPECT_EQ(RetypeByInterior(b.s.c, b.labels, &b.regions), std::vector<int>{0});
+  EXPECT_EQ(Propose(b.s.c, b.labels, &b.regions), std::vector<int>{0});
   EXPECT_EQ(b.regions[0].type, SurfaceType::kCone);
 }
 
@@ -325,7 +378,7 @@ TEST(RetypeByInteriorTest, TypeScoringBelowButOverHalfASigmaOffDoesNot) {
   ASSERT_GT(ModelError(b.s.c, b.cone.fit), 0.5 * kSigma);
   ASSERT_LT(b.cone.score + kScoreMargin, b.sphere.score);
 
-  EXPECT_TRUE(RetypeByInterior(b.s.c, b.labels, &b.regions).empty());
+  EXPECT_TRUE(Propose(b.s.c, b.labels, &b.regions).empty());
   EXPECT_EQ(b.regions[0].type, SurfaceType::kSphere);
 }
 
@@ -335,7 +388,7 @@ TEST(RetypeByInteriorTest, TypeThatFitsItsInteriorStays) {
   const std::vector<int> labels = BandLabels(s, kConeStart - 1, kConeEnd + 1);
   std::vector<RegionState> regions = RegionsFromLabels(
       s.c, labels, {SurfaceType::kCone, SurfaceType::kCylinder, SurfaceType::kPlane});
-  EXPECT_TRUE(RetypeByInterior(s.c, labels, &regions).empty());
+  EXPECT_TRUE(Propose(s.c, labels, &regions).empty());
   EXPECT_EQ(regions[0].type, SurfaceType::kCone);
 }
 
@@ -346,7 +399,7 @@ TEST(RetypeByInteriorTest, NoTypeAtTheNoiseChangesNothing) {
   BuildChamfer(&s);
   const std::vector<int> labels = BandLabels(s, kConeStart - 1, kConeEnd + 7);
   std::vector<RegionState> regions = RegionsFromLabels(s.c, labels, kTypes);
-  EXPECT_TRUE(RetypeByInterior(s.c, labels, &regions).empty());
+  EXPECT_TRUE(Propose(s.c, labels, &regions).empty());
   EXPECT_EQ(regions[0].type, SurfaceType::kSphere);
 }
 
@@ -361,7 +414,7 @@ TEST(RetypeByInteriorTest, SmallInteriorKeepsItsType) {
   }
   std::vector<RegionState> regions = RegionsFromLabels(s.c, labels, kTypes);
   ASSERT_EQ(InteriorVertices(s.c, labels, kBand, regions[0].vertices).size(), 20u);
-  EXPECT_TRUE(RetypeByInterior(s.c, labels, &regions).empty());
+  EXPECT_TRUE(Propose(s.c, labels, &regions).empty());
   EXPECT_EQ(regions[0].type, SurfaceType::kSphere);
 }
 
@@ -413,7 +466,7 @@ TEST(RetypeByInteriorTest, SphereOnAFacetedRoundBecomesACylinder) {
   EXPECT_GT(ScoreType(s.c, SurfaceType::kCylinder, interior).score + kScoreMargin,
             ScoreType(s.c, SurfaceType::kSphere, interior).score);
 
-  EXPECT_EQ(RetypeByInterior(s.c, labels, &regions), std::vector<int>{0});
+  EXPECT_EQ(Propose(s.c, labels, &regions), std::vector<int>{0});
   ASSERT_EQ(regions[0].type, SurfaceType::kCylinder);
   const auto& cylinder = std::get<Cylinder>(regions[0].surface);
   // Under the arc by at most the sagitta, 0.22.
@@ -431,7 +484,7 @@ TEST(RetypeByInteriorTest, SphereOnAFacetedRoundStaysUnlessOnFacets) {
   std::vector<RegionState> regions =
       RegionsFromLabels(s.c, labels, {SurfaceType::kSphere, SurfaceType::kPlane,
                                       SurfaceType::kPlane});
-  EXPECT_TRUE(RetypeByInterior(s.c, labels, &regions).empty());
+  EXPECT_TRUE(Propose(s.c, labels, &regions).empty());
   EXPECT_EQ(regions[0].type, SurfaceType::kSphere);
 }
 
@@ -442,7 +495,7 @@ TEST(RetypeByInteriorTest, CylinderOnAFacetedRoundStays) {
   std::vector<RegionState> regions =
       RegionsFromLabels(s.c, labels, {SurfaceType::kCylinder, SurfaceType::kPlane,
                                       SurfaceType::kPlane});
-  EXPECT_TRUE(RetypeByInterior(s.c, labels, &regions).empty());
+  EXPECT_TRUE(Propose(s.c, labels, &regions).empty());
   EXPECT_EQ(regions[0].type, SurfaceType::kCylinder);
 }
 

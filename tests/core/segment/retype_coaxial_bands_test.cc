@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "segment/decide_type.h"
+#include "segment/energy.h"
 #include "segment/retype_by_interior.h"
 #include "sheet_context.h"
 
@@ -87,6 +88,78 @@ TEST(RetypeCoaxialBandsTest, SphereOnAChamferBecomesACone) {
       NoisyChamfer(8, SurfaceType::kSphere, SurfaceType::kCylinder, &s, &labels);
   EXPECT_EQ(RetypeCoaxialBands(s.c, labels, &regions), std::vector<int>{0});
   EXPECT_EQ(regions[0].type, SurfaceType::kCone);
+  // Its axis is the shaft's: the label counts the apex along it and the
+  // half angle.
+  EXPECT_EQ(FreeParameters(regions[0]), kCoaxialConeParameters);
+}
+
+// The chamfer's band fitted as a free cone (6 parameters), and the cone on
+// the shaft's axis fitted to its interior (BestCoaxialCone).
+struct ConeBand {
+  Sheet s;
+  std::vector<int> labels;
+  std::vector<RegionState> regions;
+  Surface on_axis;
+};
+
+void BuildConeBand(unsigned seed, ConeBand* b) {
+  b->regions = NoisyChamfer(seed, SurfaceType::kCone, SurfaceType::kCylinder, &b->s, &b->labels);
+  const std::vector<int> interior =
+      InteriorVertices(b->s.c, b->labels, kBand, b->regions[0].vertices);
+  const std::optional<CoaxialFit> best =
+      BestCoaxialCone(b->s.c, b->labels, b->regions, 0, interior);
+  ASSERT_TRUE(best.has_value());
+  b->on_axis = best->fit.surface;
+}
+
+TEST(SharedParametersTest, ConeOnItsShaftsAxisLowersEOnlyWithItsOwnParametersCounted) {
+  // The free cone follows the noise with the 4 parameters of its axis, a
+  // gain of about chi^2_4 / 2 in the data term; the label cost of those
+  // parameters, (4 / 2f) ln (f n), is several times that on a band of 400
+  // vertices. Priced as a free cone, the cone on the shaft's axis loses
+  // the data and saves no label: E refuses it. Priced with the 2 parameters
+  // its own vertices estimate (the axis is the shaft's, energy.h), E takes
+  // it.
+  for (const unsigned seed : {7u, 8u, 9u}) {
+    ConeBand b;
+    BuildConeBand(seed, &b);
+    const RegionState free_cone = Reestimated(b.s.c, b.regions[0]);
+    std::vector<RegionState> as_free = b.regions, as_shared = b.regions;
+    as_free[0] = free_cone;
+    const double e_free = TotalEnergy(b.s.c, b.labels, as_free);
+    RegionState axis_free_count = free_cone;
+    axis_free_count.surface = b.on_axis;
+    as_free[0] = axis_free_count;
+    EXPECT_GT(TotalEnergy(b.s.c, b.labels, as_free), e_free) << seed;
+    as_shared[0] = CoaxialConeRegion(free_cone, b.on_axis);
+    EXPECT_LT(TotalEnergy(b.s.c, b.labels, as_shared), e_free) << seed;
+    // The two differ by the label of the 4 shared parameters.
+    const double f = b.s.c.evidence_share;
+    const double n = static_cast<double>(free_cone.vertices.size());
+    EXPECT_NEAR(TotalEnergy(b.s.c, b.labels, as_free) - TotalEnergy(b.s.c, b.labels, as_shared),
+                2.0 * std::log(f * n) / f, 1e-6)
+        << seed;
+    // Re-estimation keeps the shared axis: the free refit gains less than
+    // the label it adds.
+    const RegionState kept = Reestimated(b.s.c, as_shared[0]);
+    EXPECT_EQ(kept.shared_parameters, as_shared[0].shared_parameters) << seed;
+  }
+}
+
+TEST(SharedParametersTest, ReestimationFreesASharedSurfaceItsVerticesLeave) {
+  // The cone on the shaft's axis moved 0.1 (10 sigma) along it: its
+  // vertices pay far more than the label of the freed axis, and the
+  // re-estimation refits it free (shared_parameters 0).
+  ConeBand b;
+  BuildConeBand(7, &b);
+  Cone moved = std::get<Cone>(b.on_axis);
+  moved.apex += 0.1 * moved.axis_direction;
+  const RegionState shared = CoaxialConeRegion(b.regions[0], moved);
+  const RegionState freed = Reestimated(b.s.c, shared);
+  EXPECT_EQ(freed.shared_parameters, 0);
+  EXPECT_EQ(FreeParameters(freed), ParameterCount(SurfaceType::kCone));
+  EXPECT_LT(DataCost(b.s.c, freed.surface, freed.vertices),
+            DataCost(b.s.c, shared.surface, shared.vertices));
 }
 
 TEST(RetypeCoaxialBandsTest, FilletBesideItsShaftStaysATorus) {
