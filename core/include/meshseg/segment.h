@@ -28,11 +28,11 @@
 // the evidence discounted where residuals are correlated (binary voxels,
 // chords). Boundaries are placed by alpha-expansion with the surfaces
 // re-estimated between sweeps; merges, drops, retypes and planes split off
-// a curved region are each proposed and kept iff the energy falls, except
-// the retype of a narrow band by its interior, still a rule. Nine steps:
-// grow; absorb; evidence share; merge; expand; improve (the moves
-// alternated with the expansion until none lowers the energy); split off
-// planes; retype by interior; improve (core/src/segment/segment.cc lists
+// a curved region are each proposed and kept iff the energy falls (a
+// retype a band's interior proposes, priced together with the expansion
+// it enables). Eight steps: grow; absorb; evidence share; merge; expand;
+// improve (the moves alternated with the expansion until none lowers the
+// energy); split off planes; improve (core/src/segment/segment.cc lists
 // them with their principle). Each surface is reported as fitted to its
 // region's inliers.
 //

@@ -1,5 +1,5 @@
-// Type decision on a region's interior (our addition to ALGORITHMS.md S1
-// and S2).
+// The type a region's interior proposes, and the move E makes of it (our
+// addition to ALGORITHMS.md S1 and S2).
 // A region's outer row of vertices sits on the crease it shares with its
 // neighbour, which the mesh rounds off (marching cubes blurs it over a
 // voxel) and where n'_i turns toward the neighbour. On a narrow band between
@@ -7,7 +7,8 @@
 // 6 h wide at sigma = 0.15 h fits a sphere (rms 1.06 sigma) better than
 // a cone (1.11 sigma) over all its vertices, and the alpha test, which
 // passes the sphere first, agrees. Without the outer row the cone fits at
-// the noise (0.98 sigma) and the sphere does not (1.02 sigma).
+// the noise (0.98 sigma) and the sphere does not (1.02 sigma). The interior
+// proposes the type; E decides, with the expansion that moves the rows.
 #ifndef MESHSEG_SRC_SEGMENT_RETYPE_BY_INTERIOR_H_
 #define MESHSEG_SRC_SEGMENT_RETYPE_BY_INTERIOR_H_
 

@@ -79,14 +79,15 @@ absl::Status Merge(const segment_internal::SegmentContext& c, std::vector<int>* 
 }
 
 // PEARL's alternation (Isack & Boykov, IJCV 2012) over the moves of E
-// (energy.h): the retypes proposed (a plane its plane no longer fits, a
-// curved region its type misses, a band beside a turned face the cone on
-// that face's axis, a curved type its simpler limit; retype_regions.h,
-// retype_coaxial_bands.h), the merges and the drops, each made iff it
-// lowers E, then the expansion with re-estimation over the boundaries they
-// changed; repeated until no move is made (each move lowers E, so it ends;
-// kMaxImproveRounds guards against a cycle of moves whose gains are
-// rounding). The expansion can shrink a region to a sliver or a strip
+// (energy.h): the retypes proposed (a narrow band the type its interior
+// tells, priced with the expansion it enables; a plane its plane no longer
+// fits; a curved region its type misses; a band beside a turned face the
+// cone on that face's axis; a curved type its simpler limit;
+// retype_by_interior.h, retype_regions.h, retype_coaxial_bands.h), the
+// merges and the drops, each made iff it lowers E, then the expansion with
+// re-estimation over the boundaries they changed; repeated until no move is
+// made (each move lowers E, so it ends; kMaxImproveRounds guards against a
+// cycle of moves whose gains are rounding). The expansion can shrink a region to a sliver or a strip
 // whose vertices cost less on its neighbours' surfaces (between a
 // countersink and its plane, along a groove), which the next round drops,
 // and it gives a plane retyped on part of its arc the rest, whose type the
@@ -131,10 +132,9 @@ void OwnSurfaces(Segmentation* seg) {
 
 // Segment, with l_avg = MeanEdgeLength(mesh.tri) given if the caller
 // already measured it (else summed here, where the seeded path needs it).
-// On a scan (not an exact tessellation) it runs nine steps. Steps 1-3 make
-// the proposals the energy E (energy.h; PEARL with label costs) starts
-// from; every move of steps 4-7 and 9 is made iff it lowers E; step 8 is
-// still a rule.
+// On a scan (not an exact tessellation) it runs eight steps. Every move of
+// steps 4-8 is made iff it lowers the one energy E (energy.h; PEARL with
+// label costs); steps 1-3 make the proposals E starts from.
 //  1. Grow: seeds 000/002's regions, the surfaces proposed (S1 step 2).
 //  2. Absorb: small quadric regions released, every vertex given a region
 //     (S2's leftover absorption).
@@ -152,18 +152,15 @@ void OwnSurfaces(Segmentation* seg) {
 //     flat top and a ring of the cone below) gives them back the same way.
 //  6. Improve: PEARL's alternation (Improve above) of every priced move,
 //     retypes, merges and drops, then the expansion, until no move lowers E.
+//     A narrow band's type is put to E by its interior (the outer rows are
+//     the creases'), priced with the expansion it enables, and a cone on a
+//     turned neighbour's axis with the 2 parameters its own vertices
+//     estimate (energy.h, "Shared parameters").
 //  7. Split off planes: a flat face a curved region absorbed is born as a
 //     plane of its own, kept iff E with the expansion falls
 //     (split_off_planes.h).
-//  8. Retype by interior: a narrow band takes the type its interior tells
-//     (the outer rows are the creases'; retype_by_interior.h), and the
-//     expansion then places its boundary for that type (PEARL compares
-//     models only from labellings placed for them). A rule: E,
-//     even with the expansion inside the price, keeps a torus on a noisy
-//     countersink band that the rule makes the cone on its bore's axis,
-//     since E's label cost does not know the cone shares that axis.
-//  9. Improve again: the pieces the split and the retypes leave, joined,
-//     dropped or retyped by the same moves.
+//  8. Improve again: the pieces the split leaves, joined, dropped or
+//     retyped by the same moves.
 absl::StatusOr<Segmentation> SegmentWithEdgeLength(const Mesh& mesh,
                                                    const CurvatureField& curvature,
                                                    const SegmentParams& params,
@@ -206,7 +203,7 @@ absl::StatusOr<Segmentation> SegmentWithEdgeLength(const Mesh& mesh,
   ctx.Progress("segment", 0.7);
   // 3. Evidence share.
   c.evidence_share = EvidenceShare(c, labels, regions);
-  // Merge and drop prices (and refused retypes), kept from each step for
+  // Merge and drop prices (and refused proposals), kept from each step for
   // the next.
   KeptPrices kept_prices;
   // 4. Merge.
