@@ -141,7 +141,9 @@ TEST(RetypeByInteriorTest, ASphereOnAChamferBandBecomesItsConeAndGivesTheRowsBac
   EXPECT_LT(TotalEnergy(s.c, labels, regions), before);
   // The band is the cone's rows (kConeStart to kConeEnd) and no more.
   for (std::size_t v = 0; v < labels.size(); ++v) {
-    if (s.u[v] < kConeStart - 0.5 || s.u[v] > kConeEnd + 0.5) EXPECT_NE(labels[v], 0) << v;
+    if (s.u[v] < kConeStart - 0.5 || s.u[v] > kConeEnd + 0.5) {
+      EXPECT_NE(labels[v], 0) << v;
+    }
   }
 }
 
@@ -291,10 +293,9 @@ TEST(RetypeByInteriorTest, TorusThatDoesBetterThanItsConeNearTheNoiseStays) {
   EXPECT_EQ(r.regions[0].type, SurfaceType::kTorus);
 }
 
-TEST(RetypeByInteriorTest, TorusFilletStaysATorus) {
-  // A quarter-round fillet of radius 1.5 between the cylinder and the top,
-  // in place of the chamfer: no cone fits it at the noise.
-  Sheet s;
+// A quarter-round fillet of radius 1.5 between the cylinder and the top,
+// in place of the chamfer.
+void BuildFillet(Sheet* s) {
   BuildSheet(
       [](double row, double phi) {
         const Eigen::Vector3d radial(std::cos(phi), std::sin(phi), 0.0);
@@ -304,12 +305,33 @@ TEST(RetypeByInteriorTest, TorusFilletStaysATorus) {
                          n};
       },
       0.0, kRows - 1, kRows, 0.0, 1.5 * std::numbers::pi, kAround, /*distance=*/5.0 * kSigma,
-      /*angle_deg=*/10.0, &s);
-  s.c.noise_sigma = kSigma;
+      /*angle_deg=*/10.0, s);
+  s->c.noise_sigma = kSigma;
+}
+
+TEST(RetypeByInteriorTest, TorusFilletStaysATorus) {
+  // No cone fits the fillet at the noise.
+  Sheet s;
+  BuildFillet(&s);
   std::vector<int> labels(s.u.size(), 0);
   std::vector<RegionState> regions = RegionsFromLabels(s.c, labels, {SurfaceType::kTorus});
   EXPECT_TRUE(Propose(s.c, labels, &regions).empty());
   EXPECT_EQ(regions[0].type, SurfaceType::kTorus);
+}
+
+TEST(RetypeByInteriorTest, AFilletThatProposedNothingIsNotAskedAgainUntilItChanges) {
+  // The fillet's torus reads only itself: its refusal is kept while it is
+  // the same, and forgotten once its vertices change.
+  Sheet s;
+  BuildFillet(&s);
+  const std::vector<int> labels(s.u.size(), 0);
+  std::vector<RegionState> regions = RegionsFromLabels(s.c, labels, {SurfaceType::kTorus});
+  KeptPrices kept;
+  EXPECT_FALSE(kept.Refused(regions, 0, KeptPrices::kInteriorType));
+  EXPECT_TRUE(ProposeInteriorTypes(s.c, labels, regions, &kept).empty());
+  EXPECT_TRUE(kept.Refused(regions, 0, KeptPrices::kInteriorType));
+  regions[0].vertices.pop_back();
+  EXPECT_FALSE(kept.Refused(regions, 0, KeptPrices::kInteriorType));
 }
 
 TEST(RetypeByInteriorTest, TypeFarOffGivesWayToOneNearTheNoise) {
