@@ -41,15 +41,38 @@ const ScoredFit* SimplestLimit(const SegmentContext& c, std::span<const ScoredFi
   return simplest;
 }
 
-// The curved type to give a region of type `own` with interior `interior`,
-// and its fit there: the simplest limit of `own` (IsLimitOf) that fits at
-// the noise and scores within kScoreMargin of the best type, since a more
-// general model beats its own limit by chance (on a noisy countersink band
-// a torus came 0.011 sigma closer than the cone, 0.997 against 1.008, and
-// scored 0.9 lower); else the best type if it scores kScoreMargin below
-// `own`, or the simplest limit of that type chosen the same way; else `own`.
-// `own` scores at most `own_on_axis` (its score with its axis shared,
-// infinite if it has no such fit).
+// Of `scored`, the type of lowest score that fits at the noise, is neither
+// `own` nor a limit or a generalisation of it (IsLimitOf: those the
+// simplest-limit rule above weighs), and scores less than kScoreMargin
+// above `own_score`, if `own` fits at the noise too; else nullptr.
+const ScoredFit* OtherTypeAtTheNoise(const SegmentContext& c, std::span<const ScoredFit> scored,
+                                     SurfaceType own, double own_score) {
+  if (std::none_of(scored.begin(), scored.end(), [&](const ScoredFit& s) {
+        return s.type == own && FitsAtNoise(c, s.fit);
+      })) {
+    return nullptr;
+  }
+  const ScoredFit* other = nullptr;
+  for (const ScoredFit& s : scored) {
+    if (s.type == own || IsLimitOf(s.type, own) || IsLimitOf(own, s.type) ||
+        !FitsAtNoise(c, s.fit) || !(s.score < own_score + kScoreMargin)) {
+      continue;
+    }
+    if (other == nullptr || s.score < other->score) other = &s;
+  }
+  return other;
+}
+
+// The curved type to propose for a region of type `own` with interior
+// `interior`, and its fit there: the simplest limit of `own` (IsLimitOf)
+// that fits at the noise and scores within kScoreMargin of the best type,
+// since a more general model beats its own limit by chance (on a noisy
+// countersink band a torus came 0.011 sigma closer than the cone, 0.997
+// against 1.008, and scored 0.9 lower); else the best type if it scores
+// kScoreMargin below `own`, or the simplest limit of that type chosen the
+// same way; else another type as good at the noise (OtherTypeAtTheNoise);
+// else `own`. `own` scores at most `own_on_axis` (its score with its axis
+// shared, infinite if it has no such fit).
 SurfaceType BestInteriorType(const SegmentContext& c, SurfaceType own, double own_on_axis,
                              const std::vector<int>& interior, FitResult* interior_fit) {
   const auto scored = ScoreCurvedTypes(c, interior);
@@ -101,7 +124,16 @@ SurfaceType BestInteriorType(const SegmentContext& c, SurfaceType own, double ow
     *interior_fit = simplest->fit;
     return simplest->type;
   }
-  if (!(best->score + kScoreMargin < own_score)) return own;
+  if (!(best->score + kScoreMargin < own_score)) {
+    // Two unrelated types both at the noise: the interior cannot tell them
+    // apart, and only the labelling each places can (PEARL compares models
+    // from labellings placed for them). The other is proposed, for E to
+    // price with the expansion it enables.
+    const ScoredFit* other = OtherTypeAtTheNoise(c, scored, own, own_score);
+    if (other == nullptr) return own;
+    *interior_fit = other->fit;
+    return other->type;
+  }
   // The best type may itself beat its own limit by chance (a countersink
   // band grown as a sphere, whose interior scores torus -1295.7 and cone
   // -1294.2, both at the noise: the cone is the surface).
