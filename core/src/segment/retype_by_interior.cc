@@ -41,28 +41,6 @@ const ScoredFit* SimplestLimit(const SegmentContext& c, std::span<const ScoredFi
   return simplest;
 }
 
-// Of `scored`, the type of lowest score that fits at the noise, is neither
-// `own` nor a limit or a generalisation of it (IsLimitOf: those the
-// simplest-limit rule above weighs), and scores less than kScoreMargin
-// above `own_score`, if `own` fits at the noise too; else nullptr.
-const ScoredFit* OtherTypeAtTheNoise(const SegmentContext& c, std::span<const ScoredFit> scored,
-                                     SurfaceType own, double own_score) {
-  if (std::none_of(scored.begin(), scored.end(), [&](const ScoredFit& s) {
-        return s.type == own && FitsAtNoise(c, s.fit);
-      })) {
-    return nullptr;
-  }
-  const ScoredFit* other = nullptr;
-  for (const ScoredFit& s : scored) {
-    if (s.type == own || IsLimitOf(s.type, own) || IsLimitOf(own, s.type) ||
-        !FitsAtNoise(c, s.fit) || !(s.score < own_score + kScoreMargin)) {
-      continue;
-    }
-    if (other == nullptr || s.score < other->score) other = &s;
-  }
-  return other;
-}
-
 // The curved type to propose for a region of type `own` with interior
 // `interior`, and its fit there: the simplest limit of `own` (IsLimitOf)
 // that fits at the noise and scores within kScoreMargin of the best type,
@@ -174,6 +152,31 @@ SurfaceType BestTypeOnFacets(const SegmentContext& c, SurfaceType own,
 }
 
 }  // namespace
+
+bool Nested(SurfaceType a, SurfaceType b) {
+  const auto sphere_of_torus = [](SurfaceType x, SurfaceType y) {
+    return x == SurfaceType::kSphere && y == SurfaceType::kTorus;
+  };
+  return IsLimitOf(a, b) || IsLimitOf(b, a) || sphere_of_torus(a, b) || sphere_of_torus(b, a);
+}
+
+const ScoredFit* OtherTypeAtTheNoise(const SegmentContext& c, std::span<const ScoredFit> scored,
+                                     SurfaceType own, double own_score) {
+  if (std::none_of(scored.begin(), scored.end(), [&](const ScoredFit& s) {
+        return s.type == own && FitsAtNoise(c, s.fit);
+      })) {
+    return nullptr;
+  }
+  const ScoredFit* other = nullptr;
+  for (const ScoredFit& s : scored) {
+    if (s.type == own || Nested(s.type, own) || !FitsAtNoise(c, s.fit) ||
+        !(s.score < own_score + kScoreMargin)) {
+      continue;
+    }
+    if (other == nullptr || s.score < other->score) other = &s;
+  }
+  return other;
+}
 
 std::vector<int> InteriorVertices(const SegmentContext& c, const std::vector<int>& labels,
                                   std::span<const int> ids, std::span<const int> vertices) {

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "absl/status/statusor.h"
+#include "segment/decide_type.h"
 #include "segment/kept_prices.h"
 #include "segment/segment_internal.h"
 
@@ -35,6 +36,23 @@ std::vector<int> InteriorVertices(const SegmentContext& c, const std::vector<int
 // the step that takes a region apart (SplitOffPlanes).
 bool TypeMissesInterior(const SegmentContext& c, const std::vector<int>& labels, int id,
                         const RegionState& r);
+
+// True if one of `a` and `b` is a special case of the other: a limit
+// (IsLimitOf), or a sphere of a torus (of major radius 0). The general one
+// meets whatever the special one meets, so that its fitting too tells
+// nothing.
+bool Nested(SurfaceType a, SurfaceType b);
+
+// Of `scored` (a region's interior fitted with each curved type), the type
+// of lowest score that fits at the noise (FitsAtNoise), is neither `own`
+// nor Nested with it (the limits the simplest-limit rule weighs, and the
+// generalisations that fit wherever `own` does), and scores less than
+// kScoreMargin above `own_score`, if `own` fits at the noise too; else
+// nullptr. Two such types the interior cannot tell apart: only the
+// labelling each places can (PEARL compares models from labellings placed
+// for them), so the other is proposed for E to price.
+const ScoredFit* OtherTypeAtTheNoise(const SegmentContext& c, std::span<const ScoredFit> scored,
+                                     SurfaceType own, double own_score);
 
 // The retype a region's interior proposes: region `id` as `type`, with
 // `surface` fitted to all of its vertices (to the interior if that fit is

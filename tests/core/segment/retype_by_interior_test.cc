@@ -414,6 +414,59 @@ TEST(RetypeByInteriorTest, TypeThatFitsItsInteriorStays) {
   EXPECT_EQ(regions[0].type, SurfaceType::kCone);
 }
 
+// A curved type's fit with model error `error` sigmas (rms^2 = sigma^2 +
+// error^2 sigma^2) and score `score`.
+ScoredFit Scored(SurfaceType type, double error, double score) {
+  ScoredFit s{.type = type, .fit = {}, .score = score};
+  s.fit.valid = true;
+  s.fit.rms_distance = kSigma * std::sqrt(1.0 + error * error);
+  return s;
+}
+
+TEST(OtherTypeAtTheNoiseTest, AnUnrelatedTypeAsGoodAtTheNoiseIsProposed) {
+  // A sphere band whose interior a cone meets at the noise too, 1.7 below
+  // (a chamfer band grown a sphere at 0.15 h: sphere and cone both at the
+  // noise); the torus, which meets whatever a sphere meets, and the
+  // cylinder, 6 sigma off, are not.
+  Sheet s;
+  BuildChamfer(&s);
+  const ScoredFit scored[] = {Scored(SurfaceType::kCylinder, 6.0, -2500.0),
+                              Scored(SurfaceType::kSphere, 0.0, -2992.9),
+                              Scored(SurfaceType::kCone, 0.1, -2994.6),
+                              Scored(SurfaceType::kTorus, 0.0, -3001.0)};
+  const ScoredFit* other = OtherTypeAtTheNoise(s.c, scored, SurfaceType::kSphere, -2992.9);
+  ASSERT_NE(other, nullptr);
+  EXPECT_EQ(other->type, SurfaceType::kCone);
+  // Scoring kScoreMargin above the sphere, the interior tells them apart.
+  const ScoredFit worse[] = {Scored(SurfaceType::kSphere, 0.0, -2992.9),
+                             Scored(SurfaceType::kCone, 0.1, -2992.9 + kScoreMargin)};
+  EXPECT_EQ(OtherTypeAtTheNoise(s.c, worse, SurfaceType::kSphere, -2992.9), nullptr);
+  // Off the noise, the cone is no alternative; nor is anything when the
+  // sphere itself misses the noise (the other rules weigh that).
+  const ScoredFit off[] = {Scored(SurfaceType::kSphere, 0.0, -2992.9),
+                           Scored(SurfaceType::kCone, 2.0 * kMinModelError, -2994.6)};
+  EXPECT_EQ(OtherTypeAtTheNoise(s.c, off, SurfaceType::kSphere, -2992.9), nullptr);
+  const ScoredFit own_off[] = {Scored(SurfaceType::kSphere, 2.0 * kMinModelError, -2992.9),
+                               Scored(SurfaceType::kCone, 0.0, -2994.6)};
+  EXPECT_EQ(OtherTypeAtTheNoise(s.c, own_off, SurfaceType::kSphere, -2992.9), nullptr);
+}
+
+TEST(OtherTypeAtTheNoiseTest, NestedTypesAreNoAlternative) {
+  // A cylinder's cone and torus meet whatever the cylinder meets; a torus's
+  // sphere is a torus of major radius 0.
+  Sheet s;
+  BuildChamfer(&s);
+  const ScoredFit cylinder[] = {Scored(SurfaceType::kCylinder, 0.0, -1000.0),
+                                Scored(SurfaceType::kCone, 0.0, -1001.0),
+                                Scored(SurfaceType::kTorus, 0.0, -1002.0)};
+  EXPECT_EQ(OtherTypeAtTheNoise(s.c, cylinder, SurfaceType::kCylinder, -1000.0), nullptr);
+  const ScoredFit torus[] = {Scored(SurfaceType::kTorus, 0.0, -1000.0),
+                             Scored(SurfaceType::kSphere, 0.0, -1001.0)};
+  EXPECT_EQ(OtherTypeAtTheNoise(s.c, torus, SurfaceType::kTorus, -1000.0), nullptr);
+  EXPECT_TRUE(Nested(SurfaceType::kSphere, SurfaceType::kTorus));
+  EXPECT_FALSE(Nested(SurfaceType::kSphere, SurfaceType::kCone));
+}
+
 TEST(RetypeByInteriorTest, NoTypeAtTheNoiseChangesNothing) {
   // The band grown six rows into the top: no type fits its interior at the
   // noise, and the scores of misfits say nothing about the type.
