@@ -1,7 +1,10 @@
 #include "segment/retype_coaxial_bands.h"
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
+
+#include <Eigen/Cholesky>
 
 #include "segment/align_coaxial.h"
 #include "segment/decide_type.h"
@@ -44,6 +47,33 @@ FitResult CoaxialCone(const SegmentContext& c, const RegionState& face,
       {face.type, {.points = face_points, .normals = {}, .weights = {}}},
       {SurfaceType::kCone, {.points = band_points, .normals = {}, .weights = {}}}};
   return FitCoaxial(members, axis.point, axis.direction)[1];
+}
+
+// Sphere region `r` refitted with its centre on the axis of `cone` (the
+// turned neighbour's, fitted with it), its label counting the 2 parameters
+// its vertices estimate (the centre along the axis, the radius): the
+// algebraic fit |x - p|^2 = 2 t (x - p).d + (R^2 - t^2), linear in t and
+// R^2 - t^2, for the centre p + t d. nullopt for another type or no fit.
+std::optional<RegionState> SphereOnConeAxis(const SegmentContext& c, const RegionState& r,
+                                            const Surface& cone) {
+  const auto* axis = std::get_if<Cone>(&cone);
+  if (r.type != SurfaceType::kSphere || axis == nullptr) return std::nullopt;
+  const Eigen::Vector3d d = axis->axis_direction.normalized();
+  Eigen::Matrix2d a = Eigen::Matrix2d::Zero();
+  Eigen::Vector2d b = Eigen::Vector2d::Zero();
+  for (const int v : Sample(r.vertices)) {
+    const Eigen::Vector3d u = c.position(v) - axis->apex;
+    const Eigen::Vector2d row(2.0 * u.dot(d), 1.0);
+    a += row * row.transpose();
+    b += row * u.squaredNorm();
+  }
+  const Eigen::Vector2d x = a.ldlt().solve(b);
+  const double radius_squared = x(1) + x(0) * x(0);
+  if (!x.allFinite() || !(radius_squared > 0.0)) return std::nullopt;
+  RegionState out = r;
+  out.surface = Sphere{.center = axis->apex + x(0) * d, .radius = std::sqrt(radius_squared)};
+  out.shared_parameters = ParameterCount(SurfaceType::kSphere) - 2;
+  return out;
 }
 
 }  // namespace
@@ -90,11 +120,17 @@ std::vector<int> RetypeCoaxialBands(const SegmentContext& c, const std::vector<i
     const std::optional<CoaxialFit> best = BestCoaxialCone(c, labels, *regions, id, interior);
     if (!best) continue;
     // The cone on the axis, priced as E prices a retype (RetypeDelta's terms
-    // with this surface): against the region re-estimated with its own type.
+    // with this surface): against the region re-estimated with its own type,
+    // and a sphere also on that axis, where it shares it as the cone does
+    // (energy.h, "Shared parameters": the comparison is fair only if both
+    // are charged what they estimate).
     const RegionState own = Reestimated(c, r);
     const RegionState cone = CoaxialConeRegion(r, best->fit.surface);
-    const double delta = DataCost(c, cone.surface, r.vertices) + LabelCost(c, cone) -
-                         DataCost(c, own.surface, r.vertices) - LabelCost(c, own);
+    double own_cost = DataCost(c, own.surface, r.vertices) + LabelCost(c, own);
+    if (const std::optional<RegionState> sphere = SphereOnConeAxis(c, r, cone.surface)) {
+      own_cost = std::min(own_cost, DataCost(c, sphere->surface, r.vertices) + LabelCost(c, *sphere));
+    }
+    const double delta = DataCost(c, cone.surface, r.vertices) + LabelCost(c, cone) - own_cost;
     if (!(delta < 0.0)) continue;
     r = cone;
     retyped.push_back(id);
