@@ -49,11 +49,8 @@ FitResult CoaxialCone(const SegmentContext& c, const RegionState& face,
   return FitCoaxial(members, axis.point, axis.direction)[1];
 }
 
-// Sphere region `r` refitted with its centre on the axis of `cone` (the
-// turned neighbour's, fitted with it), its label counting the 2 parameters
-// its vertices estimate (the centre along the axis, the radius): the
-// algebraic fit |x - p|^2 = 2 t (x - p).d + (R^2 - t^2), linear in t and
-// R^2 - t^2, for the centre p + t d. nullopt for another type or no fit.
+}  // namespace
+
 std::optional<RegionState> SphereOnConeAxis(const SegmentContext& c, const RegionState& r,
                                             const Surface& cone) {
   const auto* axis = std::get_if<Cone>(&cone);
@@ -75,8 +72,6 @@ std::optional<RegionState> SphereOnConeAxis(const SegmentContext& c, const Regio
   out.shared_parameters = ParameterCount(SurfaceType::kSphere) - 2;
   return out;
 }
-
-}  // namespace
 
 std::optional<CoaxialFit> BestCoaxialCone(const SegmentContext& c, const std::vector<int>& labels,
                                           const std::vector<RegionState>& regions, int id,

@@ -36,6 +36,14 @@ RegionState CoaxialConeRegion(const RegionState& r, const Surface& cone);
 std::vector<int> RetypeCoaxialBands(const SegmentContext& c, const std::vector<int>& labels,
                                     std::vector<RegionState>* regions);
 
+// Sphere region `r` refitted with its centre on the axis of `cone` (the
+// turned neighbour's, fitted with it), its label counting the 2 parameters
+// its vertices estimate (the centre along the axis, the radius): the
+// algebraic fit |x - p|^2 = 2 t (x - p).d + (R^2 - t^2), linear in t and
+// R^2 - t^2, for the centre p + t d. nullopt for another type or no fit.
+std::optional<RegionState> SphereOnConeAxis(const SegmentContext& c, const RegionState& r,
+                                            const Surface& cone);
+
 // The cone fitted to `interior` (of region `id`) on the axis of a cylinder
 // or cone region beside it whose axis is region `id`'s (as above; for a
 // cone band any such neighbour: a narrow band leaves its own axis

@@ -194,6 +194,43 @@ TEST(RetypeCoaxialBandsTest, FilletBesideItsShaftStaysATorus) {
   EXPECT_EQ(regions[0].type, SurfaceType::kTorus);
 }
 
+TEST(SphereOnConeAxisTest, FitsASphereZoneWithItsCentreOnTheAxis) {
+  // A zone of a sphere of radius 12 centred at z = -3 on the z axis, from
+  // 30 to 60 degrees off the pole, with noise; the axis given by a cone on
+  // it. The centre is found on the axis and the radius within the noise,
+  // and the label counts 2 parameters.
+  constexpr double kRadius = 12.0, kCenterZ = -3.0;
+  Sheet s;
+  BuildSheet(
+      [&](double row, double phi) {
+        const double t = (30.0 + 1.5 * row) * std::numbers::pi / 180.0;
+        const Eigen::Vector3d n(std::sin(t) * std::cos(phi), std::sin(t) * std::sin(phi),
+                                std::cos(t));
+        return std::pair{Eigen::Vector3d(kCenterZ * Eigen::Vector3d::UnitZ() + kRadius * n), n};
+      },
+      0.0, 20.0, 21, 0.0, 1.5 * std::numbers::pi, 48, /*distance=*/5.0 * kSigma,
+      /*angle_deg=*/10.0, &s);
+  s.c.noise_sigma = kSigma;
+  AddNoise(7, &s);
+  const std::vector<int> labels(s.u.size(), 0);
+  const std::vector<RegionState> regions = RegionsFromLabels(s.c, labels, {SurfaceType::kSphere});
+  const Cone axis{.apex = Eigen::Vector3d(0.0, 0.0, 5.0),
+                  .axis_direction = Eigen::Vector3d::UnitZ(),
+                  .half_angle = 0.5};
+  const std::optional<RegionState> on_axis = SphereOnConeAxis(s.c, regions[0], axis);
+  ASSERT_TRUE(on_axis.has_value());
+  const Sphere& sphere = std::get<Sphere>(on_axis->surface);
+  EXPECT_NEAR(sphere.center.x(), 0.0, 1e-12);
+  EXPECT_NEAR(sphere.center.y(), 0.0, 1e-12);
+  EXPECT_NEAR(sphere.center.z(), kCenterZ, 0.01);
+  EXPECT_NEAR(sphere.radius, kRadius, 0.01);
+  EXPECT_EQ(FreeParameters(*on_axis), 2);
+  // Not for another type.
+  RegionState torus = regions[0];
+  torus.type = SurfaceType::kTorus;
+  EXPECT_FALSE(SphereOnConeAxis(s.c, torus, axis).has_value());
+}
+
 TEST(RetypeCoaxialBandsTest, BandWithoutAnAxialNeighbourStays) {
   // The chamfer's band with a plane below it in place of the cylinder.
   Sheet s;
