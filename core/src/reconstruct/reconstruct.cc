@@ -219,7 +219,10 @@ absl::StatusOr<Reconstruction> Reconstruct(const PointCloud& cloud, const Recons
     const std::vector<Support> inner = InnerSupports(supports, fit_input, h);
     vertices.insert(vertices.end(), inner.begin(), inner.end());
   }
-  const std::vector<double> tet_weights = TetWeights(vertices, supports.size());
+  std::vector<double> covering_weight(supports.size());
+  for (size_t i = 0; i < supports.size(); ++i) {
+    covering_weight[i] = supports[i].radius * supports[i].radius;
+  }
   ctx.Progress(kStage, 0.4);
 
   // Step 3: regular tetrahedralization of the support centres.
@@ -229,8 +232,18 @@ absl::StatusOr<Reconstruction> Reconstruct(const PointCloud& cloud, const Recons
     return ThinSolidError(cloud.name, absl::StrCat("the covering has only ", supports.size()),
                           cube / (1 << stats.octree_max_level));
   }
-  MESHSEG_ASSIGN_OR_RETURN(const TetMesh tets,
-                           RegularTetrahedralization(vertices, tet_weights, ctx));
+  MESHSEG_ASSIGN_OR_RETURN(
+      TetMesh tets,
+      RegularTetrahedralization(vertices, TetWeights(vertices, covering_weight), ctx));
+  {
+    // Hull centres tied outside against f > 0 hide nothing (cover.h): the
+    // tets again with their weight 0.
+    const std::vector<double> hull_weight = CoveringWeights(supports, tets, f);
+    if (hull_weight != covering_weight) {
+      MESHSEG_ASSIGN_OR_RETURN(
+          tets, RegularTetrahedralization(vertices, TetWeights(vertices, hull_weight), ctx));
+    }
+  }
   stats.tet_vertex_count = static_cast<int64_t>(tets.support.size());
   stats.tet_count = static_cast<int64_t>(tets.tets.size());
   std::vector<Eigen::Vector3d> position(tets.support.size());
