@@ -41,6 +41,9 @@ constexpr double kCubeMargin = 0.1;
 // Octree depth used when it is derived from the point spacing.
 constexpr int kMinDerivedLevel = 3;
 constexpr int kMaxDerivedLevel = 12;
+// Two sheets of the surface nearer than this many point spacings are not
+// resolved by the points (two samples across a feature, Nyquist).
+constexpr double kResolvedSpacings = 2.0;
 
 absl::Status ValidateParams(const ReconstructParams& p) {
   const auto bad = [](const std::string& what) {
@@ -279,7 +282,12 @@ absl::StatusOr<Reconstruction> Reconstruct(const PointCloud& cloud, const Recons
                           absl::StrCat("no inside region found among ", tets.support.size()),
                           cube / (1 << stats.octree_max_level));
   }
-  stats.dropped_component_count = DropSmallComponents(params.min_component_fraction, &surface);
+  // A component thinner than two spacings is one sheet of points seen as
+  // two (small_components.h); 0 keeps all, as the fraction.
+  const double min_thickness =
+      params.min_component_fraction > 0 ? kResolvedSpacings * h : 0.0;
+  stats.dropped_component_count =
+      DropSmallComponents(params.min_component_fraction, min_thickness, &surface);
   for (const uint8_t s : surface.to_smooth) stats.smoothed_vertex_count += s;
   SmoothSelected(surface.triangles, surface.to_smooth, params.smoothing_lambda,
                  params.smoothing_iterations, &surface.vertices);
