@@ -5,15 +5,19 @@
 // the quadric, type decision by the alpha test, graph merging) with seed 002's
 // improvements (labelled seeds incl. torus histogram, fast linear fits from
 // smoothed normals, leftover absorption with stepped thresholds, face labels).
-// Exact tessellations (CAD exports, whose vertices a modeller computed on
-// the B-rep's surfaces) take another path, facet by facet: one criterion
-// (a facet lies on a surface iff its corners lie on it to the rounding of
-// the file's numbers and its plane is a chord plane of it), hypotheses
-// fitted exactly to small facet groups and grown over the facets that meet
-// it, each facet to the hypothesis explaining the most, FREEFORM regions
-// for faces no analytic type explains, and the regions on one surface
-// sharing it (core/src/segment/exact_facets.h). Whether a mesh is exact is
-// measured (EstimateExactness), never assumed.
+// One criterion, two data terms. Exact tessellations (CAD exports, whose
+// vertices a modeller computed on the B-rep's surfaces) are segmented facet
+// by facet under the same energy as noisy meshes (below), with its data
+// term in the limit of no noise: a facet lies on a surface (cost 0) iff its
+// corners lie on it to the rounding of the file's numbers and its plane is
+// a chord plane of it, else it cannot be that surface's (cost infinite).
+// What remains is the same label cost per surface, minimised as facility
+// location is, by a greedy set cover: hypotheses fitted exactly to small
+// facet groups and grown over the facets of cost 0, each taken in order of
+// least label cost per corner it newly explains, FREEFORM regions for the
+// faces no analytic type explains (the outliers), and regions on one
+// surface one label (core/src/segment/exact_facets.h, energy.h). Whether a
+// mesh is exact is measured (EstimateExactness), never assumed.
 // Our additions, for noisy scans: the noise and tolerances are estimated
 // from the data; on a noisy mesh, flat seeds grow as planes before seed
 // 000's loop. Seeds 000/002's growing is the proposal mechanism; labels,
@@ -25,9 +29,12 @@
 // chords). Boundaries are placed by alpha-expansion with the surfaces
 // re-estimated between sweeps; merges, drops, retypes and planes split off
 // a curved region are each proposed and kept iff the energy falls, except
-// the retype of a narrow band by its interior, still a rule
-// (core/src/segment/segment.cc holds the order). Each surface is reported
-// as fitted to its region's inliers.
+// the retype of a narrow band by its interior, still a rule. Nine steps:
+// grow; absorb; evidence share; merge; expand; improve (the moves
+// alternated with the expansion until none lowers the energy); split off
+// planes; retype by interior; improve (core/src/segment/segment.cc lists
+// them with their principle). Each surface is reported as fitted to its
+// region's inliers.
 //
 // In: a Mesh and its CurvatureField. Out: Segmentation with a label per mesh
 // face and vertex and one Region per label.

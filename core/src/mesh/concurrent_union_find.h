@@ -50,6 +50,31 @@ inline void JoinToLowest(std::vector<std::atomic<int>>& parent, int a, int b) {
   }
 }
 
+// After the joins: the set number of every element `kept(i)` accepts, -1 for
+// the others. The roots are numbered in index order, serially, each by
+// `number(root)` (the number is stored in the root's parent entry, which the
+// joins no longer need), so the sets are numbered as a search seeded in
+// index order numbers them; then every element takes its root's number.
+template <typename Kept, typename Number>
+std::vector<int> NumberSets(std::vector<std::atomic<int>>& parent, Kept kept, Number number) {
+  const int n = static_cast<int>(parent.size());
+  std::vector<int> set(n, -1);
+  tbb::parallel_for(tbb::blocked_range<int>(0, n, 8192), [&](const tbb::blocked_range<int>& r) {
+    for (int i = r.begin(); i < r.end(); ++i) {
+      if (kept(i)) set[i] = FindLowestRoot(parent, i);
+    }
+  });
+  for (int i = 0; i < n; ++i) {
+    if (set[i] == i) parent[i].store(number(i), std::memory_order_relaxed);
+  }
+  tbb::parallel_for(tbb::blocked_range<int>(0, n, 8192), [&](const tbb::blocked_range<int>& r) {
+    for (int i = r.begin(); i < r.end(); ++i) {
+      if (set[i] >= 0) set[i] = parent[set[i]].load(std::memory_order_relaxed);
+    }
+  });
+  return set;
+}
+
 }  // namespace meshseg::mesh_internal
 
 #endif  // MESHSEG_MESH_CONCURRENT_UNION_FIND_H_

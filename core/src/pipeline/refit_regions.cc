@@ -13,9 +13,6 @@
 namespace meshseg::pipeline_internal {
 namespace {
 
-// Fewer points than this tell no type from another (the cone's fit needs 6).
-constexpr std::size_t kMinRetypePoints = 30;
-
 // The types a curved region may take on its points.
 constexpr SurfaceType kRetypeCandidates[] = {SurfaceType::kPlane, SurfaceType::kCylinder,
                                              SurfaceType::kCone};
@@ -107,6 +104,26 @@ void RefitToPoints(std::span<const std::vector<Eigen::Vector3d>> points_of_regio
   }
 }
 
+void TakeOwnSurface(Region* region, std::vector<SharedSurface>* surfaces) {
+  // Off the shared surface it was on (whose other regions keep it), onto
+  // one of its own; a surface it was alone on becomes its new one.
+  const bool shared = region->surface_id >= 0 &&
+                      region->surface_id < static_cast<int>(surfaces->size()) &&
+                      (*surfaces)[region->surface_id].regions.size() > 1;
+  if (shared) std::erase((*surfaces)[region->surface_id].regions, region->id);
+  if (shared || region->surface_id < 0 ||
+      region->surface_id >= static_cast<int>(surfaces->size())) {
+    region->surface_id = static_cast<int>(surfaces->size());
+    surfaces->push_back({.id = region->surface_id});
+  }
+  SharedSurface& mine = (*surfaces)[region->surface_id];
+  mine.type = region->type;
+  mine.surface = region->surface;
+  mine.regions = {region->id};
+  mine.rms_distance = region->rms_distance;
+  mine.max_distance = region->max_distance;
+}
+
 int RetypeToPoints(std::span<const std::vector<Eigen::Vector3d>> points_of_region, double sigma,
                    std::vector<Region>* regions, std::vector<SharedSurface>* surfaces) {
   int changed = 0;
@@ -171,23 +188,7 @@ int RetypeToPoints(std::span<const std::vector<Eigen::Vector3d>> points_of_regio
     region.rms_distance = best->second.rms_distance;
     region.max_distance = best->second.max_distance;
     ++changed;
-    // Off the shared surface it was on (whose other regions keep it), onto
-    // one of its own; a surface it was alone on becomes its new one.
-    const bool shared = region.surface_id >= 0 &&
-                        region.surface_id < static_cast<int>(surfaces->size()) &&
-                        (*surfaces)[region.surface_id].regions.size() > 1;
-    if (shared) std::erase((*surfaces)[region.surface_id].regions, region.id);
-    if (shared || region.surface_id < 0 ||
-        region.surface_id >= static_cast<int>(surfaces->size())) {
-      region.surface_id = static_cast<int>(surfaces->size());
-      surfaces->push_back({.id = region.surface_id});
-    }
-    SharedSurface& mine = (*surfaces)[region.surface_id];
-    mine.type = region.type;
-    mine.surface = region.surface;
-    mine.regions = {region.id};
-    mine.rms_distance = region.rms_distance;
-    mine.max_distance = region.max_distance;
+    TakeOwnSurface(&region, surfaces);
   }
   return changed;
 }

@@ -3,6 +3,7 @@
 #ifndef MESHSEG_PIPELINE_REFIT_REGIONS_H_
 #define MESHSEG_PIPELINE_REFIT_REGIONS_H_
 
+#include <cstddef>
 #include <span>
 #include <vector>
 
@@ -39,6 +40,9 @@ void RefitOnInputVertices(const TriMesh& mesh, std::span<const int> face_labels,
 void RefitToPoints(std::span<const std::vector<Eigen::Vector3d>> points_of_region,
                    double distance_tolerance, std::vector<Region>* regions);
 
+// Fewer points than this tell no type from another (the cone's fit needs 6).
+inline constexpr std::size_t kMinRetypePoints = 30;
+
 // Point clouds: the surface-type decision (ALGORITHMS.md S1) made again on each curved
 // region's own points (points_of_region, after RefitToPoints), with the
 // segmentation's criterion (segment/decide_type.h), near the noise (within
@@ -58,6 +62,11 @@ void RefitToPoints(std::span<const std::vector<Eigen::Vector3d>> points_of_regio
 // changed type.
 int RetypeToPoints(std::span<const std::vector<Eigen::Vector3d>> points_of_region, double sigma,
                    std::vector<Region>* regions, std::vector<SharedSurface>* surfaces);
+
+// After a region's type changed: the region leaves the shared surface it was
+// on (whose other regions keep it) for one of its own, which takes its type,
+// surface and distances; a surface it was alone on becomes that one.
+void TakeOwnSurface(Region* region, std::vector<SharedSurface>* surfaces);
 
 int RelabelFacesOffTheirSurface(const TriMesh& mesh, std::span<const Region> regions, double exact,
                                 std::vector<int>* face_labels);

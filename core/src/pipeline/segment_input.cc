@@ -16,6 +16,7 @@
 #include "pipeline/point_labels.h"
 #include "pipeline/refit_regions.h"
 #include "pipeline/remeshed_labels.h"
+#include "pipeline/retype_beside_neighbours.h"
 #include "pipeline/separating_planes.h"
 
 namespace meshseg::pipeline_internal {
@@ -232,6 +233,14 @@ absl::StatusOr<std::vector<int>> SegmentReconstruction(const Reconstruction& rec
   RefitToPoints(points, tolerance, &segmentation.regions);
   RetypeToPoints(points, reconstruction.stats.noise, &segmentation.regions,
                                     &segmentation.surfaces);
+  // A narrow band's region may hold its neighbours' points beyond both its
+  // creases, which bend its type (a chamfer into a torus): its type decided
+  // again with each point on the nearest of a simpler type's surface and
+  // its neighbours' (retype_beside_neighbours.h).
+  RetypeBesideNeighbours(
+      points,
+      RegionNeighbours(mesh.tri, segmentation.face_labels, segmentation.regions.size()),
+      reconstruction.stats.noise, &segmentation.regions, &segmentation.surfaces);
   // A point keeps its face's region within its noise band (2 sigma of the
   // cloud's noise); regions without points of their own (on the patches
   // that close unscanned areas) take no point from a neighbour.

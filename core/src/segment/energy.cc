@@ -8,6 +8,7 @@
 
 #include "segment/absorb_leftovers.h"
 #include "segment/decide_type.h"
+#include "segment/facet_on_surface.h"
 
 namespace meshseg::segment_internal {
 namespace {
@@ -97,11 +98,44 @@ double DataCost(const SegmentContext& c, const Surface& surface, std::span<const
   return sum;
 }
 
-double LabelCost(const SegmentContext& c, SurfaceType type, std::size_t vertex_count) {
-  const double f = c.evidence_share;
+double LabelCost(SurfaceType type, std::size_t vertex_count, double f) {
   const double effective = f * static_cast<double>(vertex_count);
   if (!(effective > 1.0)) return 0.0;
   return 0.5 * ParameterCount(type) * std::log(effective) / f;
+}
+
+double LabelCost(const SegmentContext& c, SurfaceType type, std::size_t vertex_count) {
+  return LabelCost(type, vertex_count, c.evidence_share);
+}
+
+double ExactFacetCost(const FacetMesh& fm, int f, const Surface& surface, double tau) {
+  return FacetOnSurface(fm, f, surface, tau) ? 0.0 : std::numeric_limits<double>::infinity();
+}
+
+double ExactLabelCost(SurfaceType type, std::size_t corner_count) {
+  return LabelCost(type, corner_count, 1.0);
+}
+
+double ExactPricePerCorner(SurfaceType type, std::size_t corner_count) {
+  if (corner_count == 0) return std::numeric_limits<double>::infinity();
+  return ExactLabelCost(type, corner_count) / static_cast<double>(corner_count);
+}
+
+double ExactJoinDelta(SurfaceType type, std::size_t a_corners, std::size_t b_corners,
+                      double joint_data_cost) {
+  const std::size_t counts[] = {a_corners, b_corners};
+  return ExactJoinDelta(type, counts, joint_data_cost);
+}
+
+double ExactJoinDelta(SurfaceType type, std::span<const std::size_t> corner_counts,
+                      double joint_data_cost) {
+  std::size_t total = 0;
+  double apart = 0.0;
+  for (const std::size_t n : corner_counts) {
+    total += n;
+    apart += ExactLabelCost(type, n);
+  }
+  return joint_data_cost + ExactLabelCost(type, total) - apart;
 }
 
 double EdgeCost(const SegmentContext& c, int u, int v) {

@@ -89,6 +89,45 @@
 // A local move (merge two regions, retype one, drop one) is accepted iff it
 // lowers E; MergeDelta, RetypeDelta and DropDelta below price one without
 // touching the rest.
+//
+// Exact vertices (a CAD tessellation, exact_facets.h). The same E, with the
+// data term in its limit: a modeller computed each vertex on its surface,
+// so the residuals are the rounding of the file's numbers, far below any
+// noise unit, and a facet either lies on a surface or does not. With tau
+// that rounding (exact_tolerance.h), the labels are on facets and
+//
+//   D_f(S) = 0 if f lies on S within tau (facet_on_surface.h), else inf,
+//
+// (ExactFacetCost): th_dis -> tau and k d / th_dis -> 0 or inf. The
+// residuals, below the data term's resolution, carry no correlation to
+// discount (f = 1, "Correlated residuals" above), and the boundary term,
+// a prior against the ragged boundaries noise makes, has nothing to
+// smooth: a facet on one surface only is that surface's, whatever its
+// neighbours. What remains of E is the label cost, (p_T / 2) ln n_r with
+// n_r the distinct corners of region r's facets (ExactLabelCost), and the
+// outlier cost c_out / 2 of each corner no analytic surface explains
+// (kExactOutlierCost; such facets are reported as FREEFORM pieces).
+// Minimising label costs under a hard data term is uncapacitated facility
+// location (Delong et al. 2012, label costs without smoothness), and the
+// cover of exact_facets.h is a greedy for it. The label cost is concave in
+// n: a corner costs least, (p / 2) / n at the margin, in the label with the
+// most corners, so E falls most by giving facets several surfaces explain
+// to the one explaining the most; and every surface holding evidence is
+// worth its label, its cost per corner (ExactPricePerCorner, at most
+// 7 / (2 e)) being below the outlier cost c_out / 2. (The textbook greedy
+// for facility location, least label cost per new corner first, Hochbaum
+// 1982, opens small labels first: a strip of a coarsely tessellated round
+// lies in its own plane, 5 corners at 0.48 each, and goes before the
+// round's dozen at 0.54, though the round, opened anyway, explains the
+// strip at no data cost and at less label cost than a plane of its own,
+// ln being concave.) On a tie the type order of exact_hypotheses.h
+// decides, a rule: exact corners can leave the type undetermined (the two
+// rims of a cylinder tessellated without inner vertices lie on a sphere
+// too, every facet of it a chord of both), and the label cost, counting
+// parameters, would take the sphere.
+// Regions on one surface are one label (PEARL's label is the model): joined
+// when the joint fit keeps the data term 0, which lowers E by
+// h(a) + h(b) - h(a + b) > 0 (ExactJoinDelta).
 #ifndef MESHSEG_SRC_SEGMENT_ENERGY_H_
 #define MESHSEG_SRC_SEGMENT_ENERGY_H_
 
@@ -100,6 +139,7 @@
 #include <utility>
 #include <vector>
 
+#include "segment/facet_mesh.h"
 #include "segment/segment_internal.h"
 
 namespace meshseg::segment_internal {
@@ -135,6 +175,30 @@ double OutlierCost(const SegmentContext& c, int v);
 double DataCost(const SegmentContext& c, const Surface& surface, std::span<const int> vertices);
 // (p_T / (2 f)) ln (f n), f = c.evidence_share (0 for f n <= 1).
 double LabelCost(const SegmentContext& c, SurfaceType type, std::size_t vertex_count);
+// The same for evidence share `f` (0 < f <= 1), without a mesh.
+double LabelCost(SurfaceType type, std::size_t vertex_count, double f);
+
+// E with exact vertices (above). D_f(S): 0 if facet f of `fm` lies on
+// `surface` within `tau` (FacetOnSurface), else infinity.
+double ExactFacetCost(const FacetMesh& fm, int f, const Surface& surface, double tau);
+// The label cost of a region of `type` on `corner_count` distinct corners:
+// LabelCost with f = 1.
+double ExactLabelCost(SurfaceType type, std::size_t corner_count);
+// The outlier cost of a corner no analytic surface explains: c_out / 2 (a
+// vertex of mean area unlabelled, OutlierCost).
+inline constexpr double kExactOutlierCost = kOutlierMismatch / 2.0;
+// The greedy cover's price of a surface of `type` that newly explains
+// `corner_count` corners: ExactLabelCost per corner (infinite for none).
+double ExactPricePerCorner(SurfaceType type, std::size_t corner_count);
+// The change of E from joining two regions of `type` on `a_corners` and
+// `b_corners` corners (a region's corners are its own; shared corners are
+// counted in each) onto one surface whose data cost on both is
+// `joint_data_cost` (0 or infinity).
+double ExactJoinDelta(SurfaceType type, std::size_t a_corners, std::size_t b_corners,
+                      double joint_data_cost);
+// The same for joining regions of `type` on `corner_counts` corners each.
+double ExactJoinDelta(SurfaceType type, std::span<const std::size_t> corner_counts,
+                      double joint_data_cost);
 
 // f = n_eff / n = (1 - rho) / (1 + rho) of the residuals of `labels` to
 // their regions' surfaces (1 if rho <= 0 or nothing to measure): rho the

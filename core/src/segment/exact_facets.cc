@@ -12,6 +12,7 @@
 
 #include "meshseg/fit.h"
 #include "meshseg/status_macros.h"
+#include "segment/energy.h"
 #include "segment/exact_fit.h"
 #include "segment/exact_hypotheses.h"
 #include "segment/exact_joint_hypotheses.h"
@@ -54,8 +55,9 @@ std::vector<std::vector<int>> Pieces(const FacetMesh& fm, const std::vector<int>
   return pieces;
 }
 
-// The lazy greedy cover (exact_facets.h): returns the owner region of each
-// facet (-1 = none) and appends the regions.
+// The lazy greedy cover (exact_facets.h; energy.h: E with exact vertices):
+// returns the owner region of each facet (-1 = none) and appends the
+// regions.
 std::vector<int> Claim(const FacetMesh& fm, const std::vector<Hypothesis>& hypotheses,
                        std::vector<ExactRegion>* regions) {
   std::vector<int> owner(fm.facet_count(), -1);
@@ -63,7 +65,7 @@ std::vector<int> Claim(const FacetMesh& fm, const std::vector<Hypothesis>& hypot
   int stamp_id = 0;
   auto free_corners = [&](const Hypothesis& h) {
     ++stamp_id;
-    int count = 0;
+    std::size_t count = 0;
     for (const int f : h.support) {
       if (owner[f] >= 0) continue;
       for (const int v : fm.corners[f]) {
@@ -72,8 +74,8 @@ std::vector<int> Claim(const FacetMesh& fm, const std::vector<Hypothesis>& hypot
     }
     return count;
   };
-  // (free corners, simpler first, earlier first)
-  using Entry = std::tuple<int, int, int>;
+  // (corners newly explained, simpler first, earlier first): exact_facets.h.
+  using Entry = std::tuple<std::size_t, int, int>;
   std::priority_queue<Entry> queue;
   for (std::size_t i = 0; i < hypotheses.size(); ++i) {
     queue.emplace(free_corners(hypotheses[i]), -Simplicity(hypotheses[i].type),
@@ -83,11 +85,15 @@ std::vector<int> Claim(const FacetMesh& fm, const std::vector<Hypothesis>& hypot
     const auto [key, simplicity, minus_index] = queue.top();
     queue.pop();
     const Hypothesis& h = hypotheses[-minus_index];
-    const int now = free_corners(h);
+    const std::size_t now = free_corners(h);
     if (now < key) {
       if (now > 0) queue.emplace(now, simplicity, minus_index);
       continue;
     }
+    // A label lowers E iff its cost per corner is below that of leaving the
+    // corners unexplained (always so for a surface holding evidence:
+    // (p / 2) ln n / n <= 7 / (2 e) < c_out / 2; none for no corners).
+    if (!(ExactPricePerCorner(h.type, now) < kExactOutlierCost)) continue;
     std::vector<int> free;
     for (const int f : h.support) {
       if (owner[f] < 0) free.push_back(f);

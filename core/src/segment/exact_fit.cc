@@ -9,6 +9,7 @@
 #include <variant>
 
 #include "meshseg/fit.h"
+#include "segment/decide_type.h"
 #include "segment/facet_on_surface.h"
 #include "segment/fit_exclusion.h"
 
@@ -23,23 +24,6 @@ constexpr std::size_t kScannedFacets = kMaxSeedFacets;
 // fit of exact corners it converges in under ten steps, and a group that
 // needs more lies on no surface of the type.
 const FitParams kExactFit{.max_iterations = 25, .relative_tolerance = 1e-15, .refine = true};
-
-int ParameterCount(SurfaceType type) {
-  switch (type) {
-    case SurfaceType::kPlane:
-      return 3;
-    case SurfaceType::kCylinder:
-      return 5;
-    case SurfaceType::kCone:
-      return 6;
-    case SurfaceType::kSphere:
-      return 4;
-    case SurfaceType::kTorus:
-      return 8;
-    default:
-      return 10;
-  }
-}
 
 // The distinct corners of `facets` with the area-weighted normals of the
 // facets around each (in the group), every k-th if more than kMaxFitCorners;

@@ -25,7 +25,8 @@ std::optional<Surface> FitExactly(const FacetMesh& fm, SurfaceType type,
 // needs 4 distinct corners (a facet alone fixes its own plane); a curved
 // type kMinCurvedFacets facets of distinct normals (three parallel lines lie
 // on a cylinder whatever they are, four do not) and as many corners as its
-// parameters plus kSpareCorners.
+// parameters plus kSpareCorners (ParameterCount, decide_type.h: the p_T of
+// the label cost, energy.h).
 bool HoldsEvidence(const FacetMesh& fm, SurfaceType type, std::span<const int> facets);
 inline constexpr int kMinCurvedFacets = 3;
 inline constexpr int kSpareCorners = 3;

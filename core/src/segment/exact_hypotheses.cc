@@ -10,6 +10,7 @@
 
 #include <tbb/parallel_for.h>
 
+#include "segment/energy.h"
 #include "segment/facet_on_surface.h"
 
 namespace meshseg::segment_internal {
@@ -25,8 +26,9 @@ double Dihedral(const FacetMesh& fm, int f, int g) {
   return std::atan2(a.cross(b).norm(), a.dot(b));
 }
 
-// The facets edge-connected to `seed` that meet the criterion for `surface`
-// (the seed's own facets are taken as given), sorted.
+// The facets edge-connected to `seed` that meet the criterion for `surface`,
+// of data cost 0 on it (energy.h: ExactFacetCost): what a label of that
+// surface may explain (the seed's own facets are taken as given), sorted.
 std::vector<int> Support(const FacetMesh& fm, const Surface& surface, std::span<const int> seed,
                          double tau, std::vector<char>* mark) {
   std::vector<int> out(seed.begin(), seed.end());
@@ -35,7 +37,7 @@ std::vector<int> Support(const FacetMesh& fm, const Surface& surface, std::span<
     for (const int g : fm.across[out[k]]) {
       if (g < 0 || (*mark)[g]) continue;
       (*mark)[g] = 1;  // tried; reset below
-      if (FacetOnSurface(fm, g, surface, tau)) {
+      if (ExactFacetCost(fm, g, surface, tau) == 0.0) {
         out.push_back(g);
       } else {
         (*mark)[g] = 2;

@@ -1,9 +1,11 @@
 // Hypotheses of the exact-facet path: a surface fitted exactly (within the
 // tolerance tau, exact_fit.h) to a small group of facets, verified on every
 // facet of the group by the criterion of facet_on_surface.h, and grown over
-// the facets around it that meet that criterion. Types are tried in order of
-// simplicity: plane, cylinder, cone, sphere, torus; the first that fits is
-// the group's.
+// the facets around it that meet that criterion. Types are tried plane,
+// cylinder, cone, sphere, torus, the first that fits being the group's (the
+// proposals; which of them explain which facets, E decides: exact_facets.h).
+// Of types that fit a grown support exactly alike, the one of least label
+// cost (energy.h) is kept.
 #ifndef MESHSEG_SRC_SEGMENT_EXACT_HYPOTHESES_H_
 #define MESHSEG_SRC_SEGMENT_EXACT_HYPOTHESES_H_
 

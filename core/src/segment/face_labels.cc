@@ -60,24 +60,12 @@ Pieces FindPieces(const FaceNeighbors& adjacent, const std::vector<int>& labels)
     }
   });
   Pieces p;
-  p.of_face.assign(nf, -1);
-  tbb::parallel_for(tbb::blocked_range<int>(0, nf, 8192), [&](const tbb::blocked_range<int>& r) {
-    for (int f = r.begin(); f < r.end(); ++f) {
-      if (labels[f] >= 0) p.of_face[f] = mesh_internal::FindLowestRoot(parent, f);
-    }
-  });
-  // Roots numbered in face order (the number kept in the root's parent
-  // entry, no longer needed); then each face takes its root's number.
-  for (int f = 0; f < nf; ++f) {
-    if (p.of_face[f] != f) continue;
-    parent[f].store(static_cast<int>(p.label.size()), std::memory_order_relaxed);
-    p.label.push_back(labels[f]);
-  }
-  tbb::parallel_for(tbb::blocked_range<int>(0, nf, 8192), [&](const tbb::blocked_range<int>& r) {
-    for (int f = r.begin(); f < r.end(); ++f) {
-      if (p.of_face[f] >= 0) p.of_face[f] = parent[p.of_face[f]].load(std::memory_order_relaxed);
-    }
-  });
+  p.of_face = mesh_internal::NumberSets(
+      parent, [&](int f) { return labels[f] >= 0; },
+      [&](int f) {
+        p.label.push_back(labels[f]);
+        return static_cast<int>(p.label.size()) - 1;
+      });
   p.size.assign(p.label.size(), 0);
   for (int f = 0; f < nf; ++f) {
     if (p.of_face[f] >= 0) ++p.size[p.of_face[f]];

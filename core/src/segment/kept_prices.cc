@@ -41,6 +41,42 @@ int KeptPrices::Version(const std::vector<RegionState>& regions, int id) {
   return seen.version;
 }
 
+int KeptPrices::VersionNow(const std::vector<RegionState>& regions, int id) {
+  seen_[id].checked = -1;
+  return Version(regions, id);
+}
+
+void KeptPrices::Reserve(std::size_t region_count) {
+  if (seen_.size() < region_count) seen_.resize(region_count);
+  if (reestimations_.size() < region_count) reestimations_.resize(region_count);
+  for (std::vector<int>& refused : refused_) {
+    if (refused.size() < region_count) refused.resize(region_count, -1);
+  }
+}
+
+bool KeptPrices::Refused(const std::vector<RegionState>& regions, int id, Proposal p) {
+  Reserve(regions.size());
+  return refused_[p][id] >= 0 && refused_[p][id] == VersionNow(regions, id);
+}
+
+void KeptPrices::Refuse(const std::vector<RegionState>& regions, int id, Proposal p) {
+  Reserve(regions.size());
+  refused_[p][id] = VersionNow(regions, id);
+}
+
+RegionState KeptPrices::Reestimation(const SegmentContext& c,
+                                     const std::vector<RegionState>& regions, int id) {
+  Reserve(regions.size());
+  const int version = VersionNow(regions, id);
+  std::optional<KeptReestimation>& kept = reestimations_[id];
+  if (!kept || kept->version != version) {
+    // As Reestimate makes it (ReestimatedRegions' own computation).
+    ReestimatedRegions alone(c, regions);
+    kept = KeptReestimation{.version = version, .region = alone(id), .cost = alone.Cost(id)};
+  }
+  return kept->region;
+}
+
 void KeptPrices::Reestimate(const SegmentContext& c, const std::vector<RegionState>& regions,
                             ReestimatedRegions& region, std::span<const int> ids) {
   // Only re-estimations are kept (regions as given need no fit).

@@ -43,6 +43,21 @@ class KeptPrices {
   void PriceMerges(const SegmentContext& c, const std::vector<int>& labels,
                    const std::vector<RegionState>& regions, ReestimatedRegions& region,
                    std::span<const std::pair<int, int>> pairs);
+  // The retype proposals (retype_regions.h) whose refusals are kept.
+  enum Proposal { kBentPlane, kInaccurateCurved, kSimplerLimit, kProposals };
+  // Whether proposal `p` was asked of region `id` as it stands, bit for
+  // bit, and made no move. A proposal reads only its region, so it would
+  // make none again: only the regions changed since are asked.
+  bool Refused(const std::vector<RegionState>& regions, int id, Proposal p);
+  // Keeps that proposal `p` made no move on region `id` as it stands.
+  void Refuse(const std::vector<RegionState>& regions, int id, Proposal p);
+  // Region `id` re-estimated (Reestimated, energy.h): the re-estimation
+  // kept of it as it stands, or made (and kept). Refused, Refuse and
+  // Reestimation read and write region `id`'s entries only, so they may be
+  // called for different regions at once after Reserve(regions.size()).
+  RegionState Reestimation(const SegmentContext& c, const std::vector<RegionState>& regions,
+                           int id);
+  void Reserve(std::size_t region_count);
   // How many re-estimations a step took from an earlier one (Reestimate).
   long kept_reestimations() const { return kept_reestimations_; }
   // The regions may have changed since the last price: each is compared
@@ -81,6 +96,9 @@ class KeptPrices {
     double cost = 0.0;
   };
   int Version(const std::vector<RegionState>& regions, int id);
+  // Version, compared again even within a generation (the retypes change
+  // regions between the merge and drop steps' generations).
+  int VersionNow(const std::vector<RegionState>& regions, int id);
   // Makes the re-estimations of regions `ids` in `region`, or gives it
   // those kept from an earlier step on the same regions; keeps them for
   // the next. Those to make are made in parallel, each in a
@@ -97,6 +115,8 @@ class KeptPrices {
   std::vector<std::optional<DropEntry>> drops_;
   std::map<std::pair<int, int>, MergeEntry> merges_;
   std::vector<std::optional<KeptReestimation>> reestimations_;
+  // Per proposal, the version of each region it last made no move on.
+  std::vector<int> refused_[kProposals];
   long kept_reestimations_ = 0;
 };
 

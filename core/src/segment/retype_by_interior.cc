@@ -9,6 +9,8 @@
 
 #include <tbb/parallel_for.h>
 
+#include "meshseg/status_macros.h"
+#include "segment/alpha_expansion.h"
 #include "segment/decide_type.h"
 #include "segment/retype_coaxial_bands.h"
 
@@ -203,6 +205,14 @@ std::vector<int> RetypeByInterior(const SegmentContext& c, const std::vector<int
     if (retyped[id]) ids.push_back(id);
   }
   return ids;
+}
+
+absl::StatusOr<std::vector<int>> RetypeByInteriorAndExpand(const SegmentContext& c,
+                                                           std::vector<int>* labels,
+                                                           std::vector<RegionState>* regions) {
+  std::vector<int> retyped = RetypeByInterior(c, *labels, regions);
+  if (!retyped.empty()) MESHSEG_RETURN_IF_ERROR(ExpandRegions(c, labels, regions).status());
+  return retyped;
 }
 
 }  // namespace meshseg::segment_internal

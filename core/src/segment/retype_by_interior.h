@@ -15,6 +15,7 @@
 #include <span>
 #include <vector>
 
+#include "absl/status/statusor.h"
 #include "segment/segment_internal.h"
 
 namespace meshseg::segment_internal {
@@ -66,6 +67,19 @@ bool TypeMissesInterior(const SegmentContext& c, const std::vector<int>& labels,
 // The new surface is fitted to the whole region. Returns the ids retyped.
 std::vector<int> RetypeByInterior(const SegmentContext& c, const std::vector<int>& labels,
                                   std::vector<RegionState>* regions);
+
+// RetypeByInterior, then, if it retyped a region, the expansion with
+// re-estimation (ExpandRegions, alpha_expansion.h). The retype is a rule,
+// not a move E priced: the region keeps the rows its old surface bent to
+// take (a sphere follows a chamfer's rounded crease rows, which lie off the
+// cone), and on those rows E charges the new surface for them. Priced from
+// that labelling, the old type comes back as a gain (RetypeIfLower) that the
+// labelling the expansion places for the new type refutes; PEARL follows a
+// change of model by the labelling step before any move compares models.
+// Returns the ids retyped. Errors: CANCELLED on stop.
+absl::StatusOr<std::vector<int>> RetypeByInteriorAndExpand(const SegmentContext& c,
+                                                           std::vector<int>* labels,
+                                                           std::vector<RegionState>* regions);
 
 }  // namespace meshseg::segment_internal
 

@@ -7,6 +7,7 @@
 #include <span>
 #include <vector>
 
+#include "segment/kept_prices.h"
 #include "segment/segment_internal.h"
 
 namespace meshseg::segment_internal {
@@ -29,13 +30,17 @@ bool RetypeIfLower(const SegmentContext& c, RegionState* r, std::span<const Surf
 // test fails on its non-sharp vertices) the curved type DecideCurvedType
 // finds there, taken iff it lowers E (RetypeIfLower): at high noise a fillet
 // can start as a plane from a seed on its middle and take its whole arc as
-// leftovers. Returns the ids of those retyped.
-std::vector<int> RetypeBentPlanes(const SegmentContext& c, std::vector<RegionState>* regions);
+// leftovers. Returns the ids of those retyped. With `kept`, a region asked
+// before and unchanged since is not asked again (KeptPrices::Refused).
+std::vector<int> RetypeBentPlanes(const SegmentContext& c, std::vector<RegionState>* regions,
+                                  KeptPrices* kept = nullptr);
 
-// Proposes for region `r` the curved type DecideCurvedType finds on its
+// Proposes for region `id` the curved type DecideCurvedType finds on its
 // non-sharp vertices (not a general quadric), taken iff it lowers E
-// (RetypeIfLower); returns whether it was.
-bool RetypeCurved(const SegmentContext& c, RegionState* r);
+// (RetypeIfLower, the re-estimation `kept`'s if given); returns whether it
+// was.
+bool RetypeCurved(const SegmentContext& c, std::vector<RegionState>* regions, int id,
+                  KeptPrices* kept = nullptr);
 
 // Proposes for a curved region whose fit misses it by more than
 // kInaccurateError noise sigmas beyond the noise (ModelError), or that its
@@ -48,8 +53,10 @@ bool RetypeCurved(const SegmentContext& c, RegionState* r);
 // typed on a ring at the rim of a plane annulus (the flat top of a turned
 // cylinder with a convex edge round) can be grown over the whole top, where
 // only a spindle torus with its cusp inside fits. Returns the ids retyped.
+// `kept` as for RetypeBentPlanes.
 std::vector<int> RetypeInaccurateCurved(const SegmentContext& c,
-                                        std::vector<RegionState>* regions);
+                                        std::vector<RegionState>* regions,
+                                        KeptPrices* kept = nullptr);
 
 // Proposes for every curved region the plane, and for a cone also the
 // cylinder (its limit of half-angle 0, IsLimitOf), the one that lowers E
@@ -58,8 +65,9 @@ std::vector<int> RetypeInaccurateCurved(const SegmentContext& c,
 // parameters than the label cost charges for them (a reconstructed flat
 // face fitted by a cylinder of radius 914 mm; a CAD edge round fitted by a
 // cone of half angle 0.06 degrees, 0.16 wider at one end of 150). Returns
-// how many were retyped.
-int RetypeToSimplerLimits(const SegmentContext& c, std::vector<RegionState>* regions);
+// how many were retyped. `kept` as for RetypeBentPlanes.
+int RetypeToSimplerLimits(const SegmentContext& c, std::vector<RegionState>* regions,
+                          KeptPrices* kept = nullptr);
 
 }  // namespace meshseg::segment_internal
 

@@ -80,22 +80,29 @@ absl::Status Merge(const segment_internal::SegmentContext& c, std::vector<int>* 
 
 // PEARL's alternation (Isack & Boykov, IJCV 2012) over the moves of E
 // (energy.h): the retypes proposed (a plane its plane no longer fits, a
-// curved region its type misses; retype_regions.h), the merges and the
-// drops, each made iff it lowers E, then the expansion with re-estimation
-// over the boundaries they changed; repeated until no move is made (each
-// move lowers E, so it ends; kMaxImproveRounds guards against a cycle of
-// moves whose gains are rounding). The expansion can shrink a region to a
-// sliver or a strip whose vertices cost less on its neighbours' surfaces
-// (between a countersink and its plane, along a groove), which the next
-// round drops, and it gives a plane retyped on part of its arc the rest,
-// whose type the next round proposes again.
+// curved region its type misses, a band beside a turned face the cone on
+// that face's axis, a curved type its simpler limit; retype_regions.h,
+// retype_coaxial_bands.h), the merges and the drops, each made iff it
+// lowers E, then the expansion with re-estimation over the boundaries they
+// changed; repeated until no move is made (each move lowers E, so it ends;
+// kMaxImproveRounds guards against a cycle of moves whose gains are
+// rounding). The expansion can shrink a region to a sliver or a strip
+// whose vertices cost less on its neighbours' surfaces (between a
+// countersink and its plane, along a groove), which the next round drops,
+// and it gives a plane retyped on part of its arc the rest, whose type the
+// next round proposes again.
 constexpr int kMaxImproveRounds = 16;
 absl::Status Improve(const segment_internal::SegmentContext& c, std::vector<int>* labels,
                      std::vector<segment_internal::RegionState>* regions,
                      segment_internal::KeptPrices* prices) {
   for (int round = 0; round < kMaxImproveRounds; ++round) {
-    std::size_t moves = segment_internal::RetypeBentPlanes(c, regions).size() +
-                        segment_internal::RetypeInaccurateCurved(c, regions).size();
+    // Only the regions changed since a proposal last made no move on them
+    // are asked it again (KeptPrices::Refused).
+    std::size_t moves =
+        segment_internal::RetypeBentPlanes(c, regions, prices).size() +
+        segment_internal::RetypeInaccurateCurved(c, regions, prices).size() +
+        segment_internal::RetypeCoaxialBands(c, *labels, regions).size() +
+        static_cast<std::size_t>(segment_internal::RetypeToSimplerLimits(c, regions, prices));
     MESHSEG_ASSIGN_OR_RETURN(const int merged, MergeAndDrop(c, labels, regions, prices));
     segment_internal::RetypeQuadrics(c, regions);
     moves += static_cast<std::size_t>(merged);
@@ -120,6 +127,39 @@ void OwnSurfaces(Segmentation* seg) {
 
 // Segment, with l_avg = MeanEdgeLength(mesh.tri) given if the caller
 // already measured it (else summed here, where the seeded path needs it).
+// On a scan (not an exact tessellation) it runs nine steps. Steps 1-3 make
+// the proposals the energy E (energy.h; PEARL with label costs) starts
+// from; every move of steps 4-7 and 9 is made iff it lowers E; step 8 is
+// still a rule.
+//  1. Grow: seeds 000/002's regions, the surfaces proposed (S1 step 2).
+//  2. Absorb: small quadric regions released, every vertex given a region
+//     (S2's leftover absorption).
+//  3. Evidence share: f, how many independent samples the residuals are
+//     worth, measured once on the regions grown (E's label and boundary
+//     costs are in its units).
+//  4. Merge: merges and drops while E falls; general quadrics typed (S1
+//     step 2.5).
+//  5. Expand: alpha-expansion with re-estimation (alpha_expansion.h)
+//     places every boundary where E is least. A round grown on a narrow
+//     band has a tube radius the band does not fix within the noise; the
+//     expansion moves a boundary by at most a band per sweep and refits
+//     between sweeps, so the round's surface follows the rows it keeps, and
+//     a surface grown bent over rows of a neighbour's face (a sphere over a
+//     flat top and a ring of the cone below) gives them back the same way.
+//  6. Improve: PEARL's alternation (Improve above) of every priced move,
+//     retypes, merges and drops, then the expansion, until no move lowers E.
+//  7. Split off planes: a flat face a curved region absorbed is born as a
+//     plane of its own, kept iff E with the expansion falls
+//     (split_off_planes.h).
+//  8. Retype by interior: a narrow band takes the type its interior tells
+//     (the outer rows are the creases'; retype_by_interior.h), and the
+//     expansion then places its boundary for that type (PEARL compares
+//     models only from labellings placed for them). A rule: E,
+//     even with the expansion inside the price, keeps a torus on a noisy
+//     countersink band that the rule makes the cone on its bore's axis,
+//     since E's label cost does not know the cone shares that axis.
+//  9. Improve again: the pieces the split and the retypes leave, joined,
+//     dropped or retyped by the same moves.
 absl::StatusOr<Segmentation> SegmentWithEdgeLength(const Mesh& mesh,
                                                    const CurvatureField& curvature,
                                                    const SegmentParams& params,
@@ -153,50 +193,31 @@ absl::StatusOr<Segmentation> SegmentWithEdgeLength(const Mesh& mesh,
 
   std::vector<int> labels(c.vertex_count(), -1);
   std::vector<RegionState> regions;
+  // 1. Grow.
   MESHSEG_RETURN_IF_ERROR(GrowInitialRegions(c, &labels, &regions));
   ctx.Progress("segment", 0.6);
+  // 2. Absorb.
   ReleaseSmallQuadrics(c, &labels, &regions);
   MESHSEG_RETURN_IF_ERROR(AbsorbLeftovers(c, &labels, &regions));
   ctx.Progress("segment", 0.7);
-  // How many independent samples the residuals are worth, measured once on
-  // the regions grown, for the label cost of every move after (energy.h).
+  // 3. Evidence share.
   c.evidence_share = EvidenceShare(c, labels, regions);
-  // Merge and drop prices, kept from each step for the next.
+  // Merge and drop prices (and refused retypes), kept from each step for
+  // the next.
   KeptPrices kept_prices;
+  // 4. Merge.
   MESHSEG_RETURN_IF_ERROR(Merge(c, &labels, &regions, &kept_prices));
-  // The first boundaries are E's own: expansions with each surface re-
-  // estimated between sweeps (PEARL). A round grown on a narrow band has a
-  // tube radius the band does not fix within the noise (a fatter tube
-  // through the band's middle fits it as well); moved by the surfaces as
-  // they stand, rows of the faces it runs tangent into join it within the
-  // tolerance of that fatter tube, and refitted to them it misses its own
-  // arc until dropping it costs less than keeping it. The expansion moves
-  // a boundary by at most a band per sweep and refits between sweeps, so
-  // the round's surface follows the rows it keeps; a surface grown bent
-  // over rows of a neighbour's face (a sphere over a flat top and a ring of
-  // the cone below) gives them back the same way.
+  // 5. Expand.
   MESHSEG_RETURN_IF_ERROR(ExpandRegions(c, &labels, &regions).status());
-  // The moves E prices, until none lowers it.
+  // 6. Improve.
   MESHSEG_RETURN_IF_ERROR(Improve(c, &labels, &regions, &kept_prices));
-  // A flat face that a curved region absorbed (a small plane disc on top
-  // of a conical frustum, in a piece of the cone; a top grown over by its
-  // round) becomes a plane of its own where E falls; the rest of the region
-  // is then typed on its interior like every other.
+  // 7. Split off planes.
   MESHSEG_RETURN_IF_ERROR(SplitOffPlanes(c, &labels, &regions).status());
-  // The outer rows of a narrow band can decide its type (a chamfer between
-  // rounded creases passes as a sphere); its interior tells.
-  RetypeByInterior(c, labels, &regions);
-  // A band beside a turned face may be a cone on that face's axis (a
-  // countersink on its bore's) with 4 parameters fewer.
-  if (!RetypeCoaxialBands(c, labels, &regions).empty()) {
-    MESHSEG_RETURN_IF_ERROR(ExpandRegions(c, &labels, &regions).status());
-  }
-  // Pieces of one surface typed apart are joined, fragments dropped, and
-  // the retypes proposed again, by the same energy.
+  // 8. Retype by interior, then the expansion places the band's boundary
+  // for the type its interior tells, before any move compares types.
+  MESHSEG_RETURN_IF_ERROR(RetypeByInteriorAndExpand(c, &labels, &regions).status());
+  // 9. Improve again.
   MESHSEG_RETURN_IF_ERROR(Improve(c, &labels, &regions, &kept_prices));
-  // A curved type that bends or widens less than the noise over its region
-  // gives way to its simpler limit where that lowers E.
-  RetypeToSimplerLimits(c, &regions);
   ctx.Progress("segment", 0.9);
   MESHSEG_RETURN_IF_ERROR(ctx.CheckStop("segment"));
   Segmentation seg = FinalizeRegions(c, mesh.tri, std::move(labels), std::move(regions));

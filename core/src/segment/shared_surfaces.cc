@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <numeric>
 #include <optional>
 #include <unordered_map>
@@ -13,6 +14,7 @@
 #include <tbb/parallel_for.h>
 
 #include "meshseg/fit.h"
+#include "segment/energy.h"
 #include "segment/exact_fit.h"
 
 namespace meshseg::segment_internal {
@@ -179,13 +181,23 @@ std::vector<SharedSurface> GroupSharedSurfaces(const FacetMesh& fm,
     }
     joint[joined[i]] = FitExactly(fm, regions[members.front()].type, facets, tau);
   });
+  // A group is one label of E iff that lowers E (energy.h: ExactJoinDelta):
+  // its joint fit holding every corner within tau (each facet lay on its own
+  // region's surface through the same corners: data cost 0), one label cost
+  // instead of one per region; else the data cost is infinite.
+  auto joins = [&](const std::vector<int>& members, bool fits) {
+    std::vector<std::size_t> counts;
+    for (const int m : members) counts.push_back(corners[m].size());
+    return ExactJoinDelta(regions[members.front()].type, counts,
+                          fits ? 0.0 : std::numeric_limits<double>::infinity()) < 0.0;
+  };
   for (int r = 0; r < n; ++r) {
     const int root = Find(parent, r);
     if ((*surface_of_region)[r] >= 0 || groups[root].empty()) continue;
     const std::vector<int>& members = groups[root];
     if (members.size() == 1) {
       add(members, regions[r].surface);
-    } else if (joint[root]) {
+    } else if (joins(members, joint[root].has_value())) {
       add(members, *joint[root]);
     } else {
       for (const int m : members) add({m}, regions[m].surface);

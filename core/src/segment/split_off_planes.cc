@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdint>
 #include <optional>
+#include <span>
 
 #include "meshseg/status_macros.h"
 #include "segment/absorb_leftovers.h"
@@ -23,6 +24,7 @@ constexpr int kSplitRounds = 3;
 
 struct Split {
   FitResult plane;
+  SurfaceType curved_type = SurfaceType::kQuadric;
   FitResult curved;
   std::vector<int> on_plane;
   std::vector<int> rest;
@@ -83,6 +85,24 @@ void FillOneVertexHoles(const SegmentContext& c, const std::vector<int>& vertice
   for (const int v : flip) (*side)[v] = (*side)[v] == kOnPlane ? kOnRest : kOnPlane;
 }
 
+// The surface of the region's vertices off the plane: of the region's type
+// `type`, or, where that has no valid fit to them, of the limit of it
+// (IsLimitOf) that scores least there. A type grown over a flat face across
+// a crease bends to meet both (a torus over a conical band and the disc
+// beside it); without the face the band may be a limit of it, on which the
+// general type's fit degenerates (a torus of unbounded minor radius on a
+// cone).
+ScoredFit FitRest(const SegmentContext& c, SurfaceType type, std::span<const int> rest) {
+  ScoredFit best{.type = type, .fit = FitType(c, type, rest)};
+  if (best.fit.ok()) return best;
+  for (const SurfaceType limit : kCurvedTypes) {
+    if (!IsLimitOf(limit, type)) continue;
+    ScoredFit s = ScoreType(c, limit, rest);
+    if (s.score < best.score) best = std::move(s);
+  }
+  return best;
+}
+
 // Steps 1 and 2 of SplitOffPlanes on region `r`.
 std::optional<Split> FindSplit(const SegmentContext& c, const RegionState& r) {
   const std::vector<int> flat = DominantNormalVertices(c, r.vertices);
@@ -112,7 +132,9 @@ std::optional<Split> FindSplit(const SegmentContext& c, const RegionState& r) {
       return std::nullopt;
     }
     s.plane = FitType(c, SurfaceType::kPlane, s.on_plane);
-    s.curved = FitType(c, r.type, s.rest);
+    ScoredFit rest = FitRest(c, r.type, s.rest);
+    s.curved_type = rest.type;
+    s.curved = std::move(rest.fit);
     if (!s.plane.ok() || !s.curved.ok()) return std::nullopt;
     if (round == kSplitRounds) break;
     for (const int v : r.vertices) {
@@ -154,6 +176,7 @@ absl::StatusOr<std::vector<int>> SplitOffPlanes(const SegmentContext& c,
     for (const int v : s->on_plane) next_labels[v] = plane_id;
     RegionState& kept = next[id];
     kept.vertices = s->rest;
+    kept.type = s->curved_type;
     kept.surface = s->curved.surface;
     // The quadric may have been the mix; the rest may have a type.
     if (kept.type == SurfaceType::kQuadric) {

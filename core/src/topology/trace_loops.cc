@@ -58,25 +58,10 @@ FacePatches LabelPatches(const TriMesh& mesh, std::span<const int> labels, int r
   });
   FacePatches out;
   out.patch_count.assign(region_count, 0);
-  out.face_patch.assign(nf, -1);
-  tbb::parallel_for(tbb::blocked_range<int>(0, nf, 8192), [&](const tbb::blocked_range<int>& r) {
-    for (int f = r.begin(); f < r.end(); ++f) {
-      if (labels[f] >= 0) out.face_patch[f] = mesh_internal::FindLowestRoot(parent, f);
-    }
-  });
-  // Roots numbered in face order within their label (the number kept in the
-  // root's parent entry, no longer needed); then each face takes its root's.
-  for (int f = 0; f < nf; ++f) {
-    if (out.face_patch[f] != f) continue;
-    parent[f].store(out.patch_count[labels[f]]++, std::memory_order_relaxed);
-  }
-  tbb::parallel_for(tbb::blocked_range<int>(0, nf, 8192), [&](const tbb::blocked_range<int>& r) {
-    for (int f = r.begin(); f < r.end(); ++f) {
-      if (out.face_patch[f] >= 0) {
-        out.face_patch[f] = parent[out.face_patch[f]].load(std::memory_order_relaxed);
-      }
-    }
-  });
+  // Roots numbered in face order within their label.
+  out.face_patch = mesh_internal::NumberSets(
+      parent, [&](int f) { return labels[f] >= 0; },
+      [&](int f) { return out.patch_count[labels[f]]++; });
   return out;
 }
 

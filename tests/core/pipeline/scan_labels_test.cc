@@ -37,50 +37,108 @@ constexpr double kOutliers = 0.02;   // of the scan points, uniform in the box
 // measures more parts and draws).
 constexpr double kMinPointAccuracy = 0.95;
 constexpr double kMinTypedShare = 0.01;
+// Of the chamfer's points, at least this share in its region: the points
+// within the noise of a crease may go to either side (measured 0.947-0.973).
+constexpr double kMinChamferCovered = 0.85;
 // Genuine points the pipeline discards (outlier test) or leaves unlabelled.
 constexpr double kMaxUnlabelledGenuine = 0.02;
+
+// A scan of `part` written as XYZ, and the pipeline's result on that file
+// (as `meshseg segment` reads it).
+struct ScanResult {
+  ScannedPart scan;
+  PipelineResult result;
+};
+absl::StatusOr<ScanResult> ScanAndSegment(const std::string& part, const ScanParams& params) {
+  absl::StatusOr<ScannedPart> scan = ScanPart(part, params);
+  if (!scan.ok()) return scan.status();
+  const std::string path = testing_files::ScratchPath(part + "_scan.xyz");
+  if (absl::Status st = WritePointCloud(scan->cloud, path); !st.ok()) return st;
+  absl::StatusOr<PipelineResult> r = RunPipeline(path);
+  std::filesystem::remove(path);
+  if (!r.ok()) return r.status();
+  return ScanResult{.scan = *std::move(scan), .result = *std::move(r)};
+}
+
+// Expects the bars of issue 38 item 6 on `run`, scored by `e`; returns how
+// many surfaces were checked for their type.
+int ExpectLabelledAndTyped(const ScanResult& run, const testing::Evaluation& e) {
+  EXPECT_GE(e.area_fraction, kMinPointAccuracy) << e;
+  double seen = 0.0;
+  for (const double a : run.scan.primitive_seen_area) seen += a;
+  int typed = 0;
+  for (const testing::PrimitiveScore& s : e.primitives) {
+    if (run.scan.primitive_seen_area[s.primitive] < kMinTypedShare * seen) continue;
+    ++typed;
+    if (s.region < 0) {
+      ADD_FAILURE() << s.name << ": no region";
+      continue;
+    }
+    EXPECT_STREQ(SurfaceTypeName(run.result.regions[s.region].type), SurfaceTypeName(s.true_type))
+        << s.name << " is mostly in a region of another type";
+  }
+  return typed;
+}
 
 TEST(RunPipelineOnScan, LabelsEachPointWithItsTrueSurface) {
   ScanParams params;
   params.points = kScanPoints;
   params.noise = kRangeNoise;
   params.outliers = kOutliers;
-  const absl::StatusOr<ScannedPart> scan = ScanPart("small_block", params);
-  ASSERT_TRUE(scan.ok()) << scan.status();
-  const std::string path = testing_files::ScratchPath("small_block_scan.xyz");
-  ASSERT_TRUE(WritePointCloud(scan->cloud, path).ok());
-  const absl::StatusOr<PipelineResult> r = RunPipeline(path);
-  std::filesystem::remove(path);
-  ASSERT_TRUE(r.ok()) << r.status();
-  ASSERT_EQ(r->point_labels.size(), scan->cloud.points.size());
+  const absl::StatusOr<ScanResult> run = ScanAndSegment("small_block", params);
+  ASSERT_TRUE(run.ok()) << run.status();
+  const ScannedPart& scan = run->scan;
+  const PipelineResult* r = &run->result;
+  ASSERT_EQ(r->point_labels.size(), scan.cloud.points.size());
 
   const testing::Evaluation e =
-      testing::EvaluatePoints(*scan, r->point_labels, static_cast<int>(r->regions.size()));
-  EXPECT_GE(e.area_fraction, kMinPointAccuracy) << e;
-
-  double seen = 0.0;
-  for (const double a : scan->primitive_seen_area) seen += a;
-  int typed = 0;
-  for (const testing::PrimitiveScore& s : e.primitives) {
-    if (scan->primitive_seen_area[s.primitive] < kMinTypedShare * seen) continue;
-    ASSERT_GE(s.region, 0) << s.name << ": no region";
-    EXPECT_STREQ(SurfaceTypeName(r->regions[s.region].type), SurfaceTypeName(s.true_type))
-        << s.name << " is mostly in a region of another type";
-    ++typed;
-  }
-  EXPECT_GE(typed, 5) << "the block's seen planes and its bore";
+      testing::EvaluatePoints(scan, r->point_labels, static_cast<int>(r->regions.size()));
+  EXPECT_GE(ExpectLabelledAndTyped(*run, e), 5) << "the block's seen planes and its bore";
 
   // The outlier count is the number of points labelled -1 for that reason:
   // at most all -1 labels, and nearly all genuine points are labelled.
   int64_t unlabelled = 0, genuine_unlabelled = 0, genuine = 0;
   for (size_t i = 0; i < r->point_labels.size(); ++i) {
     unlabelled += r->point_labels[i] < 0;
-    if (scan->is_outlier[i]) continue;
+    if (scan.is_outlier[i]) continue;
     ++genuine;
     genuine_unlabelled += r->point_labels[i] < 0;
   }
   EXPECT_LE(r->point_outlier_count, unlabelled);
   EXPECT_LE(genuine_unlabelled, kMaxUnlabelledGenuine * genuine);
+}
+
+TEST(RunPipelineOnScan, AChamferBetweenTwoCreasesIsACone) {
+  // A stepped shaft scanned at 40K points, range noise 0.3 spacings: its
+  // 45-degree chamfer (1.3-1.4 % of the seen area, about 1000 points, 7
+  // spacings wide) lies between a cylinder and the flat end face. The
+  // reconstruction rounds both creases. The segmentation can grow one torus
+  // over the chamfer and the end face (SplitOffPlanes gives the face back,
+  // the rest a cone), and can type the chamfer's band a sphere: with the
+  // rounded creases its mesh profile is an arc. On the points,
+  // RetypeBesideNeighbours sets the neighbours' points aside on their own
+  // surfaces and finds the cone. Two draws; measured over ten: the chamfer a
+  // cone on ten (on main without these steps a torus on one and a sphere on
+  // three), 98.8 % or more of the points labelled right, and of its points
+  // 0.947-0.973 in its cone's region.
+  ScanParams params;
+  params.points = 40'000;
+  params.noise = 0.3;
+  for (const uint64_t seed : {2u, 3u}) {
+    params.seed = seed;
+    const absl::StatusOr<ScanResult> run = ScanAndSegment("stepped_shaft", params);
+    ASSERT_TRUE(run.ok()) << run.status();
+    const testing::Evaluation e = testing::EvaluatePoints(
+        run->scan, run->result.point_labels, static_cast<int>(run->result.regions.size()));
+    EXPECT_GE(ExpectLabelledAndTyped(*run, e), 6) << "the shaft's cylinders, faces and chamfer";
+    const auto chamfer =
+        std::find_if(e.primitives.begin(), e.primitives.end(),
+                     [](const testing::PrimitiveScore& s) { return s.name == "chamfer"; });
+    ASSERT_NE(chamfer, e.primitives.end());
+    ASSERT_GE(chamfer->region, 0);
+    EXPECT_EQ(run->result.regions[chamfer->region].type, SurfaceType::kCone) << "draw " << seed;
+    EXPECT_GE(chamfer->covered, kMinChamferCovered) << "draw " << seed;
+  }
 }
 
 }  // namespace

@@ -5,8 +5,10 @@
 // priced moves change E by what they say.
 #include "segment/energy.h"
 
+#include <Eigen/Core>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <optional>
 #include <random>
 #include <set>
@@ -18,9 +20,12 @@
 
 #include "meshseg/curvature.h"
 #include "meshseg/generate.h"
+#include "meshseg/mesh.h"
 #include "segment/absorb_leftovers.h"
 #include "segment/decide_type.h"
 #include "segment/estimate_noise.h"
+#include "segment/facet_mesh.h"
+#include "cylinder_band.h"
 #include "sheet_context.h"
 
 namespace meshseg::segment_internal {
@@ -343,6 +348,58 @@ TEST(LabelCost, IsTheBicOnTheEffectiveSampleCount) {
   EXPECT_NEAR(LabelCost(s.c, SurfaceType::kCone, 100), 2.0 * p * std::log(25.0), 1e-12);
   EXPECT_EQ(LabelCost(s.c, SurfaceType::kCone, 4), 0.0);
   EXPECT_NEAR(EdgeCost(s.c, 0, 1), 4.0 * kBoundaryCost, 1e-12);
+}
+
+// E with exact vertices (energy.h): the data term of a facet of an exactly
+// tessellated cylinder band is 0 on the band's cylinder and infinite on a
+// cylinder of a radius off by 1e-3 (far above tau = 1e-6) and on the
+// facet's own neighbour's plane; the label cost is the BIC with f = 1.
+TEST(ExactEnergy, DataTermIsZeroOnTheSurfaceAndInfiniteOff) {
+  const Mesh band = testing::CylinderBand(0.0);
+  const FacetMesh fm = BuildFacetMesh(band.tri);
+  const Eigen::Vector3d axis_origin = -fm.origin;  // the band's axis, in fm's frame
+  const Eigen::Vector3d z = Eigen::Vector3d::UnitZ();
+  const Surface cylinder = Cylinder{axis_origin, z, testing::kBandRadius};
+  const Surface wider = Cylinder{axis_origin, z, testing::kBandRadius + 1e-3};
+  const Surface next_plane = Plane{fm.Centroid(2), fm.normal[2]};
+  constexpr double kTau = 1e-6;
+  for (int facet = 0; facet < fm.facet_count(); ++facet) {
+    EXPECT_EQ(ExactFacetCost(fm, facet, cylinder, kTau), 0.0) << facet;
+    EXPECT_TRUE(std::isinf(ExactFacetCost(fm, facet, wider, kTau))) << facet;
+  }
+  EXPECT_TRUE(std::isinf(ExactFacetCost(fm, 0, next_plane, kTau)));
+  EXPECT_EQ(ExactFacetCost(fm, 3, next_plane, kTau), 0.0);  // quad 1's other half
+  const double p = ParameterCount(SurfaceType::kCylinder);
+  EXPECT_NEAR(ExactLabelCost(SurfaceType::kCylinder, 48), 0.5 * p * std::log(48.0), 1e-12);
+}
+
+// The greedy cover's price (label cost per corner newly explained) falls
+// as a surface explains more corners (from 3, a facet's), orders the types
+// by their parameters at one count, and stays below the outlier cost of a
+// corner for every analytic type: every hypothesis holding evidence lowers
+// E. Joining regions onto one surface lowers E by the label cost saved iff
+// the joint fit keeps the data term 0.
+TEST(ExactEnergy, PricePerCornerFallsWithCornersAndRisesWithParameters) {
+  constexpr SurfaceType kTypes[] = {SurfaceType::kPlane, SurfaceType::kSphere,
+                                    SurfaceType::kCylinder, SurfaceType::kCone,
+                                    SurfaceType::kTorus};
+  for (const SurfaceType type : kTypes) {
+    for (std::size_t n = 3; n < 2000; ++n) {
+      EXPECT_LT(ExactPricePerCorner(type, n + 1), ExactPricePerCorner(type, n)) << n;
+      EXPECT_LT(ExactPricePerCorner(type, n), kExactOutlierCost) << n;
+    }
+    EXPECT_TRUE(std::isinf(ExactPricePerCorner(type, 0)));
+  }
+  for (std::size_t i = 0; i + 1 < std::size(kTypes); ++i) {
+    EXPECT_LT(ExactPricePerCorner(kTypes[i], 40), ExactPricePerCorner(kTypes[i + 1], 40));
+  }
+  const double saved = ExactLabelCost(SurfaceType::kPlane, 10) +
+                       ExactLabelCost(SurfaceType::kPlane, 30) -
+                       ExactLabelCost(SurfaceType::kPlane, 40);
+  EXPECT_GT(saved, 0.0);
+  EXPECT_NEAR(ExactJoinDelta(SurfaceType::kPlane, 10, 30, 0.0), -saved, 1e-12);
+  EXPECT_TRUE(std::isinf(ExactJoinDelta(SurfaceType::kPlane, 10, 30,
+                                        std::numeric_limits<double>::infinity())));
 }
 
 }  // namespace

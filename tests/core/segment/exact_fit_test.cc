@@ -9,45 +9,23 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Core>
-#include <array>
 #include <cmath>
-#include <numbers>
 #include <optional>
 #include <variant>
 #include <vector>
 
 #include "meshseg/mesh.h"
 #include "segment/facet_mesh.h"
+#include "cylinder_band.h"
 
 namespace meshseg::segment_internal {
 namespace {
 
-constexpr int kAround = 24;
-constexpr double kRadius = 5.0;
-constexpr double kHeight = 4.0;
+constexpr int kAround = testing::kBandAround;
+constexpr double kRadius = testing::kBandRadius;
 
-// A cylinder band r kRadius, 0 <= z <= kHeight, in kAround quads between
-// rulings, each split in two (facets 2k and 2k + 1 form quad k); corner 0
-// (on the bottom circle) pushed `push` outward.
-Mesh Band(double push) {
-  std::vector<Eigen::Vector3d> v;
-  for (const double z : {0.0, kHeight}) {
-    for (int k = 0; k < kAround; ++k) {
-      const double a = 2.0 * std::numbers::pi * k / kAround;
-      v.emplace_back(kRadius * std::cos(a), kRadius * std::sin(a), z);
-    }
-  }
-  v[0].x() += push;
-  std::vector<std::array<int, 3>> f;
-  for (int k = 0; k < kAround; ++k) {
-    const int a = k, b = (k + 1) % kAround;
-    f.push_back({a, b, b + kAround});
-    f.push_back({a, b + kAround, a + kAround});
-  }
-  absl::StatusOr<Mesh> mesh = BuildMesh(std::move(v), f, "band");
-  EXPECT_TRUE(mesh.ok()) << mesh.status();
-  return *std::move(mesh);
-}
+// The band of cylinder_band.h, corner 0 pushed `push` outward.
+Mesh Band(double push) { return testing::CylinderBand(push); }
 
 std::vector<int> FirstFacets(int count) {
   std::vector<int> facets;

@@ -10,7 +10,10 @@
 #include <variant>
 #include <vector>
 
+#include "segment/alpha_expansion.h"
 #include "segment/decide_type.h"
+#include "segment/energy.h"
+#include "segment/retype_regions.h"
 #include "sheet_context.h"
 
 namespace meshseg::segment_internal {
@@ -61,6 +64,47 @@ TEST(RetypeByInteriorTest, SphereOnAChamferBandBecomesACone) {
   EXPECT_NEAR(std::get<Cone>(regions[0].surface).half_angle, std::numbers::pi / 4.0, 0.02);
   EXPECT_EQ(regions[1].type, SurfaceType::kCylinder);
   EXPECT_EQ(regions[2].type, SurfaceType::kPlane);
+}
+
+TEST(RetypeByInteriorTest, AChamferRetypedOnItsInteriorKeepsTheConeOnceItsBoundaryIsPlaced) {
+  // The band took one row of each neighbour. At sigma 0.04 (th_dis 0.2)
+  // those rows, 0.18 off the cone, are inliers that the sphere through the
+  // band's rims follows better: on these labels E prices the sphere below
+  // the cone, and RetypeInaccurateCurved gives it back to the retyped band.
+  Sheet s;
+  testing::BuildChamfer(/*sigma=*/0.04, /*ripple=*/0.0, &s);
+  std::vector<int> labels = BandLabels(s, kConeStart - 1, kConeEnd + 1);
+  std::vector<RegionState> regions = RegionsFromLabels(s.c, labels, kTypes);
+  {
+    std::vector<RegionState> unplaced = regions;
+    ASSERT_EQ(RetypeByInterior(s.c, labels, &unplaced), std::vector<int>{0});
+    ASSERT_EQ(RetypeInaccurateCurved(s.c, &unplaced), std::vector<int>{0});
+    ASSERT_EQ(unplaced[0].type, SurfaceType::kSphere);
+  }
+  // The sphere's own settled labelling, for the comparison below.
+  std::vector<int> sphere_labels = labels;
+  std::vector<RegionState> sphere = regions;
+  ASSERT_TRUE(ExpandRegions(s.c, &sphere_labels, &sphere).ok());
+
+  const absl::StatusOr<std::vector<int>> retyped = RetypeByInteriorAndExpand(s.c, &labels, &regions);
+  ASSERT_TRUE(retyped.ok()) << retyped.status();
+  EXPECT_EQ(*retyped, std::vector<int>{0});
+  ASSERT_EQ(regions[0].type, SurfaceType::kCone);
+  // The neighbours' rows went back to them (the crease rows, on both
+  // surfaces, may go either way).
+  int misplaced = 0;
+  for (std::size_t v = 0; v < labels.size(); ++v) {
+    const bool off_band = s.u[v] < kConeStart - 0.5 || s.u[v] > kConeEnd + 0.5;
+    const bool in_band = s.u[v] > kConeStart + 0.5 && s.u[v] < kConeEnd - 0.5;
+    misplaced += (off_band && labels[v] == 0) || (in_band && labels[v] != 0);
+  }
+  EXPECT_EQ(misplaced, 0);
+  // Priced from the placed boundary the sphere is no gain: the cone stays,
+  // and its labelling has the lower E.
+  EXPECT_TRUE(RetypeInaccurateCurved(s.c, &regions).empty());
+  ASSERT_EQ(regions[0].type, SurfaceType::kCone);
+  EXPECT_NEAR(std::get<Cone>(regions[0].surface).half_angle, std::numbers::pi / 4.0, 0.01);
+  EXPECT_LT(TotalEnergy(s.c, labels, regions), TotalEnergy(s.c, sphere_labels, sphere));
 }
 
 // A ring band 1.2 wide at radius 30 of a torus whose tube (radius 70) leans

@@ -191,16 +191,38 @@ TEST(RetypeToSimplerLimitsTest, ACylinderFittedAsAWideningConeBecomesACylinder) 
   EXPECT_NEAR(std::get<Cylinder>(regions[0].surface).radius, 6.35, 0.01);
 }
 
+// A quarter cone of 1-degree draft as one cone region, its cone fitted.
+std::vector<RegionState> DraftedCone(Sheet* s) {
+  QuarterCone(1.0, s);
+  std::vector<int> labels;
+  std::vector<RegionState> regions = testing::OneRegion(*s, SurfaceType::kCone, &labels);
+  regions[0].surface = FitType(s->c, SurfaceType::kCone, regions[0].vertices).surface;
+  return regions;
+}
+
 TEST(RetypeToSimplerLimitsTest, ADraftedConeStaysACone) {
   // A 1-degree draft widens by 2.6 over the 150: the cylinder misses the
   // ends by over th_dis.
   Sheet s;
-  QuarterCone(1.0, &s);
-  std::vector<int> labels;
-  std::vector<RegionState> regions = testing::OneRegion(s, SurfaceType::kCone, &labels);
-  regions[0].surface = FitType(s.c, SurfaceType::kCone, regions[0].vertices).surface;
+  std::vector<RegionState> regions = DraftedCone(&s);
 
   EXPECT_EQ(RetypeToSimplerLimits(s.c, &regions), 0);
+  EXPECT_EQ(regions[0].type, SurfaceType::kCone);
+}
+
+TEST(RetypeToSimplerLimitsTest, ARefusalIsKeptForTheRegionAsItStandsOnly) {
+  // The drafted cone refuses its cylinder: kept, it is not asked again
+  // while it is the same; a region changed since (its surface moved) is.
+  Sheet s;
+  std::vector<RegionState> regions = DraftedCone(&s);
+  KeptPrices kept;
+  EXPECT_FALSE(kept.Refused(regions, 0, KeptPrices::kSimplerLimit));
+  EXPECT_EQ(RetypeToSimplerLimits(s.c, &regions, &kept), 0);
+  EXPECT_TRUE(kept.Refused(regions, 0, KeptPrices::kSimplerLimit));
+  EXPECT_FALSE(kept.Refused(regions, 0, KeptPrices::kInaccurateCurved));
+  EXPECT_EQ(RetypeToSimplerLimits(s.c, &regions, &kept), 0);
+  std::get<Cone>(regions[0].surface).apex += Eigen::Vector3d(0.0, 0.0, 1e-9);
+  EXPECT_FALSE(kept.Refused(regions, 0, KeptPrices::kSimplerLimit));
   EXPECT_EQ(regions[0].type, SurfaceType::kCone);
 }
 
