@@ -111,12 +111,15 @@ std::vector<Support> InnerSupports(const std::vector<Support>& supports, const F
 }
 
 std::vector<double> CoveringWeights(const std::vector<Support>& covering, const TetMesh& tets,
-                                    const PuFunction& f) {
+                                    const PuFunction& f, int sparse_points) {
   std::vector<double> weight(covering.size());
   for (size_t i = 0; i < covering.size(); ++i) weight[i] = covering[i].radius * covering[i].radius;
   for (size_t v = 0; v < tets.support.size(); ++v) {
     const size_t i = tets.support[v];
     if (i >= covering.size() || !tets.on_hull[v]) continue;
+    // A fit on fewer points than the sparse count does not read its centre's
+    // side (cover.h): the tie outside stands and so does r².
+    if (covering[i].point_count < sparse_points) continue;
     if (f(covering[i].center) > 0) weight[i] = 0.0;
   }
   return weight;

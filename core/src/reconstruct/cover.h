@@ -77,8 +77,22 @@ std::vector<Support> InnerSupports(const std::vector<Support>& supports, const F
 // not. An extreme point of the set is a vertex at any weight, so with
 // weight 0 the centre still closes the hull, tied outside, and hides no
 // vertex (its power is ≥ 0 everywhere, no weight is negative).
+//
+// Only a support holding at least `sparse_points` input points (the sparse
+// count, ReconstructParams::sparse_support_points) can disagree with the
+// tie: as in the labels (graph_cut.h ResolvedInside), a fit on fewer points
+// does not read which side its centre is on. Such a ball was grown in empty
+// space until it held the fit's minimum (kMinFitPoints), a handful of points
+// at its rim, one to several radii from the centre; its plane through them
+// tilts by about the noise over their spread (on a real scanner's depth
+// noise, tens of degrees), so the sign it extrapolates to the centre, tens of
+// spacings away, is the noise's draw. Read as inside there, weight 0 freed
+// the empty space in front of a seen face to the fits extrapolated the same
+// way: a sheet beyond the face, with no points, that the support step
+// removes and closes across (measured on a real scan: a hull centre beyond a
+// seen face, r ≈ 20-40 spacings, 6 points, f = 13-28 spacings).
 std::vector<double> CoveringWeights(const std::vector<Support>& covering, const TetMesh& tets,
-                                    const PuFunction& f);
+                                    const PuFunction& f, int sparse_points);
 
 // The weight of each of `supports` as a vertex of the regular triangulation:
 // `covering_weight` for the covering (the first covering_weight.size()), and
