@@ -29,7 +29,7 @@ namespace meshseg::reconstruct_internal {
 // and a cut that must close an unseen region reaching the hull (a scan's
 // underside, where f continues the seen planes) goes through it.
 // Vertices flagged in `seen_outside` (empty: none) are tied to the sink as
-// firmly, whatever f says (SeenFromOutside below).
+// firmly, whatever f or `resolved` says (SeenFromOutside below).
 // `position` and `f` have one entry per tet vertex.
 // Errors: CANCELLED when ctx requests a stop.
 absl::StatusOr<std::vector<uint8_t>> GraphCutLabels(const TetMesh& tets,
