@@ -271,9 +271,8 @@ PointCloud OccludedBoredBlock() {
 // their points, read f > 0 there, and labelled inside such a vertex closed
 // the bore below. Over eight covering draws the bore stayed open (genus 1,
 // the truth) on two; tied outside (graph_cut.h SeenFromOutside), on three.
-// On the others the tets have no vertex under the mouth to open it by, and
-// tets spanning from the bore to the vertices under the material close it
-// (what is left of issue 38 here).
+// On the others the bore is still closed below by tets the tie does not
+// reach (what is left of issue 38 here).
 TEST(Reconstruct, AnOccludedThroughBoreIsNotPlugged) {
   constexpr int kDraws = 8;
   const PointCloud cloud = OccludedBoredBlock();
