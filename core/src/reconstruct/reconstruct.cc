@@ -268,8 +268,11 @@ absl::StatusOr<Reconstruction> Reconstruct(const PointCloud& cloud, const Recons
   if (params.use_graph_cut) {
     // The cut decides only where the points leave the side open (graph_cut.h).
     const std::vector<uint8_t> resolved = ResolvedInside(tets, f_at, sparse, fit_input.epsilon);
-    MESHSEG_ASSIGN_OR_RETURN(
-        inside, GraphCutLabels(tets, position, f_at, params.graph_cut_k, resolved, ctx));
+    // ... and f > 0 is no evidence of solid where the points see the vertex
+    // from outside (graph_cut.h).
+    const std::vector<uint8_t> seen_outside = SeenFromOutside(tets, vertices, f_at, fit_input);
+    MESHSEG_ASSIGN_OR_RETURN(inside, GraphCutLabels(tets, position, f_at, params.graph_cut_k,
+                                                    resolved, seen_outside, ctx));
   }
   for (size_t v = 0; v < inside.size(); ++v) stats.relabelled_count += inside[v] != by_sign[v];
   ctx.Progress(kStage, 0.75);
