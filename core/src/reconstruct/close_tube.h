@@ -8,17 +8,22 @@
 // hole (the outer disc) and the bore's mouth, far from the surface the scan
 // did not see; the surface there is a tube joining the two rims.
 //
-// Two loops are taken as the rims of one unseen tube when (a) they are the
-// only border loops of one removed component (the implicit function joined
-// them through the unseen region; a handle inside it is as unsupported as the
-// rest of it and goes with it), (b) both are longer than the loops the points
-// resolve as holes (handles.h: a shorter one is a handle the points do not
-// show, which the handle step cuts), and (c) at both, the seen surface leaves
-// the loop out of its plane: its outgoing direction (in the tangent plane,
-// across the border, away from the seen faces) runs along the loop's axis, so
-// the seen surface extended is a wall leaving the loop, not a sheet closing
-// it. A spurious bridge between two sheets fails (c): each sheet, extended,
-// closes its own loop as a disc.
+// Two loops are taken as the rims of one unseen tube when (b) both are
+// longer than the loops the points resolve as holes (handles.h: a shorter one
+// is a handle the points do not show, which the handle step cuts), (c) at
+// both, the seen surface leaves the loop out of its plane: its outgoing
+// direction (in the tangent plane, across the border, away from the seen
+// faces) runs along the loop's axis, so the seen surface extended is a wall
+// leaving the loop, not a sheet closing it, and (a) they are the only loops
+// of one removed component that pass (b) and (c) (the implicit function
+// joined them through the unseen region; a handle inside it is as
+// unsupported as the rest of it and goes with it). A spurious bridge between
+// two sheets fails (c): each sheet, extended, closes its own loop as a disc.
+// So does a hole in a seen sheet through which the removed component opens
+// onto it (the implicit function dug under a seen face, into the unseen
+// region behind it): the sheet closes it by its own disc whatever lies
+// behind, so it is not counted against (a). Counted, it left the rims of an
+// unseen bore's tube to two discs, one across the bore.
 //
 // The tube is then built (below) and kept only if (d) its arcs bend as the
 // seen surface does at each rim: unless the arcs are straight within the

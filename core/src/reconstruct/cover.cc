@@ -110,14 +110,31 @@ std::vector<Support> InnerSupports(const std::vector<Support>& supports, const F
   return inner;
 }
 
-std::vector<double> TetWeights(const std::vector<Support>& supports, size_t covering_count) {
+std::vector<double> CoveringWeights(const std::vector<Support>& covering, const TetMesh& tets,
+                                    const PuFunction& f, int sparse_points) {
+  std::vector<double> weight(covering.size());
+  for (size_t i = 0; i < covering.size(); ++i) weight[i] = covering[i].radius * covering[i].radius;
+  for (size_t v = 0; v < tets.support.size(); ++v) {
+    const size_t i = tets.support[v];
+    if (i >= covering.size() || !tets.on_hull[v]) continue;
+    // A fit on fewer points than the sparse count does not read its centre's
+    // side (cover.h): the tie outside stands and so does r².
+    if (covering[i].point_count < sparse_points) continue;
+    if (f(covering[i].center) > 0) weight[i] = 0.0;
+  }
+  return weight;
+}
+
+std::vector<double> TetWeights(const std::vector<Support>& supports,
+                               const std::vector<double>& covering_weight) {
+  const size_t covering_count = covering_weight.size();
   std::vector<double> weight(supports.size(), -1.0);
   std::vector<Eigen::Vector3d> centers(covering_count);
   double largest = 0.0;
   for (size_t i = 0; i < covering_count; ++i) {
-    weight[i] = supports[i].radius * supports[i].radius;
+    weight[i] = covering_weight[i];
     centers[i] = supports[i].center;
-    largest = std::max(largest, supports[i].radius);
+    largest = std::max(largest, std::sqrt(weight[i]));
   }
   if (covering_count == 0) return weight;
   const mesh_internal::PointIndex index(centers);
@@ -126,19 +143,17 @@ std::vector<double> TetWeights(const std::vector<Support>& supports, size_t cove
         std::vector<std::pair<uint32_t, double>> found;
         for (size_t k = range.begin(); k != range.end(); ++k) {
           const Eigen::Vector3d& p = supports[k].center;
-          // Not hidden: w ≥ r_i² − |p − c_i|² for every covering ball. Hides
-          // none: w < r_j² + |p − c_j|² for every covering centre. The
+          // Not hidden: w ≥ w_i − |p − c_i|² for every covering centre.
+          // Hides none: w < w_j + |p − c_j|² for every covering centre. The
           // nearest centre bounds the second, so the search reaches the
-          // larger of its bound's root and the largest radius.
+          // larger of its bound's root and the largest root of a weight.
           const uint32_t nearest = index.Closest(p);
-          const double hi0 = supports[nearest].radius * supports[nearest].radius +
-                             (centers[nearest] - p).squaredNorm();
+          const double hi0 = weight[nearest] + (centers[nearest] - p).squaredNorm();
           double lo = 0.0, hi = hi0;
           index.WithinRadiusUnordered(p, std::max(largest, std::sqrt(hi0)), &found);
           for (const auto& [j, d2] : found) {
-            const double r2 = supports[j].radius * supports[j].radius;
-            lo = std::max(lo, r2 - d2);
-            hi = std::min(hi, r2 + d2);
+            lo = std::max(lo, weight[j] - d2);
+            hi = std::min(hi, weight[j] + d2);
           }
           if (lo < hi) weight[k] = 0.5 * (lo + hi);
         }

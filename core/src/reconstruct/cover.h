@@ -10,6 +10,8 @@
 #include "meshseg/run_context.h"
 #include "reconstruct/local_fit.h"
 #include "reconstruct/octree.h"
+#include "reconstruct/pu_function.h"
+#include "reconstruct/regular_triangulation.h"
 
 namespace meshseg::reconstruct_internal {
 
@@ -60,18 +62,51 @@ absl::StatusOr<std::vector<Support>> CoverBySupports(const std::vector<OctreeLea
 std::vector<Support> InnerSupports(const std::vector<Support>& supports, const FitInput& in,
                                    double spacing);
 
-// The weight of each of `supports` as a vertex of the regular triangulation
-// (ALGORITHMS.md S3 step 4): r² for the covering (the first
-// `covering_count`), and for each Steiner vertex after them (the inner
-// supports) a weight that makes it a vertex without hiding any covering
-// centre, or −1 (not a vertex) where no weight does both. A weighted point
-// p lies in its own power cell when w ≥ r_i² − |p − c_i|² for every ball i,
-// and leaves centre c_j in its own when w < r_j² + |p − c_j|²; the weight is
-// the middle of that interval. A Steiner vertex so adds a sample of f and
-// removes none. (With its fitted ball's weight r_in² it hid the covering's
-// centres on both faces of a plate thinner than that ball, leaving no
-// inside vertex there: through-holes in the surface.)
-std::vector<double> TetWeights(const std::vector<Support>& supports, size_t covering_count);
+// The weight of each covering support as a vertex of the regular
+// triangulation (ALGORITHMS.md S3 step 4): r², except 0 for a centre on the
+// hull of `tets` (its first triangulation) where f > 0 (our addition, issue
+// 38). The labels tie every hull vertex outside, so that the surface closes
+// (graph_cut.h); there f and the tie disagree: the ball was grown in the
+// empty space beyond an unseen face until it reached the points, and the
+// fits there read its centre inside. With weight r² its power cell,
+// labelled outside, takes in the solid its ball reaches (the power of a
+// point p is |p − c|² − r², negative throughout the ball): it hides the
+// centres and inner supports there, the tets join the seen face's vertices
+// straight to it, and the surface closes a cell under the seen face, a
+// hollow whether the draw of the covering (its order) grows such a ball or
+// not. An extreme point of the set is a vertex at any weight, so with
+// weight 0 the centre still closes the hull, tied outside, and hides no
+// vertex (its power is ≥ 0 everywhere, no weight is negative).
+//
+// Only a support holding at least `sparse_points` input points (the sparse
+// count, ReconstructParams::sparse_support_points) can disagree with the
+// tie: as in the labels (graph_cut.h ResolvedInside), a fit on fewer points
+// does not read which side its centre is on. Such a ball was grown in empty
+// space until it held the fit's minimum (kMinFitPoints), a handful of points
+// at its rim, one to several radii from the centre; its plane through them
+// tilts by about the noise over their spread (on a real scanner's depth
+// noise, tens of degrees), so the sign it extrapolates to the centre, tens of
+// spacings away, is the noise's draw. Read as inside there, weight 0 freed
+// the empty space in front of a seen face to the fits extrapolated the same
+// way: a sheet beyond the face, with no points, that the support step
+// removes and closes across (measured on a real scan: a hull centre beyond a
+// seen face, r ≈ 20-40 spacings, 6 points, f = 13-28 spacings).
+std::vector<double> CoveringWeights(const std::vector<Support>& covering, const TetMesh& tets,
+                                    const PuFunction& f, int sparse_points);
+
+// The weight of each of `supports` as a vertex of the regular triangulation:
+// `covering_weight` for the covering (the first covering_weight.size()), and
+// for each Steiner vertex after them (the inner supports) a weight that makes
+// it a vertex without hiding any covering centre, or −1 (not a vertex) where
+// no weight does both. A weighted point p lies in its own power cell when
+// w ≥ w_i − |p − c_i|² for every covering centre i, and leaves centre c_j in
+// its own when w < w_j + |p − c_j|²; the weight is the middle of that
+// interval. A Steiner vertex so adds a sample of f and removes none. (With
+// its fitted ball's weight r_in² it hid the covering's centres on both faces
+// of a plate thinner than that ball, leaving no inside vertex there:
+// through-holes in the surface.)
+std::vector<double> TetWeights(const std::vector<Support>& supports,
+                               const std::vector<double>& covering_weight);
 
 }  // namespace meshseg::reconstruct_internal
 

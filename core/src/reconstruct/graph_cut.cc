@@ -4,6 +4,9 @@
 #include <cmath>
 #include <numeric>
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include <boost/graph/adjacency_list.hpp>
 #include <boost/graph/boykov_kolmogorov_max_flow.hpp>
 
@@ -42,6 +45,7 @@ absl::StatusOr<std::vector<uint8_t>> GraphCutLabels(const TetMesh& tets,
                                                     const std::vector<Eigen::Vector3d>& position,
                                                     const std::vector<double>& f, double k,
                                                     const std::vector<uint8_t>& resolved,
+                                                    const std::vector<uint8_t>& seen_outside,
                                                     const RunContext& ctx) {
   const int n = static_cast<int>(position.size());
   std::vector<double> length_sum(n, 0.0);
@@ -71,7 +75,7 @@ absl::StatusOr<std::vector<uint8_t>> GraphCutLabels(const TetMesh& tets,
     // A vertex whose side the points resolve is tied to it as firmly as the
     // hull is to the outside: the cut decides only the others.
     const bool fixed = !resolved.empty() && resolved[v];
-    if (tets.on_hull[v]) {
+    if (tets.on_hull[v] || (!seen_outside.empty() && seen_outside[v])) {
       AddEdgePair(v, sink, unbreakable, 0.0, &g);
     } else if (f[v] >= 0) {
       AddEdgePair(source, v, fixed ? unbreakable : terminal[v], 0.0, &g);
@@ -122,6 +126,29 @@ std::vector<uint8_t> ResolvedInside(const TetMesh& tets, const std::vector<doubl
     resolved[v] = resolved[v] && mesh_internal::FindRoot(parent, v) == largest;
   }
   return resolved;
+}
+
+std::vector<uint8_t> SeenFromOutside(const TetMesh& tets, const std::vector<Support>& supports,
+                                     const std::vector<double>& f, const FitInput& in) {
+  const size_t n = tets.support.size();
+  std::vector<uint8_t> outside(n, 0);
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, n), [&](const auto& range) {
+    std::vector<std::pair<uint32_t, double>> found;
+    for (size_t v = range.begin(); v != range.end(); ++v) {
+      if (tets.on_hull[v] || !(f[v] > 0)) continue;
+      const Support& s = supports[tets.support[v]];
+      in.index.WithinRadiusUnordered(s.center, s.radius, &found);
+      bool in_front = !found.empty();
+      for (const auto& [j, unused] : found) {
+        if (!((s.center - in.points[j]).dot(in.normals[j]) < -in.epsilon)) {
+          in_front = false;
+          break;
+        }
+      }
+      outside[v] = in_front;
+    }
+  });
+  return outside;
 }
 
 std::vector<uint8_t> SignLabels(const TetMesh& tets, const std::vector<double>& f) {

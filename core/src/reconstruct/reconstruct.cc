@@ -41,6 +41,9 @@ constexpr double kCubeMargin = 0.1;
 // Octree depth used when it is derived from the point spacing.
 constexpr int kMinDerivedLevel = 3;
 constexpr int kMaxDerivedLevel = 12;
+// Two sheets of the surface nearer than this many point spacings are not
+// resolved by the points (two samples across a feature, Nyquist).
+constexpr double kResolvedSpacings = 2.0;
 
 absl::Status ValidateParams(const ReconstructParams& p) {
   const auto bad = [](const std::string& what) {
@@ -219,7 +222,10 @@ absl::StatusOr<Reconstruction> Reconstruct(const PointCloud& cloud, const Recons
     const std::vector<Support> inner = InnerSupports(supports, fit_input, h);
     vertices.insert(vertices.end(), inner.begin(), inner.end());
   }
-  const std::vector<double> tet_weights = TetWeights(vertices, supports.size());
+  std::vector<double> covering_weight(supports.size());
+  for (size_t i = 0; i < supports.size(); ++i) {
+    covering_weight[i] = supports[i].radius * supports[i].radius;
+  }
   ctx.Progress(kStage, 0.4);
 
   // Step 3: regular tetrahedralization of the support centres.
@@ -229,8 +235,19 @@ absl::StatusOr<Reconstruction> Reconstruct(const PointCloud& cloud, const Recons
     return ThinSolidError(cloud.name, absl::StrCat("the covering has only ", supports.size()),
                           cube / (1 << stats.octree_max_level));
   }
-  MESHSEG_ASSIGN_OR_RETURN(const TetMesh tets,
-                           RegularTetrahedralization(vertices, tet_weights, ctx));
+  MESHSEG_ASSIGN_OR_RETURN(
+      TetMesh tets,
+      RegularTetrahedralization(vertices, TetWeights(vertices, covering_weight), ctx));
+  {
+    // Hull centres tied outside against the f > 0 their points read hide
+    // nothing (cover.h): the tets again with their weight 0.
+    const std::vector<double> hull_weight =
+        CoveringWeights(supports, tets, f, params.sparse_support_points);
+    if (hull_weight != covering_weight) {
+      MESHSEG_ASSIGN_OR_RETURN(
+          tets, RegularTetrahedralization(vertices, TetWeights(vertices, hull_weight), ctx));
+    }
+  }
   stats.tet_vertex_count = static_cast<int64_t>(tets.support.size());
   stats.tet_count = static_cast<int64_t>(tets.tets.size());
   std::vector<Eigen::Vector3d> position(tets.support.size());
@@ -251,8 +268,11 @@ absl::StatusOr<Reconstruction> Reconstruct(const PointCloud& cloud, const Recons
   if (params.use_graph_cut) {
     // The cut decides only where the points leave the side open (graph_cut.h).
     const std::vector<uint8_t> resolved = ResolvedInside(tets, f_at, sparse, fit_input.epsilon);
-    MESHSEG_ASSIGN_OR_RETURN(
-        inside, GraphCutLabels(tets, position, f_at, params.graph_cut_k, resolved, ctx));
+    // ... and f > 0 is no evidence of solid where the points see the vertex
+    // from outside (graph_cut.h).
+    const std::vector<uint8_t> seen_outside = SeenFromOutside(tets, vertices, f_at, fit_input);
+    MESHSEG_ASSIGN_OR_RETURN(inside, GraphCutLabels(tets, position, f_at, params.graph_cut_k,
+                                                    resolved, seen_outside, ctx));
   }
   for (size_t v = 0; v < inside.size(); ++v) stats.relabelled_count += inside[v] != by_sign[v];
   ctx.Progress(kStage, 0.75);
@@ -266,7 +286,12 @@ absl::StatusOr<Reconstruction> Reconstruct(const PointCloud& cloud, const Recons
                           absl::StrCat("no inside region found among ", tets.support.size()),
                           cube / (1 << stats.octree_max_level));
   }
-  stats.dropped_component_count = DropSmallComponents(params.min_component_fraction, &surface);
+  // A component thinner than two spacings is one sheet of points seen as
+  // two (small_components.h); 0 keeps all, as the fraction.
+  const double min_thickness =
+      params.min_component_fraction > 0 ? kResolvedSpacings * h : 0.0;
+  stats.dropped_component_count =
+      DropSmallComponents(params.min_component_fraction, min_thickness, &surface);
   for (const uint8_t s : surface.to_smooth) stats.smoothed_vertex_count += s;
   SmoothSelected(surface.triangles, surface.to_smooth, params.smoothing_lambda,
                  params.smoothing_iterations, &surface.vertices);

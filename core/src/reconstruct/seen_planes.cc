@@ -24,9 +24,6 @@ constexpr int kCapRefits = 2;
 // Refit vertices span a plane when their second spread is at least this
 // fraction of their first (else they lie along one edge of the hole).
 constexpr double kMinSpreadRatio = 0.1;
-// At most this fraction of the loop may lie beyond the cap plane (folds of
-// the seen surface hanging past the unseen face's plane).
-constexpr double kMaxBeyondCap = 0.1;
 // Tangent planes looked at per loop at most (the work is free vertices ×
 // planes).
 constexpr size_t kMaxPlanes = 1024;
@@ -36,8 +33,8 @@ constexpr size_t kMaxPlanes = 1024;
 constexpr double kSlackEdges = 2.0;
 
 // The cap plane (unit outward normal, offset): of the planes through three
-// loop vertices, within kMinCapCosine of `mean_normal` and with at most
-// kMaxBeyondCap of the loop beyond it, the one the most loop vertices lie
+// loop vertices, within kMinCapCosine of `mean_normal` and with fewer loop
+// vertices beyond it than on it, the one the most loop vertices lie
 // on (weighted by how near, Torr & Zisserman 2000, MSAC), refitted to them
 // by least squares. False when there is none.
 bool CapPlane(const std::vector<Eigen::Vector3d>& loop, const Eigen::Vector3d& mean_normal,
@@ -54,13 +51,16 @@ bool CapPlane(const std::vector<Eigen::Vector3d>& loop, const Eigen::Vector3d& m
       if (m.dot(mean_normal) < kMinCapCosine) continue;
       const double d = m.dot(loop[i]);
       double on = 0.0;  // the vertices on it, each by 1 - (height / band)² (MSAC)
-      size_t beyond = 0;
+      size_t beyond = 0, within = 0;
       for (const Eigen::Vector3d& p : loop) {
         const double h = (m.dot(p) - d) / band;
         on += std::max(0.0, 1.0 - h * h);
         beyond += h > 1.0;
+        within += std::abs(h) <= 1.0;
       }
-      if (static_cast<double>(beyond) > kMaxBeyondCap * static_cast<double>(n) || on <= best) {
+      // The unseen face's rim lies on its plane and a fold hangs off a part
+      // of that rim: the loop lies on the cap more than beyond it.
+      if (beyond >= within || on <= best) {
         continue;
       }
       best = on;

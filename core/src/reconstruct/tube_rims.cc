@@ -243,32 +243,39 @@ std::vector<std::pair<size_t, size_t>> TubeRims(const TriMesh& tri,
                                                 const std::vector<int>& tri_vertex,
                                                 const std::vector<HoleMesh::Halfedge_index>& loops,
                                                 double min_rim) {
-  // Removed components. One bounded by exactly two loops joins them
-  // through the unseen region, whatever its genus: handles inside it are no
-  // more supported by points than the rest of it, and go with it.
+  // Removed components, and the loops across which each meets the seen
+  // surface.
   std::vector<int> parent = FacePieces(tri, removed, 1);
-  // The component across each loop, and the loops of each component.
   std::vector<int> component(loops.size(), -1);
-  std::vector<int> loop_count(tri.n_faces(), 0);
   for (size_t i = 0; i < loops.size(); ++i) {
     const auto from = tri.vertex_handle(tri_vertex[sm.source(loops[i])]);
     const auto to = tri.vertex_handle(tri_vertex[sm.target(loops[i])]);
     const auto across = tri.find_halfedge(from, to);
     if (!across.is_valid() || tri.is_boundary(across)) continue;
     component[i] = FindRoot(parent, tri.face_handle(across).idx());
-    ++loop_count[component[i]];
+  }
+  // The candidate rims of each component: loops (b) longer than the points
+  // resolve as holes that (c) the seen surface leaves as a wall. A
+  // component with exactly two joins them through the unseen region (a),
+  // whatever its genus: handles inside it are no more supported by points
+  // than the rest of it, and go with it. Its other loops, which the seen
+  // surface closes as a sheet, are holes in that sheet (the implicit
+  // function dug under a seen face into the unseen region): each is closed
+  // by its own disc on the sheet, and says nothing of the tube.
+  std::vector<int> rim_count(tri.n_faces(), 0);
+  std::vector<uint8_t> candidate(loops.size(), 0);
+  for (size_t i = 0; i < loops.size(); ++i) {
+    if (component[i] < 0) continue;
+    candidate[i] = Perimeter(sm, loops[i]) > min_rim &&
+                   LeavingCosine(sm, loops[i]) >= kMinLeavingCosine;
+    rim_count[component[i]] += candidate[i];
   }
   std::vector<std::pair<size_t, size_t>> rims;
   for (size_t i = 0; i < loops.size(); ++i) {
     const int c = component[i];
-    if (c < 0 || loop_count[c] != 2) continue;
+    if (!candidate[i] || rim_count[c] != 2) continue;
     for (size_t j = i + 1; j < loops.size(); ++j) {
-      if (component[j] != c) continue;
-      if (Perimeter(sm, loops[i]) > min_rim && Perimeter(sm, loops[j]) > min_rim &&
-          LeavingCosine(sm, loops[i]) >= kMinLeavingCosine &&
-          LeavingCosine(sm, loops[j]) >= kMinLeavingCosine) {
-        rims.emplace_back(i, j);
-      }
+      if (component[j] == c && candidate[j]) rims.emplace_back(i, j);
     }
   }
   return rims;

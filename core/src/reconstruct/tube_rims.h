@@ -56,7 +56,8 @@ std::vector<int> FacePieces(const TriMesh& tri, const std::vector<uint8_t>& remo
                             uint8_t side);
 
 // The pairs (indices into `loops`, border halfedges of `sm`) that are the
-// rims of one unseen tube by criteria (a)-(c) of close_tube.h. `sm` holds
+// rims of one unseen tube by criteria (a)-(c) of close_tube.h (a removed
+// component's other loops, closed as sheets, do not count). `sm` holds
 // the faces of `tri` not `removed`; `tri_vertex` maps each vertex of `sm` to
 // its vertex of `tri`.
 // Only loops longer than `min_rim` (model units) are paired.

@@ -154,6 +154,102 @@ TEST(CloseTube, AHandleInsideTheUnseenPartGoesWithIt) {
   EXPECT_LT(WorstPatchDistance(*tubes), kTolerance);
 }
 
+// A ring seen from above, as in the first test, with a shaft straight down
+// through its tube: from a 2 × 2-cell mouth on top (seen, v just past π/2) to
+// the mirror mouth underneath (unseen). The shaft has no point on it, so the
+// removed component is the underside and the shaft, bounded by three loops:
+// the two equators, which the seen surface leaves straight down (the rims
+// of the tube), and the top mouth, which the seen top closes as a sheet (a
+// hole in it). The equators are joined by the ring's tube and the mouth is
+// closed by its own disc: genus 1, every patch vertex near the torus. Counted
+// by all three loops, the component was left to three discs, the equators'
+// spanning the ring's hole and bore (genus 0, up to r off the torus). The
+// ring is larger than the others (R 40, r 20, cells about 1.3 across), so
+// that the top is a sheet over the reach of the rim's rings (9 edges turn
+// its normal by about 34°; on the smaller ring's tube, r 5, by about 100°,
+// and a mouth there is a wall's rim).
+TEST(CloseTube, AHoleInTheSeenSurfaceOpeningOntoTheUnseenPartIsNoRim) {
+  constexpr double kBigR = 40.0, kBigr = 20.0;
+  constexpr int kBigNu = 192, kBigNv = 96;
+  const TubeMesh m = TorusTubeMesh(kBigR, kBigr, kBigNu, kBigNv);
+  constexpr int kMouth = 2, kTop = kBigNv / 4;  // cells; the top of the tube
+  const auto id = [&](int i, int j) { return (i % kBigNu) * kBigNv + j % kBigNv; };
+  // Cell rows v in [kTop, kTop + kMouth) on top; their mirror images
+  // (v -> 2π - v), straight below them, underneath.
+  const auto in_mouth = [&](int cell) {
+    const int i = cell / kBigNv, j = cell % kBigNv;
+    return i < kMouth && ((j >= kTop && j < kTop + kMouth) ||
+                          (j >= kBigNv - kTop - kMouth && j < kBigNv - kTop));
+  };
+  std::vector<Eigen::Vector3d> vertices = m.vertices;
+  std::vector<std::array<int, 3>> triangles;
+  std::vector<uint8_t> supported;
+  for (size_t t = 0; t < m.triangles.size(); ++t) {
+    const int cell = static_cast<int>(t) / 2;
+    if (in_mouth(cell)) continue;
+    triangles.push_back(m.triangles[t]);
+    supported.push_back(cell % kBigNv < kBigNv / 2);
+  }
+  // The top mouth's border in its cells' order, and below each of its
+  // vertices the mirror vertex: the bottom mouth's border the other way
+  // round, so the shaft's faces turn as the torus's do.
+  std::vector<int> ring, end;
+  const auto add = [&](int i, int j) {
+    ring.push_back(id(i, j));
+    end.push_back(id(i, kBigNv - j));
+  };
+  for (int i = 0; i < kMouth; ++i) add(i, kTop);
+  for (int j = kTop; j < kTop + kMouth; ++j) add(kMouth, j);
+  for (int i = kMouth; i > 0; --i) add(i, kTop + kMouth);
+  for (int j = kTop + kMouth; j > kTop; --j) add(0, j);
+  const int n = static_cast<int>(ring.size());
+  constexpr int kSegments = 16;
+  for (int s = 1; s <= kSegments; ++s) {
+    std::vector<int> next = end;
+    if (s < kSegments) {
+      for (int k = 0; k < n; ++k) {
+        const double t = static_cast<double>(s) / kSegments;
+        next[k] = static_cast<int>(vertices.size());
+        vertices.push_back((1 - t) * m.vertices[ring[k]] + t * m.vertices[end[k]]);
+      }
+    }
+    for (int k = 0; k < n; ++k) {
+      triangles.push_back({ring[k], ring[(k + 1) % n], next[(k + 1) % n]});
+      triangles.push_back({ring[k], next[(k + 1) % n], next[k]});
+      supported.push_back(0);
+      supported.push_back(0);
+    }
+    ring = next;
+  }
+  // The mouths' middle vertices are on no face any more.
+  std::vector<int> index(vertices.size(), -1);
+  std::vector<Eigen::Vector3d> used;
+  for (auto& t : triangles) {
+    for (int& v : t) {
+      if (index[v] < 0) {
+        index[v] = static_cast<int>(used.size());
+        used.push_back(vertices[v]);
+      }
+      v = index[v];
+    }
+  }
+  const Mesh torus = *SurfaceMesh(used, triangles, "torus with a shaft");
+  ASSERT_EQ(Genus(torus.tri), 2);
+  const auto tubes = CloseUnsupported(torus, supported, 0.01, false, {}, true, 0.0);
+  ASSERT_TRUE(tubes.ok()) << tubes.status();
+  EXPECT_EQ(tubes->hole_count, 3);
+  ExpectOneClosedManifoldOfGenus(tubes->mesh.tri, 1);
+  double worst = 0.0;
+  for (const auto f : tubes->mesh.tri.faces()) {
+    if (!tubes->filled[f.idx()]) continue;
+    for (const auto v : tubes->mesh.tri.fv_range(f)) {
+      const Eigen::Vector3d p = ToEigen(tubes->mesh.tri.point(v));
+      worst = std::max(worst, std::abs(std::hypot(std::hypot(p.x(), p.y()) - kBigR, p.z()) - kBigr));
+    }
+  }
+  EXPECT_LT(worst, 0.05 * kBigr);  // as kTolerance
+}
+
 // A band across the tube (cells i in [0, 4)) leaves two meridians whose
 // seen surface leaves them along their axis: the rims of one tube when the
 // points resolve loops that long, but a handle to cut (two discs) when the

@@ -60,7 +60,9 @@ Sampled CoverWithInner(const std::vector<Eigen::Vector3d>& points,
   out.all = out.covering;
   const std::vector<Support> inner = InnerSupports(out.covering, in, spacing);
   out.all.insert(out.all.end(), inner.begin(), inner.end());
-  out.weights = TetWeights(out.all, out.covering.size());
+  std::vector<double> covering_weight;
+  for (const Support& s : out.covering) covering_weight.push_back(s.radius * s.radius);
+  out.weights = TetWeights(out.all, covering_weight);
   return out;
 }
 
@@ -206,6 +208,118 @@ TEST(TetWeights, InnerSupportsHideNoCentreOfTheCovering) {
     EXPECT_TRUE(by_inner) << "inner support " << sampled.all[k].center.transpose() << " hidden";
   }
   EXPECT_GT(weighted, 0);
+}
+
+// ReconstructParams::sparse_support_points' default.
+constexpr int kSparsePoints = 10;
+
+// A wall x = 0 (the solid at x > 0) sampled every 0.25 for y in [-5, 5],
+// z in [0, 5]; nothing below z = 0 (an unseen bottom). Ball B is fitted
+// from (2, 0, -2), in the empty space under the bottom: it grows to the
+// largest radius allowed (the wall is exactly flat), reads the wall and its
+// fit puts its own centre inside (g = 2). Small balls of radius 0.5 sample
+// the solid above the bottom. B is the lowest centre, so on the hull: tied
+// outside against f > 0. With weight r² it hides the small centres in its
+// ball; with CoveringWeights it keeps its place on the hull and hides none.
+TEST(CoveringWeights, AHullCentreTiedOutsideAgainstFHidesNothing) {
+  const auto run = [](std::vector<double>* weight, int* hidden_before,
+                      int* hidden_after, bool* big_on_hull) {
+    std::vector<Eigen::Vector3d> points, normals;
+    for (int i = -20; i <= 20; ++i) {
+      for (int k = 0; k <= 20; ++k) {
+        points.emplace_back(0.0, 0.25 * i, 0.25 * k);
+        normals.emplace_back(1, 0, 0);
+      }
+    }
+    const mesh_internal::PointIndex index(points);
+    const FitInput in{points, normals, index, 0.01, 6.0};
+    std::vector<Support> covering = {FitSupport(Eigen::Vector3d(2, 0, -2), 0.0, in)};
+    for (double x : {0.5, 1.5, 2.5}) {
+      for (double y : {-1.0, 0.0, 1.0}) {
+        for (double z : {0.5, 1.5, 2.5}) {
+          Support s;
+          s.center = Eigen::Vector3d(x, y, z);
+          s.radius = 0.5;
+          s.m = Eigen::Vector3d::UnitX();
+          s.d = Eigen::Vector3d::Zero();
+          s.point_count = 10;
+          covering.push_back(s);
+        }
+      }
+    }
+    const PuFunction f(covering);
+    std::vector<double> radius2;
+    for (const Support& s : covering) radius2.push_back(s.radius * s.radius);
+    const auto before = RegularTetrahedralization(covering, TetWeights(covering, radius2), {});
+    ASSERT_TRUE(before.ok());
+    *weight = CoveringWeights(covering, *before, f, kSparsePoints);
+    const auto after = RegularTetrahedralization(covering, TetWeights(covering, *weight), {});
+    ASSERT_TRUE(after.ok());
+    *hidden_before = static_cast<int>(covering.size() - before->support.size());
+    *hidden_after = static_cast<int>(covering.size() - after->support.size());
+    *big_on_hull = after->support[0] == 0 && after->on_hull[0];
+    EXPECT_GT(f(covering[0].center), 0.0);
+  };
+  std::vector<double> weight;
+  int hidden_before = 0, hidden_after = 0;
+  bool big_on_hull = false;
+  run(&weight, &hidden_before, &hidden_after, &big_on_hull);
+  EXPECT_GT(hidden_before, 0);
+  EXPECT_EQ(weight[0], 0.0);
+  EXPECT_EQ(hidden_after, 0);
+  EXPECT_TRUE(big_on_hull);
+  // The small balls on the hull read f > 0 too; the others keep r².
+  for (size_t i = 1; i < weight.size(); ++i) EXPECT_TRUE(weight[i] == 0.0 || weight[i] == 0.25);
+}
+
+// A seen wall x = 0 (the solid at x > 0) sampled by small balls (r 0.5) in
+// the solid, and one ball B in the empty space in front of it, centre
+// (-3, 0, 1), grown until it held a handful of points at the wall's edge
+// (z ≈ 0). Their plane, tilted by the noise over their small spread, is
+// here z = 0 with the solid above it: B's fit puts its own centre inside
+// (g = +1), on the wrong side of the seen wall.
+// B is the only centre at x < 0, so on the hull. With fewer points than the
+// sparse count its reading is no evidence against the hull's tie: it keeps
+// r² (so its power cell keeps the empty space in front of the wall
+// outside); holding the sparse count, the same reading gets weight 0.
+TEST(CoveringWeights, AHullBallHoldingFewerThanTheSparseCountKeepsItsWeight) {
+  const auto weight_of_b = [](int point_count) {
+    Support b;
+    b.center = Eigen::Vector3d(-3, 0, 1);
+    b.radius = 3.2;
+    b.m = Eigen::Vector3d::UnitZ();  // inward: its fit has the solid above z = 0
+    b.d = Eigen::Vector3d::Zero();
+    b.point_count = point_count;
+    std::vector<Support> covering = {b};
+    for (double x : {0.5, 1.5, 2.5}) {
+      for (double y : {-1.0, 0.0, 1.0}) {
+        for (double z : {0.5, 1.5, 2.5}) {
+          Support s;
+          s.center = Eigen::Vector3d(x, y, z);
+          s.radius = 0.5;
+          s.m = Eigen::Vector3d::UnitX();
+          s.d = Eigen::Vector3d::Zero();
+          s.point_count = kSparsePoints;
+          covering.push_back(s);
+        }
+      }
+    }
+    const PuFunction f(covering);
+    EXPECT_GT(f(b.center), 0.0);
+    std::vector<double> radius2;
+    for (const Support& s : covering) radius2.push_back(s.radius * s.radius);
+    const auto tets = RegularTetrahedralization(covering, TetWeights(covering, radius2), {});
+    EXPECT_TRUE(tets.ok());
+    if (!tets.ok()) return -1.0;
+    bool b_on_hull = false;
+    for (size_t v = 0; v < tets->support.size(); ++v) {
+      b_on_hull = b_on_hull || (tets->support[v] == 0 && tets->on_hull[v]);
+    }
+    EXPECT_TRUE(b_on_hull);
+    return CoveringWeights(covering, *tets, f, kSparsePoints)[0];
+  };
+  EXPECT_EQ(weight_of_b(kMinFitPoints), 3.2 * 3.2);
+  EXPECT_EQ(weight_of_b(kSparsePoints), 0.0);
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <random>
 #include <stop_token>
 
 #include <gmock/gmock.h>
@@ -227,6 +228,66 @@ TEST(Reconstruct, SmallComponentsAreDropped) {
   EXPECT_GT(r->stats.dropped_component_count, 0);
   EXPECT_EQ(test::ComponentCount(r->mesh.tri), 1);
   EXPECT_EQ(test::BoundaryEdgeCount(r->mesh.tri), 0);
+}
+
+// A block [−20, 20]² × [0, 20] with a through-bore of radius 6 along z,
+// scanned from above: its top, its four sides and the bore's wall from half
+// its depth up are sampled (spacing 0.7, no normals); its bottom and the
+// bore's lower half are not. Returns the points.
+PointCloud OccludedBoredBlock() {
+  constexpr double kHalf = 20.0, kHeight = 20.0, kBore = 6.0, kLowestSeen = 10.0;
+  constexpr double kSpacing = 0.7;
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  const auto count = [&](double area) { return static_cast<int>(area / (kSpacing * kSpacing)); };
+  PointCloud cloud;
+  cloud.name = "occluded bored block";
+  for (int i = count(4.0 * kHalf * kHalf - M_PI * kBore * kBore); i > 0;) {
+    const Eigen::Vector3d p(kHalf * (2.0 * u(rng) - 1.0), kHalf * (2.0 * u(rng) - 1.0), kHeight);
+    if (p.head<2>().norm() > kBore) {
+      cloud.points.push_back(p);
+      --i;
+    }
+  }
+  for (int side = 0; side < 4; ++side) {
+    for (int i = count(2.0 * kHalf * kHeight); i > 0; --i) {
+      const double t = kHalf * (2.0 * u(rng) - 1.0), z = kHeight * u(rng);
+      const double s = side % 2 == 0 ? kHalf : -kHalf;
+      cloud.points.push_back(side < 2 ? Eigen::Vector3d(s, t, z) : Eigen::Vector3d(t, s, z));
+    }
+  }
+  for (int i = count(2.0 * M_PI * kBore * (kHeight - kLowestSeen)); i > 0; --i) {
+    const double a = 2.0 * M_PI * u(rng);
+    cloud.points.emplace_back(kBore * std::cos(a), kBore * std::sin(a),
+                              kLowestSeen + (kHeight - kLowestSeen) * u(rng));
+  }
+  return cloud;
+}
+
+// Issue 38 item 1, its converse: a through-bore the scan shows is not
+// plugged. Under the bore's mouth, beyond the unseen bottom, the covering
+// grows balls until they hold the wall's lowest seen rows, which see their
+// centres from outside; the planes of the balls round them, carried on past
+// their points, read f > 0 there, and labelled inside such a vertex closed
+// the bore below. Over eight covering draws the bore stayed open (genus 1,
+// the truth) on two; tied outside (graph_cut.h SeenFromOutside), on three.
+// On the others the bore is still closed below by tets the tie does not
+// reach (what is left of issue 38 here).
+TEST(Reconstruct, AnOccludedThroughBoreIsNotPlugged) {
+  constexpr int kDraws = 8;
+  const PointCloud cloud = OccludedBoredBlock();
+  int open = 0;
+  for (uint64_t seed = 0; seed < kDraws; ++seed) {
+    ReconstructParams params;
+    params.seed = seed;
+    const auto r = Reconstruct(cloud, params);
+    ASSERT_TRUE(r.ok()) << r.status();
+    EXPECT_EQ(test::BoundaryEdgeCount(r->mesh.tri), 0) << "draw " << seed;
+    EXPECT_LE(r->stats.genus, 1) << "draw " << seed << ": a handle the block does not have";
+    open += r->stats.genus == 1;
+  }
+  EXPECT_GE(open, 3) << "the bore is plugged on " << kDraws - open << " of " << kDraws
+                     << " covering draws";
 }
 
 TEST(Reconstruct, SameInputGivesSameMesh) {

@@ -130,5 +130,20 @@ TEST(SeenCapPlane, IsThePlaneMostOfTheLoopLiesOnWhenOneSideClimbsAWall) {
   EXPECT_FALSE(SeenCapPlane(loop, Eigen::Vector3d(0, 1, 0), &normal, &offset));
 }
 
+// A wall hanging past the unseen bottom: the whole of one side and a quarter
+// of the next drop to z = -0.5 (20 of the 64 loop vertices, 31 % beyond the
+// bottom, more than a fixed share of a tenth or a quarter would allow). The
+// rim of the bottom is still most of the loop, so the cap plane is z = 0.
+TEST(SeenCapPlane, AFoldHangingPastTheUnseenFaceLeavesItsPlaneTheCap) {
+  std::vector<Eigen::Vector3d> loop, normals;
+  SquareLoop(&loop, &normals);
+  for (int k = 0; k < 20; ++k) loop[k].z() = -0.5;
+  Eigen::Vector3d normal;
+  double offset = 1.0;
+  ASSERT_TRUE(SeenCapPlane(loop, Eigen::Vector3d(0, 0, -1), &normal, &offset));
+  EXPECT_NEAR(normal.z(), -1.0, 1e-9);
+  EXPECT_NEAR(offset, 0.0, 1e-9);
+}
+
 }  // namespace
 }  // namespace meshseg::reconstruct_internal

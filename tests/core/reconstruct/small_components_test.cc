@@ -19,7 +19,7 @@ IsoSurface OctahedronAndTetrahedron() {
 
 TEST(DropSmallComponents, RemovesComponentsBelowTheFractionOfTheLargest) {
   IsoSurface s = OctahedronAndTetrahedron();
-  EXPECT_EQ(DropSmallComponents(0.6, &s), 1);  // 4 < 0.6 × 8
+  EXPECT_EQ(DropSmallComponents(0.6, 0.0, &s), 1);  // 4 < 0.6 × 8
   EXPECT_EQ(s.triangles.size(), 8u);
   ASSERT_EQ(s.vertices.size(), 6u);
   EXPECT_EQ(s.vertices[5], Eigen::Vector3d(0, 0, -1));
@@ -28,10 +28,23 @@ TEST(DropSmallComponents, RemovesComponentsBelowTheFractionOfTheLargest) {
 
 TEST(DropSmallComponents, KeepsEverythingAtZeroOrWhenLargeEnough) {
   IsoSurface s = OctahedronAndTetrahedron();
-  EXPECT_EQ(DropSmallComponents(0.0, &s), 0);
-  EXPECT_EQ(DropSmallComponents(0.5, &s), 0);  // 4 = 0.5 × 8
+  EXPECT_EQ(DropSmallComponents(0.0, 0.0, &s), 0);
+  EXPECT_EQ(DropSmallComponents(0.5, 0.0, &s), 0);  // 4 = 0.5 × 8
   EXPECT_EQ(s.triangles.size(), 12u);
   EXPECT_EQ(s.vertices.size(), 10u);
+}
+
+// Mean thickness 2 V / A: the octahedron's 2 (4/3) / (4 √3) = 0.385, the
+// tetrahedron's 2 (1/6) / (3/2 + √3/2) = 0.141.
+TEST(DropSmallComponents, RemovesAThinComponentButNeverTheLargest) {
+  IsoSurface s = OctahedronAndTetrahedron();
+  EXPECT_EQ(DropSmallComponents(0.1, 0.14, &s), 0);  // both thicker
+  EXPECT_EQ(DropSmallComponents(0.1, 0.15, &s), 1);  // the tetrahedron is not
+  EXPECT_EQ(s.triangles.size(), 8u);
+  EXPECT_EQ(s.vertices.size(), 6u);
+  IsoSurface t = OctahedronAndTetrahedron();
+  EXPECT_EQ(DropSmallComponents(0.1, 1.0, &t), 1);  // the largest stays however thin
+  EXPECT_EQ(t.triangles.size(), 8u);
 }
 
 }  // namespace
