@@ -213,6 +213,24 @@ TEST(TetWeights, InnerSupportsHideNoCentreOfTheCovering) {
 // ReconstructParams::sparse_support_points' default.
 constexpr int kSparsePoints = 10;
 
+// 27 small balls (r 0.5) in the solid x > 0 behind a wall x = 0, each
+// holding the sparse count and reading the wall (inward normal +x).
+void AddSolidBalls(std::vector<Support>* covering) {
+  for (double x : {0.5, 1.5, 2.5}) {
+    for (double y : {-1.0, 0.0, 1.0}) {
+      for (double z : {0.5, 1.5, 2.5}) {
+        Support s;
+        s.center = Eigen::Vector3d(x, y, z);
+        s.radius = 0.5;
+        s.m = Eigen::Vector3d::UnitX();
+        s.d = Eigen::Vector3d::Zero();
+        s.point_count = kSparsePoints;
+        covering->push_back(s);
+      }
+    }
+  }
+}
+
 // A wall x = 0 (the solid at x > 0) sampled every 0.25 for y in [-5, 5],
 // z in [0, 5]; nothing below z = 0 (an unseen bottom). Ball B is fitted
 // from (2, 0, -2), in the empty space under the bottom: it grows to the
@@ -234,19 +252,7 @@ TEST(CoveringWeights, AHullCentreTiedOutsideAgainstFHidesNothing) {
     const mesh_internal::PointIndex index(points);
     const FitInput in{points, normals, index, 0.01, 6.0};
     std::vector<Support> covering = {FitSupport(Eigen::Vector3d(2, 0, -2), 0.0, in)};
-    for (double x : {0.5, 1.5, 2.5}) {
-      for (double y : {-1.0, 0.0, 1.0}) {
-        for (double z : {0.5, 1.5, 2.5}) {
-          Support s;
-          s.center = Eigen::Vector3d(x, y, z);
-          s.radius = 0.5;
-          s.m = Eigen::Vector3d::UnitX();
-          s.d = Eigen::Vector3d::Zero();
-          s.point_count = 10;
-          covering.push_back(s);
-        }
-      }
-    }
+    AddSolidBalls(&covering);
     const PuFunction f(covering);
     std::vector<double> radius2;
     for (const Support& s : covering) radius2.push_back(s.radius * s.radius);
@@ -291,19 +297,7 @@ TEST(CoveringWeights, AHullBallHoldingFewerThanTheSparseCountKeepsItsWeight) {
     b.d = Eigen::Vector3d::Zero();
     b.point_count = point_count;
     std::vector<Support> covering = {b};
-    for (double x : {0.5, 1.5, 2.5}) {
-      for (double y : {-1.0, 0.0, 1.0}) {
-        for (double z : {0.5, 1.5, 2.5}) {
-          Support s;
-          s.center = Eigen::Vector3d(x, y, z);
-          s.radius = 0.5;
-          s.m = Eigen::Vector3d::UnitX();
-          s.d = Eigen::Vector3d::Zero();
-          s.point_count = kSparsePoints;
-          covering.push_back(s);
-        }
-      }
-    }
+    AddSolidBalls(&covering);
     const PuFunction f(covering);
     EXPECT_GT(f(b.center), 0.0);
     std::vector<double> radius2;
