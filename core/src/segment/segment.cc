@@ -87,9 +87,10 @@ absl::Status Merge(const segment_internal::SegmentContext& c, std::vector<int>* 
 // merges and the drops, each made iff it lowers E, then the expansion with
 // re-estimation over the boundaries they changed; repeated until no move is
 // made (each move lowers E, so it ends; kMaxImproveRounds guards against a
-// cycle of moves whose gains are rounding). The expansion can shrink a region to a sliver or a strip
-// whose vertices cost less on its neighbours' surfaces (between a
-// countersink and its plane, along a groove), which the next round drops,
+// cycle of moves whose gains are rounding). The expansion can shrink a
+// region to a sliver or a strip whose vertices cost less on its
+// neighbours' surfaces (between a countersink and its plane, along a
+// groove), which the next round drops,
 // and it gives a plane retyped on part of its arc the rest, whose type the
 // next round proposes again.
 constexpr int kMaxImproveRounds = 16;
