@@ -275,11 +275,12 @@ absl::StatusOr<std::vector<int>> RetypeByInterior(const SegmentContext& c,
   if (proposals.empty()) return retyped;
   double energy = TotalEnergy(c, *labels, *regions);
   for (const InteriorRetype& p : proposals) {
+    // An earlier accepted proposal's expansion may have emptied this region.
+    if (!(*regions)[p.id].alive || (*regions)[p.id].vertices.empty()) continue;
     // On copies: the retype, re-estimated, then the expansion.
     std::vector<int> next_labels = *labels;
     std::vector<RegionState> next = *regions;
     RegionState& r = next[p.id];
-    if (!r.alive || r.vertices.empty()) continue;
     r.type = p.type;
     r.surface = p.surface;
     r.shared_parameters = p.shared_parameters;
@@ -294,6 +295,5 @@ absl::StatusOr<std::vector<int>> RetypeByInterior(const SegmentContext& c,
   }
   return retyped;
 }
-
 
 }  // namespace meshseg::segment_internal

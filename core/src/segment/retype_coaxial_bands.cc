@@ -69,7 +69,7 @@ std::optional<RegionState> SphereOnConeAxis(const SegmentContext& c, const Regio
   if (!x.allFinite() || !(radius_squared > 0.0)) return std::nullopt;
   RegionState out = r;
   out.surface = Sphere{.center = axis->apex + x(0) * d, .radius = std::sqrt(radius_squared)};
-  out.shared_parameters = ParameterCount(SurfaceType::kSphere) - 2;
+  out.shared_parameters = ParameterCount(SurfaceType::kSphere) - kCoaxialSphereParameters;
   return out;
 }
 

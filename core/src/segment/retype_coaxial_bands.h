@@ -28,6 +28,7 @@ namespace meshseg::segment_internal {
 // is the neighbour's (energy.h, "Shared parameters"). Nothing is proposed
 // when the estimated noise is zero. Returns the ids of the regions retyped.
 inline constexpr int kCoaxialConeParameters = 2;  // apex along the axis, half angle
+inline constexpr int kCoaxialSphereParameters = 2;  // centre along the axis, radius
 
 // Region `r` as the cone `cone` fitted on a turned neighbour's axis: its
 // label counts kCoaxialConeParameters (shared_parameters the other 4).
