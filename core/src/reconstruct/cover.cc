@@ -112,8 +112,7 @@ std::vector<Support> InnerSupports(const std::vector<Support>& supports, const F
 
 std::vector<double> CoveringWeights(const std::vector<Support>& covering, const TetMesh& tets,
                                     const PuFunction& f, int sparse_points) {
-  std::vector<double> weight(covering.size());
-  for (size_t i = 0; i < covering.size(); ++i) weight[i] = covering[i].radius * covering[i].radius;
+  std::vector<double> weight = RadiiSquared(covering);
   for (size_t v = 0; v < tets.support.size(); ++v) {
     const size_t i = tets.support[v];
     if (i >= covering.size() || !tets.on_hull[v]) continue;

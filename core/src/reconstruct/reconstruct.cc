@@ -222,10 +222,7 @@ absl::StatusOr<Reconstruction> Reconstruct(const PointCloud& cloud, const Recons
     const std::vector<Support> inner = InnerSupports(supports, fit_input, h);
     vertices.insert(vertices.end(), inner.begin(), inner.end());
   }
-  std::vector<double> covering_weight(supports.size());
-  for (size_t i = 0; i < supports.size(); ++i) {
-    covering_weight[i] = supports[i].radius * supports[i].radius;
-  }
+  const std::vector<double> covering_weight = RadiiSquared(supports);
   ctx.Progress(kStage, 0.4);
 
   // Step 3: regular tetrahedralization of the support centres.

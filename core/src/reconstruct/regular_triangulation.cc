@@ -30,11 +30,15 @@ using WeightedPoint = Regular::Weighted_point;
 
 }  // namespace
 
-absl::StatusOr<TetMesh> RegularTetrahedralization(const std::vector<Support>& supports,
-                                                  const RunContext& ctx) {
+std::vector<double> RadiiSquared(const std::vector<Support>& supports) {
   std::vector<double> weights(supports.size());
   for (size_t i = 0; i < supports.size(); ++i) weights[i] = supports[i].radius * supports[i].radius;
-  return RegularTetrahedralization(supports, weights, ctx);
+  return weights;
+}
+
+absl::StatusOr<TetMesh> RegularTetrahedralization(const std::vector<Support>& supports,
+                                                  const RunContext& ctx) {
+  return RegularTetrahedralization(supports, RadiiSquared(supports), ctx);
 }
 
 absl::StatusOr<TetMesh> RegularTetrahedralization(const std::vector<Support>& supports,

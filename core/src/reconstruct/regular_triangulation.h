@@ -30,6 +30,9 @@ struct TetMesh {
 absl::StatusOr<TetMesh> RegularTetrahedralization(const std::vector<Support>& supports,
                                                   const RunContext& ctx);
 
+// The power weights r_i² of the supports' balls (the weights above).
+std::vector<double> RadiiSquared(const std::vector<Support>& supports);
+
 // As above with the weight of each support given (one per support); a
 // support with a negative weight is not a vertex.
 absl::StatusOr<TetMesh> RegularTetrahedralization(const std::vector<Support>& supports,

@@ -60,9 +60,7 @@ Sampled CoverWithInner(const std::vector<Eigen::Vector3d>& points,
   out.all = out.covering;
   const std::vector<Support> inner = InnerSupports(out.covering, in, spacing);
   out.all.insert(out.all.end(), inner.begin(), inner.end());
-  std::vector<double> covering_weight;
-  for (const Support& s : out.covering) covering_weight.push_back(s.radius * s.radius);
-  out.weights = TetWeights(out.all, covering_weight);
+  out.weights = TetWeights(out.all, RadiiSquared(out.covering));
   return out;
 }
 
@@ -254,8 +252,7 @@ TEST(CoveringWeights, AHullCentreTiedOutsideAgainstFHidesNothing) {
     std::vector<Support> covering = {FitSupport(Eigen::Vector3d(2, 0, -2), 0.0, in)};
     AddSolidBalls(&covering);
     const PuFunction f(covering);
-    std::vector<double> radius2;
-    for (const Support& s : covering) radius2.push_back(s.radius * s.radius);
+    const std::vector<double> radius2 = RadiiSquared(covering);
     const auto before = RegularTetrahedralization(covering, TetWeights(covering, radius2), {});
     ASSERT_TRUE(before.ok());
     *weight = CoveringWeights(covering, *before, f, kSparsePoints);
@@ -300,8 +297,7 @@ TEST(CoveringWeights, AHullBallHoldingFewerThanTheSparseCountKeepsItsWeight) {
     AddSolidBalls(&covering);
     const PuFunction f(covering);
     EXPECT_GT(f(b.center), 0.0);
-    std::vector<double> radius2;
-    for (const Support& s : covering) radius2.push_back(s.radius * s.radius);
+    const std::vector<double> radius2 = RadiiSquared(covering);
     const auto tets = RegularTetrahedralization(covering, TetWeights(covering, radius2), {});
     EXPECT_TRUE(tets.ok());
     if (!tets.ok()) return -1.0;
