@@ -22,19 +22,10 @@ namespace {
 using testing::BuildSheet;
 using testing::RegionsFromLabels;
 using testing::Sheet;
+using testing::TrueAreas;
 
 constexpr double kPi = std::numbers::pi;
 constexpr double kSigma = 0.01;
-
-// The data term weighs a vertex by its area (a third of its faces'); the
-// sheets give every vertex area 1.
-void TrueAreas(Sheet* s) {
-  s->c.vertex_area.assign(s->u.size(), 0.0);
-  for (const auto fh : s->mesh.faces()) {
-    const double third = s->mesh.calc_face_area(fh) / 3.0;
-    for (auto it = s->mesh.cfv_iter(fh); it.is_valid(); ++it) s->c.vertex_area[it->idx()] += third;
-  }
-}
 
 int AliveCount(const std::vector<RegionState>& regions) {
   return static_cast<int>(

@@ -205,6 +205,16 @@ inline std::vector<RegionState> RegionsFromLabels(const SegmentContext& c,
   return regions;
 }
 
+// Gives every vertex of `s` its true area, a third of its faces' (the
+// sheets give every vertex area 1), which the data term of E weighs it by.
+inline void TrueAreas(Sheet* s) {
+  s->c.vertex_area.assign(s->u.size(), 0.0);
+  for (const auto fh : s->mesh.faces()) {
+    const double third = s->mesh.calc_face_area(fh) / 3.0;
+    for (auto it = s->mesh.cfv_iter(fh); it.is_valid(); ++it) s->c.vertex_area[it->idx()] += third;
+  }
+}
+
 // One region of type `type`, no surface set, holding every vertex of `s`;
 // `labels` (all 0) to match.
 inline std::vector<RegionState> OneRegion(const Sheet& s, SurfaceType type,
