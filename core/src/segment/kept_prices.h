@@ -43,9 +43,16 @@ class KeptPrices {
   void PriceMerges(const SegmentContext& c, const std::vector<int>& labels,
                    const std::vector<RegionState>& regions, ReestimatedRegions& region,
                    std::span<const std::pair<int, int>> pairs);
-  // The retype proposals (retype_regions.h, retype_by_interior.h) whose
-  // refusals are kept.
-  enum Proposal { kBentPlane, kInaccurateCurved, kSimplerLimit, kInteriorType, kProposals };
+  // The retype and refit proposals (retype_regions.h, retype_by_interior.h,
+  // refit_to_interior.h) whose refusals are kept.
+  enum Proposal {
+    kBentPlane,
+    kInaccurateCurved,
+    kSimplerLimit,
+    kInteriorType,
+    kInteriorSurface,
+    kProposals
+  };
   // Whether proposal `p` was asked of region `id` as it stands, bit for
   // bit, and made no move. A proposal reads only its region, so it would
   // make none again: only the regions changed since are asked.

@@ -20,6 +20,7 @@
 #include "segment/initial_segmentation.h"
 #include "segment/kept_prices.h"
 #include "segment/merge_regions.h"
+#include "segment/refit_to_interior.h"
 #include "segment/retype_by_interior.h"
 #include "segment/retype_coaxial_bands.h"
 #include "segment/retype_regions.h"
@@ -83,7 +84,9 @@ absl::Status Merge(const segment_internal::SegmentContext& c, std::vector<int>* 
 // tells, priced with the expansion it enables; a plane its plane no longer
 // fits; a curved region its type misses; a band beside a turned face the
 // cone on that face's axis; a curved type its simpler limit;
-// retype_by_interior.h, retype_regions.h, retype_coaxial_bands.h), the
+// retype_by_interior.h, retype_regions.h, retype_coaxial_bands.h; a curved
+// region the surface of its own type its interior fits, priced with the
+// expansion too, refit_to_interior.h), the
 // merges and the drops, each made iff it lowers E, then the expansion with
 // re-estimation over the boundaries they changed; repeated until no move is
 // made (each move lowers E, so it ends; kMaxImproveRounds guards against a
@@ -102,10 +105,14 @@ absl::Status Improve(const segment_internal::SegmentContext& c, std::vector<int>
     // enables, at the expansion's fixed point the last round (or step) left.
     MESHSEG_ASSIGN_OR_RETURN(const std::vector<int> by_interior,
                              segment_internal::RetypeByInterior(c, labels, regions, prices));
+    // The same for a surface its own interior fits (refit_to_interior.h).
+    MESHSEG_ASSIGN_OR_RETURN(const std::vector<int> to_interior,
+                             segment_internal::RefitToInterior(c, labels, regions, prices));
     // Only the regions changed since a proposal last made no move on them
     // are asked it again (KeptPrices::Refused).
     std::size_t moves =
-        by_interior.size() + segment_internal::RetypeBentPlanes(c, regions, prices).size() +
+        by_interior.size() + to_interior.size() +
+        segment_internal::RetypeBentPlanes(c, regions, prices).size() +
         segment_internal::RetypeInaccurateCurved(c, regions, prices).size() +
         segment_internal::RetypeCoaxialBands(c, *labels, regions).size() +
         static_cast<std::size_t>(segment_internal::RetypeToSimplerLimits(c, regions, prices));
