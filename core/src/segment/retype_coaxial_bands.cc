@@ -3,10 +3,14 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
+#include <utility>
+#include <vector>
 
 #include <Eigen/Cholesky>
 
+#include "meshseg/status_macros.h"
 #include "segment/align_coaxial.h"
+#include "segment/alpha_expansion.h"
 #include "segment/decide_type.h"
 #include "segment/energy.h"
 #include "segment/retype_by_interior.h"
@@ -131,6 +135,53 @@ std::vector<int> RetypeCoaxialBands(const SegmentContext& c, const std::vector<i
     retyped.push_back(id);
   }
   return retyped;
+}
+
+absl::StatusOr<std::vector<int>> PlaceCoaxialBands(const SegmentContext& c,
+                                                   std::vector<int>* labels,
+                                                   std::vector<RegionState>* regions) {
+  std::vector<int> moved;
+  if (!(c.noise_sigma > 0.0)) return moved;
+  double energy = TotalEnergy(c, *labels, *regions);
+  for (int id = 0; id < static_cast<int>(regions->size()); ++id) {
+    const RegionState& r = (*regions)[id];
+    if (!r.alive || (r.type != SurfaceType::kSphere && r.type != SurfaceType::kTorus)) continue;
+    const int ids[] = {id};
+    const std::vector<int> interior = Sample(InteriorVertices(c, *labels, ids, r.vertices));
+    if (interior.size() < kMinInteriorVertices) continue;
+    const std::optional<CoaxialFit> best = BestCoaxialCone(c, *labels, *regions, id, interior);
+    if (!best ||
+        !(ModelErrorOfMeanSquare(c, best->mean_square) <= kScoredNearError * c.noise_sigma)) {
+      continue;
+    }
+    // The models on the axis: the cone, and a sphere's own type there,
+    // unless its surface shares that axis already (it is that model).
+    std::vector<RegionState> models = {CoaxialConeRegion(r, best->fit.surface)};
+    if (r.shared_parameters == 0) {
+      if (std::optional<RegionState> sphere = SphereOnConeAxis(c, r, best->fit.surface)) {
+        models.push_back(std::move(*sphere));
+      }
+    }
+    // Each on copies, re-estimated, with the expansion it enables.
+    std::optional<std::pair<std::vector<int>, std::vector<RegionState>>> kept;
+    double kept_energy = energy;
+    for (const RegionState& model : models) {
+      std::vector<int> next_labels = *labels;
+      std::vector<RegionState> next = *regions;
+      next[id] = Reestimated(c, model);
+      MESHSEG_RETURN_IF_ERROR(ExpandRegions(c, &next_labels, &next).status());
+      const double next_energy = TotalEnergy(c, next_labels, next);
+      if (!(next_energy < kept_energy)) continue;
+      kept_energy = next_energy;
+      kept.emplace(std::move(next_labels), std::move(next));
+    }
+    if (!kept) continue;
+    *labels = std::move(kept->first);
+    *regions = std::move(kept->second);
+    energy = kept_energy;
+    moved.push_back(id);
+  }
+  return moved;
 }
 
 }  // namespace meshseg::segment_internal

@@ -11,6 +11,7 @@
 #include <optional>
 #include <vector>
 
+#include "absl/status/statusor.h"
 #include "segment/segment_internal.h"
 
 namespace meshseg::segment_internal {
@@ -36,6 +37,31 @@ RegionState CoaxialConeRegion(const RegionState& r, const Surface& cone);
 
 std::vector<int> RetypeCoaxialBands(const SegmentContext& c, const std::vector<int>& labels,
                                     std::vector<RegionState>* regions);
+
+// The same band's two models on the turned face's axis, each priced from
+// the labelling placed for it (PEARL compares models only so): on a narrow
+// band the outer rows sit on the creases, and on the labels as they stand
+// they side with the type they made (a chamfer band grown as a sphere: the
+// sphere over all of it below the cone), while on its interior neither
+// type need fit at the noise, so that no interior proposal asks. For every
+// sphere or torus region with kMinInteriorVertices interior vertices whose
+// cone on a turned neighbour's axis (BestCoaxialCone) meets that interior
+// near the noise (within kScoredNearError sigmas), the region is made, on
+// copies, that cone (CoaxialConeRegion) and, for a sphere not yet on a
+// neighbour's axis, the sphere on that axis (SphereOnConeAxis), each
+// re-estimated and followed by the expansion (ExpandRegions); the one of
+// lower E is kept iff E falls. Both are charged only the parameters their
+// own vertices estimate (energy.h, "Shared parameters"): weighed against
+// the free sphere alone, the cone would win by the 2 parameters of the
+// centre's offset from the axis, which a sphere centred on that axis does
+// not estimate either (a shallow dome centred on a shaft's axis would
+// become a nearly flat cone). Priced at an expansion's fixed point
+// (Improve asks it right after RetypeByInterior), so that the expansion
+// alone would gain nothing. Nothing is proposed when the estimated noise is
+// zero. Returns the ids of the regions changed. Errors: CANCELLED on stop.
+absl::StatusOr<std::vector<int>> PlaceCoaxialBands(const SegmentContext& c,
+                                                   std::vector<int>* labels,
+                                                   std::vector<RegionState>* regions);
 
 // Sphere region `r` refitted with its centre on the axis of `cone` (the
 // turned neighbour's, fitted with it), its label counting the 2 parameters

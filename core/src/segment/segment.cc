@@ -81,12 +81,13 @@ absl::Status Merge(const segment_internal::SegmentContext& c, std::vector<int>* 
 
 // PEARL's alternation (Isack & Boykov, IJCV 2012) over the moves of E
 // (energy.h): the retypes proposed (a narrow band the type its interior
-// tells, priced with the expansion it enables; a plane its plane no longer
-// fits; a curved region its type misses; a band beside a turned face the
-// cone on that face's axis; a curved type its simpler limit;
-// retype_by_interior.h, retype_regions.h, retype_coaxial_bands.h; a curved
+// tells, priced with the expansion it enables; a band beside a turned face
+// its cone and its sphere on that face's axis, each priced so; a curved
 // region the surface of its own type its interior fits, priced with the
-// expansion too, refit_to_interior.h), the
+// expansion too; a plane its plane no longer fits; a curved region its type
+// misses; a band beside a turned face the cone on that face's axis; a curved
+// type its simpler limit; retype_by_interior.h, retype_coaxial_bands.h,
+// refit_to_interior.h, retype_regions.h), the
 // merges and the drops, each made iff it lowers E, then the expansion with
 // re-estimation over the boundaries they changed; repeated until no move is
 // made (each move lowers E, so it ends; kMaxImproveRounds guards against a
@@ -105,13 +106,17 @@ absl::Status Improve(const segment_internal::SegmentContext& c, std::vector<int>
     // enables, at the expansion's fixed point the last round (or step) left.
     MESHSEG_ASSIGN_OR_RETURN(const std::vector<int> by_interior,
                              segment_internal::RetypeByInterior(c, labels, regions, prices));
+    // A band beside a turned face, its cone and its sphere on that face's
+    // axis each priced with its expansion, at the same fixed point.
+    MESHSEG_ASSIGN_OR_RETURN(const std::vector<int> coaxial,
+                             segment_internal::PlaceCoaxialBands(c, labels, regions));
     // The same for a surface its own interior fits (refit_to_interior.h).
     MESHSEG_ASSIGN_OR_RETURN(const std::vector<int> to_interior,
                              segment_internal::RefitToInterior(c, labels, regions, prices));
     // Only the regions changed since a proposal last made no move on them
     // are asked it again (KeptPrices::Refused).
     std::size_t moves =
-        by_interior.size() + to_interior.size() +
+        by_interior.size() + coaxial.size() + to_interior.size() +
         segment_internal::RetypeBentPlanes(c, regions, prices).size() +
         segment_internal::RetypeInaccurateCurved(c, regions, prices).size() +
         segment_internal::RetypeCoaxialBands(c, *labels, regions).size() +
@@ -161,9 +166,9 @@ void OwnSurfaces(Segmentation* seg) {
 //  6. Improve: PEARL's alternation (Improve above) of every priced move,
 //     retypes, merges and drops, then the expansion, until no move lowers E.
 //     A narrow band's type is put to E by its interior (the outer rows are
-//     the creases'), priced with the expansion it enables, and a cone on a
-//     turned neighbour's axis with the 2 parameters its own vertices
-//     estimate (energy.h, "Shared parameters").
+//     the creases'), priced with the expansion it enables, and a cone or a
+//     sphere on a turned neighbour's axis with the 2 parameters its own
+//     vertices estimate (energy.h, "Shared parameters").
 //  7. Split off planes: a flat face a curved region absorbed is born as a
 //     plane of its own, kept iff E with the expansion falls
 //     (split_off_planes.h).

@@ -10,6 +10,7 @@
 #include <random>
 #include <vector>
 
+#include "segment/alpha_expansion.h"
 #include "segment/decide_type.h"
 #include "segment/energy.h"
 #include "segment/retype_by_interior.h"
@@ -24,6 +25,13 @@ using testing::Sheet;
 
 constexpr double kSigma = 0.01;
 constexpr int kBand[] = {0};
+// The chamfer for PlaceCoaxialBands: noise sigma 0.04, at which the rows
+// of its neighbours (0.18 off the cone) are within th_dis, and a ripple of
+// 2.25 sigma, for which the cone on the shaft's axis misses the band's
+// interior by 0.33 sigma (stepped_shaft's chamfer at 0.15 h, seed 388:
+// cone 0.31 sigma, sphere 0.31).
+constexpr double kRowsInlierSigma = 0.04;
+constexpr double kRippleSigmas = 2.25;
 
 // Normal noise of kSigma along the normals (mt19937 draw `seed`).
 void AddNoise(unsigned seed, Sheet* s) {
@@ -267,6 +275,119 @@ TEST(BestCoaxialConeTest, ConeBandOnItsShaftsAxisScoresBelowItsFreeCone) {
   EXPECT_FALSE(BestCoaxialCone(flat.c, labels, beside_planes, 0,
                                InteriorVertices(flat.c, labels, kBand, beside_planes[0].vertices))
                    .has_value());
+}
+
+
+// The E of `regions` on `labels` with region 0 made `model`, re-estimated,
+// and the expansion made (what PlaceCoaxialBands prices a model at).
+double PricedWithExpansion(const SegmentContext& c, std::vector<int> labels,
+                           std::vector<RegionState> regions, const RegionState& model) {
+  regions[0] = Reestimated(c, model);
+  EXPECT_TRUE(ExpandRegions(c, &labels, &regions).ok());
+  return TotalEnergy(c, labels, regions);
+}
+
+TEST(PlaceCoaxialBandsTest, SphereOnARippledChamferBecomesItsConeWithTheExpansion) {
+  // The chamfer's band with a ripple (a stand-in for a mesh's error) took
+  // one row of the cylinder and one of the top. On its interior the cone
+  // on the shaft's axis misses the noise (not at it), and on the labels as
+  // they stand the rows side with the sphere: RetypeCoaxialBands keeps it.
+  // Each model placed by its expansion, the cone gives the rows back and
+  // lowers E below the sphere on the same axis.
+  Sheet s;
+  constexpr double sigma = kRowsInlierSigma;
+  testing::BuildChamfer(sigma, /*ripple=*/kRippleSigmas * sigma, &s);
+  std::vector<int> labels =
+      BandLabels(s, testing::kChamferConeStart - 1, testing::kChamferConeEnd + 1);
+  std::vector<RegionState> regions = RegionsFromLabels(
+      s.c, labels, {SurfaceType::kSphere, SurfaceType::kCylinder, SurfaceType::kPlane});
+  const std::vector<int> interior =
+      Sample(InteriorVertices(s.c, labels, kBand, regions[0].vertices));
+  const std::optional<CoaxialFit> cone = BestCoaxialCone(s.c, labels, regions, 0, interior);
+  ASSERT_TRUE(cone.has_value());
+  const double cone_error = ModelErrorOfMeanSquare(s.c, cone->mean_square);
+  ASSERT_GT(cone_error, kMinModelError * sigma);
+  ASSERT_LE(cone_error, kScoredNearError * sigma);
+  {
+    std::vector<RegionState> unplaced = regions;
+    ASSERT_TRUE(RetypeCoaxialBands(s.c, labels, &unplaced).empty());
+  }
+  const double before = TotalEnergy(s.c, labels, regions);
+
+  const absl::StatusOr<std::vector<int>> moved = PlaceCoaxialBands(s.c, &labels, &regions);
+  ASSERT_TRUE(moved.ok()) << moved.status();
+  EXPECT_EQ(*moved, std::vector<int>{0});
+  ASSERT_EQ(regions[0].type, SurfaceType::kCone);
+  const Cone& placed = std::get<Cone>(regions[0].surface);
+  EXPECT_NEAR(placed.half_angle, std::numbers::pi / 4, 0.5 * std::numbers::pi / 180);
+  EXPECT_NEAR(placed.apex.x(), 0.0, 0.01);
+  EXPECT_NEAR(placed.apex.y(), 0.0, 0.01);
+  EXPECT_LT(TotalEnergy(s.c, labels, regions), before);
+  // The rows of the cylinder and the top went back to them.
+  for (std::size_t v = 0; v < labels.size(); ++v) {
+    if (s.u[v] < testing::kChamferConeStart - 0.5 || s.u[v] > testing::kChamferConeEnd + 0.5) {
+      EXPECT_NE(labels[v], 0) << v;
+    }
+  }
+}
+
+// A shaft of radius 5 (rows 0.25 apart up to z 68.5) under a shallow dome:
+// a sphere of radius kDomeRadius centred on the shaft's axis, from the
+// shaft's rim in to radius 1 (rows 0.25 apart in radius), three quarters
+// of a turn: its cone on the axis misses it by 0.05 sigma at noise sigma
+// kDomeSigma (none added), th_dis 5 sigma. Labelled 0 on the dome, 1 on
+// the shaft.
+constexpr int kShaftRows = 10, kDomeRows = 16;
+constexpr double kDomeRadius = 250.0, kDomeSigma = 0.05;
+
+void BuildDomeOnShaft(Sheet* s, std::vector<int>* labels) {
+  const double center_z = 68.5 - std::sqrt(kDomeRadius * kDomeRadius - 25.0);
+  BuildSheet(
+      [&](double row, double phi) {
+        const Eigen::Vector3d radial(std::cos(phi), std::sin(phi), 0.0);
+        const Eigen::Vector3d z = Eigen::Vector3d::UnitZ();
+        if (row <= kShaftRows) {
+          return std::pair{Eigen::Vector3d(5.0 * radial + (66.0 + 0.25 * row) * z), radial};
+        }
+        const double r = 5.0 - 0.25 * (row - kShaftRows);
+        const Eigen::Vector3d p =
+            r * radial + (center_z + std::sqrt(kDomeRadius * kDomeRadius - r * r)) * z;
+        return std::pair{p, Eigen::Vector3d((p - center_z * z) / kDomeRadius)};
+      },
+      0.0, kShaftRows + kDomeRows, kShaftRows + kDomeRows + 1, 0.0, 1.5 * std::numbers::pi, 48,
+      /*distance=*/5.0 * kDomeSigma, /*angle_deg=*/10.0, s);
+  s->c.noise_sigma = kDomeSigma;
+  labels->resize(s->u.size());
+  for (std::size_t v = 0; v < labels->size(); ++v) (*labels)[v] = s->u[v] < kShaftRows ? 1 : 0;
+}
+
+TEST(PlaceCoaxialBandsTest, SphereCentredOnItsShaftsAxisStaysASphere) {
+  // The dome's cone on the shaft's axis meets it near the noise, and placed
+  // by its expansion it lowers E below the free sphere, which pays for the
+  // 2 parameters of its centre's offset from the axis: weighed against it
+  // alone, the dome would become a cone. The sphere on the axis estimates
+  // no more than the cone and fits the dome: it stays a sphere, on the axis.
+  Sheet s;
+  std::vector<int> labels;
+  BuildDomeOnShaft(&s, &labels);
+  std::vector<RegionState> regions =
+      RegionsFromLabels(s.c, labels, {SurfaceType::kSphere, SurfaceType::kCylinder});
+  const std::vector<int> interior =
+      Sample(InteriorVertices(s.c, labels, kBand, regions[0].vertices));
+  const std::optional<CoaxialFit> cone = BestCoaxialCone(s.c, labels, regions, 0, interior);
+  ASSERT_TRUE(cone.has_value());
+  ASSERT_LE(ModelErrorOfMeanSquare(s.c, cone->mean_square), kScoredNearError * kDomeSigma);
+  ASSERT_LT(PricedWithExpansion(s.c, labels, regions,
+                                CoaxialConeRegion(regions[0], cone->fit.surface)),
+            TotalEnergy(s.c, labels, regions));
+
+  const absl::StatusOr<std::vector<int>> moved = PlaceCoaxialBands(s.c, &labels, &regions);
+  ASSERT_TRUE(moved.ok()) << moved.status();
+  ASSERT_EQ(regions[0].type, SurfaceType::kSphere);
+  const Sphere& sphere = std::get<Sphere>(regions[0].surface);
+  EXPECT_NEAR(sphere.center.x(), 0.0, 0.01);
+  EXPECT_NEAR(sphere.center.y(), 0.0, 0.01);
+  EXPECT_NEAR(sphere.radius, kDomeRadius, 0.05 * kDomeRadius);
 }
 
 }  // namespace
