@@ -12,6 +12,7 @@
 #include "meshseg/status_macros.h"
 #include "reconstruct/close_hole.h"
 #include "reconstruct/close_tube.h"
+#include "reconstruct/split_at_cap.h"
 #include "reconstruct/surface_mesh.h"
 #include "reconstruct/tube_rims.h"
 
@@ -194,8 +195,20 @@ absl::StatusOr<ClosedSurface> CloseUnsupported(const Mesh& mesh,
     const double sign = Outwards(tri);
     std::vector<uint8_t> closed(loops.size(), 0);
     if (min_tube_rim >= 0) {
-      for (const auto& [i, j] : TubeRims(tri, removed, sm, tri_vertex, loops, min_tube_rim)) {
+      // Both read the loops before any is closed.
+      const auto tube_rims = TubeRims(tri, removed, sm, tri_vertex, loops, min_tube_rim);
+      const auto lone_rims = LoneBoreRims(tri, removed, sm, tri_vertex, loops, min_tube_rim);
+      for (const auto& [i, j] : tube_rims) {
         if (CloseTube(loops[i], loops[j], sign, bend_onto_seen_planes, &sm)) {
+          closed[i] = closed[j] = 1;
+        }
+      }
+      // A bore's rim and the rim round the unseen face its axis meets, left
+      // in two removed components (tube_rims.h LoneBoreRims).
+      for (const auto& [i, j] : lone_rims) {
+        if (closed[i] || closed[j]) continue;
+        if (SplitAtCap(RimOf(sm, loops[i], sign), RimOf(sm, loops[j], sign), sign,
+                       bend_onto_seen_planes, &sm)) {
           closed[i] = closed[j] = 1;
         }
       }

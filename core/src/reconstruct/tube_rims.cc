@@ -237,6 +237,82 @@ std::vector<int> FacePieces(const TriMesh& tri, const std::vector<uint8_t>& remo
   return parent;
 }
 
+namespace {
+
+// Per loop: its removed component (-1 where none) and whether it is a
+// candidate rim, (b) and (c) of close_tube.h; per component, its candidates.
+struct RimCandidates {
+  std::vector<int> component;
+  std::vector<uint8_t> candidate;
+  std::vector<int> count;  // per face index of a component's root
+};
+
+RimCandidates CandidatesOf(const TriMesh& tri, const std::vector<uint8_t>& removed,
+                           const HoleMesh& sm, const std::vector<int>& tri_vertex,
+                           const std::vector<HoleMesh::Halfedge_index>& loops, double min_rim) {
+  std::vector<int> parent = FacePieces(tri, removed, 1);
+  RimCandidates c;
+  c.component.assign(loops.size(), -1);
+  for (size_t i = 0; i < loops.size(); ++i) {
+    const auto from = tri.vertex_handle(tri_vertex[sm.source(loops[i])]);
+    const auto to = tri.vertex_handle(tri_vertex[sm.target(loops[i])]);
+    const auto across = tri.find_halfedge(from, to);
+    if (!across.is_valid() || tri.is_boundary(across)) continue;
+    c.component[i] = FindRoot(parent, tri.face_handle(across).idx());
+  }
+  c.count.assign(tri.n_faces(), 0);
+  c.candidate.assign(loops.size(), 0);
+  for (size_t i = 0; i < loops.size(); ++i) {
+    if (c.component[i] < 0) continue;
+    c.candidate[i] = Perimeter(sm, loops[i]) > min_rim &&
+                     LeavingCosine(sm, loops[i]) >= kMinLeavingCosine;
+    c.count[c.component[i]] += c.candidate[i];
+  }
+  return c;
+}
+
+// The centroid and the least-squares plane's unit normal of a loop.
+std::pair<Eigen::Vector3d, Eigen::Vector3d> LoopPlane(const std::vector<Eigen::Vector3d>& p) {
+  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+  for (const auto& x : p) mean += x;
+  mean /= static_cast<double>(p.size());
+  Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
+  for (const auto& x : p) cov += (x - mean) * (x - mean).transpose();
+  return {mean, Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(cov).eigenvectors().col(0)};
+}
+
+// Whether the axis of loop `bore` (the normal of its plane through its
+// centroid) meets the plane of loop `outer` within 45° of square and inside
+// that loop (winding number of the loop round the meeting point, both
+// projected on the outer loop's plane); `run` is set to the distance along
+// the axis from the bore loop's centroid to that point.
+bool AxisMeetsInside(const std::vector<Eigen::Vector3d>& bore,
+                     const std::vector<Eigen::Vector3d>& outer, double* run) {
+  const auto [cb, ab] = LoopPlane(bore);
+  const auto [co, ao] = LoopPlane(outer);
+  const double cosine = ab.dot(ao);
+  if (!(std::abs(cosine) >= kMinLeavingCosine)) return false;
+  const double t = (co - cb).dot(ao) / cosine;
+  *run = std::abs(t);
+  const Eigen::Vector3d meet = cb + t * ab;
+  const Eigen::Vector3d u = ao.unitOrthogonal(), v = ao.cross(u);
+  double winding = 0.0;
+  for (size_t k = 0; k < outer.size(); ++k) {
+    const Eigen::Vector3d a = outer[k] - meet, b = outer[(k + 1) % outer.size()] - meet;
+    const Eigen::Vector2d pa(a.dot(u), a.dot(v)), pb(b.dot(u), b.dot(v));
+    winding += std::atan2(pa.x() * pb.y() - pa.y() * pb.x(), pa.dot(pb));
+  }
+  return std::abs(winding) > M_PI;
+}
+
+std::vector<Eigen::Vector3d> LoopPoints(const Sm& sm, Sm::Halfedge_index h) {
+  std::vector<Eigen::Vector3d> p;
+  for (const auto v : LoopOf(sm, h)) p.push_back(At(sm, v));
+  return p;
+}
+
+}  // namespace
+
 std::vector<std::pair<size_t, size_t>> TubeRims(const TriMesh& tri,
                                                 const std::vector<uint8_t>& removed,
                                                 const HoleMesh& sm,
@@ -245,15 +321,7 @@ std::vector<std::pair<size_t, size_t>> TubeRims(const TriMesh& tri,
                                                 double min_rim) {
   // Removed components, and the loops across which each meets the seen
   // surface.
-  std::vector<int> parent = FacePieces(tri, removed, 1);
-  std::vector<int> component(loops.size(), -1);
-  for (size_t i = 0; i < loops.size(); ++i) {
-    const auto from = tri.vertex_handle(tri_vertex[sm.source(loops[i])]);
-    const auto to = tri.vertex_handle(tri_vertex[sm.target(loops[i])]);
-    const auto across = tri.find_halfedge(from, to);
-    if (!across.is_valid() || tri.is_boundary(across)) continue;
-    component[i] = FindRoot(parent, tri.face_handle(across).idx());
-  }
+  const RimCandidates c = CandidatesOf(tri, removed, sm, tri_vertex, loops, min_rim);
   // The candidate rims of each component: loops (b) longer than the points
   // resolve as holes that (c) the seen surface leaves as a wall. A
   // component with exactly two joins them through the unseen region (a),
@@ -262,21 +330,52 @@ std::vector<std::pair<size_t, size_t>> TubeRims(const TriMesh& tri,
   // surface closes as a sheet, are holes in that sheet (the implicit
   // function dug under a seen face into the unseen region): each is closed
   // by its own disc on the sheet, and says nothing of the tube.
-  std::vector<int> rim_count(tri.n_faces(), 0);
-  std::vector<uint8_t> candidate(loops.size(), 0);
-  for (size_t i = 0; i < loops.size(); ++i) {
-    if (component[i] < 0) continue;
-    candidate[i] = Perimeter(sm, loops[i]) > min_rim &&
-                   LeavingCosine(sm, loops[i]) >= kMinLeavingCosine;
-    rim_count[component[i]] += candidate[i];
-  }
   std::vector<std::pair<size_t, size_t>> rims;
   for (size_t i = 0; i < loops.size(); ++i) {
-    const int c = component[i];
-    if (!candidate[i] || rim_count[c] != 2) continue;
+    if (!c.candidate[i] || c.count[c.component[i]] != 2) continue;
     for (size_t j = i + 1; j < loops.size(); ++j) {
-      if (component[j] == c && candidate[j]) rims.emplace_back(i, j);
+      if (c.component[j] == c.component[i] && c.candidate[j]) rims.emplace_back(i, j);
     }
+  }
+  return rims;
+}
+
+std::vector<std::pair<size_t, size_t>> LoneBoreRims(
+    const TriMesh& tri, const std::vector<uint8_t>& removed, const HoleMesh& sm,
+    const std::vector<int>& tri_vertex, const std::vector<HoleMesh::Halfedge_index>& loops,
+    double min_rim) {
+  const RimCandidates c = CandidatesOf(tri, removed, sm, tri_vertex, loops, min_rim);
+  std::vector<size_t> lone;
+  for (size_t i = 0; i < loops.size(); ++i) {
+    if (c.candidate[i] && c.count[c.component[i]] == 1) lone.push_back(i);
+  }
+  std::vector<std::vector<Eigen::Vector3d>> points;
+  std::vector<double> perimeter, curvature;
+  for (const size_t i : lone) {
+    points.push_back(LoopPoints(sm, loops[i]));
+    perimeter.push_back(Perimeter(sm, loops[i]));
+    curvature.push_back(std::abs(RimOf(sm, loops[i], 1.0).curvature));
+  }
+  // meets[a]: the lone rims (indices into `lone`) a's axis meets inside.
+  std::vector<std::vector<size_t>> meets(lone.size()), met_by(lone.size());
+  for (size_t a = 0; a < lone.size(); ++a) {
+    for (size_t b = 0; b < lone.size(); ++b) {
+      if (c.component[lone[a]] == c.component[lone[b]] || !(perimeter[a] < perimeter[b])) continue;
+      // A straight wall: bent as the rim reads it, it would turn by less
+      // than 45° (the square the leaving test allows) on its run to the
+      // face; one that turns more is a curved section running on into the
+      // unseen part (a round), not a bore.
+      double run = 0.0;
+      if (!AxisMeetsInside(points[a], points[b], &run)) continue;
+      if (!(curvature[a] * run < 0.25 * M_PI)) continue;
+      meets[a].push_back(b);
+      met_by[b].push_back(a);
+    }
+  }
+  std::vector<std::pair<size_t, size_t>> rims;
+  for (size_t a = 0; a < lone.size(); ++a) {
+    if (meets[a].size() != 1 || met_by[meets[a][0]].size() != 1) continue;
+    rims.emplace_back(lone[a], lone[meets[a][0]]);
   }
   return rims;
 }

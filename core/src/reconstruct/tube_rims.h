@@ -68,6 +68,28 @@ std::vector<std::pair<size_t, size_t>> TubeRims(const TriMesh& tri,
                                                 const std::vector<HoleMesh::Halfedge_index>& loops,
                                                 double min_rim);
 
+// Pairs (indices into `loops`) of lone rims, each the only candidate rim
+// ((b) and (c) of close_tube.h) of its removed component, where the shorter
+// one's axis (the normal of its plane) meets the longer one's plane within
+// 45° of square and inside it, the shorter one's wall is straight (bent as
+// the rim reads it, Rim::curvature, it would turn by less than 45° on its
+// run to that plane; a round's section turns on into the unseen part), and
+// neither meets nor is met by another lone rim so. The rims of a bore whose lower wall and the face it opens onto the
+// scan did not see are the bore's rim and the rim round that face: a
+// straight wall seen down to its rim continues until it meets the plane of
+// the unseen face (split_at_cap.h). Whether the support step leaves them in
+// one removed component or two depends on where the implicit function,
+// extrapolated through the unseen region, happens to change sign under the
+// bore's mouth (the planes of the balls grown under the part read the
+// mouth as solid on some coverings and not on others), which is no
+// evidence of a floor: none was seen. The caller joins them by the split
+// at the cap (split_at_cap.h), which refuses a pair with no cap square to
+// the bore beyond its rim. Arguments as for TubeRims.
+std::vector<std::pair<size_t, size_t>> LoneBoreRims(
+    const TriMesh& tri, const std::vector<uint8_t>& removed, const HoleMesh& sm,
+    const std::vector<int>& tri_vertex, const std::vector<HoleMesh::Halfedge_index>& loops,
+    double min_rim);
+
 }  // namespace meshseg::reconstruct_internal
 
 #endif  // MESHSEG_RECONSTRUCT_TUBE_RIMS_H_
