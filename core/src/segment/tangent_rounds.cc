@@ -72,7 +72,7 @@ std::vector<int> FitRoundsTangentToPlanes(const SegmentContext& c, const std::ve
     std::vector<Eigen::Vector3d> points, normals;
     const int ids[] = {id};
     const std::vector<int> interior = InteriorVertices(c, labels, ids, r.vertices);
-    for (const int v : Sample(FittingVertices(c, r.surface, interior))) {
+    for (const int v : Sample(MeasuredVertices(c, FittingVertices(c, r.surface, interior)))) {
       points.push_back(c.position(v));
       normals.push_back(c.normal(v));
     }
