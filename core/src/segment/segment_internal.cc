@@ -110,6 +110,13 @@ FitResult FitType(const SegmentContext& c, SurfaceType type, std::span<const int
 
 double FitFraction(const SegmentContext& c, const Surface& surface, std::span<const int> vertices,
                    const Tolerance& tol) {
+  // The alpha test asks how much of the evidence the surface explains: the
+  // measured vertices (FitType).
+  std::vector<int> measured;
+  if (!c.measured.empty()) {
+    measured = MeasuredVertices(c, vertices);
+    if (!measured.empty()) vertices = measured;
+  }
   const std::vector<int> sample = Sample(vertices);
   if (sample.empty()) return 0.0;
   std::size_t fit = 0;

@@ -81,8 +81,29 @@ TEST(UnmeasuredVertex, IsNotFitted) {
   const FitResult fit = FitType(s.c, SurfaceType::kPlane, all);
   ASSERT_TRUE(fit.ok());
   for (const int v : all) {
-    if (s.c.Measured(v)) EXPECT_NEAR(SignedDistance(fit.surface, s.c.position(v)), 0.0, 1e-9);
+    if (!s.c.Measured(v)) continue;
+    EXPECT_NEAR(SignedDistance(fit.surface, s.c.position(v)), 0.0, 1e-9);
   }
+}
+
+// The alpha test is on the evidence: a plane region whose patch bulges off
+// it, the patch unmeasured, passes it as if the patch were not there.
+TEST(UnmeasuredVertex, IsNotCountedByTheAlphaTest) {
+  Sheet s;
+  BuildFlatSide(&s);
+  const std::vector<int> patch = MiddleOfFlatSide(s);
+  for (const int v : patch) {
+    const double x = s.c.position(v).x() / 5.0;
+    s.c.graph.positions[v].y() += 3.0 * (1.0 - x * x);
+  }
+  std::vector<int> all(s.c.vertex_count());
+  for (int v = 0; v < s.c.vertex_count(); ++v) all[v] = v;
+  const Surface side = Plane{.point = Eigen::Vector3d::Zero(), .normal = Eigen::Vector3d::UnitY()};
+  // Measured, the bulge's vertices beyond th_dis fail it (the premise).
+  EXPECT_LT(FitFraction(s.c, side, all, s.c.tolerance), 0.9);
+  s.c.measured.assign(s.c.vertex_count(), 1);
+  for (const int v : patch) s.c.measured[v] = 0;
+  EXPECT_EQ(FitFraction(s.c, side, all, s.c.tolerance), 1.0);
 }
 
 // `name` at 0.05 h (draw 7) with a bulge on its largest plane: the
