@@ -110,7 +110,8 @@ std::vector<int> Sample(std::span<const int> vertices, std::size_t max_count = k
 // all there is.)
 FitResult FitType(const SegmentContext& c, SurfaceType type, std::span<const int> vertices);
 
-// Fraction of `vertices` (sub-sampled) that meet (5) and (6) for `surface`.
+// Fraction of the measured ones of `vertices` (sub-sampled; all of them if
+// none is measured) that meet (5) and (6) for `surface`.
 double FitFraction(const SegmentContext& c, const Surface& surface, std::span<const int> vertices,
                    const Tolerance& tol);
 
