@@ -85,6 +85,14 @@ struct SegmentParams {
   // sagitta, so no type fits them at the noise; the curved types are told
   // apart by how closely they fit all of a region's vertices instead.
   bool on_facets = false;
+  // One flag per mesh vertex: 1 if the vertex is measured, 0 if it lies on
+  // an area no input point supports (a patch a reconstruction closed, all
+  // of whose faces Reconstruction::is_filled flags). Such a vertex is no
+  // evidence of any surface: it costs nothing under any label, no surface
+  // is fitted to it, no label is counted on it and no seed is made on it; it
+  // still takes a label, its neighbours' (the boundary term). Empty: every
+  // vertex is measured (a mesh as read).
+  std::vector<uint8_t> measured;
 };
 
 struct Region {

@@ -27,6 +27,24 @@ namespace {
 // the input, may belong next door.
 constexpr double kExactCorner = 1e-4;
 
+// SegmentParams::measured of a reconstruction: a vertex is measured iff one
+// of its faces is not a filled one (Reconstruction::is_filled), i.e. input
+// points support some face at it; a vertex all of whose faces close an
+// unscanned area lies where the patch's fairing put it. Empty (every vertex
+// measured) when no face is filled.
+std::vector<uint8_t> MeasuredMask(const TriMesh& mesh, std::span<const uint8_t> is_filled) {
+  if (is_filled.size() != mesh.n_faces() ||
+      std::none_of(is_filled.begin(), is_filled.end(), [](uint8_t f) { return f != 0; })) {
+    return {};
+  }
+  std::vector<uint8_t> measured(mesh.n_vertices(), 0);
+  for (const auto fh : mesh.faces()) {
+    if (is_filled[fh.idx()]) continue;
+    for (auto it = mesh.cfv_iter(fh); it.is_valid(); ++it) measured[it->idx()] = 1;
+  }
+  return measured;
+}
+
 // Each region of `result` a surface of its own (the remeshed path does not
 // join them).
 void OwnSurfaces(PipelineResult* result) {
@@ -205,6 +223,7 @@ absl::StatusOr<std::vector<int>> SegmentReconstruction(const Reconstruction& rec
                            EstimateCurvature(mesh, params.curvature, ctx));
   SegmentParams segment = params.segment;
   segment.exact = ExactMode::kNever;
+  segment.measured = MeasuredMask(mesh.tri, reconstruction.is_filled);
   MESHSEG_ASSIGN_OR_RETURN(
       Segmentation segmentation,
       Segment(mesh, curvature, result->mesh.mean_edge_length, segment, ctx));

@@ -55,7 +55,10 @@ absl::StatusOr<std::vector<int>> SegmentBinary(const Mesh& mesh, const BinaryVer
 // the regions' surfaces refitted to the input points (the data; the mesh's
 // vertices round creases over a spacing and the faces that close unscanned
 // areas carry none), and labels every point (PointLabelsBySurface) before
-// the boundaries and features are extracted from those surfaces.
+// the boundaries and features are extracted from those surfaces. The
+// vertices of those closing patches are segmented as unmeasured
+// (SegmentParams::measured): they take their neighbours' labels but
+// neither propose nor pay for one.
 absl::StatusOr<std::vector<int>> SegmentReconstruction(const Reconstruction& reconstruction,
                                                        const PointCloud& cloud,
                                                        const PipelineParams& params,

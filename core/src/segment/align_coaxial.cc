@@ -37,7 +37,7 @@ std::optional<Member> MakeMember(const SegmentContext& c, const RegionState& r) 
   if (!axis) return std::nullopt;
   Member m;
   m.type = r.type;
-  for (const int v : Sample(FittingVertices(c, r.surface, r.vertices))) {
+  for (const int v : Sample(MeasuredVertices(c, FittingVertices(c, r.surface, r.vertices)))) {
     m.points.push_back(c.position(v));
   }
   if (m.points.size() < 6) return std::nullopt;
@@ -232,7 +232,8 @@ int MergeCoaxialCylinders(const SegmentContext& c, const std::vector<std::vector
       if (!grew) continue;
       // The radius of least squares about the shared axis.
       Cylinder& merged = std::get<Cylinder>((*regions)[into].surface);
-      const std::vector<int> fitting = FittingVertices(c, merged, (*regions)[into].vertices);
+      const std::vector<int> fitting =
+          MeasuredVertices(c, FittingVertices(c, merged, (*regions)[into].vertices));
       if (fitting.empty()) continue;
       double sum = 0.0;
       for (const int v : fitting) {

@@ -171,8 +171,11 @@ Expansion Expand(const SegmentContext& c, const std::vector<int>& labels,
     const int v = band[k];
     const int lv = labels[v];
     change += data_change[k];
-    ++size_change[alpha];
-    if (lv >= 0) --size_change[lv];
+    // Label costs count measured vertices only (energy.h).
+    if (c.Measured(v)) {
+      ++size_change[alpha];
+      if (lv >= 0) --size_change[lv];
+    }
     for (const int u : c.graph.Neighbors(v)) {
       const int lu = labels[u];
       const int j = lu == alpha ? -1 : bands->Node(u);
@@ -185,7 +188,7 @@ Expansion Expand(const SegmentContext& c, const std::vector<int>& labels,
   }
   out.smooth_data_delta = change;
   for (const auto& [r, dn] : size_change) {
-    const long size = static_cast<long>(regions[r].vertices.size());
+    const long size = static_cast<long>(MeasuredCount(c, regions[r].vertices));
     change += LabelCost(c, regions[r], static_cast<std::size_t>(size + dn)) -
               LabelCost(c, regions[r], static_cast<std::size_t>(size));
   }

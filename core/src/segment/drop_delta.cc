@@ -194,7 +194,7 @@ DropMove DropDelta(const SegmentContext& c, const std::vector<int>& labels,
       const PricedFit fit = PriceFit(c, taker.type, grown, /*stop=*/cost);
       if (fit.surface && fit.cost < cost) cost = fit.cost, surface = *fit.surface;
     }
-    delta += cost - own + LabelCost(c, taker, grown.size()) - LabelCost(c, taker);
+    delta += cost - own + LabelCost(c, taker, MeasuredCount(c, grown)) - LabelCost(c, taker);
     move.surfaces.push_back(surface);
   }
 

@@ -24,6 +24,7 @@ double AreaWeight(const SegmentContext& c, int v) {
 
 // D_v for vertex v at signed distance `distance` from its surface.
 double CostAtDistance(const SegmentContext& c, int v, double distance) {
+  if (!c.Measured(v)) return 0.0;
   const double d = distance / c.tolerance.distance;
   const double scaled = kToleranceSigmas * kToleranceSigmas * d * d;
   return 0.5 * AreaWeight(c, v) * std::min(std::isfinite(scaled) ? scaled : kOutlierMismatch,
@@ -88,6 +89,7 @@ double VertexCost(const SegmentContext& c, int v, const SurfaceDistance& distanc
 }
 
 double OutlierCost(const SegmentContext& c, int v) {
+  if (!c.Measured(v)) return 0.0;
   return 0.5 * AreaWeight(c, v) * kOutlierMismatch;
 }
 
@@ -113,20 +115,20 @@ double LabelCost(SurfaceType type, std::size_t vertex_count, double f) {
   return LabelCostOf(ParameterCount(type), vertex_count, f);
 }
 
-double LabelCost(const SegmentContext& c, SurfaceType type, std::size_t vertex_count) {
-  return LabelCost(type, vertex_count, c.evidence_share);
+double LabelCost(const SegmentContext& c, SurfaceType type, std::size_t measured_count) {
+  return LabelCost(type, measured_count, c.evidence_share);
 }
 
 int FreeParameters(const RegionState& r) {
   return ParameterCount(r.type) - r.shared_parameters;
 }
 
-double LabelCost(const SegmentContext& c, const RegionState& r, std::size_t vertex_count) {
-  return LabelCostOf(FreeParameters(r), vertex_count, c.evidence_share);
+double LabelCost(const SegmentContext& c, const RegionState& r, std::size_t measured_count) {
+  return LabelCostOf(FreeParameters(r), measured_count, c.evidence_share);
 }
 
 double LabelCost(const SegmentContext& c, const RegionState& r) {
-  return LabelCost(c, r, r.vertices.size());
+  return LabelCost(c, r, MeasuredCount(c, r.vertices));
 }
 
 double ExactFacetCost(const FacetMesh& fm, int f, const Surface& surface, double tau) {
@@ -205,7 +207,8 @@ std::pair<RegionState, double> ReestimatedWithCost(const SegmentContext& c, cons
   const PricedFit fit = PriceFit(c, r.type, r.vertices);
   const double cost = DataCost(c, r.surface, r.vertices);
   // The label cost the free refit adds (0 for a surface fitted free).
-  const double freed = LabelCost(c, r.type, r.vertices.size()) - LabelCost(c, r);
+  const std::size_t measured = MeasuredCount(c, r.vertices);
+  const double freed = LabelCost(c, r.type, measured) - LabelCost(c, r, measured);
   if (fit.surface && fit.cost + freed < cost) {
     out.surface = *fit.surface;
     out.shared_parameters = 0;
@@ -282,8 +285,9 @@ std::optional<Move> PriceMerge(const SegmentContext& c, const std::vector<int>& 
                                      x_smaller ? b : a) +
                         LabelCost(c, x) + LabelCost(c, y);
   std::optional<Move> best;
+  const std::size_t measured = MeasuredCount(c, both);
   for (const SurfaceType type : types) {
-    const double label = LabelCost(c, type, both.size());
+    const double label = LabelCost(c, type, measured);
     // A cost at or above this makes the move no better than `below` or the
     // best so far (with a margin far above the rounding of the sums).
     const double worth = best ? std::min(below, best->delta) : below;
@@ -319,7 +323,7 @@ std::optional<Move> RetypeDelta(const SegmentContext& c, const RegionState& r, S
   const PricedFit fit = PriceFit(c, type, r.vertices);
   if (!fit.surface) return std::nullopt;
   const double before = DataCost(c, r.surface, r.vertices) + LabelCost(c, r);
-  return Move{.delta = fit.cost + LabelCost(c, type, r.vertices.size()) - before,
+  return Move{.delta = fit.cost + LabelCost(c, type, MeasuredCount(c, r.vertices)) - before,
               .type = type,
               .surface = *fit.surface};
 }

@@ -68,6 +68,14 @@
 // cost falls by more than the s_r parameters it adds to the label, the BIC
 // of a nested model; the shared surface is not refitted on its own.
 //
+// Measured vertices. A vertex of a patch that closes an area no input point
+// supports (SegmentParams::measured) lies where the patch's fairing put it:
+// it is no evidence of any surface, so it neither pays nor proposes. D_v is
+// 0 for it under every label (-1 too), n_r counts measured vertices only,
+// surfaces are fitted to measured vertices (FitType), f is measured on them
+// (EvidenceShare) and no seed is made on them (seeds.h). It still takes a
+// label: the boundary term gives it its neighbours'.
+//
 // Correlated residuals. The data term and the BIC count every vertex as an
 // independent sample of the noise. Where the residuals are correlated
 // along the surface they are not: on a surface from binary voxels
@@ -188,17 +196,18 @@ double VertexCost(const SegmentContext& c, int v, const SurfaceDistance& distanc
 double OutlierCost(const SegmentContext& c, int v);
 // sum of D_v(S) over `vertices`.
 double DataCost(const SegmentContext& c, const Surface& surface, std::span<const int> vertices);
-// (p_T / (2 f)) ln (f n), f = c.evidence_share (0 for f n <= 1).
-double LabelCost(const SegmentContext& c, SurfaceType type, std::size_t vertex_count);
+// (p_T / (2 f)) ln (f n), f = c.evidence_share (0 for f n <= 1), n the
+// region's measured vertices (MeasuredCount).
+double LabelCost(const SegmentContext& c, SurfaceType type, std::size_t measured_count);
 // The same for evidence share `f` (0 < f <= 1), without a mesh.
 double LabelCost(SurfaceType type, std::size_t vertex_count, double f);
 // p_r = p_T - s_r: the parameters of region `r`'s surface estimated from
 // its own vertices ("Shared parameters" above).
 int FreeParameters(const RegionState& r);
-// (p_r / (2 f)) ln (f n) of region `r` on `vertex_count` vertices (its
-// own by default).
+// (p_r / (2 f)) ln (f n) of region `r` on `measured_count` measured
+// vertices (its own by default).
 double LabelCost(const SegmentContext& c, const RegionState& r);
-double LabelCost(const SegmentContext& c, const RegionState& r, std::size_t vertex_count);
+double LabelCost(const SegmentContext& c, const RegionState& r, std::size_t measured_count);
 
 // E with exact vertices (above). D_f(S): 0 if facet f of `fm` lies on
 // `surface` within `tau` (FacetOnSurface), else infinity.

@@ -14,7 +14,7 @@ double EvidenceShare(const SegmentContext& c, const std::vector<int>& labels,
                      const std::vector<RegionState>& regions) {
   std::vector<int> labelled;
   for (int v = 0; v < c.vertex_count(); ++v) {
-    if (labels[v] >= 0 && !c.curvature->sharp[v]) labelled.push_back(v);
+    if (labels[v] >= 0 && !c.curvature->sharp[v] && c.Measured(v)) labelled.push_back(v);
   }
   // The residual of v on its region's surface; nullopt off the surface.
   auto residual = [&](int v) -> std::optional<double> {
@@ -30,7 +30,7 @@ double EvidenceShare(const SegmentContext& c, const std::vector<int>& labels,
     const std::optional<double> dv = residual(v);
     if (!dv) continue;
     for (const int u : c.graph.Neighbors(v)) {
-      if (labels[u] != labels[v] || c.curvature->sharp[u]) continue;
+      if (labels[u] != labels[v] || c.curvature->sharp[u] || !c.Measured(u)) continue;
       const std::optional<double> du = residual(u);
       if (!du) continue;
       products += *dv * *du;

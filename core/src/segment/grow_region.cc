@@ -94,6 +94,12 @@ std::vector<int> FreeNeighbors(const SegmentContext& c, const std::vector<int>& 
 
 bool HeightModel::Refit(const SegmentContext& c, std::span<const int> vertices) {
   if (vertices.empty()) return false;
+  // Fitted to the measured vertices, as FitType is.
+  std::vector<int> measured;
+  if (!c.measured.empty()) {
+    measured = MeasuredVertices(c, vertices);
+    if (!measured.empty()) vertices = measured;
+  }
   const std::vector<int> sample = Sample(vertices);
   Eigen::Vector3d normal = Eigen::Vector3d::Zero();
   std::vector<Eigen::Vector3d> points;

@@ -42,10 +42,10 @@ bool OnItsAxis(const Surface& band, const Surface& face) {
 FitResult CoaxialCone(const SegmentContext& c, const RegionState& face,
                       const std::vector<int>& interior) {
   std::vector<Eigen::Vector3d> face_points, band_points;
-  for (const int v : Sample(FittingVertices(c, face.surface, face.vertices))) {
+  for (const int v : Sample(MeasuredVertices(c, FittingVertices(c, face.surface, face.vertices)))) {
     face_points.push_back(c.position(v));
   }
-  for (const int v : interior) band_points.push_back(c.position(v));
+  for (const int v : MeasuredVertices(c, interior)) band_points.push_back(c.position(v));
   const AxisLine axis = *AxisOf(face.surface);
   const CoaxialMember members[] = {
       {face.type, {.points = face_points, .normals = {}, .weights = {}}},
@@ -62,7 +62,7 @@ std::optional<RegionState> SphereOnConeAxis(const SegmentContext& c, const Regio
   const Eigen::Vector3d d = axis->axis_direction.normalized();
   Eigen::Matrix2d a = Eigen::Matrix2d::Zero();
   Eigen::Vector2d b = Eigen::Vector2d::Zero();
-  for (const int v : Sample(r.vertices)) {
+  for (const int v : Sample(MeasuredVertices(c, r.vertices))) {
     const Eigen::Vector3d u = c.position(v) - axis->apex;
     const Eigen::Vector2d row(2.0 * u.dot(d), 1.0);
     a += row * row.transpose();

@@ -67,6 +67,7 @@ ArcSets SortByPosition(const SegmentContext& c, const std::vector<RegionState>& 
   ArcSets sets;
   for (const int id : ids) {
     for (const int v : regions[id].vertices) {
+      if (!c.Measured(v)) continue;  // a closing patch says nothing of the arc
       const Eigen::Vector3d d = c.position(v) - f.centre;
       const double along = d.dot(f.axis);
       const Eigen::Vector3d q = d - along * f.axis;

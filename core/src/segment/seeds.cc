@@ -42,7 +42,7 @@ std::vector<int> SeedOrder(const SegmentContext& c) {
   std::vector<std::pair<double, int>> keyed;
   keyed.reserve(n);
   for (int i = 0; i < n; ++i) {
-    if (!k.sharp[i]) keyed.emplace_back(d[i], i);
+    if (!k.sharp[i] && c.Measured(i)) keyed.emplace_back(d[i], i);
   }
   tbb::parallel_sort(keyed.begin(), keyed.end());
   std::vector<int> order(keyed.size());
@@ -55,7 +55,7 @@ std::vector<int> CollectSeed(const SegmentContext& c, int i, const std::vector<i
   std::vector<int> ids;
   CollectNeighborhood(c.graph, i, kW4 * c.curvature->mean_edge_length[i], c.curvature->sharp,
                       scratch, &ids);
-  std::erase_if(ids, [&](int v) { return labels[v] != -1; });
+  std::erase_if(ids, [&](int v) { return labels[v] != -1 || !c.Measured(v); });
   if (ids.size() < kMinSeed) ids.clear();
   return ids;
 }

@@ -14,11 +14,15 @@ inline constexpr double kW3 = 3.0;      // ALGORITHMS.md S1 step 2.1
 inline constexpr double kW4 = 3.0;      // ALGORITHMS.md S1 step 2.1
 inline constexpr std::size_t kMinSeed = 10;  // th_seed, ALGORITHMS.md S1 step 2.1
 
-// Returns the non-sharp vertices by increasing d(i) (ties by index).
+// Returns the non-sharp measured vertices by increasing d(i) (ties by
+// index). A seed is evidence of the surface it proposes: one centred on a
+// patch that closes an unscanned area (SegmentContext::Measured) proposes
+// the patch's fairing, and one on its rim, mostly patch vertices, a quadric
+// that grows over whole faces of the part.
 std::vector<int> SeedOrder(const SegmentContext& c);
 
-// Returns the free (labels == -1) non-sharp vertices of N(i, W4), or an
-// empty vector if fewer than kMinSeed.
+// Returns the free (labels == -1) non-sharp measured vertices of N(i, W4),
+// or an empty vector if fewer than kMinSeed.
 std::vector<int> CollectSeed(const SegmentContext& c, int i, const std::vector<int>& labels,
                              NeighborhoodScratch* scratch);
 

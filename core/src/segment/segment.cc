@@ -184,6 +184,11 @@ absl::StatusOr<Segmentation> SegmentWithEdgeLength(const Mesh& mesh,
   if (mesh.tri.n_faces() == 0) {
     return absl::InvalidArgumentError(absl::StrCat("segment: \"", mesh.name, "\" has no faces"));
   }
+  if (!params.measured.empty() && params.measured.size() != mesh.tri.n_vertices()) {
+    return absl::InvalidArgumentError(absl::StrCat(
+        "segment: measured mask has ", params.measured.size(), " vertices, mesh \"", mesh.name,
+        "\" has ", mesh.tri.n_vertices()));
+  }
   if (curvature.sharp.size() != mesh.tri.n_vertices()) {
     return absl::InvalidArgumentError(absl::StrCat(
         "segment: curvature field has ", curvature.sharp.size(), " vertices, mesh \"", mesh.name,
@@ -204,6 +209,7 @@ absl::StatusOr<Segmentation> SegmentWithEdgeLength(const Mesh& mesh,
       curvature, mean_edge_length ? *mean_edge_length : MeanEdgeLength(mesh.tri), params);
   SegmentContext c = MakeSegmentContext(mesh.tri, curvature, estimates, params.alpha, ctx);
   c.on_facets = params.on_facets;
+  c.measured = params.measured;
 
   std::vector<int> labels(c.vertex_count(), -1);
   std::vector<RegionState> regions;

@@ -67,7 +67,27 @@ std::vector<int> Sample(std::span<const int> vertices, std::size_t max_count) {
   return out;
 }
 
+std::size_t MeasuredCount(const SegmentContext& c, std::span<const int> vertices) {
+  if (c.measured.empty()) return vertices.size();
+  return static_cast<std::size_t>(
+      std::count_if(vertices.begin(), vertices.end(), [&](int v) { return c.measured[v] != 0; }));
+}
+
+std::vector<int> MeasuredVertices(const SegmentContext& c, std::span<const int> vertices) {
+  std::vector<int> out;
+  out.reserve(vertices.size());
+  for (const int v : vertices) {
+    if (c.Measured(v)) out.push_back(v);
+  }
+  return out;
+}
+
 FitResult FitType(const SegmentContext& c, SurfaceType type, std::span<const int> vertices) {
+  std::vector<int> measured;
+  if (!c.measured.empty()) {
+    measured = MeasuredVertices(c, vertices);
+    if (!measured.empty()) vertices = measured;
+  }
   const std::vector<int> sample = Sample(vertices);
   std::vector<Eigen::Vector3d> points;
   std::vector<Eigen::Vector3d> normals;
@@ -90,6 +110,13 @@ FitResult FitType(const SegmentContext& c, SurfaceType type, std::span<const int
 
 double FitFraction(const SegmentContext& c, const Surface& surface, std::span<const int> vertices,
                    const Tolerance& tol) {
+  // The alpha test asks how much of the evidence the surface explains: the
+  // measured vertices (FitType).
+  std::vector<int> measured;
+  if (!c.measured.empty()) {
+    measured = MeasuredVertices(c, vertices);
+    if (!measured.empty()) vertices = measured;
+  }
   const std::vector<int> sample = Sample(vertices);
   if (sample.empty()) return 0.0;
   std::size_t fit = 0;

@@ -59,9 +59,14 @@ struct SegmentContext {
   double alpha = 0.9;                         // ALGORITHMS.md S1 step 2.3
   bool on_facets = false;                     // SegmentParams::on_facets
   double evidence_share = 1.0;                // n_eff / n of the residuals (energy.h)
+  // SegmentParams::measured: per vertex, 0 where no input point supports it
+  // (empty: all measured).
+  std::vector<uint8_t> measured;
   const RunContext* run = nullptr;
 
   int vertex_count() const { return graph.vertex_count(); }
+  // True if vertex v is evidence of its surface (SegmentParams::measured).
+  bool Measured(int v) const { return measured.empty() || measured[v] != 0; }
   const Eigen::Vector3d& position(int v) const { return graph.positions[v]; }
   const Eigen::Vector3d& normal(int v) const { return curvature->smooth_normal[v]; }
 };
@@ -88,14 +93,25 @@ inline bool Fits(const SegmentContext& c, int v, const Projection& pr, const Tol
 // are sub-sampled with a fixed stride (deterministic).
 constexpr std::size_t kMaxSample = 3000;
 
+// How many of `vertices` are measured (SegmentContext::Measured).
+std::size_t MeasuredCount(const SegmentContext& c, std::span<const int> vertices);
+
+// The measured vertices of `vertices`, in order (all of them when every
+// vertex is measured).
+std::vector<int> MeasuredVertices(const SegmentContext& c, std::span<const int> vertices);
+
 // Every k-th vertex of `vertices` so that at most kMaxSample remain.
 std::vector<int> Sample(std::span<const int> vertices, std::size_t max_count = kMaxSample);
 
-// Fits a surface of `type` to `vertices` (sub-sampled) with smoothed normals
-// and area weights.
+// Fits a surface of `type` to the measured ones of `vertices` (sub-sampled)
+// with smoothed normals and area weights: a vertex on a patch that closes an
+// unscanned area lies where the patch's fairing put it, not on a surface.
+// (Where none of them is measured, to all of them: the patch's own shape is
+// all there is.)
 FitResult FitType(const SegmentContext& c, SurfaceType type, std::span<const int> vertices);
 
-// Fraction of `vertices` (sub-sampled) that meet (5) and (6) for `surface`.
+// Fraction of the measured ones of `vertices` (sub-sampled; all of them if
+// none is measured) that meet (5) and (6) for `surface`.
 double FitFraction(const SegmentContext& c, const Surface& surface, std::span<const int> vertices,
                    const Tolerance& tol);
 

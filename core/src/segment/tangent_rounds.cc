@@ -109,8 +109,8 @@ std::vector<int> FitRoundsTangentToPlanes(const SegmentContext& c, const std::ve
         PlanesAlong(c, labels, *regions, id, own->axis_direction.normalized());
     if (planes.size() < 2) continue;
     const int ids[] = {id};
-    const std::vector<int> fitting =
-        FittingVertices(c, r.surface, InteriorVertices(c, labels, ids, r.vertices));
+    const std::vector<int> fitting = MeasuredVertices(
+        c, FittingVertices(c, r.surface, InteriorVertices(c, labels, ids, r.vertices)));
     std::vector<Eigen::Vector3d> points;
     for (const int v : Sample(fitting)) points.push_back(c.position(v));
     if (points.size() < 6) continue;
