@@ -284,4 +284,14 @@ absl::StatusOr<int> ExpandRegions(const SegmentContext& c, std::vector<int>* lab
   return moved;
 }
 
+absl::StatusOr<Placed> PlacedByExpansion(const SegmentContext& c, const std::vector<int>& labels,
+                                         const std::vector<RegionState>& regions, int id,
+                                         RegionState state) {
+  Placed placed{.labels = labels, .regions = regions};
+  placed.regions[id] = std::move(state);
+  MESHSEG_RETURN_IF_ERROR(ExpandRegions(c, &placed.labels, &placed.regions).status());
+  placed.energy = TotalEnergy(c, placed.labels, placed.regions);
+  return placed;
+}
+
 }  // namespace meshseg::segment_internal

@@ -63,6 +63,21 @@ Expansion ExpandRegion(const SegmentContext& c, const std::vector<int>& labels,
 absl::StatusOr<int> ExpandRegions(const SegmentContext& c, std::vector<int>* labels,
                                   std::vector<RegionState>* regions, int rings = kBandRings);
 
+// A labelling, its regions and their E.
+struct Placed {
+  std::vector<int> labels;
+  std::vector<RegionState> regions;
+  double energy = 0.0;
+};
+
+// A move priced with the expansion it enables (PEARL compares models from
+// labellings placed for each): on copies, region `id` set to `state`, then
+// ExpandRegions, and E of what that leaves. The caller keeps it iff its
+// energy is below E as it stands. Errors: as ExpandRegions.
+absl::StatusOr<Placed> PlacedByExpansion(const SegmentContext& c, const std::vector<int>& labels,
+                                         const std::vector<RegionState>& regions, int id,
+                                         RegionState state);
+
 }  // namespace meshseg::segment_internal
 
 #endif  // MESHSEG_SRC_SEGMENT_ALPHA_EXPANSION_H_

@@ -81,17 +81,16 @@ absl::StatusOr<std::vector<int>> RefitToInterior(const SegmentContext& c,
   for (const InteriorSurface& p : proposals) {
     // An earlier accepted proposal's expansion may have emptied this region.
     if (!(*regions)[p.id].alive || (*regions)[p.id].vertices.empty()) continue;
-    // On copies: the surface, then the expansion with re-estimation.
-    std::vector<int> next_labels = *labels;
-    std::vector<RegionState> next = *regions;
-    next[p.id].surface = p.surface;
-    next[p.id].shared_parameters = 0;  // fitted free
-    MESHSEG_RETURN_IF_ERROR(ExpandRegions(c, &next_labels, &next).status());
-    const double next_energy = TotalEnergy(c, next_labels, next);
-    if (!(next_energy < energy)) continue;
-    *labels = std::move(next_labels);
-    *regions = std::move(next);
-    energy = next_energy;
+    // The surface, then the expansion with re-estimation.
+    RegionState r = (*regions)[p.id];
+    r.surface = p.surface;
+    r.shared_parameters = 0;  // fitted free
+    MESHSEG_ASSIGN_OR_RETURN(Placed next,
+                             PlacedByExpansion(c, *labels, *regions, p.id, std::move(r)));
+    if (!(next.energy < energy)) continue;
+    *labels = std::move(next.labels);
+    *regions = std::move(next.regions);
+    energy = next.energy;
     refitted.push_back(p.id);
   }
   return refitted;

@@ -277,20 +277,17 @@ absl::StatusOr<std::vector<int>> RetypeByInterior(const SegmentContext& c,
   for (const InteriorRetype& p : proposals) {
     // An earlier accepted proposal's expansion may have emptied this region.
     if (!(*regions)[p.id].alive || (*regions)[p.id].vertices.empty()) continue;
-    // On copies: the retype, re-estimated, then the expansion.
-    std::vector<int> next_labels = *labels;
-    std::vector<RegionState> next = *regions;
-    RegionState& r = next[p.id];
+    // The retype, re-estimated, then the expansion.
+    RegionState r = (*regions)[p.id];
     r.type = p.type;
     r.surface = p.surface;
     r.shared_parameters = p.shared_parameters;
-    r = Reestimated(c, r);
-    MESHSEG_RETURN_IF_ERROR(ExpandRegions(c, &next_labels, &next).status());
-    const double next_energy = TotalEnergy(c, next_labels, next);
-    if (!(next_energy < energy)) continue;
-    *labels = std::move(next_labels);
-    *regions = std::move(next);
-    energy = next_energy;
+    MESHSEG_ASSIGN_OR_RETURN(Placed next,
+                             PlacedByExpansion(c, *labels, *regions, p.id, Reestimated(c, r)));
+    if (!(next.energy < energy)) continue;
+    *labels = std::move(next.labels);
+    *regions = std::move(next.regions);
+    energy = next.energy;
     retyped.push_back(p.id);
   }
   return retyped;

@@ -162,23 +162,18 @@ absl::StatusOr<std::vector<int>> PlaceCoaxialBands(const SegmentContext& c,
         models.push_back(std::move(*sphere));
       }
     }
-    // Each on copies, re-estimated, with the expansion it enables.
-    std::optional<std::pair<std::vector<int>, std::vector<RegionState>>> kept;
-    double kept_energy = energy;
+    // Each re-estimated, with the expansion it enables; the lower kept.
+    std::optional<Placed> kept;
     for (const RegionState& model : models) {
-      std::vector<int> next_labels = *labels;
-      std::vector<RegionState> next = *regions;
-      next[id] = Reestimated(c, model);
-      MESHSEG_RETURN_IF_ERROR(ExpandRegions(c, &next_labels, &next).status());
-      const double next_energy = TotalEnergy(c, next_labels, next);
-      if (!(next_energy < kept_energy)) continue;
-      kept_energy = next_energy;
-      kept.emplace(std::move(next_labels), std::move(next));
+      MESHSEG_ASSIGN_OR_RETURN(Placed next,
+                               PlacedByExpansion(c, *labels, *regions, id, Reestimated(c, model)));
+      if (!(next.energy < (kept ? kept->energy : energy))) continue;
+      kept = std::move(next);
     }
     if (!kept) continue;
-    *labels = std::move(kept->first);
-    *regions = std::move(kept->second);
-    energy = kept_energy;
+    *labels = std::move(kept->labels);
+    *regions = std::move(kept->regions);
+    energy = kept->energy;
     moved.push_back(id);
   }
   return moved;
