@@ -35,6 +35,15 @@ std::vector<int> MiddleOfFlatSide(const Sheet& s) {
   return patch;
 }
 
+// Raises `patch` off the side by up to 3 (a parabola over |x| < 5), as a
+// faired closing patch may bulge.
+void Bulge(Sheet* s, const std::vector<int>& patch) {
+  for (const int v : patch) {
+    const double x = s->c.position(v).x() / 5.0;
+    s->c.graph.positions[v].y() += 3.0 * (1.0 - x * x);
+  }
+}
+
 TEST(UnmeasuredVertex, CostsNothingUnderEveryLabel) {
   Sheet s;
   BuildFlatSide(&s);
@@ -64,11 +73,7 @@ TEST(UnmeasuredVertex, IsNotFitted) {
   Sheet s;
   BuildFlatSide(&s);
   const std::vector<int> patch = MiddleOfFlatSide(s);
-  // The patch bulges 3 out of the side, as a faired closing patch may.
-  for (const int v : patch) {
-    const double x = s.c.position(v).x() / 5.0;
-    s.c.graph.positions[v].y() += 3.0 * (1.0 - x * x);
-  }
+  Bulge(&s, patch);
   std::vector<int> all(s.c.vertex_count());
   for (int v = 0; v < s.c.vertex_count(); ++v) all[v] = v;
   // Measured, the bulge pulls the plane off the side (the premise).
@@ -92,10 +97,7 @@ TEST(UnmeasuredVertex, IsNotCountedByTheAlphaTest) {
   Sheet s;
   BuildFlatSide(&s);
   const std::vector<int> patch = MiddleOfFlatSide(s);
-  for (const int v : patch) {
-    const double x = s.c.position(v).x() / 5.0;
-    s.c.graph.positions[v].y() += 3.0 * (1.0 - x * x);
-  }
+  Bulge(&s, patch);
   std::vector<int> all(s.c.vertex_count());
   for (int v = 0; v < s.c.vertex_count(); ++v) all[v] = v;
   const Surface side = Plane{.point = Eigen::Vector3d::Zero(), .normal = Eigen::Vector3d::UnitY()};
