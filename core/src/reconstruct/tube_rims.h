@@ -74,8 +74,9 @@ std::vector<std::pair<size_t, size_t>> TubeRims(const TriMesh& tri,
 // 45° of square and inside it, the shorter one's wall is straight (bent as
 // the rim reads it, Rim::curvature, it would turn by less than 45° on its
 // run to that plane; a round's section turns on into the unseen part), and
-// neither meets nor is met by another lone rim so. The rims of a bore whose lower wall and the face it opens onto the
-// scan did not see are the bore's rim and the rim round that face: a
+// neither meets nor is met by another lone rim so. The rims of a bore
+// whose lower wall and the face it opens onto the scan did not see are the
+// bore's rim and the rim round that face: a
 // straight wall seen down to its rim continues until it meets the plane of
 // the unseen face (split_at_cap.h). Whether the support step leaves them in
 // one removed component or two depends on where the implicit function,

@@ -41,8 +41,10 @@ struct RoundOnArc {
 // surfaces dip under the plane inside the arc and say nothing about where
 // it is); the round is refitted tangent to both on the arc. Stops when the
 // arc repeats or after kMaxArcTurns turns (against cycling between two
-// sets); `inside` is taken with the last arc. Invalid if a fit fails or a
-// set has too few vertices.
+// sets); `inside` is taken with the last arc. Only measured vertices
+// (SegmentParams::measured) are sorted: a closing patch says nothing of where
+// the round or its faces lie. Invalid if a fit fails or a set has too few
+// vertices.
 RoundOnArc FitRoundOnArc(const SegmentContext& c, const std::vector<RegionState>& regions,
                          int round_id, std::array<int, 2> face_ids, const Cylinder& tangent);
 

@@ -27,8 +27,9 @@ constexpr double kStep = 1.0 / 3.0;  // rounded_prism's voxel size
 // from `start_deg` (0: tangent to the top; above it the top meets the
 // round in a crease at that angle, the top lowered to the round's edge
 // there) down to `end_deg`, then the side tangent to the round there
-// going down (x = 4 for 90 degrees). Vertices weigh their true areas. Gaussian noise `sigma` along the normal (mt19937 draw
-// `seed`), th_dis 3 sigma (at least 0.05), th_nm 10 degrees. Labels:
+// going down (x = 4 for 90 degrees). Vertices weigh their true areas.
+// Gaussian noise `sigma` along the normal (mt19937 draw `seed`), th_dis 3
+// sigma (at least 0.05), th_nm 10 degrees. Labels:
 // 0 the top, 1 the round, 2 the side; the round's first and last
 // `given_away` of its arc labelled with the face beside them, as the
 // segmentation leaves a noisy round whose tangent rows both faces fit.
