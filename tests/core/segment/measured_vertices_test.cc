@@ -22,6 +22,7 @@
 namespace meshseg::segment_internal {
 namespace {
 
+using testing::AllVertices;
 using testing::BuildFlatSide;
 using testing::Sheet;
 
@@ -44,12 +45,17 @@ void Bulge(Sheet* s, const std::vector<int>& patch) {
   }
 }
 
+// Marks `patch` unmeasured, every other vertex measured.
+void Unmeasure(Sheet* s, const std::vector<int>& patch) {
+  s->c.measured.assign(s->c.vertex_count(), 1);
+  for (const int v : patch) s->c.measured[v] = 0;
+}
+
 TEST(UnmeasuredVertex, CostsNothingUnderEveryLabel) {
   Sheet s;
   BuildFlatSide(&s);
   const std::vector<int> patch = MiddleOfFlatSide(s);
-  s.c.measured.assign(s.c.vertex_count(), 1);
-  for (const int v : patch) s.c.measured[v] = 0;
+  Unmeasure(&s, patch);
   // A plane 1 (over 4 th_dis) off the side: an outlier to every vertex.
   const Surface off = Plane{.point = Eigen::Vector3d(0, 1, 0), .normal = Eigen::Vector3d::UnitY()};
   const int inside = patch.front();
@@ -60,8 +66,7 @@ TEST(UnmeasuredVertex, CostsNothingUnderEveryLabel) {
   EXPECT_GT(OutlierCost(s.c, outside), 0.0);
   // The label cost counts the measured vertices only: the patch alone is
   // free, the whole side costs what its 572 measured vertices do.
-  std::vector<int> all(s.c.vertex_count());
-  for (int v = 0; v < s.c.vertex_count(); ++v) all[v] = v;
+  const std::vector<int> all = AllVertices(s);
   const RegionState side{.type = SurfaceType::kPlane, .surface = off, .vertices = all};
   const RegionState patch_only{.type = SurfaceType::kPlane, .surface = off, .vertices = patch};
   EXPECT_EQ(MeasuredCount(s.c, all), all.size() - patch.size());
@@ -74,15 +79,13 @@ TEST(UnmeasuredVertex, IsNotFitted) {
   BuildFlatSide(&s);
   const std::vector<int> patch = MiddleOfFlatSide(s);
   Bulge(&s, patch);
-  std::vector<int> all(s.c.vertex_count());
-  for (int v = 0; v < s.c.vertex_count(); ++v) all[v] = v;
+  const std::vector<int> all = AllVertices(s);
   // Measured, the bulge pulls the plane off the side (the premise).
   const FitResult pulled = FitType(s.c, SurfaceType::kPlane, all);
   ASSERT_TRUE(pulled.ok());
   EXPECT_GT(std::abs(std::get<Plane>(pulled.surface).point.y()), 0.1);
   // Unmeasured, the plane is the side's to the rounding.
-  s.c.measured.assign(s.c.vertex_count(), 1);
-  for (const int v : patch) s.c.measured[v] = 0;
+  Unmeasure(&s, patch);
   const FitResult fit = FitType(s.c, SurfaceType::kPlane, all);
   ASSERT_TRUE(fit.ok());
   for (const int v : all) {
@@ -98,13 +101,11 @@ TEST(UnmeasuredVertex, IsNotCountedByTheAlphaTest) {
   BuildFlatSide(&s);
   const std::vector<int> patch = MiddleOfFlatSide(s);
   Bulge(&s, patch);
-  std::vector<int> all(s.c.vertex_count());
-  for (int v = 0; v < s.c.vertex_count(); ++v) all[v] = v;
+  const std::vector<int> all = AllVertices(s);
   const Surface side = Plane{.point = Eigen::Vector3d::Zero(), .normal = Eigen::Vector3d::UnitY()};
   // Measured, the bulge's vertices beyond th_dis fail it (the premise).
   EXPECT_LT(FitFraction(s.c, side, all, s.c.tolerance), 0.9);
-  s.c.measured.assign(s.c.vertex_count(), 1);
-  for (const int v : patch) s.c.measured[v] = 0;
+  Unmeasure(&s, patch);
   EXPECT_EQ(FitFraction(s.c, side, all, s.c.tolerance), 1.0);
 }
 
