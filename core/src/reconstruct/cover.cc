@@ -37,9 +37,9 @@ std::vector<uint32_t> ShuffledOrder(size_t n, uint64_t seed) {
   return order;
 }
 
-// Whether every input point in `s`'s ball sees its centre from inside,
-// within kMaxInsideAngle of its inward normal n_p and behind its tangent
-// plane by more than ε (cover.h).
+// Whether every input point in `s`'s ball sees its centre from inside:
+// behind its tangent plane by more than ε and within 60° of its inward
+// normal n_p (kMinInsideCosine; cover.h).
 bool SeenFromInside(const Support& s, const FitInput& in,
                     std::vector<std::pair<uint32_t, double>>* found) {
   in.index.WithinRadiusUnordered(s.center, s.radius, found);

@@ -357,7 +357,8 @@ TEST(CoveringWeights, ASparseHullBallEveryPointSeesFromInsideGetsWeightZero) {
     AddSolidBalls(&covering);
     const PuFunction f(covering);
     EXPECT_GT(f(b.center), 0.0);
-    const auto tets = RegularTetrahedralization(covering, TetWeights(covering, RadiiSquared(covering)), {});
+    const auto tets =
+        RegularTetrahedralization(covering, TetWeights(covering, RadiiSquared(covering)), {});
     EXPECT_TRUE(tets.ok());
     if (!tets.ok()) return -1.0;
     bool b_on_hull = false;
