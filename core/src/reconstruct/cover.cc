@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numeric>
 #include <random>
+#include <utility>
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -14,6 +15,10 @@ namespace meshseg::reconstruct_internal {
 namespace {
 
 constexpr char kStage[] = "reconstruct: covering";
+// A sparse hull ball's point reads its centre's side when the centre lies
+// within 60° of the point's inward normal (cover.h): an error of up to 30°
+// in that normal leaves the centre on the same side of its tangent plane.
+constexpr double kMinInsideCosine = 0.5;
 // Uncovered leaves fitted together: enough to keep the cores busy for a few
 // milliseconds per round (a fit takes ~0.5 ms at a million points), few
 // enough that a batch-mate rarely covers another first.
@@ -30,6 +35,21 @@ std::vector<uint32_t> ShuffledOrder(size_t n, uint64_t seed) {
     std::swap(order[i - 1], order[j]);
   }
   return order;
+}
+
+// Whether every input point in `s`'s ball sees its centre from inside:
+// behind its tangent plane by more than ε and within 60° of its inward
+// normal n_p (kMinInsideCosine; cover.h).
+bool SeenFromInside(const Support& s, const FitInput& in,
+                    std::vector<std::pair<uint32_t, double>>* found) {
+  in.index.WithinRadiusUnordered(s.center, s.radius, found);
+  if (found->empty()) return false;
+  for (const auto& [j, unused] : *found) {
+    const Eigen::Vector3d to_centre = s.center - in.points[j];
+    const double behind = to_centre.dot(in.normals[j]);
+    if (!(behind > in.epsilon && behind >= kMinInsideCosine * to_centre.norm())) return false;
+  }
+  return true;
 }
 
 }  // namespace
@@ -111,15 +131,19 @@ std::vector<Support> InnerSupports(const std::vector<Support>& supports, const F
 }
 
 std::vector<double> CoveringWeights(const std::vector<Support>& covering, const TetMesh& tets,
-                                    const PuFunction& f, int sparse_points) {
+                                    const PuFunction& f, int sparse_points, const FitInput& in) {
   std::vector<double> weight = RadiiSquared(covering);
+  std::vector<std::pair<uint32_t, double>> found;
   for (size_t v = 0; v < tets.support.size(); ++v) {
     const size_t i = tets.support[v];
     if (i >= covering.size() || !tets.on_hull[v]) continue;
+    const Support& s = covering[i];
+    if (!(f(s.center) > 0)) continue;
     // A fit on fewer points than the sparse count does not read its centre's
-    // side (cover.h): the tie outside stands and so does r².
-    if (covering[i].point_count < sparse_points) continue;
-    if (f(covering[i].center) > 0) weight[i] = 0.0;
+    // side (cover.h): the tie outside stands and so does r², unless every
+    // point's own normal puts the centre behind its tangent plane.
+    if (s.point_count < sparse_points && !SeenFromInside(s, in, &found)) continue;
+    weight[i] = 0.0;
   }
   return weight;
 }

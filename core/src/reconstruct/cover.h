@@ -91,8 +91,32 @@ std::vector<Support> InnerSupports(const std::vector<Support>& supports, const F
 // way: a sheet beyond the face, with no points, that the support step
 // removes and closes across (measured on a real scan: a hull centre beyond a
 // seen face, r ≈ 20-40 spacings, 6 points, f = 13-28 spacings).
+//
+// The fit's plane is not the only reading of the side, though: each point
+// carries its own normal, estimated from its own neighbourhood in the cloud
+// (normals.h), which does not tilt with the handful of points the ball
+// holds. A point stands for solid behind its tangent plane (the dual of
+// graph_cut.h SeenFromOutside). So a sparse hull ball whose every point
+// sees its centre from inside has its side read by the points themselves,
+// independently of the fit: (c − p) · n_p > ε with n_p the point's inward
+// normal, and the centre within 60° of n_p, so that a normal off by up to
+// 30° (a noisy estimate, a point near an edge) still puts it on the same
+// side; a centre nearly in some point's tangent plane is read by that
+// point's noise. Such a ball grew in the empty space behind a plate's
+// unseen far face until it reached the seen near face through the solid,
+// whose points all face away from it. It gets weight 0 as a supported ball
+// does; with r² its power cell takes in the plate's solid and the surface
+// closes just under the seen face: a second sheet there, and the patch
+// over the unseen face climbs to it through the solid (measured on a
+// generated plate 8 thick scanned from above: centres 44-53 spacings under
+// it, 6 points, f = 32-39 spacings, every point's normal within 48-57° of
+// the centre). A ball in front of a seen face holds points whose normals
+// face it and keeps r² (on the real scan above, 7 of the 8 centres have a
+// point seeing them from outside; the eighth's points all see it from
+// inside, one at 80° from its normal: r² as before). `in` gives the
+// points, their normals and ε.
 std::vector<double> CoveringWeights(const std::vector<Support>& covering, const TetMesh& tets,
-                                    const PuFunction& f, int sparse_points);
+                                    const PuFunction& f, int sparse_points, const FitInput& in);
 
 // The weight of each of `supports` as a vertex of the regular triangulation:
 // `covering_weight` for the covering (the first covering_weight.size()), and

@@ -239,7 +239,7 @@ absl::StatusOr<Reconstruction> Reconstruct(const PointCloud& cloud, const Recons
     // Hull centres tied outside against the f > 0 their points read hide
     // nothing (cover.h): the tets again with their weight 0.
     const std::vector<double> hull_weight =
-        CoveringWeights(supports, tets, f, params.sparse_support_points);
+        CoveringWeights(supports, tets, f, params.sparse_support_points, fit_input);
     if (hull_weight != covering_weight) {
       MESHSEG_ASSIGN_OR_RETURN(
           tets, RegularTetrahedralization(vertices, TetWeights(vertices, hull_weight), ctx));

@@ -255,7 +255,7 @@ TEST(CoveringWeights, AHullCentreTiedOutsideAgainstFHidesNothing) {
     const std::vector<double> radius2 = RadiiSquared(covering);
     const auto before = RegularTetrahedralization(covering, TetWeights(covering, radius2), {});
     ASSERT_TRUE(before.ok());
-    *weight = CoveringWeights(covering, *before, f, kSparsePoints);
+    *weight = CoveringWeights(covering, *before, f, kSparsePoints, in);
     const auto after = RegularTetrahedralization(covering, TetWeights(covering, *weight), {});
     ASSERT_TRUE(after.ok());
     *hidden_before = static_cast<int>(covering.size() - before->support.size());
@@ -285,8 +285,27 @@ TEST(CoveringWeights, AHullCentreTiedOutsideAgainstFHidesNothing) {
 // sparse count its reading is no evidence against the hull's tie: it keeps
 // r² (so its power cell keeps the empty space in front of the wall
 // outside); holding the sparse count, the same reading gets weight 0.
+// Points of the wall x = 0 sampled every 0.25 for y in [-5, 5], z in
+// [-2, 5], their inward normals `normal` (+x: the solid at x > 0).
+std::vector<Eigen::Vector3d> WallPoints() {
+  std::vector<Eigen::Vector3d> points;
+  for (int i = -20; i <= 20; ++i) {
+    for (int k = -8; k <= 20; ++k) points.emplace_back(0.0, 0.25 * i, 0.25 * k);
+  }
+  return points;
+}
+
+struct Wall {
+  explicit Wall(const Eigen::Vector3d& normal)
+      : points(WallPoints()), normals(points.size(), normal), index(points) {}
+  std::vector<Eigen::Vector3d> points, normals;
+  mesh_internal::PointIndex index;
+  FitInput in{points, normals, index, 0.01, 6.0};
+};
+
 TEST(CoveringWeights, AHullBallHoldingFewerThanTheSparseCountKeepsItsWeight) {
-  const auto weight_of_b = [](int point_count) {
+  const Wall wall(Eigen::Vector3d::UnitX());
+  const auto weight_of_b = [&wall](int point_count) {
     Support b;
     b.center = Eigen::Vector3d(-3, 0, 1);
     b.radius = 3.2;
@@ -306,10 +325,52 @@ TEST(CoveringWeights, AHullBallHoldingFewerThanTheSparseCountKeepsItsWeight) {
       b_on_hull = b_on_hull || (tets->support[v] == 0 && tets->on_hull[v]);
     }
     EXPECT_TRUE(b_on_hull);
-    return CoveringWeights(covering, *tets, f, kSparsePoints)[0];
+    return CoveringWeights(covering, *tets, f, kSparsePoints, wall.in)[0];
   };
   EXPECT_EQ(weight_of_b(kMinFitPoints), 3.2 * 3.2);
   EXPECT_EQ(weight_of_b(kSparsePoints), 0.0);
+}
+
+
+// A plate seen from one side only: its near face x = 0 (the solid at x > 0,
+// inward normal +x) is sampled, its far face is not. Ball B grew in the
+// empty space beyond the far face, centre (6, 0, 1), until it reached the
+// near face through the solid: a handful of points at its rim, all facing
+// away from its centre (the centre straight behind their tangent plane).
+// Its fit reads the centre inside (g = 6), and so does every point's own
+// normal: it gets weight 0 at fewer points than the sparse count (with r²
+// its power cell would take in the plate). If the points' normals were
+// tilted so that the centre lay 75° off them, still behind their tangent
+// plane, a normal error of 15° could flip that reading: B keeps r².
+TEST(CoveringWeights, ASparseHullBallEveryPointSeesFromInsideGetsWeightZero) {
+  const auto weight_of_b = [](const Eigen::Vector3d& point_normal) {
+    const Wall wall(point_normal);
+    Support b;
+    b.center = Eigen::Vector3d(6, 0, 1);
+    b.radius = 6.015;
+    b.m = Eigen::Vector3d::UnitX();
+    b.d = Eigen::Vector3d::Zero();
+    for (const Eigen::Vector3d& p : wall.points) b.point_count += (p - b.center).norm() < b.radius;
+    EXPECT_GE(b.point_count, 3);
+    EXPECT_LT(b.point_count, kSparsePoints);
+    std::vector<Support> covering = {b};
+    AddSolidBalls(&covering);
+    const PuFunction f(covering);
+    EXPECT_GT(f(b.center), 0.0);
+    const auto tets =
+        RegularTetrahedralization(covering, TetWeights(covering, RadiiSquared(covering)), {});
+    EXPECT_TRUE(tets.ok());
+    if (!tets.ok()) return -1.0;
+    bool b_on_hull = false;
+    for (size_t v = 0; v < tets->support.size(); ++v) {
+      b_on_hull = b_on_hull || (tets->support[v] == 0 && tets->on_hull[v]);
+    }
+    EXPECT_TRUE(b_on_hull);
+    return CoveringWeights(covering, *tets, f, kSparsePoints, wall.in)[0];
+  };
+  EXPECT_EQ(weight_of_b(Eigen::Vector3d::UnitX()), 0.0);
+  const double tilt = 75.0 * M_PI / 180.0;
+  EXPECT_EQ(weight_of_b(Eigen::Vector3d(std::cos(tilt), 0.0, std::sin(tilt))), 6.015 * 6.015);
 }
 
 }  // namespace
