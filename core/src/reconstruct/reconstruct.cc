@@ -23,6 +23,7 @@
 #include "reconstruct/pu_function.h"
 #include "reconstruct/refine.h"
 #include "reconstruct/regular_triangulation.h"
+#include "reconstruct/severed_solid.h"
 #include "reconstruct/small_components.h"
 #include "reconstruct/smoothing.h"
 #include "reconstruct/support.h"
@@ -270,6 +271,8 @@ absl::StatusOr<Reconstruction> Reconstruct(const PointCloud& cloud, const Recons
     const std::vector<uint8_t> seen_outside = SeenFromOutside(tets, vertices, f_at, fit_input);
     MESHSEG_ASSIGN_OR_RETURN(inside, GraphCutLabels(tets, position, f_at, params.graph_cut_k,
                                                     resolved, seen_outside, ctx));
+    // ... and it does not split the solid f holds together (severed_solid.h).
+    RejoinSeveredSolid(tets, f_at, by_sign, sparse, seen_outside, fit_input.epsilon, &inside);
   }
   for (size_t v = 0; v < inside.size(); ++v) stats.relabelled_count += inside[v] != by_sign[v];
   ctx.Progress(kStage, 0.75);

@@ -7,6 +7,7 @@
 // BubblesThatTheSignOfFKeeps, on ghost sheets.)
 #include <cmath>
 #include <ostream>
+#include <random>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -122,6 +123,40 @@ INSTANTIATE_TEST_SUITE_P(Parts, ReconstructGeneratedParts,
                          [](const ::testing::TestParamInfo<PartCase>& info) {
                            return std::string(info.param.part);
                          });
+
+// A uniform sample of test_piece's surface (100 000 points, Gaussian noise
+// of 0.1 nominal spacing along the normal, as `meshseg generate
+// --surface-points 100000 --scan-noise 0.1 --seed 1` writes it) once came
+// out as two closed components: the part, and a shell of 202 faces (6 682
+// once refined) just under its left face, at its corner with the bottom and
+// back faces. The cut had turned outside the row of shallow vertices (f
+// 0.1 to 0.4 h) that joined the solid beneath that corner to the rest, and
+// the piece, resolved by its own points (f up to 7 h), was kept as a solid
+// of its own (reconstruct/severed_solid.h). Without the refinement
+// and the later steps, which do not make or join components, the labels
+// alone decide it.
+TEST(ReconstructGeneratedParts, AUniformSampleHasNoSecondShellUnderAFace) {
+  const absl::StatusOr<GeneratedPart> part = GeneratePart("test_piece");
+  ASSERT_TRUE(part.ok()) << part.status();
+  constexpr int kCount = 100000;
+  constexpr uint64_t kSeed = 1;
+  const SurfaceSamples samples = SampleSurface(*part, kCount, kSeed);
+  double area = 0.0;
+  for (const auto f : part->mesh.tri.faces()) area += part->mesh.tri.calc_face_area(f);
+  std::mt19937_64 rng(kSeed + 1);
+  std::normal_distribution<double> gauss(0.0, 0.1 * std::sqrt(area / kCount));
+  PointCloud cloud;
+  cloud.name = "test_piece_uniform.xyz";
+  cloud.points = samples.points;
+  for (size_t i = 0; i < cloud.points.size(); ++i) {
+    cloud.points[i] += gauss(rng) * samples.normals[i];
+  }
+  const auto r = Reconstruct(
+      cloud, {.refine_edge_length = 0, .support_spacings = 0, .handle_spacings = 0});
+  ASSERT_TRUE(r.ok()) << r.status();
+  EXPECT_EQ(test::ComponentCount(r->mesh.tri), 1);
+  EXPECT_EQ(test::BoundaryEdgeCount(r->mesh.tri), 0);
+}
 
 // Fraction of the mesh vertices of the hard cloud's reconstruction within
 // kDistanceTol × h of the true surface, with and without normals.
