@@ -93,6 +93,13 @@ struct SegmentParams {
   // still takes a label, its neighbours' (the boundary term). Empty: every
   // vertex is measured (a mesh as read).
   std::vector<uint8_t> measured;
+  // The noise sigma of the points the mesh's vertices were projected onto,
+  // model units, for a mesh reconstructed from a point cloud (the pipeline
+  // passes Reconstruction's noise). If above 0, the data term weighs a
+  // residual in units of the vertices' own scatter (the points' noise
+  // averaged by the projection), not of the mesh's resolution (energy.h,
+  // "Data unit"). Unset: a mesh as read, whose th_dis sets the unit.
+  std::optional<double> point_noise;
 };
 
 struct Region {

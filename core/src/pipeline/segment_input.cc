@@ -224,6 +224,9 @@ absl::StatusOr<std::vector<int>> SegmentReconstruction(const Reconstruction& rec
   SegmentParams segment = params.segment;
   segment.exact = ExactMode::kNever;
   segment.measured = MeasuredMask(mesh.tri, reconstruction.is_filled);
+  // The vertices were projected onto fits to the points: how far one lies
+  // off its surface is their noise averaged, not the resolution (energy.h).
+  segment.point_noise = reconstruction.stats.noise;
   MESHSEG_ASSIGN_OR_RETURN(
       Segmentation segmentation,
       Segment(mesh, curvature, result->mesh.mean_edge_length, segment, ctx));

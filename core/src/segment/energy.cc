@@ -27,8 +27,9 @@ double CostAtDistance(const SegmentContext& c, int v, double distance) {
   if (!c.Measured(v)) return 0.0;
   const double d = distance / c.tolerance.distance;
   const double scaled = kToleranceSigmas * kToleranceSigmas * d * d;
-  return 0.5 * AreaWeight(c, v) * std::min(std::isfinite(scaled) ? scaled : kOutlierMismatch,
-                                           kOutlierMismatch);
+  const double mismatch = std::min(std::isfinite(scaled) ? scaled : kOutlierMismatch,
+                                   kOutlierMismatch);
+  return 0.5 * AreaWeight(c, v) * (mismatch * c.unit_scale);
 }
 
 // The data cost of `vertices` on `surface`, summed until it reaches `limit`
@@ -90,7 +91,7 @@ double VertexCost(const SegmentContext& c, int v, const SurfaceDistance& distanc
 
 double OutlierCost(const SegmentContext& c, int v) {
   if (!c.Measured(v)) return 0.0;
-  return 0.5 * AreaWeight(c, v) * kOutlierMismatch;
+  return 0.5 * AreaWeight(c, v) * (kOutlierMismatch * c.unit_scale);
 }
 
 double DataCost(const SegmentContext& c, const Surface& surface, std::span<const int> vertices) {

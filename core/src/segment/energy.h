@@ -27,6 +27,16 @@
 // vertex farther than th_dis from its surface: rows along a crease, which
 // no smooth surface meets, cost alike under either of its regions and
 // cannot decide between them.
+// Data unit. On a mesh reconstructed from noisy points (SegmentParams::
+// point_noise) the resolution sets th_dis (0.5 l_avg, some 17 times the
+// vertices' scatter), yet each vertex was projected onto a fit to the
+// points: it lies off its surface by their noise averaged over the fit,
+// the scatter EstimateNoise measures, the resolution bounding only the
+// chord error between vertices. There D_v and c_out / 2 are in that unit u
+// (never coarser than th_dis / k): times s = (th_dis / (k u))^2
+// (SegmentContext::unit_scale), the cap still at th_dis; lambda and the
+// label cost, in the data term's units, stay. A mesh as read, or one from
+// noise-free points (only the resolution's error left), has s = 1.
 // Distances only, no normal term. The smoothed normals n'_i are biased over
 // the W2 window near creases and across narrow bands (they turn toward both
 // neighbours of a chamfer as a sphere's would), so that an angle term in

@@ -96,4 +96,13 @@ SegmentEstimates EstimateNoise(const CurvatureField& curvature, double l_avg,
   return e;
 }
 
+double DataUnitScale(const SegmentEstimates& estimates, std::optional<double> point_noise) {
+  if (!point_noise || !(*point_noise > 0.0)) return 1.0;
+  const double tolerance_unit = estimates.distance_tolerance / kSigmas;
+  const double unit = estimates.noise_sigma;
+  if (!(unit > 0.0) || !(unit < tolerance_unit)) return 1.0;
+  const double ratio = tolerance_unit / unit;
+  return ratio * ratio;
+}
+
 }  // namespace meshseg::segment_internal

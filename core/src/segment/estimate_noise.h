@@ -3,6 +3,8 @@
 #ifndef MESHSEG_SRC_SEGMENT_ESTIMATE_NOISE_H_
 #define MESHSEG_SRC_SEGMENT_ESTIMATE_NOISE_H_
 
+#include <optional>
+
 #include "meshseg/segment.h"
 #include "segment/segment_internal.h"
 
@@ -17,6 +19,13 @@ namespace meshseg::segment_internal {
 // n_i and n'_i (the noise-induced scatter of the vertex normals), in [5°, 30°].
 SegmentEstimates EstimateNoise(const CurvatureField& curvature, double l_avg,
                                const SegmentParams& params);
+
+// (th_dis / k)^2 / u^2 for `estimates`, u the data term's unit (energy.h,
+// "Data unit"): 1 for a mesh as read (`point_noise` unset) or from
+// noise-free points (0), whose unit is th_dis / k. For a mesh reconstructed
+// from noisy points, u is the vertices' own scatter (estimates.noise_sigma),
+// never more than th_dis / k.
+double DataUnitScale(const SegmentEstimates& estimates, std::optional<double> point_noise);
 
 }  // namespace meshseg::segment_internal
 

@@ -40,7 +40,8 @@ double EvidenceShare(const SegmentContext& c, const std::vector<int>& labels,
   }
   // Every residual is known to the data term only to its resolution delta
   // (energy.h): an independent term of variance delta^2 in each.
-  const double delta = kResidualResolution * c.tolerance.distance / kToleranceSigmas;
+  const double delta =
+      kResidualResolution * c.tolerance.distance / kToleranceSigmas / std::sqrt(c.unit_scale);
   const double variance = squares + static_cast<double>(pairs) * delta * delta;
   if (!(variance > 0.0)) return 1.0;
   const double rho = std::clamp(products / variance, 0.0, 1.0);

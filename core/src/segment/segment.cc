@@ -47,6 +47,10 @@ absl::Status ValidateParams(const SegmentParams& p) {
     return absl::InvalidArgumentError(
         absl::StrCat("segment: exact_tolerance must be > 0, got ", *p.exact_tolerance));
   }
+  if (p.point_noise && !(*p.point_noise >= 0.0 && std::isfinite(*p.point_noise))) {
+    return absl::InvalidArgumentError(
+        absl::StrCat("segment: point_noise must be >= 0, got ", *p.point_noise));
+  }
   return absl::OkStatus();
 }
 
@@ -210,6 +214,7 @@ absl::StatusOr<Segmentation> SegmentWithEdgeLength(const Mesh& mesh,
   SegmentContext c = MakeSegmentContext(mesh.tri, curvature, estimates, params.alpha, ctx);
   c.on_facets = params.on_facets;
   c.measured = params.measured;
+  c.unit_scale = DataUnitScale(estimates, params.point_noise);
 
   std::vector<int> labels(c.vertex_count(), -1);
   std::vector<RegionState> regions;

@@ -59,6 +59,7 @@ struct SegmentContext {
   double alpha = 0.9;                         // ALGORITHMS.md S1 step 2.3
   bool on_facets = false;                     // SegmentParams::on_facets
   double evidence_share = 1.0;                // n_eff / n of the residuals (energy.h)
+  double unit_scale = 1.0;  // (th_dis / k)^2 / u^2, u the data unit (energy.h)
   // SegmentParams::measured: per vertex, 0 where no input point supports it
   // (empty: all measured).
   std::vector<uint8_t> measured;
