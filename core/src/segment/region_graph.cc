@@ -4,8 +4,10 @@
 #include <cmath>
 #include <map>
 #include <utility>
+#include <vector>
 
 #include <Eigen/Geometry>
+#include <tbb/parallel_for.h>
 
 #include "meshseg/status_macros.h"
 
@@ -13,6 +15,34 @@ namespace meshseg::segment_internal {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
+
+// The vertices of live regions with a neighbour in another live region, in
+// ascending order. Each vertex is tested on its own (it reads only labels),
+// side by side; the few found are summed in vertex order, as a walk over
+// every vertex would.
+std::vector<int> BoundaryVertices(const SegmentContext& c, const std::vector<int>& labels,
+                                  const std::vector<RegionState>& regions) {
+  const auto live = [&](int l) { return l >= 0 && regions[l].alive; };
+  const int n = c.vertex_count();
+  constexpr int kBlock = 1 << 14;
+  const int blocks = (n + kBlock - 1) / kBlock;
+  std::vector<std::vector<int>> found(blocks);
+  tbb::parallel_for(0, blocks, [&](int b) {
+    for (int v = b * kBlock; v < std::min(n, (b + 1) * kBlock); ++v) {
+      const int a = labels[v];
+      if (!live(a)) continue;
+      for (const int j : c.graph.Neighbors(v)) {
+        if (labels[j] != a && live(labels[j])) {
+          found[b].push_back(v);
+          break;
+        }
+      }
+    }
+  });
+  std::vector<int> out;
+  for (const std::vector<int>& part : found) out.insert(out.end(), part.begin(), part.end());
+  return out;
+}
 
 }  // namespace
 
@@ -22,7 +52,7 @@ std::vector<RegionArc> BuildRegionGraph(const SegmentContext& c, const std::vect
   // vertex once per neighbouring region.
   std::map<std::pair<int, int>, Eigen::Vector3d> strip;
   std::vector<int> seen;
-  for (int v = 0; v < c.vertex_count(); ++v) {
+  for (const int v : BoundaryVertices(c, labels, regions)) {
     const int a = labels[v];
     if (a < 0 || !regions[a].alive) continue;
     seen.clear();

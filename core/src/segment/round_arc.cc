@@ -1,10 +1,12 @@
 #include "segment/round_arc.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <span>
 #include <utility>
+#include <vector>
 
 namespace meshseg::segment_internal {
 namespace {
@@ -50,6 +52,22 @@ struct ArcSets {
   std::array<std::vector<int>, 2> beyond;  // each face's line of contact
 };
 
+// Sorts `values`, which holds runs starting at `starts` (ascending, the
+// first 0): each run sorted unless it already is (a region's vertices
+// usually are), then the runs merged. A sorted list of numbers is unique,
+// so this is the list std::sort gives, in about linear time.
+void SortRuns(const std::vector<std::size_t>& starts, std::vector<int>* values) {
+  std::vector<std::size_t> bounds = starts;
+  bounds.push_back(values->size());
+  const auto at = [&](std::size_t k) { return values->begin() + static_cast<std::ptrdiff_t>(k); };
+  for (std::size_t r = 0; r + 1 < bounds.size(); ++r) {
+    if (!std::is_sorted(at(bounds[r]), at(bounds[r + 1]))) {
+      std::sort(at(bounds[r]), at(bounds[r + 1]));
+    }
+    if (r > 0) std::inplace_merge(at(0), at(bounds[r]), at(bounds[r + 1]));
+  }
+}
+
 // The vertices of `ids` sorted by their direction from the axis: between
 // the two lines of contact (the arc; kept within the extent along the axis
 // of region `round_id` and within th_dis of the round), or beyond one of
@@ -65,7 +83,15 @@ ArcSets SortByPosition(const SegmentContext& c, const std::vector<RegionState>& 
     hi = std::max(hi, along);
   }
   ArcSets sets;
+  // Where each region's vertices start in each set: every set is a run per
+  // region, each run in its region's order.
+  std::array<std::vector<std::size_t>, 4> runs;
+  const auto sets_of = [&sets]() {
+    return std::array<std::vector<int>*, 4>{&sets.arc, &sets.inside, &sets.beyond[0],
+                                            &sets.beyond[1]};
+  };
   for (const int id : ids) {
+    for (int k = 0; k < 4; ++k) runs[k].push_back(sets_of()[k]->size());
     for (const int v : regions[id].vertices) {
       if (!c.Measured(v)) continue;  // a closing patch says nothing of the arc
       const Eigen::Vector3d d = c.position(v) - f.centre;
@@ -84,12 +110,8 @@ ArcSets SortByPosition(const SegmentContext& c, const std::vector<RegionState>& 
       }
     }
   }
-  std::sort(sets.arc.begin(), sets.arc.end());
-  std::sort(sets.inside.begin(), sets.inside.end());
-  for (int i = 0; i < 2; ++i) {
-    std::sort(sets.beyond[i].begin(), sets.beyond[i].end());
-    sets.beyond[i] = FittingVertices(c, planes[i], sets.beyond[i]);
-  }
+  for (int k = 0; k < 4; ++k) SortRuns(runs[k], sets_of()[k]);
+  for (int i = 0; i < 2; ++i) sets.beyond[i] = FittingVertices(c, planes[i], sets.beyond[i]);
   return sets;
 }
 

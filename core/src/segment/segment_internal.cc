@@ -6,12 +6,18 @@
 #include <unordered_map>
 
 #include <Eigen/Eigenvalues>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
 #include <tbb/parallel_invoke.h>
 
 namespace meshseg::segment_internal {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
+
+// Below this many vertices a filter runs on the calling thread (a parallel
+// loop costs more than it saves).
+constexpr std::size_t kParallelFilter = 4096;
 
 // A third of the area of every face around each vertex.
 std::vector<double> VertexAreas(const TriMesh& mesh) {
@@ -128,9 +134,24 @@ double FitFraction(const SegmentContext& c, const Surface& surface, std::span<co
 
 std::vector<int> FittingVertices(const SegmentContext& c, const Surface& surface,
                                  std::span<const int> vertices) {
+  const auto fits = [&](int v) { return Fits(c, v, ProjectVertex(c, surface, v), c.tolerance); };
   std::vector<int> out;
-  for (const int v : vertices) {
-    if (Fits(c, v, ProjectVertex(c, surface, v), c.tolerance)) out.push_back(v);
+  if (vertices.size() < kParallelFilter) {
+    for (const int v : vertices) {
+      if (fits(v)) out.push_back(v);
+    }
+    return out;
+  }
+  // Each vertex's test on its own (it reads only the surface and the
+  // vertex), then the fitting ones kept in order: the same list.
+  std::vector<uint8_t> keep(vertices.size(), 0);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, vertices.size(), 1024),
+                    [&](const tbb::blocked_range<std::size_t>& r) {
+                      for (std::size_t k = r.begin(); k < r.end(); ++k) keep[k] = fits(vertices[k]);
+                    });
+  out.reserve(static_cast<std::size_t>(std::count(keep.begin(), keep.end(), 1)));
+  for (std::size_t k = 0; k < vertices.size(); ++k) {
+    if (keep[k]) out.push_back(vertices[k]);
   }
   return out;
 }

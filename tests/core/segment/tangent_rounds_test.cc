@@ -1,5 +1,6 @@
 #include "segment/tangent_rounds.h"
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <vector>
@@ -7,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "segment/decide_type.h"
+#include "segment/round_arc.h"
 #include "sheet_context.h"
 
 namespace meshseg::segment_internal {
@@ -167,6 +169,44 @@ TEST(FitRoundsTangentToPlanesTest, ShortArcRoundLabelledByNearestSurfaceKeepsIts
     EXPECT_NEAR(RadiusOf(regions[1]), kRadius, 0.15 * kStep);
     EXPECT_EQ(regions[1].shared_parameters,
               ParameterCount(SurfaceType::kCylinder) - kTangentRoundParameters);
+  }
+}
+
+// FitRoundOnArc sorts the vertices it takes by position from each region's
+// list (merging the lists, each sorted first if it is not): the lists'
+// order changes nothing, to the bit.
+TEST(FitRoundOnArcTest, RegionVertexOrderChangesNothing) {
+  Sheet s;
+  std::vector<int> labels;
+  BuildRoundedEdge(/*start_deg=*/0.0, /*end_deg=*/90.0, /*sigma=*/0.15 * kStep,
+                   /*given_away=*/0.15, 2, &s, &labels);
+  const std::vector<RegionState> sorted = RegionsFromLabels(
+      s.c, labels, {SurfaceType::kPlane, SurfaceType::kCylinder, SurfaceType::kPlane});
+  std::vector<RegionState> reversed = sorted;
+  for (RegionState& r : reversed) {
+    ASSERT_TRUE(std::is_sorted(r.vertices.begin(), r.vertices.end()));
+    std::reverse(r.vertices.begin(), r.vertices.end());
+  }
+  const Cylinder tangent{.axis_origin = Eigen::Vector3d(0.0, 0.0, -kRadius),
+                         .axis_direction = Eigen::Vector3d::UnitY(),
+                         .radius = kRadius};
+  const RoundOnArc a = FitRoundOnArc(s.c, sorted, 1, {0, 2}, tangent);
+  const RoundOnArc b = FitRoundOnArc(s.c, reversed, 1, {0, 2}, tangent);
+  ASSERT_TRUE(a.round.ok());
+  ASSERT_TRUE(b.round.ok());
+  EXPECT_TRUE(std::is_sorted(a.arc.begin(), a.arc.end()));
+  EXPECT_TRUE(std::is_sorted(a.inside.begin(), a.inside.end()));
+  EXPECT_GT(a.arc.size(), 100u);
+  EXPECT_EQ(a.arc, b.arc);
+  EXPECT_EQ(a.inside, b.inside);
+  const auto& ca = std::get<Cylinder>(a.round.surface);
+  const auto& cb = std::get<Cylinder>(b.round.surface);
+  EXPECT_EQ(ca.radius, cb.radius);
+  EXPECT_EQ(ca.axis_origin, cb.axis_origin);
+  EXPECT_EQ(ca.axis_direction, cb.axis_direction);
+  for (int i = 0; i < 2; ++i) {
+    EXPECT_EQ(a.planes[i].point, b.planes[i].point);
+    EXPECT_EQ(a.planes[i].normal, b.planes[i].normal);
   }
 }
 
