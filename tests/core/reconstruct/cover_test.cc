@@ -303,6 +303,27 @@ struct Wall {
   FitInput in{points, normals, index, 0.01, 6.0};
 };
 
+// The covering weight of ball `b` with the solid balls round it, after
+// checking that f reads b's centre inside and that b is a hull vertex of
+// the tetrahedralization (the case CoveringWeights decides); -1 if the
+// tetrahedralization fails.
+double HullBallWeight(const Support& b, const FitInput& in) {
+  std::vector<Support> covering = {b};
+  AddSolidBalls(&covering);
+  const PuFunction f(covering);
+  EXPECT_GT(f(b.center), 0.0);
+  const auto tets =
+      RegularTetrahedralization(covering, TetWeights(covering, RadiiSquared(covering)), {});
+  EXPECT_TRUE(tets.ok());
+  if (!tets.ok()) return -1.0;
+  bool b_on_hull = false;
+  for (size_t v = 0; v < tets->support.size(); ++v) {
+    b_on_hull = b_on_hull || (tets->support[v] == 0 && tets->on_hull[v]);
+  }
+  EXPECT_TRUE(b_on_hull);
+  return CoveringWeights(covering, *tets, f, kSparsePoints, in)[0];
+}
+
 TEST(CoveringWeights, AHullBallHoldingFewerThanTheSparseCountKeepsItsWeight) {
   const Wall wall(Eigen::Vector3d::UnitX());
   const auto weight_of_b = [&wall](int point_count) {
@@ -312,25 +333,11 @@ TEST(CoveringWeights, AHullBallHoldingFewerThanTheSparseCountKeepsItsWeight) {
     b.m = Eigen::Vector3d::UnitZ();  // inward: its fit has the solid above z = 0
     b.d = Eigen::Vector3d::Zero();
     b.point_count = point_count;
-    std::vector<Support> covering = {b};
-    AddSolidBalls(&covering);
-    const PuFunction f(covering);
-    EXPECT_GT(f(b.center), 0.0);
-    const std::vector<double> radius2 = RadiiSquared(covering);
-    const auto tets = RegularTetrahedralization(covering, TetWeights(covering, radius2), {});
-    EXPECT_TRUE(tets.ok());
-    if (!tets.ok()) return -1.0;
-    bool b_on_hull = false;
-    for (size_t v = 0; v < tets->support.size(); ++v) {
-      b_on_hull = b_on_hull || (tets->support[v] == 0 && tets->on_hull[v]);
-    }
-    EXPECT_TRUE(b_on_hull);
-    return CoveringWeights(covering, *tets, f, kSparsePoints, wall.in)[0];
+    return HullBallWeight(b, wall.in);
   };
   EXPECT_EQ(weight_of_b(kMinFitPoints), 3.2 * 3.2);
   EXPECT_EQ(weight_of_b(kSparsePoints), 0.0);
 }
-
 
 // A plate seen from one side only: its near face x = 0 (the solid at x > 0,
 // inward normal +x) is sampled, its far face is not. Ball B grew in the
@@ -353,20 +360,7 @@ TEST(CoveringWeights, ASparseHullBallEveryPointSeesFromInsideGetsWeightZero) {
     for (const Eigen::Vector3d& p : wall.points) b.point_count += (p - b.center).norm() < b.radius;
     EXPECT_GE(b.point_count, 3);
     EXPECT_LT(b.point_count, kSparsePoints);
-    std::vector<Support> covering = {b};
-    AddSolidBalls(&covering);
-    const PuFunction f(covering);
-    EXPECT_GT(f(b.center), 0.0);
-    const auto tets =
-        RegularTetrahedralization(covering, TetWeights(covering, RadiiSquared(covering)), {});
-    EXPECT_TRUE(tets.ok());
-    if (!tets.ok()) return -1.0;
-    bool b_on_hull = false;
-    for (size_t v = 0; v < tets->support.size(); ++v) {
-      b_on_hull = b_on_hull || (tets->support[v] == 0 && tets->on_hull[v]);
-    }
-    EXPECT_TRUE(b_on_hull);
-    return CoveringWeights(covering, *tets, f, kSparsePoints, wall.in)[0];
+    return HullBallWeight(b, wall.in);
   };
   EXPECT_EQ(weight_of_b(Eigen::Vector3d::UnitX()), 0.0);
   const double tilt = 75.0 * M_PI / 180.0;

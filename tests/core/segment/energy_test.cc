@@ -27,6 +27,7 @@
 #include "segment/facet_mesh.h"
 #include "cylinder_band.h"
 #include "sheet_context.h"
+#include "true_labels.h"
 
 namespace meshseg::segment_internal {
 namespace {
@@ -35,34 +36,12 @@ namespace {
 // of many terms in a different order).
 constexpr double kRelative = 1e-9;
 
-struct Labeled {
-  GeneratedPart part;
-  CurvatureField field;
-  RunContext run;
-  SegmentContext c;
-  std::vector<int> labels;
-  std::vector<RegionState> regions;  // one per primitive, fitted with its type
-};
-
 // `name` at `noise` h (draw 7; voxel size `voxel`, 0 for the part's own)
 // with the true labels, each region fitted with its true type for least
 // energy.
 void BuildTrue(const std::string& name, double noise, Labeled* t, double voxel = 0.0) {
-  absl::StatusOr<GeneratedPart> part =
-      GeneratePart(name, {.voxel_size = voxel, .noise = noise, .seed = 7});
-  ASSERT_TRUE(part.ok()) << part.status();
-  t->part = *std::move(part);
-  absl::StatusOr<CurvatureField> field = EstimateCurvature(t->part.mesh);
-  ASSERT_TRUE(field.ok()) << field.status();
-  t->field = *std::move(field);
-  const SegmentEstimates estimates =
-      EstimateNoise(t->field, MeanEdgeLength(t->part.mesh.tri), {});
-  t->c = MakeSegmentContext(t->part.mesh.tri, t->field, estimates, 0.9, t->run);
-  t->labels = t->part.vertex_primitive;
-  for (const PrimitiveTruth& p : t->part.primitives) {
-    t->regions.push_back({.type = TypeOf(p.surface), .surface = p.surface, .vertices = {}});
-  }
-  RebuildVertexLists(t->labels, &t->regions);
+  BuildTrueLabels(name, noise, voxel, t);
+  if (::testing::Test::HasFatalFailure()) return;
   for (RegionState& r : t->regions) {
     if (r.vertices.empty()) continue;
     const std::optional<Surface> fit = FitForEnergy(t->c, r.type, r.vertices);

@@ -20,36 +20,12 @@
 #include "segment/estimate_noise.h"
 #include "segment/region_graph.h"
 #include "segment/segment_internal.h"
+#include "true_labels.h"
 
 namespace meshseg::segment_internal {
 namespace {
 
-struct Labeled {
-  GeneratedPart part;
-  CurvatureField field;
-  RunContext run;
-  SegmentContext c;
-  std::vector<int> labels;
-  std::vector<RegionState> regions;  // one per primitive, its true surface
-};
-
-void BuildTrue(Labeled* t) {
-  absl::StatusOr<GeneratedPart> part =
-      GeneratePart("test_piece", {.voxel_size = 1.0, .noise = 0.05, .seed = 7});
-  ASSERT_TRUE(part.ok()) << part.status();
-  t->part = *std::move(part);
-  absl::StatusOr<CurvatureField> field = EstimateCurvature(t->part.mesh);
-  ASSERT_TRUE(field.ok()) << field.status();
-  t->field = *std::move(field);
-  const SegmentEstimates estimates =
-      EstimateNoise(t->field, MeanEdgeLength(t->part.mesh.tri), {});
-  t->c = MakeSegmentContext(t->part.mesh.tri, t->field, estimates, 0.9, t->run);
-  t->labels = t->part.vertex_primitive;
-  for (const PrimitiveTruth& p : t->part.primitives) {
-    t->regions.push_back({.type = TypeOf(p.surface), .surface = p.surface, .vertices = {}});
-  }
-  RebuildVertexLists(t->labels, &t->regions);
-}
+void BuildTrue(Labeled* t) { BuildTrueLabels("test_piece", 0.05, 1.0, t); }
 
 class ParallelPaths : public ::testing::Test {
  protected:
