@@ -1,5 +1,6 @@
-// Pieces of the solid the graph cut severs from the rest (our addition to
-// seed 001 §2.2.2, issue 38: no invented surface).
+// Pieces of the solid the graph cut severs from the rest: an addition to
+// the graph-cut labelling, so that a solid the implicit function holds
+// together is never closed off as a second surface inside it.
 #ifndef MESHSEG_RECONSTRUCT_SEVERED_SOLID_H_
 #define MESHSEG_RECONSTRUCT_SEVERED_SOLID_H_
 
