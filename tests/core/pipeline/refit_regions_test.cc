@@ -346,7 +346,6 @@ TEST(RetypeToPoints, AFlatSideWithACreaseBandTypedAsACylinderIsAPlane) {
   const double side = static_cast<double>(side_points(points[0]));
   const auto cylinder_side = side_points(band_points[0]);
   const double cylinder_rms = regions[0].rms_distance;
-  const std::size_t cylinder_band = band_points[0].size();
   EXPECT_EQ(RetypeToPoints(points, kBand, kSigma, &regions, &surfaces, &band_points), 1);
   ASSERT_EQ(regions[0].type, SurfaceType::kPlane);
   // The side's plane, tilted by the crease band's points within kBand of
@@ -357,9 +356,9 @@ TEST(RetypeToPoints, AFlatSideWithACreaseBandTypedAsACylinderIsAPlane) {
       << plane.normal.transpose();
   EXPECT_LT(std::abs(SignedDistance(plane, Eigen::Vector3d(0.0, 10.0, 2.0))), kSigma);
   EXPECT_LT(regions[0].rms_distance, cylinder_rms);
-  // Its band holds more points than the cylinder's, and more of the side's:
-  // all but the noise's tail across the tilted plane.
-  EXPECT_GT(band_points[0].size(), cylinder_band);
+  // Its band holds more of the side's points than the cylinder's: all but
+  // the noise's tail across the tilted plane (it may hold fewer of the
+  // crease band's).
   EXPECT_GT(side_points(band_points[0]), cylinder_side);
   EXPECT_GT(side_points(band_points[0]), 0.99 * side);
 }
