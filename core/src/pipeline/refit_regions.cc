@@ -33,6 +33,54 @@ Distances DistancesTo(const Surface& surface, std::span<const Eigen::Vector3d> p
   return d;
 }
 
+// The points within `band` of `surface`.
+std::vector<Eigen::Vector3d> WithinBand(const Surface& surface,
+                                        std::span<const Eigen::Vector3d> points, double band) {
+  std::vector<Eigen::Vector3d> out;
+  for (const Eigen::Vector3d& p : points) {
+    if (std::abs(SignedDistance(surface, p)) <= band) out.push_back(p);
+  }
+  return out;
+}
+
+// The mean over `points` of their squared distances to `surface`, each at
+// most band^2 (a point beyond the band counts as one on its edge).
+double CappedMeanSquare(const Surface& surface, std::span<const Eigen::Vector3d> points,
+                        double band) {
+  if (points.empty()) return 0.0;
+  double sum = 0.0;
+  for (const Eigen::Vector3d& p : points) {
+    const double e = std::abs(SignedDistance(surface, p));
+    sum += std::min(e, band) * std::min(e, band);
+  }
+  return sum / static_cast<double>(points.size());
+}
+
+// The fit of `type` to `points` (normals: the current surface's), then
+// again to the points within `band` of that fit, as the pipeline fits a
+// region to its band; rms/max distances are those of the band's points. No
+// value if either fit is invalid or the band holds fewer than
+// kMinRetypePoints.
+std::optional<FitResult> FitOnOwnBand(SurfaceType type, std::span<const Eigen::Vector3d> points,
+                                      std::span<const Eigen::Vector3d> normals, double band) {
+  const FitResult first = FitOfType(type, {.points = points, .normals = normals, .weights = {}});
+  if (!first.ok()) return std::nullopt;
+  std::vector<Eigen::Vector3d> kept;
+  std::vector<Eigen::Vector3d> kept_normals;
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    if (std::abs(SignedDistance(first.surface, points[k])) <= band) {
+      kept.push_back(points[k]);
+      kept_normals.push_back(normals[k]);
+    }
+  }
+  if (kept.size() == points.size()) return first;
+  if (kept.size() < kMinRetypePoints) return std::nullopt;
+  const FitResult second =
+      FitOfType(type, {.points = kept, .normals = kept_normals, .weights = {}});
+  if (!second.ok()) return std::nullopt;
+  return second;
+}
+
 }  // namespace
 
 void RefitOnInputVertices(const TriMesh& mesh, std::span<const int> face_labels,
@@ -124,8 +172,9 @@ void TakeOwnSurface(Region* region, std::vector<SharedSurface>* surfaces) {
   mine.max_distance = region->max_distance;
 }
 
-int RetypeToPoints(std::span<const std::vector<Eigen::Vector3d>> points_of_region, double sigma,
-                   std::vector<Region>* regions, std::vector<SharedSurface>* surfaces) {
+int RetypeToPoints(std::span<const std::vector<Eigen::Vector3d>> points_of_region, double band,
+                   double sigma, std::vector<Region>* regions, std::vector<SharedSurface>* surfaces,
+                   std::vector<std::vector<Eigen::Vector3d>>* band_points) {
   int changed = 0;
   std::vector<Eigen::Vector3d> normals;
   for (Region& region : *regions) {
@@ -140,14 +189,29 @@ int RetypeToPoints(std::span<const std::vector<Eigen::Vector3d>> points_of_regio
       normals.push_back(Project(region.surface, p, Eigen::Vector3d::Zero()).normal);
     }
     // The criterion needs only the noise: the cloud's, or the scatter the
-    // region's own type leaves if larger (the cloud's sigma comes from local
-    // planes; range noise along oblique rays scatters points more across a
-    // surface), so "near the noise" means "near what the own type achieves".
+    // region's own type leaves on its band if larger (the cloud's sigma
+    // comes from local planes; range noise along oblique rays scatters
+    // points more across a surface), so "near the noise" means "near what
+    // the own type achieves".
     segment_internal::SegmentContext c;
     c.noise_sigma = std::max(sigma, region.rms_distance);
-    const double own_score =
-        segment_internal::InformationScore(c, region.rms_distance * region.rms_distance,
-                                           points.size(), segment_internal::ParameterCount(own));
+    // Every type is scored on the same points, all the region's, each at
+    // its distance to that type's own fit capped at the band. The fit a
+    // type is judged by is its own band's: fitted to all the points, then
+    // again to those within the band of that fit. Judged instead on the
+    // points within the band of the region's current surface, the
+    // comparison is the current type's: where the region holds a flat side
+    // and the rounded crease to its neighbour, a cylinder bent to the
+    // crease keeps the crease's points in its band and drops the side's
+    // points it misses, and on that set a plane scores worse although the
+    // side's points lie on one at the noise. With the cap, a point beyond a
+    // type's band costs the band's square whichever type leaves it there (a
+    // neighbour's point, or one the type cannot reach), so a type gains
+    // nothing by the points it chooses to leave out, and a point it
+    // explains counts its distance.
+    const double own_ms = CappedMeanSquare(region.surface, points, band);
+    const double own_score = segment_internal::InformationScore(
+        c, own_ms, points.size(), segment_internal::ParameterCount(own));
     std::optional<std::pair<SurfaceType, FitResult>> best;
     double best_score = std::numeric_limits<double>::infinity();
     for (const SurfaceType t : kRetypeCandidates) {
@@ -168,18 +232,20 @@ int RetypeToPoints(std::span<const std::vector<Eigen::Vector3d>> points_of_regio
       const bool axial_of_sphere = own == SurfaceType::kSphere &&
                                    (t == SurfaceType::kCylinder || t == SurfaceType::kCone);
       if (!limit && !axial_of_sphere) continue;
-      const FitResult fit = FitOfType(t, {.points = points, .normals = normals, .weights = {}});
-      if (!fit.ok()) continue;
-      const double ms = fit.rms_distance * fit.rms_distance;
+      const std::optional<FitResult> fit = FitOnOwnBand(t, points, normals, band);
+      if (!fit) continue;
+      const double ms = CappedMeanSquare(fit->surface, points, band);
       const double score = segment_internal::InformationScore(c, ms, points.size(),
                                                               segment_internal::ParameterCount(t));
-      const bool near = segment_internal::ModelErrorOfMeanSquare(c, ms) <=
+      // Near the noise on its own band: the points it explains.
+      const double band_ms = fit->rms_distance * fit->rms_distance;
+      const bool near = segment_internal::ModelErrorOfMeanSquare(c, band_ms) <=
                         segment_internal::kScoredNearError * c.noise_sigma;
       if (near && score < best_score &&
           (limit ? score < own_score + segment_internal::kScoreMargin
                  : score + segment_internal::kScoreMargin < own_score)) {
         best_score = score;
-        best.emplace(t, fit);
+        best.emplace(t, *fit);
       }
     }
     if (!best) continue;
@@ -189,6 +255,9 @@ int RetypeToPoints(std::span<const std::vector<Eigen::Vector3d>> points_of_regio
     region.max_distance = best->second.max_distance;
     ++changed;
     TakeOwnSurface(&region, surfaces);
+    if (band_points != nullptr) {
+      (*band_points)[region.id] = WithinBand(region.surface, points, band);
+    }
   }
   return changed;
 }

@@ -44,24 +44,32 @@ void RefitToPoints(std::span<const std::vector<Eigen::Vector3d>> points_of_regio
 inline constexpr std::size_t kMinRetypePoints = 30;
 
 // Point clouds: the surface-type decision (ALGORITHMS.md S1) made again on each curved
-// region's own points (points_of_region, after RefitToPoints), with the
-// segmentation's criterion (segment/decide_type.h), near the noise (within
-// kScoredNearError sigmas of the cloud's `sigma`, or of the rms the region's
-// own type leaves if larger):
+// region's own points (points_of_region: all the points whose nearest face
+// the region holds, the region's surface refitted to those within `band` of
+// it), with the segmentation's criterion (segment/decide_type.h), near the
+// noise (a candidate's rms on its own band within kScoredNearError sigmas
+// of the cloud's `sigma`, or of the rms the region's own type leaves on its
+// band if larger):
 // - a simpler type that is a limit of the region's (a plane of any curved
 //   type; a cylinder or cone of a torus; a cylinder of a cone) takes over
 //   when its information score is less than kScoreMargin above the region's;
 // - a sphere may become a cylinder or cone (no limit of it, nor it of
 //   them) when that scores kScoreMargin below it, never the other way.
+// Every type, the region's own included, is scored on all the region's
+// points, each at its distance to that type's fit capped at `band`, the fit
+// being the type's own: to all the points, then again to those within
+// `band` of it. So no type is judged on the points another type chose.
 // On a reconstructed mesh the type was decided on vertices that round every
 // crease over a spacing and run on over the smooth patches that close
 // unscanned areas, which bends a narrow chamfer into a torus band or a flat
 // side into a cylinder, or closes a bore seen near its rim only into a
 // sphere of its radius; the points are the data. A retyped region leaves
-// the shared surface it was on for one of its own. Returns how many regions
-// changed type.
-int RetypeToPoints(std::span<const std::vector<Eigen::Vector3d>> points_of_region, double sigma,
-                   std::vector<Region>* regions, std::vector<SharedSurface>* surfaces);
+// the shared surface it was on for one of its own, and, if `band_points` is
+// given, band_points[id] becomes its points within `band` of its new
+// surface. Returns how many regions changed type.
+int RetypeToPoints(std::span<const std::vector<Eigen::Vector3d>> points_of_region, double band,
+                   double sigma, std::vector<Region>* regions, std::vector<SharedSurface>* surfaces,
+                   std::vector<std::vector<Eigen::Vector3d>>* band_points = nullptr);
 
 // After a region's type changed: the region leaves the shared surface it was
 // on (whose other regions keep it) for one of its own, which takes its type,

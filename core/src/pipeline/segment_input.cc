@@ -237,6 +237,7 @@ absl::StatusOr<std::vector<int>> SegmentReconstruction(const Reconstruction& rec
   for (std::size_t k = 0; k < nearest.size(); ++k) {
     if (nearest[k] >= 0) points[nearest[k]].push_back(cloud.points[k]);
   }
+  const std::vector<std::vector<Eigen::Vector3d>> all_points = points;
   const double tolerance = segmentation.estimates.distance_tolerance;
   RefitToPoints(points, tolerance, &segmentation.regions);
   // A region's own points are those within its band: the segmentation's
@@ -253,8 +254,9 @@ absl::StatusOr<std::vector<int>> SegmentReconstruction(const Reconstruction& rec
     trusted[region.id] = !points[region.id].empty();
   }
   RefitToPoints(points, tolerance, &segmentation.regions);
-  RetypeToPoints(points, reconstruction.stats.noise, &segmentation.regions,
-                                    &segmentation.surfaces);
+  // Types compared on all of a region's points, each type on its own band.
+  RetypeToPoints(all_points, band, reconstruction.stats.noise, &segmentation.regions,
+                 &segmentation.surfaces, &points);
   // A narrow band's region may hold its neighbours' points beyond both its
   // creases, which bend its type (a chamfer into a torus): its type decided
   // again with each point on the nearest of a simpler type's surface and

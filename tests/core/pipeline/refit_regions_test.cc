@@ -1,6 +1,8 @@
 #include "pipeline/refit_regions.h"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <random>
 #include <variant>
@@ -12,6 +14,8 @@ namespace meshseg::pipeline_internal {
 namespace {
 
 constexpr double kTolerance = 0.1;  // th_dis
+// No band: every type judged on all the points as given.
+constexpr double kNoBand = std::numeric_limits<double>::infinity();
 
 // An open tube of radius 5 along z, its vertices exactly on the cylinder:
 // 24 segments, 4 rings 2 apart.
@@ -206,7 +210,7 @@ TEST(RetypeToPoints, ABoreBandTypedAsASphereIsACylinderOnItsPoints) {
     const std::vector<std::vector<Eigen::Vector3d>> points = {BoreBand(depth, kSigma)};
     std::vector<Region> regions = RegionFittedAs(SurfaceType::kSphere, points[0]);
     std::vector<SharedSurface> surfaces;
-    EXPECT_EQ(RetypeToPoints(points, kSigma, &regions, &surfaces), 1) << depth;
+    EXPECT_EQ(RetypeToPoints(points, kNoBand, kSigma, &regions, &surfaces), 1) << depth;
     ASSERT_EQ(regions[0].type, SurfaceType::kCylinder) << depth;
     EXPECT_NEAR(std::get<Cylinder>(regions[0].surface).radius, 3.5, 0.01) << depth;
     EXPECT_LT(regions[0].rms_distance, 1.1 * kSigma) << depth;
@@ -225,7 +229,8 @@ TEST(RetypeToPoints, ABandTooShortToTellKeepsItsType) {
   for (const SurfaceType type : {SurfaceType::kSphere, SurfaceType::kCylinder}) {
     std::vector<Region> regions = RegionFittedAs(type, points[0]);
     std::vector<SharedSurface> surfaces;
-    EXPECT_EQ(RetypeToPoints(points, kSigma, &regions, &surfaces), 0) << SurfaceTypeName(type);
+    EXPECT_EQ(RetypeToPoints(points, kNoBand, kSigma, &regions, &surfaces), 0)
+        << SurfaceTypeName(type);
     EXPECT_EQ(regions[0].type, type);
   }
 }
@@ -237,7 +242,7 @@ TEST(RetypeToPoints, ACylinderBandStaysACylinder) {
   const std::vector<std::vector<Eigen::Vector3d>> points = {BoreBand(3.0, kSigma)};
   std::vector<Region> regions = RegionFittedAs(SurfaceType::kCylinder, points[0]);
   std::vector<SharedSurface> surfaces;
-  EXPECT_EQ(RetypeToPoints(points, kSigma, &regions, &surfaces), 0);
+  EXPECT_EQ(RetypeToPoints(points, kNoBand, kSigma, &regions, &surfaces), 0);
   EXPECT_EQ(regions[0].type, SurfaceType::kCylinder);
 }
 
@@ -267,10 +272,130 @@ TEST(RetypeToPoints, AChamferWithItsCreaseBandsStaysACone) {
       points[0].push_back((5.0 - 1.5 * u) * radial + Eigen::Vector3d(0, 0, 1.5 * u) + e * n);
     }
   }
-  std::vector<Region> regions = RegionFittedAs(SurfaceType::kCone, points[0]);
+  // Also with each type on its own band of 3 sigma.
+  for (const double band : {kNoBand, 3.0 * kSigma}) {
+    std::vector<Region> regions = RegionFittedAs(SurfaceType::kCone, points[0]);
+    std::vector<SharedSurface> surfaces;
+    EXPECT_EQ(RetypeToPoints(points, band, kSigma, &regions, &surfaces), 0) << band;
+    EXPECT_EQ(regions[0].type, SurfaceType::kCone) << band;
+  }
+}
+
+// A region's points as a reconstruction gives them where a flat side meets
+// a flat top at a right angle: the side x = 0 seen from z = 0 up to the
+// crease at z = kSideHeight (y from 0 to 20), and the top's points within
+// `crease_width` of the crease (x from -crease_width to 0), which fall
+// nearest to the side's faces where the mesh rounds the crease. Uniform
+// over the area, Gaussian noise `sigma` across each plane.
+std::vector<Eigen::Vector3d> SideWithCreaseBand(double crease_width, double sigma) {
+  constexpr double kSideHeight = 4.0;
+  std::mt19937 random(5);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::normal_distribution<double> noise(0.0, sigma);
+  const double side_share = kSideHeight / (kSideHeight + crease_width);
+  std::vector<Eigen::Vector3d> points;
+  for (int k = 0; k < 2500; ++k) {
+    const double y = 20.0 * unit(random);
+    if (unit(random) < side_share) {
+      points.emplace_back(noise(random), y, kSideHeight * unit(random));
+    } else {
+      points.emplace_back(-crease_width * unit(random), y, kSideHeight + noise(random));
+    }
+  }
+  return points;
+}
+
+// One region of `type` fitted as the pipeline fits a region to its points:
+// to all of them, then again to those within `band` of that fit (returned
+// in `band_points`).
+std::vector<Region> RegionFittedToItsBand(SurfaceType type,
+                                          const std::vector<Eigen::Vector3d>& points, double band,
+                                          std::vector<Eigen::Vector3d>* band_points) {
+  std::vector<Region> regions = RegionFittedAs(type, points);
+  band_points->clear();
+  for (const Eigen::Vector3d& p : points) {
+    if (std::abs(SignedDistance(regions[0].surface, p)) <= band) band_points->push_back(p);
+  }
+  RefitToPoints(std::vector<std::vector<Eigen::Vector3d>>{*band_points}, kTolerance, &regions);
+  return regions;
+}
+
+TEST(RetypeToPoints, AFlatSideWithACreaseBandTypedAsACylinderIsAPlane) {
+  // A cylinder bent into the crease band: within its band it keeps the
+  // crease's points and drops side points it misses, so on that band a
+  // plane fits worse than it and the cylinder stays (the old criterion).
+  // Each type on its own band, scored on all the points: the plane explains
+  // the side at the noise and leaves only the crease band's points at the
+  // band's edge, the cylinder leaves side points there.
+  constexpr double kSigma = 0.077, kBand = 0.31;
+  const std::vector<std::vector<Eigen::Vector3d>> points = {SideWithCreaseBand(1.2, kSigma)};
+  std::vector<std::vector<Eigen::Vector3d>> band_points(1);
+  std::vector<Region> regions =
+      RegionFittedToItsBand(SurfaceType::kCylinder, points[0], kBand, &band_points[0]);
+  ASSERT_EQ(regions[0].type, SurfaceType::kCylinder);
+  std::vector<Region> on_its_band = regions;
   std::vector<SharedSurface> surfaces;
-  EXPECT_EQ(RetypeToPoints(points, kSigma, &regions, &surfaces), 0);
-  EXPECT_EQ(regions[0].type, SurfaceType::kCone);
+  EXPECT_EQ(RetypeToPoints(band_points, kNoBand, kSigma, &on_its_band, &surfaces), 0)
+      << "rms " << regions[0].rms_distance << " of " << band_points[0].size();
+
+  // The side's points below the crease band, and how many a band holds.
+  auto side_points = [](const std::vector<Eigen::Vector3d>& points) {
+    return std::count_if(points.begin(), points.end(),
+                         [](const Eigen::Vector3d& p) { return p.z() < 4.0 - kBand; });
+  };
+  const double side = static_cast<double>(side_points(points[0]));
+  const auto cylinder_side = side_points(band_points[0]);
+  const double cylinder_rms = regions[0].rms_distance;
+  EXPECT_EQ(RetypeToPoints(points, kBand, kSigma, &regions, &surfaces, &band_points), 1);
+  ASSERT_EQ(regions[0].type, SurfaceType::kPlane);
+  // The side's plane, tilted by the crease band's points within kBand of
+  // it (up to 0.31 inside the top): within 5 degrees, through the side's
+  // middle within the noise.
+  const Plane& plane = std::get<Plane>(regions[0].surface);
+  EXPECT_GT(std::abs(plane.normal.x()), std::cos(5.0 * std::numbers::pi / 180.0))
+      << plane.normal.transpose();
+  EXPECT_LT(std::abs(SignedDistance(plane, Eigen::Vector3d(0.0, 10.0, 2.0))), kSigma);
+  EXPECT_LT(regions[0].rms_distance, cylinder_rms);
+  // Its band holds more of the side's points than the cylinder's: all but
+  // the noise's tail across the tilted plane (it may hold fewer of the
+  // crease band's).
+  EXPECT_GT(side_points(band_points[0]), cylinder_side);
+  EXPECT_GT(side_points(band_points[0]), 0.99 * side);
+}
+
+// Points on a strip of the cylinder of radius 6 around the y axis, over
+// `degrees` of arc from the top (z = 6) down its side, y from 0 to 20, with
+// Gaussian noise `sigma` across it.
+std::vector<Eigen::Vector3d> CylinderStrip(double degrees, double sigma) {
+  std::mt19937 random(9);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::normal_distribution<double> noise(0.0, sigma);
+  std::vector<Eigen::Vector3d> points;
+  for (int k = 0; k < 2500; ++k) {
+    const double t = degrees * std::numbers::pi / 180.0 * unit(random);
+    const double r = 6.0 + noise(random);
+    points.emplace_back(r * std::sin(t), 20.0 * unit(random), r * std::cos(t));
+  }
+  return points;
+}
+
+TEST(RetypeToPoints, ACylinderStripOnItsOwnBandStaysACylinder) {
+  // 40 and 90 degrees of a radius-6 cylinder: a plane's band keeps the
+  // strip's middle and leaves its ends at the band's edge (sagitta 0.7 and
+  // 1.8 over the band's 0.31), the cylinder explains them all at the noise.
+  constexpr double kSigma = 0.077, kBand = 0.31;
+  for (const double degrees : {40.0, 90.0}) {
+    const std::vector<std::vector<Eigen::Vector3d>> points = {CylinderStrip(degrees, kSigma)};
+    std::vector<std::vector<Eigen::Vector3d>> band_points(1);
+    std::vector<Region> regions =
+        RegionFittedToItsBand(SurfaceType::kCylinder, points[0], kBand, &band_points[0]);
+    const std::vector<std::vector<Eigen::Vector3d>> its_band = band_points;
+    std::vector<SharedSurface> surfaces;
+    EXPECT_EQ(RetypeToPoints(points, kBand, kSigma, &regions, &surfaces, &band_points), 0)
+        << degrees;
+    EXPECT_EQ(regions[0].type, SurfaceType::kCylinder) << degrees;
+    EXPECT_TRUE(band_points == its_band) << degrees;
+  }
 }
 
 }  // namespace

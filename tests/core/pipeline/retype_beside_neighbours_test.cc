@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <numbers>
 #include <random>
 #include <variant>
@@ -19,6 +20,8 @@ namespace {
 // about 30 x 15 (noise 0.22 spacings).
 constexpr double kSpacing = 0.3;
 constexpr double kSigma = 0.066;
+// No band: every type judged on all the points as given.
+constexpr double kNoBand = std::numeric_limits<double>::infinity();
 
 // A point of a surface of revolution about the z axis: `profile(s)` gives
 // (radius, z, normal's radial part, normal's z part) at arc length s.
@@ -148,7 +151,7 @@ TEST(RetypeBesideNeighbours, AChamferWhoseRegionReachesOverBothCreasesIsACone) {
   std::vector<SharedSurface> surfaces = OwnSurfaces(regions);
   // On its band alone the torus stays: its points are the data it bent to.
   std::vector<Region> alone = regions;
-  EXPECT_EQ(RetypeToPoints(points, kSigma, &alone, &surfaces), 0);
+  EXPECT_EQ(RetypeToPoints(points, kNoBand, kSigma, &alone, &surfaces), 0);
   ASSERT_EQ(alone[0].type, SurfaceType::kTorus);
 
   ExpectBandRetypedToTheChamferCone(points, &regions, &surfaces);
@@ -188,7 +191,7 @@ TEST(RetypeBesideNeighbours, AChamferTypedASphereIsACone) {
   std::vector<SharedSurface> surfaces = OwnSurfaces(regions);
   // On its band alone the sphere stays.
   std::vector<Region> alone = regions;
-  EXPECT_EQ(RetypeToPoints(points, kSigma, &alone, &surfaces), 0);
+  EXPECT_EQ(RetypeToPoints(points, kNoBand, kSigma, &alone, &surfaces), 0);
   ASSERT_EQ(alone[0].type, SurfaceType::kSphere);
 
   ExpectBandRetypedToTheChamferCone(points, &regions, &surfaces);
