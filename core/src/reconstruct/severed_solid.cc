@@ -4,6 +4,7 @@
 #include <numeric>
 
 #include "mesh/union_find.h"
+#include "reconstruct/graph_cut.h"
 
 namespace meshseg::reconstruct_internal {
 
@@ -60,11 +61,22 @@ int64_t RejoinSeveredSolid(const TetMesh& tets, const std::vector<double>& f,
   const auto turned = [&](int v) {
     return by_sign[v] && !in[v] && (seen_outside.empty() || !seen_outside[v]);
   };
+  // A resolved vertex the cut was free to turn (outside the set it ties to
+  // the source) and turned outside is a severed piece of one vertex
+  // (severed_solid.h), kept apart from the inside sets above.
+  const std::vector<uint8_t> tied = ResolvedInside(tets, f, sparse, epsilon);
+  std::vector<std::vector<int>> pieces;
+  for (int r = 0; r < n; ++r) {
+    if (!severed[r].empty()) pieces.push_back(std::move(severed[r]));
+  }
+  for (int v = 0; v < n; ++v) {
+    if (turned(v) && resolved(v) && !tied[v]) pieces.push_back({v});
+  }
   std::vector<uint8_t> reached(n, 0);
   int64_t rejoined = 0;
-  for (int r = 0; r < n; ++r) {
-    const std::vector<int>& piece = severed[r];
-    if (piece.empty() || std::none_of(piece.begin(), piece.end(), resolved)) continue;
+  for (const std::vector<int>& piece : pieces) {
+    if (std::none_of(piece.begin(), piece.end(), resolved)) continue;
+    if (joined[piece.front()]) continue;  // a lone vertex a layer already took back
     std::vector<int> layers;  // the turned vertices reached so far, layer by layer
     std::vector<int> frontier = piece;
     std::vector<int> seen = piece;  // to clear `reached` after
@@ -88,7 +100,11 @@ int64_t RejoinSeveredSolid(const TetMesh& tets, const std::vector<double>& f,
     }
     for (const int v : seen) reached[v] = 0;
     if (!meets_main) continue;
-    for (const int v : piece) joined[v] = 1;
+    for (const int v : piece) {
+      rejoined += !in[v];
+      in[v] = 1;
+      joined[v] = 1;
+    }
     for (const int v : layers) {
       in[v] = 1;
       joined[v] = 1;

@@ -90,6 +90,54 @@ TEST(RejoinSeveredSolid, CrossesAGapSeveralLayersWide) {
   EXPECT_EQ(g.inside, g.by_sign);
 }
 
+// The node at the centre of the face x = 1 of a plate-like solid, which
+// the points resolve inside (f = 1 ≥ ε, not sparse), has only shallow
+// neighbours (the rest of that face and the row x = 0.5, f below ε): the
+// cut turned it outside with them. It goes back inside with the turned
+// nodes between it and the solid, and the face's nodes farther off (its
+// corners) stay as the cut left them.
+TEST(RejoinSeveredSolid, GivesBackAResolvedVertexTheCutTurnedOutsideItself) {
+  Grid g = CubeGrid();
+  const std::vector<int> face = g.Slice(1.0), row = g.Slice(0.5);
+  g.Set(face, 0.5 * kEpsilon);
+  g.Set(row, 0.5 * kEpsilon);
+  int centre = -1;
+  for (const int v : face) {
+    if (g.position[v].tail<2>().norm() < 1e-9) centre = v;
+  }
+  ASSERT_GE(centre, 0);
+  g.f[centre] = 1.0;
+  g.Label(face, 0);
+  g.Label(row, 0);
+  const int64_t rejoined =
+      RejoinSeveredSolid(g.tets, g.f, g.by_sign, g.sparse, {}, kEpsilon, &g.inside);
+  EXPECT_GT(rejoined, 1);  // the centre and the turned nodes joining it
+  EXPECT_EQ(g.inside[centre], 1);
+  for (const int v : face) {
+    if (g.position[v].tail<2>().cwiseAbs().minCoeff() > 1.0 - 1e-9) {
+      EXPECT_EQ(g.inside[v], 0) << v;
+    }
+  }
+}
+
+// The same lone resolved node behind a row the points show outside (f < 0,
+// a second body beside the solid) stays outside.
+TEST(RejoinSeveredSolid, LeavesAResolvedVertexBeyondAGapThePointsShow) {
+  Grid g = CubeGrid();
+  const std::vector<int> face = g.Slice(1.0), row = g.Slice(0.5);
+  g.Set(face, 0.5 * kEpsilon);
+  g.Set(row, -0.5);
+  for (const int v : face) {
+    if (g.position[v].tail<2>().norm() < 1e-9) g.f[v] = 1.0;
+  }
+  g.by_sign = SignLabels(g.tets, g.f);
+  g.inside = g.by_sign;
+  g.Label(face, 0);
+  const std::vector<uint8_t> before = g.inside;
+  EXPECT_EQ(RejoinSeveredSolid(g.tets, g.f, g.by_sign, g.sparse, {}, kEpsilon, &g.inside), 0);
+  EXPECT_EQ(g.inside, before);
+}
+
 // A piece with no vertex the points resolve (f below ε, or sparse
 // supports) is a bubble the small-component drop judges: left apart.
 TEST(RejoinSeveredSolid, LeavesAPieceThePointsDoNotResolve) {
