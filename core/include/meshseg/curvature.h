@@ -39,10 +39,11 @@ struct VertexGraph {
 // Returns the vertex graph (adjacency and positions) of `mesh`.
 VertexGraph BuildVertexGraph(const TriMesh& mesh);
 
-// Reusable visit marks for CollectNeighborhood; one per thread.
+// Reusable visit marks and queue for CollectNeighborhood; one per thread.
 struct NeighborhoodScratch {
   std::vector<uint32_t> mark;
   uint32_t stamp = 0;
+  std::vector<int> queue;
 };
 
 // Fills `out` with N(i, radius) in breadth-first order, v_i first: the

@@ -1,5 +1,6 @@
 // Vertex adjacency in compressed rows and the metric neighbourhoods N(i, W)
 // of seed 000 §2 (breadth-first over edges, cut by Euclidean radius).
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -56,17 +57,17 @@ VertexGraph BuildVertexGraph(const TriMesh& mesh) {
 void CollectNeighborhood(const VertexGraph& graph, int i, double radius,
                          std::span<const uint8_t> excluded, NeighborhoodScratch* scratch,
                          std::vector<int>* out, std::size_t max_count) {
-  out->clear();
-  if (scratch->mark.size() != graph.positions.size()) {
-    scratch->mark.assign(graph.positions.size(), 0);
+  const std::size_t n = graph.positions.size();
+  if (scratch->mark.size() != n) {
+    scratch->mark.assign(n, 0);
     scratch->stamp = 0;
   }
   if (++scratch->stamp == 0) {  // wrapped: clear the marks once
     std::fill(scratch->mark.begin(), scratch->mark.end(), 0);
     scratch->stamp = 1;
   }
-  // Raw pointers: the compiler cannot prove that the pushes into `out` leave
-  // the marks and positions alone, and would reload them on every edge.
+  // Raw pointers: the compiler cannot prove that the writes into the queue
+  // leave the marks and positions alone, and would reload them on every edge.
   const uint32_t stamp = scratch->stamp;
   uint32_t* const mark = scratch->mark.data();
   const Eigen::Vector3d* const positions = graph.positions.data();
@@ -75,21 +76,46 @@ void CollectNeighborhood(const VertexGraph& graph, int i, double radius,
   const uint8_t* const skip = excluded.empty() ? nullptr : excluded.data();
   const double r2 = radius * radius;
   const Eigen::Vector3d center = positions[i];
+  // The queue is written without branches: every neighbour of the row is
+  // stored at the queue's end and kept (the end moves past it) only if it
+  // is new, not excluded and inside the radius. Whether a neighbour is new
+  // follows no pattern the branch predictor can learn (about half of a
+  // row was reached before), so the branchy form waited on mispredictions.
+  // Each row is still scanned in order and its kept vertices appended in
+  // order: the same queue, so the same neighbourhood in the same order.
+  std::vector<int>& queue = scratch->queue;
+  if (queue.size() < 64) queue.resize(64);
+  int* q = queue.data();
+  std::size_t size = 0;
   mark[i] = stamp;
-  out->push_back(i);
-  for (std::size_t head = 0; head < out->size(); ++head) {
-    if (max_count != 0 && out->size() >= max_count) break;
-    const int x = (*out)[head];
-    for (int k = offsets[x], end = offsets[x + 1]; k < end; ++k) {
+  q[size++] = i;
+  const std::size_t cap = max_count == 0 ? n : max_count;
+  for (std::size_t head = 0; head < size && size < cap; ++head) {
+    const int x = q[head];
+    const int begin = offsets[x];
+    const int end = offsets[x + 1];
+    const std::size_t need = size + static_cast<std::size_t>(end - begin);
+    if (need > queue.size()) {
+      queue.resize(std::max(need, 2 * queue.size()));
+      q = queue.data();
+    }
+    for (int k = begin; k < end; ++k) {
       const int j = neighbors[k];
-      if (mark[j] == stamp) continue;
+      // As the branchy form: a vertex seen before is neither taken nor
+      // marked again; one newly seen is marked whether or not it is taken
+      // (excluded vertices and those outside are not passed through). The
+      // radius test is !(d >= r2), so a NaN distance is taken, as before.
+      const bool fresh = mark[j] != stamp;
       mark[j] = stamp;
-      if (skip != nullptr && skip[j] != 0) continue;
-      if ((positions[j] - center).squaredNorm() >= r2) continue;
-      out->push_back(j);
-      if (max_count != 0 && out->size() >= max_count) break;
+      const bool allowed = skip == nullptr || skip[j] == 0;
+      const bool inside = !((positions[j] - center).squaredNorm() >= r2);
+      q[size] = j;
+      size += static_cast<std::size_t>(fresh & allowed & inside);
     }
   }
+  // Vertices past the cap were appended by the last row scanned; the
+  // first `cap` are those the one-at-a-time walk stops at.
+  out->assign(q, q + std::min(size, cap));
 }
 
 }  // namespace meshseg

@@ -3,6 +3,7 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <limits>
+#include <thread>
 #include <type_traits>
 #include <variant>
 
@@ -17,48 +18,72 @@ namespace {
 // its ends' tenth of it (a vertex put on an edge, not a corner of a fan).
 constexpr double kChordInside = 0.1;
 
-// fm->chord_ends and chord_offset of vertex v (`ring`: scratch).
-void FindChordVertex(const TriMesh& mesh, TriMesh::VertexHandle v, FacetMesh* fm,
+// fm.chord_ends and chord_offset of vertex v, from their initial {-1, -1}
+// and infinity (`ring`: scratch).
+void FindChordVertex(const TriMesh& mesh, TriMesh::VertexHandle v, const FacetMesh& fm,
                      std::vector<int>* ring) {
   ring->clear();
   for (const auto w : mesh.vv_range(v)) ring->push_back(w.idx());
-  const Eigen::Vector3d& p = fm->points[v.idx()];
+  const Eigen::Vector3d& p = fm.points[v.idx()];
   for (std::size_t i = 0; i < ring->size(); ++i) {
     for (std::size_t j = i + 1; j < ring->size(); ++j) {
-      const Eigen::Vector3d& a = fm->points[(*ring)[i]];
-      const Eigen::Vector3d ab = fm->points[(*ring)[j]] - a;
+      const Eigen::Vector3d& a = fm.points[(*ring)[i]];
+      const Eigen::Vector3d ab = fm.points[(*ring)[j]] - a;
       const double length2 = ab.squaredNorm();
       if (!(length2 > 0.0)) continue;
       const double t = (p - a).dot(ab) / length2;
       if (t < kChordInside || t > 1.0 - kChordInside) continue;
       const double offset = (a + t * ab - p).norm();
-      if (offset < fm->chord_offset[v.idx()]) {
-        fm->chord_offset[v.idx()] = offset;
-        fm->chord_ends[v.idx()] = {(*ring)[i], (*ring)[j]};
+      if (offset < fm.chord_offset[v.idx()]) {
+        fm.chord_offset[v.idx()] = offset;
+        fm.chord_ends[v.idx()] = {(*ring)[i], (*ring)[j]};
       }
     }
   }
 }
 
-// fm->chord_ends and chord_offset (facet_mesh.h), each vertex on its own
-// (independent; the mesh is only read).
-void FindChordVertices(const TriMesh& mesh, FacetMesh* fm) {
+// fm->chord_ends and chord_offset (facet_mesh.h): up front, each vertex on
+// its own (independent; the mesh is only read), or left to be found on
+// first use.
+void FindChordVertices(const TriMesh& mesh, ChordVertices when, FacetMesh* fm) {
   const int n = static_cast<int>(fm->points.size());
   fm->chord_ends.assign(n, {-1, -1});
   fm->chord_offset.assign(n, std::numeric_limits<double>::infinity());
+  if (when == ChordVertices::kOnFirstUse) {
+    fm->chord_source = &mesh;
+    fm->chord_state = std::make_unique<std::atomic<uint8_t>[]>(n);  // all 0: not found
+    return;
+  }
   tbb::parallel_for(tbb::blocked_range<int>(0, n, 4096), [&](const tbb::blocked_range<int>& range) {
     std::vector<int> ring;
     for (int index = range.begin(); index < range.end(); ++index) {
       const TriMesh::VertexHandle v(index);
       if (mesh.has_vertex_status() && mesh.status(v).deleted()) continue;
-      FindChordVertex(mesh, v, fm, &ring);
+      FindChordVertex(mesh, v, *fm, &ring);
     }
   });
 }
 
 }  // namespace
 
-FacetMesh BuildFacetMesh(const TriMesh& mesh) {
+void FacetMesh::FindChordOnFirstUse(int v) const {
+  std::atomic<uint8_t>& state = chord_state[v];
+  if (state.load(std::memory_order_acquire) == 2) return;
+  uint8_t expected = 0;
+  if (state.compare_exchange_strong(expected, 1, std::memory_order_acquire)) {
+    const TriMesh::VertexHandle vh(v);
+    if (!(chord_source->has_vertex_status() && chord_source->status(vh).deleted())) {
+      thread_local std::vector<int> ring;
+      FindChordVertex(*chord_source, vh, *this, &ring);
+    }
+    state.store(2, std::memory_order_release);
+    return;
+  }
+  // Another thread is finding them: wait for its entries.
+  while (state.load(std::memory_order_acquire) != 2) std::this_thread::yield();
+}
+
+FacetMesh BuildFacetMesh(const TriMesh& mesh, ChordVertices chords) {
   FacetMesh fm;
   const int n_vertices = static_cast<int>(mesh.n_vertices());
   Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
@@ -101,7 +126,7 @@ FacetMesh BuildFacetMesh(const TriMesh& mesh) {
           fm.normal[index] = norm > 0.0 ? Eigen::Vector3d(cross / norm) : Eigen::Vector3d::Zero();
         }
       });
-  FindChordVertices(mesh, &fm);
+  FindChordVertices(mesh, chords, &fm);
   return fm;
 }
 

@@ -40,7 +40,7 @@ double LargestCurvature(const Surface& surface, const std::array<Eigen::Vector3d
 
 bool ChordOnSurface(const FacetMesh& fm, int v, const Surface& surface, double tau) {
   if (!OnChord(fm, v, tau)) return false;
-  for (const int end : fm.chord_ends[v]) {
+  for (const int end : fm.ChordEnds(v)) {
     if (!(std::abs(SignedDistance(surface, fm.points[end])) <= tau)) return false;
   }
   return true;

@@ -188,7 +188,10 @@ Segmentation Assemble(const Mesh& mesh, const FacetMesh& fm,
 }  // namespace
 
 Exactness EstimateExactness(const Mesh& mesh, std::optional<double> tolerance) {
-  const FacetMesh fm = segment_internal::BuildFacetMesh(mesh.tri);
+  // The sampled tests read the chord vertices of the facets near their
+  // samples only: found as read.
+  const FacetMesh fm =
+      segment_internal::BuildFacetMesh(mesh.tri, segment_internal::ChordVertices::kOnFirstUse);
   return Measure(fm, Tolerance(mesh.tri, fm, tolerance), MeanEdgeLength(mesh.tri));
 }
 
