@@ -33,16 +33,6 @@ Distances DistancesTo(const Surface& surface, std::span<const Eigen::Vector3d> p
   return d;
 }
 
-// The points within `band` of `surface`.
-std::vector<Eigen::Vector3d> WithinBand(const Surface& surface,
-                                        std::span<const Eigen::Vector3d> points, double band) {
-  std::vector<Eigen::Vector3d> out;
-  for (const Eigen::Vector3d& p : points) {
-    if (std::abs(SignedDistance(surface, p)) <= band) out.push_back(p);
-  }
-  return out;
-}
-
 // The mean over `points` of their squared distances to `surface`, each at
 // most band^2 (a point beyond the band counts as one on its edge).
 double CappedMeanSquare(const Surface& surface, std::span<const Eigen::Vector3d> points,
@@ -82,6 +72,15 @@ std::optional<FitResult> FitOnOwnBand(SurfaceType type, std::span<const Eigen::V
 }
 
 }  // namespace
+
+std::vector<Eigen::Vector3d> WithinBand(const Surface& surface,
+                                        std::span<const Eigen::Vector3d> points, double band) {
+  std::vector<Eigen::Vector3d> out;
+  for (const Eigen::Vector3d& p : points) {
+    if (std::abs(SignedDistance(surface, p)) <= band) out.push_back(p);
+  }
+  return out;
+}
 
 void RefitOnInputVertices(const TriMesh& mesh, std::span<const int> face_labels,
                           double distance_tolerance, std::vector<Region>* regions) {

@@ -40,6 +40,10 @@ void RefitOnInputVertices(const TriMesh& mesh, std::span<const int> face_labels,
 void RefitToPoints(std::span<const std::vector<Eigen::Vector3d>> points_of_region,
                    double distance_tolerance, std::vector<Region>* regions);
 
+// Returns the points within `band` of `surface` (a NaN distance is not).
+std::vector<Eigen::Vector3d> WithinBand(const Surface& surface,
+                                        std::span<const Eigen::Vector3d> points, double band);
+
 // Fewer points than this tell no type from another (the cone's fit needs 6).
 inline constexpr std::size_t kMinRetypePoints = 30;
 

@@ -233,24 +233,22 @@ absl::StatusOr<std::vector<int>> SegmentReconstruction(const Reconstruction& rec
   // Each region's points: those whose nearest face it holds.
   const std::vector<int> nearest = PointLabels(
       mesh.tri, segmentation.face_labels, cloud.points, reconstruction.is_outlier);
-  std::vector<std::vector<Eigen::Vector3d>> points(segmentation.regions.size());
+  std::vector<std::vector<Eigen::Vector3d>> all_points(segmentation.regions.size());
   for (std::size_t k = 0; k < nearest.size(); ++k) {
-    if (nearest[k] >= 0) points[nearest[k]].push_back(cloud.points[k]);
+    if (nearest[k] >= 0) all_points[nearest[k]].push_back(cloud.points[k]);
   }
-  const std::vector<std::vector<Eigen::Vector3d>> all_points = points;
   const double tolerance = segmentation.estimates.distance_tolerance;
-  RefitToPoints(points, tolerance, &segmentation.regions);
+  RefitToPoints(all_points, tolerance, &segmentation.regions);
   // A region's own points are those within its band: the segmentation's
   // distance tolerance th_dis, widened to 3 sigma of the cloud's noise. The
   // others are a neighbour's (the rounded band of a crease, faces given to
   // the wrong side), which the least-squares fit above still follows; the
   // surface is fitted again without them.
   const double band = std::max(tolerance, 3.0 * reconstruction.stats.noise);
+  std::vector<std::vector<Eigen::Vector3d>> points(segmentation.regions.size());
   std::vector<uint8_t> trusted(segmentation.regions.size(), 0);
   for (const Region& region : segmentation.regions) {
-    std::erase_if(points[region.id], [&](const Eigen::Vector3d& p) {
-      return !(std::abs(SignedDistance(region.surface, p)) <= band);
-    });
+    points[region.id] = WithinBand(region.surface, all_points[region.id], band);
     trusted[region.id] = !points[region.id].empty();
   }
   RefitToPoints(points, tolerance, &segmentation.regions);

@@ -106,7 +106,7 @@ std::vector<uint8_t> ResolvedInside(const TetMesh& tets, const std::vector<doubl
                                     const std::vector<uint8_t>& sparse, double epsilon) {
   const int n = static_cast<int>(f.size());
   std::vector<uint8_t> resolved(n);
-  for (int v = 0; v < n; ++v) resolved[v] = !tets.on_hull[v] && !sparse[v] && f[v] >= epsilon;
+  for (int v = 0; v < n; ++v) resolved[v] = ResolvedAt(tets, f, sparse, epsilon, v);
   std::vector<int> parent(n);
   std::iota(parent.begin(), parent.end(), 0);
   for (const auto& [a, b] : tets.edges) {

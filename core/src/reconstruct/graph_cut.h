@@ -39,6 +39,14 @@ absl::StatusOr<std::vector<uint8_t>> GraphCutLabels(const TetMesh& tets,
                                                     const std::vector<uint8_t>& seen_outside,
                                                     const RunContext& ctx);
 
+// True if the points resolve tet vertex v inside on their own (the test
+// ResolvedInside applies before keeping the largest set): not on the hull, a
+// support of at least the sparse count of points, and f >= epsilon.
+inline bool ResolvedAt(const TetMesh& tets, const std::vector<double>& f,
+                       const std::vector<uint8_t>& sparse, double epsilon, int v) {
+  return !tets.on_hull[v] && !sparse[v] && f[v] >= epsilon;
+}
+
 // Returns 1 at the vertices whose inside the points resolve: not on the hull,
 // a support holding at least the sparse count of points (`sparse` 0), and
 // f ≥ ε: the points in the ball lie within ε of its fitted plane (eq. 6), so

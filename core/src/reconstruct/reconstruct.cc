@@ -272,7 +272,8 @@ absl::StatusOr<Reconstruction> Reconstruct(const PointCloud& cloud, const Recons
     MESHSEG_ASSIGN_OR_RETURN(inside, GraphCutLabels(tets, position, f_at, params.graph_cut_k,
                                                     resolved, seen_outside, ctx));
     // ... and it does not split the solid f holds together (severed_solid.h).
-    RejoinSeveredSolid(tets, f_at, by_sign, sparse, seen_outside, fit_input.epsilon, &inside);
+    RejoinSeveredSolid(tets, f_at, by_sign, sparse, seen_outside, resolved, fit_input.epsilon,
+                       &inside);
   }
   for (size_t v = 0; v < inside.size(); ++v) stats.relabelled_count += inside[v] != by_sign[v];
   ctx.Progress(kStage, 0.75);

@@ -12,7 +12,8 @@ using mesh_internal::FindRoot;
 
 int64_t RejoinSeveredSolid(const TetMesh& tets, const std::vector<double>& f,
                            const std::vector<uint8_t>& by_sign, const std::vector<uint8_t>& sparse,
-                           const std::vector<uint8_t>& seen_outside, double epsilon,
+                           const std::vector<uint8_t>& seen_outside,
+                           const std::vector<uint8_t>& tied, double epsilon,
                            std::vector<uint8_t>* inside) {
   std::vector<uint8_t>& in = *inside;
   const int n = static_cast<int>(in.size());
@@ -56,7 +57,7 @@ int64_t RejoinSeveredSolid(const TetMesh& tets, const std::vector<double>& f,
       severed[r].push_back(v);
     }
   }
-  const auto resolved = [&](int v) { return !tets.on_hull[v] && !sparse[v] && f[v] >= epsilon; };
+  const auto resolved = [&](int v) { return ResolvedAt(tets, f, sparse, epsilon, v); };
   // Turned outside by the cut although f and the points leave it inside.
   const auto turned = [&](int v) {
     return by_sign[v] && !in[v] && (seen_outside.empty() || !seen_outside[v]);
@@ -64,7 +65,6 @@ int64_t RejoinSeveredSolid(const TetMesh& tets, const std::vector<double>& f,
   // A resolved vertex the cut was free to turn (outside the set it ties to
   // the source) and turned outside is a severed piece of one vertex
   // (severed_solid.h), kept apart from the inside sets above.
-  const std::vector<uint8_t> tied = ResolvedInside(tets, f, sparse, epsilon);
   std::vector<std::vector<int>> pieces;
   for (int r = 0; r < n; ++r) {
     if (!severed[r].empty()) pieces.push_back(std::move(severed[r]));

@@ -64,11 +64,13 @@ namespace meshseg::reconstruct_internal {
 // than 3 spacings from the truth 8.5 % of its area, 3.4 % with it given
 // back). A bubble is joined to the solid by no f ≥ 0 (the face's fits read
 // f < 0 in front of it), so it stays free.
-// `f`, `by_sign`, `sparse`, `seen_outside` (empty: none) and `inside` have
-// one entry per tet vertex.
+// `tied` is the set ResolvedInside returned for the cut (the same `f`,
+// `sparse` and `epsilon`). `f`, `by_sign`, `sparse`, `seen_outside` (empty:
+// none), `tied` and `inside` have one entry per tet vertex.
 int64_t RejoinSeveredSolid(const TetMesh& tets, const std::vector<double>& f,
                            const std::vector<uint8_t>& by_sign, const std::vector<uint8_t>& sparse,
-                           const std::vector<uint8_t>& seen_outside, double epsilon,
+                           const std::vector<uint8_t>& seen_outside,
+                           const std::vector<uint8_t>& tied, double epsilon,
                            std::vector<uint8_t>* inside);
 
 }  // namespace meshseg::reconstruct_internal

@@ -170,20 +170,28 @@ TEST(RelabelFacesOffTheirSurface, AFaceOnItsOwnSurfaceStays) {
   EXPECT_EQ(labels[0], 1);
 }
 
+// `count` points on the cylinder of radius `radius` about the z axis, over
+// the angles [0, arc) and the heights between 0 and `length` (negative:
+// below z = 0), with Gaussian noise `sigma` across it, drawn from `seed`.
+std::vector<Eigen::Vector3d> NoisyCylinderPoints(unsigned seed, int count, double radius,
+                                                 double arc, double length, double sigma) {
+  std::mt19937 random(seed);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::normal_distribution<double> noise(0.0, sigma);
+  std::vector<Eigen::Vector3d> points;
+  for (int k = 0; k < count; ++k) {
+    const double t = arc * unit(random);
+    const double r = radius + noise(random);
+    points.emplace_back(r * std::cos(t), r * std::sin(t), length * unit(random));
+  }
+  return points;
+}
+
 // Points on the wall of a bore of radius 3.5 around the z axis, from its rim
 // (z = 0) down to depth `depth`, all around, with Gaussian noise `sigma`
 // across the wall: the band a scan from above sees near a rim.
 std::vector<Eigen::Vector3d> BoreBand(double depth, double sigma) {
-  std::mt19937 random(7);
-  std::uniform_real_distribution<double> unit(0.0, 1.0);
-  std::normal_distribution<double> noise(0.0, sigma);
-  std::vector<Eigen::Vector3d> points;
-  for (int k = 0; k < 1500; ++k) {
-    const double t = 2.0 * std::numbers::pi * unit(random);
-    const double r = 3.5 + noise(random);
-    points.emplace_back(r * std::cos(t), r * std::sin(t), -depth * unit(random));
-  }
-  return points;
+  return NoisyCylinderPoints(7, 1500, 3.5, 2.0 * std::numbers::pi, -depth, sigma);
 }
 
 // One region of `type`, fitted to `points`.
@@ -367,15 +375,10 @@ TEST(RetypeToPoints, AFlatSideWithACreaseBandTypedAsACylinderIsAPlane) {
 // `degrees` of arc from the top (z = 6) down its side, y from 0 to 20, with
 // Gaussian noise `sigma` across it.
 std::vector<Eigen::Vector3d> CylinderStrip(double degrees, double sigma) {
-  std::mt19937 random(9);
-  std::uniform_real_distribution<double> unit(0.0, 1.0);
-  std::normal_distribution<double> noise(0.0, sigma);
-  std::vector<Eigen::Vector3d> points;
-  for (int k = 0; k < 2500; ++k) {
-    const double t = degrees * std::numbers::pi / 180.0 * unit(random);
-    const double r = 6.0 + noise(random);
-    points.emplace_back(r * std::sin(t), 20.0 * unit(random), r * std::cos(t));
-  }
+  std::vector<Eigen::Vector3d> points =
+      NoisyCylinderPoints(9, 2500, 6.0, degrees * std::numbers::pi / 180.0, 20.0, sigma);
+  // (r cos t, r sin t, y) about z to (r sin t, y, r cos t) about y.
+  for (Eigen::Vector3d& p : points) p = Eigen::Vector3d(p.y(), p.z(), p.x());
   return points;
 }
 

@@ -37,6 +37,11 @@ struct Grid {
   void Label(const std::vector<int>& nodes, uint8_t label) {
     for (const int v : nodes) inside[v] = label;
   }
+  // RejoinSeveredSolid on `inside`, with the set the cut ties inside.
+  int64_t Rejoin(const std::vector<uint8_t>& seen_outside = {}) {
+    return RejoinSeveredSolid(tets, f, by_sign, sparse, seen_outside,
+                              ResolvedInside(tets, f, sparse, kEpsilon), kEpsilon, &inside);
+  }
 };
 
 Grid CubeGrid() {
@@ -64,7 +69,7 @@ TEST(RejoinSeveredSolid, GivesBackTheRowTheCutTurnedBetweenAResolvedPieceAndTheS
   ASSERT_EQ(piece.size(), 25u);
   g.Label(row, 0);
   const int64_t rejoined =
-      RejoinSeveredSolid(g.tets, g.f, g.by_sign, g.sparse, {}, kEpsilon, &g.inside);
+      g.Rejoin();
   EXPECT_EQ(rejoined, 25);
   EXPECT_EQ(g.inside, g.by_sign);
 }
@@ -75,7 +80,7 @@ TEST(RejoinSeveredSolid, LeavesTheCutsOtherDecisions) {
   Grid g = CubeGrid();
   g.Label(g.Slice(0.5), 0);
   g.Label(g.Slice(-1.0), 0);
-  RejoinSeveredSolid(g.tets, g.f, g.by_sign, g.sparse, {}, kEpsilon, &g.inside);
+  g.Rejoin();
   for (const int v : g.Slice(0.5)) EXPECT_EQ(g.inside[v], 1) << v;
   for (const int v : g.Slice(-1.0)) EXPECT_EQ(g.inside[v], 0) << v;
 }
@@ -86,7 +91,7 @@ TEST(RejoinSeveredSolid, CrossesAGapSeveralLayersWide) {
   Grid g = CubeGrid();
   g.Label(g.Slice(0.0), 0);
   g.Label(g.Slice(0.5), 0);
-  EXPECT_EQ(RejoinSeveredSolid(g.tets, g.f, g.by_sign, g.sparse, {}, kEpsilon, &g.inside), 50);
+  EXPECT_EQ(g.Rejoin(), 50);
   EXPECT_EQ(g.inside, g.by_sign);
 }
 
@@ -110,7 +115,7 @@ TEST(RejoinSeveredSolid, GivesBackAResolvedVertexTheCutTurnedOutsideItself) {
   g.Label(face, 0);
   g.Label(row, 0);
   const int64_t rejoined =
-      RejoinSeveredSolid(g.tets, g.f, g.by_sign, g.sparse, {}, kEpsilon, &g.inside);
+      g.Rejoin();
   EXPECT_GT(rejoined, 1);  // the centre and the turned nodes joining it
   EXPECT_EQ(g.inside[centre], 1);
   for (const int v : face) {
@@ -134,7 +139,7 @@ TEST(RejoinSeveredSolid, LeavesAResolvedVertexBeyondAGapThePointsShow) {
   g.inside = g.by_sign;
   g.Label(face, 0);
   const std::vector<uint8_t> before = g.inside;
-  EXPECT_EQ(RejoinSeveredSolid(g.tets, g.f, g.by_sign, g.sparse, {}, kEpsilon, &g.inside), 0);
+  EXPECT_EQ(g.Rejoin(), 0);
   EXPECT_EQ(g.inside, before);
 }
 
@@ -152,7 +157,7 @@ TEST(RejoinSeveredSolid, LeavesAPieceThePointsDoNotResolve) {
     }
     g.Label(g.Slice(0.5), 0);
     const std::vector<uint8_t> before = g.inside;
-    EXPECT_EQ(RejoinSeveredSolid(g.tets, g.f, g.by_sign, g.sparse, {}, kEpsilon, &g.inside), 0);
+    EXPECT_EQ(g.Rejoin(), 0);
     EXPECT_EQ(g.inside, before);
   }
 }
@@ -175,7 +180,7 @@ TEST(RejoinSeveredSolid, NeverCrossesAGapThePointsShow) {
     g.Label(row, 0);
     const std::vector<uint8_t> before = g.inside;
     EXPECT_EQ(
-        RejoinSeveredSolid(g.tets, g.f, g.by_sign, g.sparse, seen_outside, kEpsilon, &g.inside),
+        g.Rejoin(seen_outside),
         0);
     EXPECT_EQ(g.inside, before);
   }
